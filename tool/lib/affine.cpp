@@ -1,0 +1,540 @@
+// Index analysis: polynomials, index pieces, box domains (see affine.hpp).
+#include "affine.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace dpgen {
+
+// ---- Poly ----------------------------------------------------------------
+
+Poly Poly::constant(long long c) {
+  Poly p;
+  if (c != 0)
+    p.terms_[{}] = c;
+  return p;
+}
+
+Poly Poly::symbol(const std::string& s) {
+  Poly p;
+  p.terms_[{s}] = 1;
+  return p;
+}
+
+Poly Poly::operator+(const Poly& o) const {
+  Poly r = *this;
+  for (const auto& [m, c] : o.terms_) {
+    long long v = (r.terms_[m] += c);
+    if (v == 0)
+      r.terms_.erase(m);
+  }
+  return r;
+}
+
+Poly Poly::operator-(const Poly& o) const { return *this + (-o); }
+
+Poly Poly::operator*(const Poly& o) const {
+  Poly r;
+  for (const auto& [m1, c1] : terms_)
+    for (const auto& [m2, c2] : o.terms_) {
+      Monomial m = m1;
+      m.insert(m.end(), m2.begin(), m2.end());
+      std::sort(m.begin(), m.end());
+      long long v = (r.terms_[m] += c1 * c2);
+      if (v == 0)
+        r.terms_.erase(m);
+    }
+  return r;
+}
+
+bool Poly::is_constant() const {
+  return terms_.empty() || (terms_.size() == 1 && terms_.begin()->first.empty());
+}
+
+long long Poly::constant_term() const {
+  auto it = terms_.find({});
+  return it == terms_.end() ? 0 : it->second;
+}
+
+bool Poly::mentions(const std::string& s) const {
+  for (const auto& [m, c] : terms_)
+    if (std::find(m.begin(), m.end(), s) != m.end())
+      return true;
+  return false;
+}
+
+Poly Poly::coefficient(const std::string& var) const {
+  Poly r;
+  for (const auto& [m, c] : terms_) {
+    auto it = std::find(m.begin(), m.end(), var);
+    if (it == m.end())
+      continue;
+    Monomial rest = m;
+    rest.erase(rest.begin() + (it - m.begin()));
+    r.terms_[rest] += c;
+  }
+  return r;
+}
+
+Poly Poly::without(const std::string& var) const {
+  Poly r;
+  for (const auto& [m, c] : terms_)
+    if (std::find(m.begin(), m.end(), var) == m.end())
+      r.terms_[m] = c;
+  return r;
+}
+
+int Poly::degree() const {
+  int d = 0;
+  for (const auto& [m, c] : terms_)
+    d = std::max<int>(d, static_cast<int>(m.size()));
+  return d;
+}
+
+std::string Poly::str() const {
+  if (terms_.empty())
+    return "0";
+  // Highest degree first, the constant last: "j * nx + i - 1".
+  std::vector<std::pair<Monomial, long long>> ts(terms_.begin(), terms_.end());
+  std::stable_sort(ts.begin(), ts.end(), [](const auto& a, const auto& b) {
+    return a.first.size() > b.first.size();
+  });
+  std::string out;
+  for (const auto& [m, c] : ts) {
+    long long mag = c < 0 ? -c : c;
+    std::string body;
+    for (const auto& s : m)
+      body += (body.empty() ? "" : " * ") + (s[0] == '@' ? s.substr(1) : s);
+    std::string term = body.empty() ? std::to_string(mag)
+                       : mag == 1   ? body
+                                    : fmt::format("{} * {}", mag, body);
+    if (out.empty())
+      out = (c < 0 ? "-" : "") + term;
+    else
+      out += (c < 0 ? " - " : " + ") + term;
+  }
+  return out;
+}
+
+std::optional<Poly> to_poly(const ExprP& e) {
+  switch (e->op) {
+  case Op::IntConst:
+    return Poly::constant(e->ival);
+  case Op::Param:
+    if (e->type != Type::Int)
+      return std::nullopt;
+    return Poly::symbol(e->name);
+  case Op::LoopVar:
+    return Poly::symbol("@" + e->name);
+  case Op::Local:
+    if (e->type != Type::Int)
+      return std::nullopt;
+    return to_poly(e->local->def);
+  case Op::Neg: {
+    auto a = to_poly(e->ops[0]);
+    if (!a)
+      return std::nullopt;
+    return -*a;
+  }
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul: {
+    if (e->type != Type::Int)
+      return std::nullopt;
+    auto a = to_poly(e->ops[0]);
+    auto b = to_poly(e->ops[1]);
+    if (!a || !b)
+      return std::nullopt;
+    return e->op == Op::Add ? *a + *b : e->op == Op::Sub ? *a - *b : *a * *b;
+  }
+  default:
+    return std::nullopt;
+  }
+}
+
+// ---- Domains -------------------------------------------------------------
+
+namespace {
+
+// `a - b` as a constant, if it is one.
+std::optional<long long> const_diff(const Poly& a, const Poly& b) {
+  Poly d = a - b;
+  if (!d.is_constant())
+    return std::nullopt;
+  return d.constant_term();
+}
+
+bool box_empty(const Box& b) {
+  for (const auto& [v, iv] : b.dims)
+    for (const auto& lo : iv.lo)
+      for (const auto& hi : iv.hi) {
+        auto d = const_diff(hi, lo);
+        if (d && *d <= 0)
+          return true;
+      }
+  return false;
+}
+
+// Keeps the elements of `set` not dominated by another one that differs by a
+// constant; `keep_larger` for lower bounds (max), smaller for upper (min).
+std::vector<Poly> prune(const std::vector<Poly>& set, bool keep_larger) {
+  std::vector<Poly> out;
+  for (const auto& p : set) {
+    bool dominated = false;
+    for (auto it = out.begin(); it != out.end();) {
+      auto d = const_diff(p, *it);
+      if (!d) {
+        ++it;
+        continue;
+      }
+      bool p_wins = keep_larger ? *d > 0 : *d < 0;
+      if (p_wins) {
+        it = out.erase(it);
+      } else {
+        dominated = true;
+        break;
+      }
+    }
+    if (!dominated)
+      out.push_back(p);
+  }
+  return out;
+}
+
+void add_bounds(Interval& into, const Interval& from) {
+  into.lo.insert(into.lo.end(), from.lo.begin(), from.lo.end());
+  into.hi.insert(into.hi.end(), from.hi.begin(), from.hi.end());
+}
+
+Box box_intersect(const Box& a, const Box& b) {
+  Box r = a;
+  for (const auto& [v, iv] : b.dims)
+    add_bounds(r.dims[v], iv);
+  return simplify(r);
+}
+
+// v not in [max(lo), min(hi)), as disjoint intervals:
+//   v < max(a1..ak)  = U_m { a1..a(m-1) <= v < a_m }
+//   v >= max(lo) and v >= min(b1..bk) = U_m { lo, b_m <= v < b1..b(m-1) }
+std::vector<Interval> outside(const Interval& iv) {
+  std::vector<Interval> out;
+  for (size_t m = 0; m < iv.lo.size(); ++m) {
+    Interval p;
+    p.lo.assign(iv.lo.begin(), iv.lo.begin() + m);
+    p.hi.push_back(iv.lo[m]);
+    out.push_back(p);
+  }
+  for (size_t m = 0; m < iv.hi.size(); ++m) {
+    Interval p;
+    p.lo = iv.lo;
+    p.lo.push_back(iv.hi[m]);
+    p.hi.assign(iv.hi.begin(), iv.hi.begin() + m);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The complement of a box as disjoint boxes: the first variable outside, or
+// the first inside and the second outside, ...
+Domain complement(const Box& y) {
+  Domain out;
+  Box prefix;
+  for (const auto& [v, iv] : y.dims) {
+    for (const auto& piece : outside(iv)) {
+      Box b = prefix;
+      b.dims[v] = piece;
+      out.push_back(b);
+    }
+    prefix.dims[v] = iv;
+  }
+  return out;
+}
+
+bool interval_within(const Interval& b, const Interval& y) {
+  for (const auto& ylo : y.lo) {
+    bool ok = false;
+    for (const auto& blo : b.lo) {
+      auto d = const_diff(blo, ylo);
+      ok = ok || (d && *d >= 0);
+    }
+    if (!ok)
+      return false;
+  }
+  for (const auto& yhi : y.hi) {
+    bool ok = false;
+    for (const auto& bhi : b.hi) {
+      auto d = const_diff(yhi, bhi);
+      ok = ok || (d && *d >= 0);
+    }
+    if (!ok)
+      return false;
+  }
+  return true;
+}
+
+bool intervals_apart(const Interval& a, const Interval& b) {
+  auto below = [](const Interval& x, const Interval& y) { // x ends before y starts
+    for (const auto& xhi : x.hi)
+      for (const auto& ylo : y.lo) {
+        auto d = const_diff(ylo, xhi);
+        if (d && *d >= 0)
+          return true;
+      }
+    return false;
+  };
+  return below(a, b) || below(b, a);
+}
+
+} // namespace
+
+Box simplify(Box b) {
+  for (auto& [v, iv] : b.dims) {
+    iv.lo = prune(iv.lo, true);
+    iv.hi = prune(iv.hi, false);
+  }
+  return b;
+}
+
+Domain universe() { return {Box{}}; }
+
+Domain intersect(const Domain& a, const Domain& b) {
+  Domain out;
+  for (const auto& x : a)
+    for (const auto& y : b) {
+      Box r = box_intersect(x, y);
+      if (!box_empty(r))
+        out.push_back(r);
+    }
+  return out;
+}
+
+Domain subtract(const Domain& a, const Domain& b) {
+  Domain cur = a;
+  for (const auto& y : b)
+    cur = intersect(cur, complement(y));
+  return cur;
+}
+
+Domain unite(const Domain& a, const Domain& b) {
+  Domain out = a;
+  for (const auto& x : subtract(b, a))
+    out.push_back(x);
+  return out;
+}
+
+Domain shift(const Domain& d, const std::map<std::string, Poly>& delta) {
+  Domain out = d;
+  for (auto& box : out)
+    for (auto& [v, iv] : box.dims) {
+      auto it = delta.find(v);
+      if (it == delta.end())
+        continue;
+      for (auto& p : iv.lo)
+        p = p + it->second;
+      for (auto& p : iv.hi)
+        p = p + it->second;
+    }
+  return out;
+}
+
+bool box_inside(const Box& b, const Domain& d) {
+  if (box_empty(b))
+    return true;
+  for (const auto& y : d) {
+    bool ok = true;
+    for (const auto& [v, iv] : y.dims) {
+      auto it = b.dims.find(v);
+      if (it == b.dims.end() || !interval_within(it->second, iv)) {
+        ok = false;
+        break;
+      }
+    }
+    if (ok)
+      return true;
+  }
+  return false;
+}
+
+bool box_disjoint(const Box& b, const Domain& d) {
+  if (box_empty(b))
+    return true;
+  for (const auto& y : d) {
+    bool apart = false;
+    for (const auto& [v, iv] : y.dims) {
+      auto it = b.dims.find(v);
+      if (it != b.dims.end() && intervals_apart(it->second, iv)) {
+        apart = true;
+        break;
+      }
+    }
+    if (!apart)
+      return false;
+  }
+  return true;
+}
+
+namespace {
+
+Op flip(Op op) {
+  switch (op) {
+  case Op::Lt:
+    return Op::Gt;
+  case Op::Le:
+    return Op::Ge;
+  case Op::Gt:
+    return Op::Lt;
+  case Op::Ge:
+    return Op::Le;
+  default:
+    return op;
+  }
+}
+
+// v op B  as a domain.
+Domain compare_domain(const std::string& v, Op op, const Poly& bound) {
+  Box b;
+  Interval& iv = b.dims[v];
+  switch (op) {
+  case Op::Lt:
+    iv.hi = {bound};
+    break;
+  case Op::Le:
+    iv.hi = {bound + Poly::constant(1)};
+    break;
+  case Op::Gt:
+    iv.lo = {bound + Poly::constant(1)};
+    break;
+  case Op::Ge:
+    iv.lo = {bound};
+    break;
+  case Op::Eq:
+  case Op::Ne:
+    iv.lo = {bound};
+    iv.hi = {bound + Poly::constant(1)};
+    if (op == Op::Ne)
+      return subtract(universe(), {b});
+    break;
+  default:
+    break;
+  }
+  return {b};
+}
+
+} // namespace
+
+std::optional<Domain> condition_domain(const ExprP& c) {
+  switch (c->op) {
+  case Op::And:
+  case Op::Or: {
+    auto a = condition_domain(c->ops[0]);
+    auto b = condition_domain(c->ops[1]);
+    if (!a || !b)
+      return std::nullopt;
+    return c->op == Op::And ? intersect(*a, *b) : unite(*a, *b);
+  }
+  case Op::Not: {
+    auto a = condition_domain(c->ops[0]);
+    if (!a)
+      return std::nullopt;
+    return subtract(universe(), *a);
+  }
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne: {
+    if (c->ops[0]->type != Type::Int || c->ops[1]->type != Type::Int)
+      return std::nullopt;
+    auto l = to_poly(c->ops[0]);
+    auto r = to_poly(c->ops[1]);
+    if (!l || !r)
+      return std::nullopt;
+    Poly p = *l - *r; // condition: p op 0
+    std::string var;
+    for (const auto& [m, coef] : p.terms())
+      for (const auto& s : m)
+        if (s[0] == '@') {
+          if (!var.empty() && var != s)
+            return std::nullopt; // two loop variables: not a box
+          var = s;
+        }
+    if (var.empty())
+      return std::nullopt; // parameters only: a run-time guard
+    Poly coef = p.coefficient(var);
+    if (!coef.is_constant() || (coef.constant_term() != 1 && coef.constant_term() != -1))
+      return std::nullopt;
+    Poly rest = p.without(var);
+    if (coef.constant_term() == 1) // v + rest op 0  <=>  v op -rest
+      return compare_domain(var, c->op, -rest);
+    return compare_domain(var, flip(c->op), rest); // -v + rest op 0 <=> v op' rest
+  }
+  default:
+    return std::nullopt;
+  }
+}
+
+std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
+  using Pieces = std::vector<IndexPiece>;
+  if (e->type != Type::Int)
+    return std::nullopt;
+  switch (e->op) {
+  case Op::Local:
+    return index_pieces(e->local->def);
+  case Op::Select: {
+    auto where = condition_domain(e->ops[0]);
+    auto a = index_pieces(e->ops[1]);
+    auto b = index_pieces(e->ops[2]);
+    if (!where || !a || !b)
+      return std::nullopt;
+    Pieces out;
+    for (auto& p : *a) {
+      Domain d = intersect(p.where, *where);
+      if (!d.empty())
+        out.push_back({p.value, d});
+    }
+    for (auto& p : *b) {
+      Domain d = subtract(p.where, *where);
+      if (!d.empty())
+        out.push_back({p.value, d});
+    }
+    return out;
+  }
+  case Op::Neg: {
+    auto a = index_pieces(e->ops[0]);
+    if (!a)
+      return std::nullopt;
+    for (auto& p : *a)
+      p.value = -p.value;
+    return a;
+  }
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul: {
+    auto a = index_pieces(e->ops[0]);
+    auto b = index_pieces(e->ops[1]);
+    if (!a || !b)
+      return std::nullopt;
+    Pieces out;
+    for (const auto& x : *a)
+      for (const auto& y : *b) {
+        Domain d = intersect(x.where, y.where);
+        if (d.empty())
+          continue;
+        Poly v = e->op == Op::Add   ? x.value + y.value
+                 : e->op == Op::Sub ? x.value - y.value
+                                    : x.value * y.value;
+        out.push_back({v, d});
+      }
+    return out;
+  }
+  default: {
+    auto p = to_poly(e);
+    if (!p)
+      return std::nullopt;
+    return Pieces{{*p, universe()}};
+  }
+  }
+}
+
+} // namespace dpgen

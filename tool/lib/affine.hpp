@@ -1,0 +1,100 @@
+// Index analysis: integer expressions as polynomials in the parameters and
+// loop variables, conditional indices as pieces, and iteration domains as
+// disjoint unions of boxes whose bounds are max/min sets of such polynomials.
+//
+// Nothing here needs to order symbolic bounds: a bound set {0, n-1} is emitted
+// as std::max(0, n - 1) and decided at run time. Only bounds that differ by a
+// constant are compared here (to drop dominated bounds and empty boxes).
+#pragma once
+
+#include "ir.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+/// A polynomial with integer coefficients over named symbols (parameters and
+/// loop variables). A monomial is the sorted list of its symbols.
+class Poly {
+public:
+  using Monomial = std::vector<std::string>;
+
+  Poly() = default;
+  static Poly constant(long long c);
+  static Poly symbol(const std::string& s);
+
+  Poly operator+(const Poly& o) const;
+  Poly operator-(const Poly& o) const;
+  Poly operator*(const Poly& o) const;
+  Poly operator-() const { return *this * constant(-1); }
+  bool operator==(const Poly& o) const { return terms_ == o.terms_; }
+  bool operator<(const Poly& o) const { return terms_ < o.terms_; }
+
+  bool is_constant() const;
+  long long constant_term() const;
+  bool mentions(const std::string& s) const;
+  /// Coefficient of `var` (which must occur with degree <= 1): a polynomial.
+  Poly coefficient(const std::string& var) const;
+  /// The polynomial without any term that mentions `var`.
+  Poly without(const std::string& var) const;
+  /// Highest total degree of any term (0 for constants).
+  int degree() const;
+  const std::map<Monomial, long long>& terms() const { return terms_; }
+  /// C++ source, e.g. "j * nx + i - 1".
+  std::string str() const;
+
+private:
+  std::map<Monomial, long long> terms_; // no zero coefficients
+};
+
+/// The integer expression as a polynomial, seeing through integer Locals;
+/// nullopt when it is not a polynomial (a division, a conditional, a cast).
+std::optional<Poly> to_poly(const ExprP& e);
+
+/// Half-open interval max(lo...) <= v < min(hi...); an empty set is unbounded.
+struct Interval {
+  std::vector<Poly> lo, hi;
+};
+
+/// A box: one interval per constrained loop variable.
+struct Box {
+  std::map<std::string, Interval> dims;
+};
+
+/// A disjoint union of boxes (empty vector = empty set).
+using Domain = std::vector<Box>;
+
+Domain universe();
+Domain intersect(const Domain& a, const Domain& b);
+Domain subtract(const Domain& a, const Domain& b);
+Domain unite(const Domain& a, const Domain& b); // a ∪ (b \ a), kept disjoint
+/// Shifts every box by +delta[v] in each variable v.
+Domain shift(const Domain& d, const std::map<std::string, Poly>& delta);
+/// Drops bounds dominated by a constant difference and provably empty boxes.
+Box simplify(Box b);
+
+/// The domain of an index condition (comparisons of one loop variable, with
+/// coefficient +-1, against parameters, combined by && || !); nullopt for any
+/// other condition, which then stays a run-time guard.
+std::optional<Domain> condition_domain(const ExprP& cond);
+
+/// True when box `b` certainly lies inside `d` / certainly misses `d`,
+/// deciding only comparisons that differ by a constant.
+bool box_inside(const Box& b, const Domain& d);
+bool box_disjoint(const Box& b, const Domain& d);
+
+/// One piece of a piecewise-affine index: `value` where `where` holds.
+struct IndexPiece {
+  Poly value;
+  Domain where;
+};
+
+/// The pieces of an integer index expression (conditional expressions on
+/// index conditions split it); nullopt when some piece is not a polynomial or
+/// a condition is not an index condition (a data-dependent index).
+std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& index);
+
+} // namespace dpgen

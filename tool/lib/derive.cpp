@@ -1,0 +1,167 @@
+// Derive: one differentiation rule per IR node, the maths above each rule.
+// Values that are integers, booleans or pass through floor/ceil carry no
+// derivative; every other node has an exact rule or is rejected earlier by
+// the lowering.
+#include "derive.hpp"
+
+#include <map>
+#include <stdexcept>
+
+namespace dpgen {
+
+namespace {
+
+class Deriver {
+public:
+  explicit Deriver(const std::set<const Expr*>& reads) : reads_(reads) {}
+
+  ExprP d(const ExprP& e) {
+    if (!is_real(e->type))
+      return nullptr; // integers and booleans are not differentiable values
+    if (e->op == Op::Local) {
+      auto it = local_memo_.find(e->local.get());
+      if (it != local_memo_.end())
+        return it->second;
+      ExprP r = d(e->local->def);
+      local_memo_[e->local.get()] = r;
+      return r;
+    }
+    switch (e->op) {
+    case Op::IntConst:
+    case Op::RealConst:
+    case Op::Param:
+    case Op::LoopVar:
+      return nullptr;
+    case Op::Read:
+      // d a[k] / d a[k] = 1 for the occurrences we differentiate by
+      return reads_.count(e.get()) ? one(e) : nullptr;
+    case Op::Neg:
+      // d(-a) = -da
+      return neg(d(e->ops[0]));
+    case Op::Add:
+      // d(a + b) = da + db
+      return add(d(e->ops[0]), d(e->ops[1]));
+    case Op::Sub:
+      // d(a - b) = da - db
+      return add(d(e->ops[0]), neg(d(e->ops[1])));
+    case Op::Mul: {
+      // d(a*b) = b·da + a·db
+      const ExprP &a = e->ops[0], &b = e->ops[1];
+      return add(mul(b, d(a)), mul(a, d(b)));
+    }
+    case Op::Div: {
+      // d(a/b) = da/b - a·db/b²
+      const ExprP &a = e->ops[0], &b = e->ops[1];
+      ExprP da = d(a), db = d(b);
+      ExprP t1 = da ? binary(Op::Div, da, b) : nullptr;
+      ExprP t2 = db ? binary(Op::Div, binary(Op::Mul, a, db), binary(Op::Mul, b, b)) : nullptr;
+      return add(t1, neg(t2));
+    }
+    case Op::Select: {
+      // d(c ? a : b) = c ? da : db   (the condition is piecewise constant)
+      ExprP da = d(e->ops[1]), db = d(e->ops[2]);
+      if (!da && !db)
+        return nullptr;
+      return select(e->ops[0], da ? da : zero(e), db ? db : zero(e));
+    }
+    case Op::Cast:
+      // float <-> double: the derivative converts too; int -> real: zero
+      return is_real(e->ops[0]->type) ? cast_or_null(d(e->ops[0]), e->type) : nullptr;
+    case Op::Call:
+      return call_rule(e);
+    default:
+      return nullptr; // comparisons, logic, %: not real-valued
+    }
+  }
+
+private:
+  const std::set<const Expr*>& reads_;
+  std::map<const LocalVar*, ExprP> local_memo_;
+
+  static ExprP one(const ExprP& like) { return real_const(1, like->type); }
+  static ExprP zero(const ExprP& like) { return real_const(0, like->type); }
+  static ExprP lit(double v, const ExprP& like) { return real_const(v, like->type); }
+
+  static ExprP add(ExprP a, ExprP b) {
+    if (!a)
+      return b;
+    if (!b)
+      return a;
+    return binary(Op::Add, a, b);
+  }
+  static ExprP neg(ExprP a) { return a ? unary(Op::Neg, a) : nullptr; }
+  static ExprP mul(ExprP a, ExprP b) { return a && b ? binary(Op::Mul, a, b) : nullptr; }
+  static ExprP cast_or_null(ExprP a, Type t) { return a ? cast(a, t) : nullptr; }
+
+  ExprP call_rule(const ExprP& e) {
+    const std::string& f = e->name;
+    const ExprP& a = e->ops[0];
+    if (f == "min" || f == "max") {
+      // d min(a,b) = a <= b ? da : db ;  d max(a,b) = a >= b ? da : db
+      const ExprP& b = e->ops[1];
+      ExprP da = d(a), db = d(b);
+      if (!da && !db)
+        return nullptr;
+      ExprP c = binary(f == "min" ? Op::Le : Op::Ge, a, b);
+      return select(c, da ? da : zero(e), db ? db : zero(e));
+    }
+    if (f == "floor" || f == "ceil")
+      return nullptr; // piecewise constant: zero almost everywhere
+    ExprP da = d(a);
+    if (f == "pow") {
+      // d a^b = b·a^(b-1)·da + a^b·log(a)·db
+      const ExprP& b = e->ops[1];
+      ExprP db = d(b);
+      ExprP t1 = da ? mul(mul(b, call("pow", {a, binary(Op::Sub, b, lit(1, e))}, e->type)), da)
+                    : nullptr;
+      ExprP t2 = db ? mul(mul(e, call("log", {a}, e->type)), db) : nullptr;
+      return add(t1, t2);
+    }
+    if (!da)
+      return nullptr;
+    if (f == "abs") // d|a| = sign(a)·da
+      return select(binary(Op::Lt, a, zero(a)), unary(Op::Neg, da), da);
+    if (f == "sqrt") // d sqrt(a) = da / (2·sqrt(a))
+      return binary(Op::Div, da, binary(Op::Mul, lit(2, e), e));
+    if (f == "exp") // d exp(a) = exp(a)·da
+      return mul(e, da);
+    if (f == "log") // d log(a) = da / a
+      return binary(Op::Div, da, a);
+    if (f == "sin") // d sin(a) = cos(a)·da
+      return mul(call("cos", {a}, e->type), da);
+    if (f == "cos") // d cos(a) = -sin(a)·da
+      return neg(mul(call("sin", {a}, e->type), da));
+    if (f == "tanh") // d tanh(a) = (1 - tanh²(a))·da
+      return mul(binary(Op::Sub, lit(1, e), binary(Op::Mul, e, e)), da);
+    throw std::logic_error("derive: no rule for call to " + f);
+  }
+};
+
+void collect_reads(const ExprP& e, std::vector<const Expr*>& out, std::set<const Expr*>& seen,
+                   std::set<const LocalVar*>& seen_locals) {
+  if (e->op == Op::Local) {
+    if (seen_locals.insert(e->local.get()).second)
+      collect_reads(e->local->def, out, seen, seen_locals);
+    return;
+  }
+  if (e->op == Op::Read && seen.insert(e.get()).second)
+    out.push_back(e.get());
+  for (const auto& o : e->ops)
+    collect_reads(o, out, seen, seen_locals);
+}
+
+} // namespace
+
+ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads) {
+  return Deriver(reads).d(value);
+}
+
+std::vector<const Expr*> reads_in(const ExprP& e) {
+  std::vector<const Expr*> out;
+  std::set<const Expr*> seen;
+  std::set<const LocalVar*> seen_locals;
+  collect_reads(e, out, seen, seen_locals);
+  return out;
+}
+
+} // namespace dpgen

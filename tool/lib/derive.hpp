@@ -1,0 +1,21 @@
+// Derive (phase 3): reverse-mode partials of the scalar expressions of a
+// store. The adjoint of a read is "the partial of the store's value w.r.t.
+// that read, evaluated at the iteration that made the read, times the seed of
+// the output cell"; this file computes the partial.
+#pragma once
+
+#include "ir.hpp"
+
+#include <set>
+
+namespace dpgen {
+
+/// d value / d(reads): the partial of `value` w.r.t. the Read nodes in
+/// `reads` (occurrences that all read the same cell), as an expression over
+/// the primal values. nullptr stands for an exact zero.
+ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads);
+
+/// Every Read node reachable from `e` (through Locals), in first-seen order.
+std::vector<const Expr*> reads_in(const ExprP& e);
+
+} // namespace dpgen

@@ -1,0 +1,679 @@
+// Emit: gather loops (bounding box, branch-free interior, guarded edges),
+// scatter loops, and the file around them.
+#include "emit.hpp"
+
+#include "print.hpp"
+
+#include <clang/Format/Format.h>
+#include <clang/Tooling/Core/Replacement.h>
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <functional>
+#include <set>
+
+namespace dpgen {
+
+namespace {
+
+// ---- expression rewriting under a known box --------------------------------
+
+// Replaces conditional expressions whose index condition is decided inside
+// `box` (only comparisons differing by a constant are decided), so an
+// interior loop reads a[i + 1] instead of a[(i == n - 1) ? 0 : i + 1].
+class Specializer {
+public:
+  explicit Specializer(const Box& box) : box_(box) {}
+
+  ExprP operator()(const ExprP& e) {
+    if (!e)
+      return e;
+    if (e->op == Op::Local) {
+      if (e->local->kernel_level)
+        return e;
+      auto it = memo_.find(e->local.get());
+      if (it != memo_.end())
+        return it->second;
+      ExprP def = (*this)(e->local->def);
+      ExprP out = e;
+      if (def != e->local->def) {
+        auto l = std::make_shared<LocalVar>(*e->local);
+        l->def = def;
+        out = local_ref(l);
+      }
+      memo_[e->local.get()] = out;
+      return out;
+    }
+    if (e->op == Op::Select) {
+      if (auto cd = condition_domain(e->ops[0])) {
+        if (box_inside(box_, *cd))
+          return (*this)(e->ops[1]);
+        if (box_disjoint(box_, *cd))
+          return (*this)(e->ops[2]);
+      }
+    }
+    bool changed = false;
+    std::vector<ExprP> ops;
+    for (const auto& o : e->ops) {
+      ops.push_back((*this)(o));
+      changed = changed || ops.back() != o;
+    }
+    if (!changed)
+      return e;
+    auto copy = std::make_shared<Expr>(*e);
+    copy->ops = std::move(ops);
+    return copy;
+  }
+
+private:
+  const Box& box_;
+  std::map<const LocalVar*, ExprP> memo_;
+};
+
+void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string>& vars) {
+  if (!e)
+    return;
+  if (e->op == Op::LoopVar)
+    vars.insert(e->name);
+  if (e->op == Op::Local) {
+    if (e->local->kernel_level || locals.count(e->local->id))
+      return;
+    locals[e->local->id] = e->local;
+    collect(e->local->def, locals, vars);
+    return;
+  }
+  for (const auto& o : e->ops)
+    collect(o, locals, vars);
+}
+
+std::string cond_text(const PathCond& pc) {
+  return pc.positive ? print(pc.cond) : "!(" + print(pc.cond) + ")";
+}
+
+// ---- the code buffer ---------------------------------------------------------
+
+class Code {
+public:
+  template <typename... A> void line(fmt::format_string<A...> f, A&&... a) {
+    out_ += std::string(2 * depth_, ' ') + fmt::format(f, std::forward<A>(a)...) + "\n";
+  }
+  void raw(const std::string& s) { out_ += s; }
+  void open(const std::string& s) {
+    out_ += std::string(2 * depth_, ' ') + s + (s.empty() ? "{\n" : " {\n");
+    ++depth_;
+  }
+  void close(const std::string& tail = "") {
+    --depth_;
+    out_ += std::string(2 * depth_, ' ') + "}" + tail + "\n";
+  }
+  const std::string& str() const { return out_; }
+
+private:
+  std::string out_;
+  int depth_ = 0;
+};
+
+std::string elem_of(const Kernel& k, const std::string& array) {
+  const Param* p = k.find_param(array);
+  return p ? p->elem_name : "double";
+}
+
+std::string loop_type(const Nest& n, const std::string& var) {
+  for (const auto& l : n.loops)
+    if (l.var == var)
+      return l.type_name;
+  return "int";
+}
+
+// ---- one block: the terms of one (store, shift, piece) at one iteration -------
+
+struct BlockContext {
+  const Kernel& k;
+  const GatherGroup& g;
+  Code& code;
+  std::string acc;
+  bool edge;          // guarded: check that the iteration is in the domain
+  const Box* interior; // cell-space interior box (interior mode)
+};
+
+// The locals a term needs, recomputed at its iteration, then `acc += partial
+// * seed`, all specialized to the box the iteration is known to lie in.
+void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<PathCond>& guards,
+                const std::string& acc, const std::string& set_hit) {
+  Specializer spec(where);
+  ExprP partial = spec(t.partial);
+  ExprP seed_index = spec(t.store->index);
+  std::vector<ExprP> gs;
+  for (const auto& pc : guards)
+    gs.push_back(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond)));
+  std::map<int, LocalP> locals;
+  std::set<std::string> vars;
+  collect(partial, locals, vars);
+  collect(seed_index, locals, vars);
+  for (const auto& g : gs)
+    collect(g, locals, vars);
+  if (!gs.empty()) {
+    std::vector<std::string> parts;
+    for (const auto& g : gs)
+      parts.push_back(print(g));
+    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
+  }
+  for (const auto& [id, l] : locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
+  code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
+  if (!set_hit.empty())
+    code.line("{}", set_hit);
+  if (!gs.empty())
+    code.close();
+}
+
+// Emits one block inside a cell lambda.
+void emit_block(const BlockContext& cx, const Block& b) {
+  const Nest& nest = *cx.g.nest;
+  std::map<std::string, Poly> back; // "@v" -> -shift, cell space -> iteration space
+  for (const auto& [v, c] : cx.g.layout) {
+    auto it = b.shift.find(v);
+    back["@" + v] = it == b.shift.end() ? Poly() : -it->second;
+  }
+  Code& code = cx.code;
+  std::string iter_desc;
+  for (const auto& [v, c] : cx.g.layout) {
+    Poly it = Poly::symbol("c_" + v) + back["@" + v];
+    iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.str());
+  }
+  const Store& s = *b.terms.front().store;
+  code.line("// {}[{}] = f(..., {}, ...){}: += ∂f/∂({}) · {}_adj", s.array, print(s.index),
+            b.comment, iter_desc.empty() ? "" : " at " + iter_desc, b.comment, s.array);
+
+  std::vector<Box> boxes;
+  if (cx.edge) {
+    boxes = b.domain;
+  } else {
+    Domain in_iter = shift({*cx.interior}, back);
+    boxes = intersect(b.domain, in_iter);
+    if (boxes.size() != 1)
+      boxes = b.domain; // cannot happen for a bulk block; keep it exact anyway
+  }
+  for (const Box& box : boxes) {
+    code.open("");
+    // Layout counters come from the cell.
+    for (const auto& [v, c] : cx.g.layout) {
+      Poly it = Poly::symbol("c_" + v) + back["@" + v];
+      code.line("const {} {} = {};", loop_type(nest, v), v, it.str());
+    }
+    int opened = 0;
+    if (cx.edge) {
+      std::vector<std::string> conds;
+      for (const auto& [v, c] : cx.g.layout) {
+        auto d = box.dims.find("@" + v);
+        if (d == box.dims.end())
+          continue;
+        for (const auto& lo : d->second.lo)
+          conds.push_back(fmt::format("{} >= {}", v, lo.str()));
+        for (const auto& hi : d->second.hi)
+          conds.push_back(fmt::format("{} < {}", v, hi.str()));
+      }
+      if (!conds.empty()) {
+        code.open(fmt::format("if ({})", fmt::join(conds, " && ")));
+        ++opened;
+      }
+    }
+    // Counters outside the layout are summed over inside the cell.
+    for (const auto& r : cx.g.reduced) {
+      auto d = box.dims.find("@" + r);
+      std::string t = loop_type(nest, r);
+      code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", t, r,
+                            print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
+      ++opened;
+    }
+    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? "hit = true;" : "");
+    for (int i = 0; i < opened; ++i)
+      code.close();
+    code.close();
+  }
+}
+
+// ---- a gather group ------------------------------------------------------------
+
+std::vector<Poly> shifted(const std::vector<Poly>& set, const Poly& d) {
+  std::vector<Poly> out;
+  for (const auto& p : set)
+    out.push_back(p + d);
+  return out;
+}
+
+// min over candidates of max(candidate set), printed.
+std::string min_of_max(const std::vector<std::vector<Poly>>& cands, const std::string& t,
+                       bool lower) {
+  std::vector<std::string> parts;
+  std::set<std::string> seen;
+  std::vector<Poly> singles;
+  for (const auto& c : cands) {
+    if (c.size() == 1) {
+      singles.push_back(c.front());
+      continue;
+    }
+    std::string s = lower ? print_max(c, t) : print_min(c, t);
+    if (seen.insert(s).second)
+      parts.push_back(s);
+  }
+  // Singletons that differ by a constant: keep the extreme one.
+  std::vector<Poly> kept;
+  for (const auto& p : singles) {
+    bool drop = false;
+    for (auto it = kept.begin(); it != kept.end();) {
+      Poly d = p - *it;
+      if (!d.is_constant()) {
+        ++it;
+        continue;
+      }
+      long long v = d.constant_term();
+      bool p_better = lower ? v < 0 : v > 0;
+      if (p_better)
+        it = kept.erase(it);
+      else {
+        drop = true;
+        break;
+      }
+    }
+    if (!drop)
+      kept.push_back(p);
+  }
+  for (const auto& p : kept)
+    if (seen.insert(p.str()).second)
+      parts.push_back(p.str());
+  if (parts.size() == 1)
+    return parts[0];
+  std::string fn = lower ? "min" : "max";
+  if (parts.size() == 2)
+    return fmt::format("std::{}<{}>({}, {})", fn, t, parts[0], parts[1]);
+  return fmt::format("std::{}<{}>({{{}}})", fn, t, fmt::join(parts, ", "));
+}
+
+void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
+  const Nest& nest = *g.nest;
+  std::string elem = elem_of(k, g.array);
+  Poly cell_index = g.base;
+  for (const auto& [v, c] : g.layout)
+    cell_index = cell_index + c * Poly::symbol("c_" + v);
+  std::string cell = fmt::format("{}_adj[{}]", g.array, cell_index.str());
+
+  std::string layout_desc;
+  for (const auto& [v, c] : g.layout)
+    layout_desc += (layout_desc.empty() ? "" : ", ") + v;
+  code.line("// {}: every cell {} gathers the reads of {} made by the loop over ({}){}",
+            g.array + "_adj", cell, g.array, layout_desc.empty() ? "-" : layout_desc,
+            g.reduced.empty() ? "" : fmt::format(", summed over {}", fmt::join(g.reduced, ", ")));
+  code.open("");
+
+  // Cell lambdas: the guarded edge and the branch-free interior.
+  std::vector<std::string> cell_params;
+  for (const auto& [v, c] : g.layout)
+    cell_params.push_back(fmt::format("const {} c_{}", loop_type(nest, v), v));
+  std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
+
+  // Bounding box of the cells, interior box (cell space, "@v" keys).
+  Box interior;
+  std::map<std::string, std::pair<std::string, std::string>> bounds; // v -> (lo, hi) text
+  for (const auto& [v, c] : g.layout) {
+    std::vector<std::vector<Poly>> los, his;
+    Interval in;
+    for (const auto& b : g.blocks) {
+      auto sit = b.shift.find(v);
+      Poly d = sit == b.shift.end() ? Poly() : sit->second;
+      for (const auto& box : b.domain) {
+        const Interval& iv = box.dims.at("@" + v);
+        los.push_back(shifted(iv.lo, d));
+        his.push_back(shifted(iv.hi, d));
+        if (b.bulk) {
+          for (const auto& p : shifted(iv.lo, d))
+            in.lo.push_back(p);
+          for (const auto& p : shifted(iv.hi, d))
+            in.hi.push_back(p);
+        }
+      }
+    }
+    interior.dims["@" + v] = in;
+    std::string t = loop_type(nest, v);
+    bounds[v] = {min_of_max(los, t, true), min_of_max(his, t, false)};
+  }
+  interior = simplify(interior);
+  bool any_bulk = false;
+  for (const auto& b : g.blocks)
+    any_bulk = any_bulk || b.bulk;
+
+  // Edge cell: every block, each checked against its iteration domain.
+  code.open(fmt::format("auto edge = [&]({})", params));
+  code.line("{} acc = 0;", elem);
+  code.line("bool hit = false;");
+  for (const auto& b : g.blocks)
+    emit_block({k, g, code, "acc", true, nullptr}, b);
+  code.line("if (hit)");
+  code.line("  {} += acc;", cell);
+  code.close(";");
+
+  if (g.layout.empty()) {
+    code.line("edge();");
+    code.close();
+    return;
+  }
+  if (any_bulk) {
+    code.open(fmt::format("auto interior = [&]({})", params));
+    code.line("{} acc = 0;", elem);
+    for (const auto& b : g.blocks)
+      if (b.bulk)
+        emit_block({k, g, code, "acc", false, &interior}, b);
+    code.line("{} += acc;", cell);
+    code.close(";");
+  }
+
+  // Ranges.
+  for (const auto& [v, c] : g.layout) {
+    std::string t = loop_type(nest, v);
+    code.line("const {} lo_{} = {}, hi_{} = {};", t, v, bounds[v].first, v, bounds[v].second);
+  }
+  // The interior holds only if no narrow (edge) block reaches into it.
+  std::vector<std::string> apart;
+  if (any_bulk) {
+    for (const auto& b : g.blocks) {
+      if (b.bulk)
+        continue;
+      std::map<std::string, Poly> fwd;
+      for (const auto& [v, c] : g.layout) {
+        auto it = b.shift.find(v);
+        fwd["@" + v] = it == b.shift.end() ? Poly() : it->second;
+      }
+      for (const auto& box : shift(b.domain, fwd)) {
+        Box cells;
+        for (const auto& [v, c] : g.layout)
+          cells.dims["@" + v] = box.dims.at("@" + v);
+        if (box_disjoint(cells, {interior}))
+          continue;
+        std::vector<std::string> ors;
+        for (const auto& [key, iv] : box.dims) {
+          std::string v = key.substr(1);
+          std::string t = loop_type(nest, v);
+          std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
+          ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
+          if (cells.dims.count(key)) {
+            ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
+            ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
+          }
+        }
+        apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
+      }
+    }
+    for (const auto& [v, c] : g.layout) {
+      std::string t = loop_type(nest, v);
+      const Interval& iv = interior.dims["@" + v];
+      code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
+                print_max(iv.lo, t), v);
+      code.line("{} in_hi_{} = std::max<{}>(in_lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
+                print_min(iv.hi, t), v);
+    }
+    if (!apart.empty()) {
+      code.open(fmt::format("if (!({}))", fmt::join(apart, " && ")));
+      code.line("// an edge term reaches into the interior: treat every cell as an edge");
+      for (const auto& [v, c] : g.layout)
+        code.line("in_lo_{} = in_hi_{} = hi_{};", v, v, v);
+      code.close();
+    }
+  }
+
+  // One-to-one layout over the cell box (mixed radix), else run serially.
+  std::string parallel_if;
+  bool unit_1d = g.layout.size() == 1 && g.layout[0].second.is_constant();
+  if (!unit_1d) {
+    auto order = g.layout;
+    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+      if (a.second.degree() != b.second.degree())
+        return a.second.degree() < b.second.degree();
+      return std::llabs(a.second.constant_term()) < std::llabs(b.second.constant_term());
+    });
+    std::vector<std::string> reach, conds;
+    for (size_t i = 0; i < order.size(); ++i) {
+      const auto& [v, c] = order[i];
+      std::string coef = c.is_constant() ? std::to_string(std::llabs(c.constant_term())) : c.str();
+      if (i > 0)
+        conds.push_back(fmt::format("{} < {}", fmt::join(reach, " + "), coef));
+      else if (!c.is_constant())
+        conds.push_back(fmt::format("{} != 0", coef));
+      reach.push_back(fmt::format("({} - 1) * {}", fmt::format("(hi_{} - lo_{})", v, v),
+                                  c.is_constant() ? coef : "(" + coef + ")"));
+    }
+    code.line("// cells are distinct memory (mixed-radix test): safe to run in parallel");
+    code.line("const bool parallel_ok = {};", fmt::join(conds, " && "));
+    parallel_if = " if (parallel_ok)";
+  }
+
+  // Loops: outer counters with a per-row interior test, the innermost split
+  // into edge / interior / edge.
+  size_t d = g.layout.size();
+  std::function<void(size_t, std::string)> loops = [&](size_t level, std::string outer_edge) {
+    const std::string& v = g.layout[level].first;
+    std::string t = loop_type(nest, v);
+    auto edge_args = [&]() {
+      std::vector<std::string> a;
+      for (const auto& [u, c] : g.layout)
+        a.push_back("c_" + u);
+      return fmt::format("{}", fmt::join(a, ", "));
+    };
+    if (level + 1 < d) {
+      if (level == 0)
+        code.line("#pragma omp parallel for{}", parallel_if);
+      code.open(fmt::format("for ({} c_{} = lo_{}; c_{} < hi_{}; ++c_{})", t, v, v, v, v, v));
+      std::string e = fmt::format("c_{} < in_lo_{} || c_{} >= in_hi_{}", v, v, v, v);
+      if (!any_bulk)
+        e = "true";
+      code.line("const bool edge_{} = {}{};", v, outer_edge.empty() ? "" : outer_edge + " || ", e);
+      loops(level + 1, "edge_" + v);
+      code.close();
+      return;
+    }
+    std::string args = edge_args();
+    auto loop = [&](const std::string& from, const std::string& to, const std::string& fn,
+                    bool pragma) {
+      if (pragma)
+        code.line("#pragma omp parallel for{}", parallel_if);
+      code.line("for ({} c_{} = {}; c_{} < {}; ++c_{})", t, v, from, v, to, v);
+      code.line("  {}({});", fn, args);
+    };
+    bool top = level == 0;
+    if (!any_bulk) {
+      loop("lo_" + v, "hi_" + v, "edge", top);
+      return;
+    }
+    if (!outer_edge.empty()) {
+      code.open(fmt::format("if ({})", outer_edge));
+      loop("lo_" + v, "hi_" + v, "edge", false);
+      code.line("continue;");
+      code.close();
+    }
+    loop("lo_" + v, "in_lo_" + v, "edge", false);
+    loop("in_lo_" + v, "in_hi_" + v, "interior", top);
+    loop("in_hi_" + v, "hi_" + v, "edge", false);
+  };
+  loops(0, "");
+  code.close();
+}
+
+// ---- scatter units ---------------------------------------------------------------
+
+void emit_scatter(Code& code, const ScatterUnit& u) {
+  const Nest& nest = *u.nest;
+  const Store& s = *u.store;
+  code.line("// {}_adj: reads of {} in {}[{}] at indices that cannot be inverted; scatter form, "
+            "serial",
+            u.array, u.array, s.array, print(s.index));
+  code.open("");
+  int opened = 1;
+  for (const auto& l : nest.loops) {
+    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", l.type_name, l.var, print(l.lo),
+                          l.var, print(l.hi), l.var));
+    ++opened;
+  }
+  std::map<int, LocalP> locals;
+  std::set<std::string> vars;
+  std::vector<std::string> conds;
+  for (const auto& pc : s.path) {
+    collect(pc.cond, locals, vars);
+    conds.push_back(cond_text(pc));
+  }
+  // Conditions first (they guard what the locals read), then the locals.
+  if (!conds.empty()) {
+    std::map<int, LocalP> cond_locals;
+    std::set<std::string> unused;
+    for (const auto& pc : s.path)
+      collect(pc.cond, cond_locals, unused);
+    for (const auto& [id, l] : cond_locals)
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+    code.open(fmt::format("if ({})", fmt::join(conds, " && ")));
+    ++opened;
+    locals.clear();
+    for (const auto& [id, l] : cond_locals)
+      locals[id] = l;
+    std::map<int, LocalP> body;
+    for (const auto& [r, p] : u.reads) {
+      collect(p, body, vars);
+      collect(r->ops[0], body, vars);
+    }
+    collect(s.index, body, vars);
+    for (const auto& [id, l] : body)
+      if (!cond_locals.count(id))
+        code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  } else {
+    for (const auto& [r, p] : u.reads) {
+      collect(p, locals, vars);
+      collect(r->ops[0], locals, vars);
+    }
+    collect(s.index, locals, vars);
+    for (const auto& [id, l] : locals)
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  }
+  code.line("const {} seed = {}_adj[{}];", type_spelling(s.value->type), s.array, print(s.index));
+  for (const auto& [r, p] : u.reads) {
+    code.line("// {}[{}] = f(..., {}[{}], ...): {}_adj[{}] += ∂f/∂{}[{}] · seed", s.array,
+              print(s.index), r->name, print(r->ops[0]), r->name, print(r->ops[0]), r->name,
+              print(r->ops[0]));
+    code.line("{}_adj[{}] += {};", r->name, print(r->ops[0]),
+              print(binary(Op::Mul, p, param("seed", s.value->type))));
+  }
+  for (int i = 0; i < opened; ++i)
+    code.close();
+}
+
+std::string param_list(const Kernel& k) {
+  std::vector<std::string> ps;
+  for (const auto& p : k.params) {
+    switch (p.kind) {
+    case ParamKind::In:
+      ps.push_back(fmt::format("const {}* {}", p.elem_name, p.name));
+      ps.push_back(fmt::format("{}* {}_adj", p.elem_name, p.name));
+      break;
+    case ParamKind::Out:
+      ps.push_back(fmt::format("const {}* {}_adj", p.elem_name, p.name));
+      break;
+    case ParamKind::ConstArray:
+      ps.push_back(fmt::format("const {}* {}", p.elem_name, p.name));
+      break;
+    case ParamKind::Scalar:
+      ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+      break;
+    }
+  }
+  return fmt::format("{}", fmt::join(ps, ", "));
+}
+
+void open_namespaces(Code& c, const Kernel& k) {
+  for (const auto& ns : k.namespaces)
+    c.raw(fmt::format("namespace {} {{\n", ns));
+}
+void close_namespaces(Code& c, const Kernel& k) {
+  for (auto it = k.namespaces.rbegin(); it != k.namespaces.rend(); ++it)
+    c.raw(fmt::format("}} // namespace {}\n", *it));
+}
+
+void emit_kernel(Code& code, const AdjointPlan& plan) {
+  const Kernel& k = *plan.kernel;
+  open_namespaces(code, k);
+  code.line("// Adjoint of {} ({}:{}).", k.name, k.file, k.pos.line);
+  code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  for (const auto& p : k.params) {
+    if (p.kind != ParamKind::In)
+      continue;
+    for (const auto& g : plan.gathers)
+      if (g.array == p.name)
+        emit_gather(code, k, g);
+    for (const auto& u : plan.scatters)
+      if (u.array == p.name)
+        emit_scatter(code, u);
+  }
+  code.close();
+  close_namespaces(code, k);
+}
+
+// clang-format (LLVM style, 100 columns) over the generated text, so long
+// expressions wrap the way a person would wrap them.
+std::string formatted(const std::string& code, const std::string& name) {
+  clang::format::FormatStyle style = clang::format::getLLVMStyle();
+  style.ColumnLimit = 100;
+  style.SortIncludes = clang::format::FormatStyle::SI_Never;
+  auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
+  auto out = clang::tooling::applyAllReplacements(code, repl);
+  if (!out) {
+    llvm::consumeError(out.takeError());
+    return code;
+  }
+  return *out;
+}
+
+const char* kBanner = "// Generated by dpgen from {} -- do not edit; edit the kernel and rebuild.\n";
+
+} // namespace
+
+std::string adjoint_signature(const Kernel& k) {
+  return fmt::format("void {}_adjoint({})", k.name, param_list(k));
+}
+
+EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& source_name,
+                      const std::string& stem) {
+  EmittedFile out;
+  Code h;
+  h.raw(fmt::format(kBanner, source_name));
+  h.raw("//\n"
+        "// Reverse-mode (vector-Jacobian product) kernels. For a kernel\n"
+        "// f(in..., out..., constants...), f_adjoint takes the same parameters in order,\n"
+        "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
+        "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
+        "#pragma once\n\n");
+  for (const auto& p : plans) {
+    open_namespaces(h, *p.kernel);
+    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, p.kernel->file,
+                      p.kernel->pos.line));
+    h.raw(adjoint_signature(*p.kernel) + ";\n");
+    close_namespaces(h, *p.kernel);
+    h.raw("\n");
+  }
+  out.header = formatted(h.str(), stem + "_adjoint.hpp");
+
+  Code c;
+  c.raw(fmt::format(kBanner, source_name));
+  c.raw("//\n"
+        "// Gather form: each adjoint cell is written by exactly one loop iteration, which\n"
+        "// sums the contributions of every forward iteration that read that cell, each\n"
+        "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
+        "// loop; edge cells check each term's iteration domain.\n");
+  c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
+  c.raw("#include <algorithm>\n#include <cmath>\n#include <limits>\n\n");
+  for (const auto& p : plans) {
+    emit_kernel(c, p);
+    c.raw("\n");
+  }
+  out.source = formatted(c.str(), stem + "_adjoint.cpp");
+  return out;
+}
+
+} // namespace dpgen

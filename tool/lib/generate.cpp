@@ -1,0 +1,74 @@
+// The pipeline driver: all inputs are analysed before anything is written.
+#include "generate.hpp"
+
+#include "emit.hpp"
+#include "output.hpp"
+#include "schedule.hpp"
+
+#include <fmt/format.h>
+#include <llvm/Support/FileSystem.h>
+#include <llvm/Support/Path.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <set>
+
+namespace dpgen {
+
+int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts) {
+  bool ok = true;
+  std::vector<PendingFile> pending;
+  std::set<std::string> stems;
+  for (const auto& input : inputs) {
+    std::vector<Kernel> kernels;
+    if (!llvm::sys::fs::exists(input)) {
+      llvm::errs() << input << ": error: no such file\n";
+      ok = false;
+      continue;
+    }
+    if (!lower_file(input, opts.frontend, kernels)) {
+      ok = false;
+      continue;
+    }
+    std::vector<AdjointPlan> plans;
+    for (const auto& k : kernels) {
+      plans.push_back(schedule(k));
+      for (const auto& r : plans.back().remarks)
+        llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,
+                                    r.text);
+    }
+    std::string stem = llvm::sys::path::stem(input).str();
+    if (!stems.insert(stem).second) {
+      llvm::errs() << input << ": error: another input has the same name '" << stem
+                   << "'; generated files would collide\n";
+      ok = false;
+      continue;
+    }
+    EmittedFile f = emit_file(plans, llvm::sys::path::filename(input).str(), stem);
+    llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
+    llvm::sys::path::append(hpp, stem + "_adjoint.hpp");
+    llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
+    pending.push_back({std::string(hpp), f.header});
+    pending.push_back({std::string(cpp), f.source});
+  }
+  if (!ok) {
+    llvm::errs() << "dpgen: errors found; no file written\n";
+    return 1;
+  }
+  if (auto ec = llvm::sys::fs::create_directories(opts.out_dir)) {
+    llvm::errs() << opts.out_dir << ": error: cannot create output directory: " << ec.message()
+                 << "\n";
+    return 1;
+  }
+  std::string error;
+  int written = 0;
+  if (!write_if_changed(pending, error, &written)) {
+    llvm::errs() << "error: " << error << "\n";
+    return 1;
+  }
+  if (opts.verbose)
+    llvm::errs() << fmt::format("dpgen: {} file(s) written, {} unchanged\n", written,
+                                pending.size() - written);
+  return 0;
+}
+
+} // namespace dpgen

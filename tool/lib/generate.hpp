@@ -1,0 +1,23 @@
+// The whole pipeline for a set of kernel files: find -> lower -> derive ->
+// schedule -> emit, then write. Used by the dpgen driver and by tests.
+#pragma once
+
+#include "frontend.hpp"
+
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+struct GenerateOptions {
+  FrontendOptions frontend;
+  std::string out_dir;
+  bool verbose = false; // report which files were written / unchanged
+};
+
+/// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} for each input. If any input
+/// has an error, nothing is written at all. Diagnostics go to stderr.
+/// Returns the process exit code (0 on success).
+int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts);
+
+} // namespace dpgen

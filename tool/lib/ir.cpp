@@ -1,0 +1,246 @@
+// Constructors for IR expressions, with the constant folding that keeps
+// generated derivatives readable.
+#include "ir.hpp"
+
+#include <cmath>
+
+namespace dpgen {
+
+namespace {
+
+std::shared_ptr<Expr> node(Op op, Type t, std::vector<ExprP> ops = {}) {
+  auto e = std::make_shared<Expr>();
+  e->op = op;
+  e->type = t;
+  e->ops = std::move(ops);
+  return e;
+}
+
+bool is_bool_op(Op op) {
+  switch (op) {
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+    return true;
+  default:
+    return false;
+  }
+}
+
+Type promote(Type a, Type b) {
+  if (a == Type::Double || b == Type::Double)
+    return Type::Double;
+  if (a == Type::Float || b == Type::Float)
+    return Type::Float;
+  return Type::Int;
+}
+
+bool const_value(const ExprP& e, double& v) {
+  if (!e)
+    return false;
+  if (e->op == Op::IntConst) {
+    v = static_cast<double>(e->ival);
+    return true;
+  }
+  if (e->op == Op::RealConst) {
+    v = e->rval;
+    return true;
+  }
+  return false;
+}
+
+} // namespace
+
+std::string type_spelling(Type t) {
+  switch (t) {
+  case Type::Int:
+    return "int";
+  case Type::Float:
+    return "float";
+  case Type::Double:
+    return "double";
+  case Type::Bool:
+    return "bool";
+  }
+  return "?";
+}
+
+ExprP int_const(long long v) {
+  auto e = node(Op::IntConst, Type::Int);
+  e->ival = v;
+  return e;
+}
+
+ExprP real_const(double v, Type t, std::string text) {
+  auto e = node(Op::RealConst, t);
+  e->rval = v;
+  e->text = std::move(text);
+  return e;
+}
+
+ExprP param(const std::string& name, Type t) {
+  auto e = node(Op::Param, t);
+  e->name = name;
+  return e;
+}
+
+ExprP loop_var(const std::string& name) {
+  auto e = node(Op::LoopVar, Type::Int);
+  e->name = name;
+  return e;
+}
+
+ExprP local_ref(const LocalP& l) {
+  auto e = node(Op::Local, l->def->type);
+  e->local = l;
+  e->name = l->name;
+  return e;
+}
+
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos) {
+  auto e = node(Op::Read, t, {std::move(index)});
+  e->name = array;
+  e->pos = std::move(pos);
+  return e;
+}
+
+bool is_const(const ExprP& e, double v) {
+  double c;
+  return const_value(e, c) && c == v;
+}
+
+ExprP unary(Op op, ExprP a) {
+  if (op == Op::Neg) {
+    if (a->op == Op::Neg)
+      return a->ops[0]; // -(-x) = x
+    if (a->op == Op::IntConst)
+      return int_const(-a->ival);
+    if (a->op == Op::RealConst && a->rval == 0)
+      return a;
+    return node(Op::Neg, a->type, {a});
+  }
+  if (op == Op::Not && a->op == Op::Not)
+    return a->ops[0];
+  return node(op, op == Op::Not ? Type::Bool : a->type, {a});
+}
+
+ExprP binary(Op op, ExprP a, ExprP b) {
+  Type t = is_bool_op(op) ? Type::Bool : promote(a->type, b->type);
+  if (a->op == Op::IntConst && b->op == Op::IntConst) {
+    long long x = a->ival, y = b->ival;
+    switch (op) {
+    case Op::Add:
+      return int_const(x + y);
+    case Op::Sub:
+      return int_const(x - y);
+    case Op::Mul:
+      return int_const(x * y);
+    default:
+      break;
+    }
+  }
+  switch (op) {
+  case Op::Add:
+    if (is_const(a, 0) && a->type == t)
+      return b;
+    if (is_const(b, 0) && b->type == t)
+      return a;
+    if (b->op == Op::Neg)
+      return binary(Op::Sub, a, b->ops[0]); // a + (-b) = a - b
+    break;
+  case Op::Sub:
+    if (is_const(b, 0) && a->type == t)
+      return a;
+    if (is_const(a, 0) && b->type == t)
+      return unary(Op::Neg, b);
+    if (b->op == Op::Neg)
+      return binary(Op::Add, a, b->ops[0]); // a - (-b) = a + b
+    break;
+  case Op::Mul:
+    if (is_const(a, 1) && b->type == t)
+      return b;
+    if (is_const(b, 1) && a->type == t)
+      return a;
+    if (is_const(a, -1) && b->type == t)
+      return unary(Op::Neg, b);
+    if (is_const(b, -1) && a->type == t)
+      return unary(Op::Neg, a);
+    if (a->op == Op::Neg && b->op == Op::Neg)
+      return binary(Op::Mul, a->ops[0], b->ops[0]);
+    if (a->op == Op::Neg)
+      return unary(Op::Neg, binary(Op::Mul, a->ops[0], b));
+    if (b->op == Op::Neg)
+      return unary(Op::Neg, binary(Op::Mul, a, b->ops[0]));
+    break;
+  case Op::Div:
+    if (is_const(b, 1) && a->type == t)
+      return a;
+    if (a->op == Op::Neg)
+      return unary(Op::Neg, binary(Op::Div, a->ops[0], b));
+    break;
+  default:
+    break;
+  }
+  return node(op, t, {std::move(a), std::move(b)});
+}
+
+ExprP select(ExprP c, ExprP a, ExprP b) {
+  if (same(a, b))
+    return a;
+  Type t = a->type == b->type ? a->type : promote(a->type, b->type);
+  return node(Op::Select, t, {std::move(c), std::move(a), std::move(b)});
+}
+
+ExprP call(const std::string& fn, std::vector<ExprP> args, Type t) {
+  auto e = node(Op::Call, t, std::move(args));
+  e->name = fn;
+  return e;
+}
+
+ExprP cast(ExprP a, Type t) {
+  if (a->type == t)
+    return a;
+  if (a->op == Op::IntConst && is_real(t))
+    return real_const(static_cast<double>(a->ival), t);
+  if (a->op == Op::RealConst && is_real(t))
+    return real_const(a->rval, t, t == Type::Double ? a->text : "");
+  return node(Op::Cast, t, {std::move(a)});
+}
+
+bool same(const ExprP& a, const ExprP& b) {
+  if (a == b)
+    return true;
+  if (!a || !b)
+    return false;
+  if (a->op != b->op || a->type != b->type || a->ops.size() != b->ops.size())
+    return false;
+  switch (a->op) {
+  case Op::IntConst:
+    return a->ival == b->ival;
+  case Op::RealConst:
+    return a->rval == b->rval;
+  case Op::Local:
+    return a->local == b->local;
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Read:
+  case Op::Call:
+    if (a->name != b->name)
+      return false;
+    break;
+  default:
+    break;
+  }
+  for (size_t i = 0; i < a->ops.size(); ++i)
+    if (!same(a->ops[i], b->ops[i]))
+      return false;
+  return true;
+}
+
+} // namespace dpgen

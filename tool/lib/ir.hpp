@@ -1,0 +1,152 @@
+// The kernel IR: what the lowering phase makes of a DPGEN_KERNEL function and
+// what every later phase (derive, schedule, emit) works on. Expressions are
+// immutable DAG nodes; a kernel is a list of loop nests, each a list of stores
+// with the path condition under which they execute.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+/// A position in the user's source, for diagnostics.
+struct SourcePos {
+  std::string file;
+  unsigned line = 0;
+  unsigned col = 0;
+};
+
+enum class Type { Int, Float, Double, Bool };
+
+inline bool is_real(Type t) { return t == Type::Float || t == Type::Double; }
+
+enum class Op {
+  IntConst,  // ival
+  RealConst, // rval, text = spelling
+  Param,     // scalar parameter `name`
+  LoopVar,   // loop induction variable `name`
+  Local,     // a named local value: `local`
+  Read,      // name[ops[0]]
+  Neg,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Rem,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Eq,
+  Ne,
+  And,
+  Or,
+  Not,
+  Select, // ops[0] ? ops[1] : ops[2]
+  Call,   // name(ops...), name is one of the supported math functions
+  Cast,   // conversion of ops[0] to `type`
+};
+
+struct Expr;
+using ExprP = std::shared_ptr<const Expr>;
+
+/// A local variable of the kernel after SSA renaming: every assignment makes a
+/// new Local, so a Local has exactly one definition.
+struct LocalVar {
+  std::string name;      // unique within the kernel
+  std::string type_name; // as spelled in the emitted code ("double", "int")
+  ExprP def;
+  int id = 0;               // creation order; definitions only use lower ids
+  bool kernel_level = false; // defined outside every loop (depends on params only)
+};
+using LocalP = std::shared_ptr<const LocalVar>;
+
+struct Expr {
+  Op op;
+  Type type;
+  std::vector<ExprP> ops;
+  long long ival = 0;
+  double rval = 0;
+  std::string name; // Param, LoopVar, Read (array), Call (function)
+  std::string text; // RealConst spelling
+  LocalP local;     // Local
+  SourcePos pos;    // Read: where it is in the source (for remarks)
+};
+
+// Constructors. They fold the trivial cases (x*1, x+0, -(-x), constants) so
+// derivatives come out readable; a null ExprP stands for an exact zero in the
+// derivative code (see derive.hpp).
+ExprP int_const(long long v);
+ExprP real_const(double v, Type t, std::string text = "");
+ExprP param(const std::string& name, Type t);
+ExprP loop_var(const std::string& name);
+ExprP local_ref(const LocalP& l);
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos);
+ExprP unary(Op op, ExprP a);
+ExprP binary(Op op, ExprP a, ExprP b);
+ExprP select(ExprP c, ExprP a, ExprP b);
+ExprP call(const std::string& fn, std::vector<ExprP> args, Type t);
+ExprP cast(ExprP a, Type t);
+
+bool is_const(const ExprP& e, double v);
+/// Structural equality (Locals compare by identity).
+bool same(const ExprP& a, const ExprP& b);
+
+enum class ParamKind { In, Out, ConstArray, Scalar };
+
+struct Param {
+  std::string name;
+  ParamKind kind;
+  Type elem;             // element type of an array, type of a scalar
+  std::string elem_name; // "double", "float", "int", ...
+  std::string spelling;  // the parameter's declaration as written in the source
+};
+
+struct Loop {
+  std::string var;
+  std::string type_name; // "int", "long", ...
+  ExprP lo, hi;          // lo <= var < hi; both depend on parameters only
+};
+
+/// One condition on a store's path: `cond` held (positive) or did not.
+struct PathCond {
+  ExprP cond;
+  bool positive;
+};
+
+struct Store {
+  std::string array;
+  ExprP index;
+  ExprP value;
+  std::vector<PathCond> path;
+  SourcePos pos;
+};
+
+struct Nest {
+  std::vector<Loop> loops; // outermost first; may be empty for straight-line code
+  std::vector<Store> stores;
+};
+
+struct Kernel {
+  std::string name;
+  std::vector<std::string> namespaces;
+  std::vector<Param> params;
+  std::vector<LocalP> kernel_locals;
+  std::vector<PathCond> guards; // `if (...) return;` at kernel level, negated
+  std::vector<Nest> nests;
+  SourcePos pos;
+  std::string file; // source file as given on the command line
+
+  const Param* find_param(const std::string& n) const {
+    for (const auto& p : params)
+      if (p.name == n)
+        return &p;
+    return nullptr;
+  }
+};
+
+std::string type_spelling(Type t);
+
+} // namespace dpgen

@@ -1,0 +1,1127 @@
+// Find and lower (phases 1 and 2): DPGEN_KERNEL functions in the Clang AST
+// become kernel IR. Every construct outside the subset is reported at its
+// location and the kernel is dropped; nothing is guessed.
+#include "frontend.hpp"
+
+#include "affine.hpp"
+
+#include <clang/AST/ASTConsumer.h>
+#include <clang/AST/ASTContext.h>
+#include <clang/AST/Attr.h>
+#include <clang/AST/Expr.h>
+#include <clang/AST/ExprCXX.h>
+#include <clang/AST/Stmt.h>
+#include <clang/AST/StmtCXX.h>
+#include <clang/ASTMatchers/ASTMatchFinder.h>
+#include <clang/ASTMatchers/ASTMatchers.h>
+#include <clang/Basic/SourceManager.h>
+#include <clang/Frontend/CompilerInstance.h>
+#include <clang/Frontend/FrontendActions.h>
+#include <clang/Lex/Lexer.h>
+#include <clang/Tooling/Tooling.h>
+#include <fmt/format.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <map>
+#include <set>
+
+namespace dpgen {
+
+namespace {
+
+using namespace clang;
+using namespace clang::ast_matchers;
+
+constexpr const char* kSupportedCalls =
+    "std::min, std::max, std::abs/fabs, sqrt, exp, log, sin, cos, tanh, pow, "
+    "floor, ceil";
+
+// The math functions the subset accepts, by their unqualified name; float
+// variants (sqrtf, ...) map to the same rule.
+std::string math_function(const FunctionDecl* f) {
+  std::string n = f->getNameAsString();
+  static const std::set<std::string> known = {
+      "min", "max", "fmin", "fmax", "abs", "fabs", "sqrt", "exp", "log",
+      "sin", "cos", "tanh", "pow", "floor", "ceil"};
+  if (known.count(n))
+    return n;
+  if (!n.empty() && n.back() == 'f' && known.count(n.substr(0, n.size() - 1)))
+    return n.substr(0, n.size() - 1);
+  return "";
+}
+
+std::string annotation(const Decl* d) {
+  for (const auto* a : d->specific_attrs<AnnotateAttr>()) {
+    llvm::StringRef s = a->getAnnotation();
+    if (s.starts_with("dpgen."))
+      return s.str();
+  }
+  return "";
+}
+
+// What a name in the kernel body refers to.
+struct Binding {
+  enum Kind { ScalarParam, ArrayParam, LoopVar, Value } kind;
+  ExprP value;              // Value: current SSA value (null: uninitialised)
+  const Param* param = nullptr;
+  bool kernel_level = false; // Value defined outside every loop
+};
+
+// Thrown to abandon a kernel after its diagnostic has been reported.
+struct Rejected {};
+
+enum class Escape { None, Always };
+
+class Lowerer {
+public:
+  Lowerer(ASTContext& ctx, const FunctionDecl* fn) : ctx_(ctx), sm_(ctx.getSourceManager()), fn_(fn) {}
+
+  bool run(Kernel& out) {
+    try {
+      header();
+      body(fn_->getBody());
+      check_outputs();
+    } catch (const Rejected&) {
+      return false;
+    }
+    out = std::move(k_);
+    return true;
+  }
+
+private:
+  ASTContext& ctx_;
+  SourceManager& sm_;
+  const FunctionDecl* fn_;
+  Kernel k_;
+  std::map<const VarDecl*, Binding> env_;
+  std::vector<PathCond> path_;
+  std::vector<std::shared_ptr<Loop>> loops_;
+  std::map<std::vector<const Loop*>, size_t> nest_index_;
+  std::set<std::string> local_names_;
+  int next_local_id_ = 0;
+
+  // ---- diagnostics -------------------------------------------------------
+
+  [[noreturn]] void fail(SourceLocation loc, const std::string& msg) {
+    auto& d = ctx_.getDiagnostics();
+    unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
+    d.Report(loc, id) << msg;
+    throw Rejected{};
+  }
+
+  SourcePos pos(SourceLocation loc) const {
+    PresumedLoc p = sm_.getPresumedLoc(sm_.getExpansionLoc(loc));
+    if (p.isInvalid())
+      return {};
+    return {p.getFilename(), p.getLine(), p.getColumn()};
+  }
+
+  std::string text(const Stmt* s) const {
+    return Lexer::getSourceText(CharSourceRange::getTokenRange(s->getSourceRange()), sm_,
+                                ctx_.getLangOpts())
+        .str();
+  }
+
+  // ---- types ---------------------------------------------------------------
+
+  std::optional<Type> scalar_type(QualType q) const {
+    q = q.getCanonicalType().getUnqualifiedType();
+    if (q->isBooleanType())
+      return Type::Bool;
+    if (q->isIntegerType() || q->isEnumeralType())
+      return Type::Int;
+    if (q->isSpecificBuiltinType(BuiltinType::Float))
+      return Type::Float;
+    if (q->isSpecificBuiltinType(BuiltinType::Double))
+      return Type::Double;
+    return std::nullopt;
+  }
+
+  Type type_of(const clang::Expr* e) {
+    auto t = scalar_type(e->getType());
+    if (!t)
+      fail(e->getExprLoc(), fmt::format("expression of type '{}' is outside the kernel subset "
+                                        "(only int, float, double and bool values)",
+                                        e->getType().getAsString()));
+    return *t;
+  }
+
+  // ---- the function header -----------------------------------------------
+
+  void header() {
+    if (isa<CXXMethodDecl>(fn_))
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function");
+    if (fn_->isTemplated() || fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate)
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must not be a template; write one kernel per "
+                               "element type");
+    if (!fn_->getReturnType()->isVoidType())
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays");
+    if (fn_->isVariadic())
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic");
+
+    k_.name = fn_->getNameAsString();
+    k_.pos = pos(fn_->getLocation());
+    for (const DeclContext* dc = fn_->getDeclContext(); dc; dc = dc->getParent())
+      if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+        k_.namespaces.insert(k_.namespaces.begin(), ns->getNameAsString());
+
+    bool any_in = false, any_out = false;
+    for (const ParmVarDecl* p : fn_->parameters()) {
+      Param out;
+      out.name = p->getNameAsString();
+      if (out.name.empty())
+        fail(p->getLocation(), "every kernel parameter needs a name");
+      std::string ann = annotation(p);
+      QualType q = p->getType();
+      if (q->isReferenceType())
+        fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value "
+                                           "and arrays as pointers",
+                                           out.name));
+      if (q->isPointerType()) {
+        QualType elem = q->getPointeeType();
+        auto et = scalar_type(elem);
+        if (!et || *et == Type::Bool)
+          fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
+                                             "float, double or an integer type",
+                                             out.name, elem.getAsString()));
+        out.elem = *et;
+        out.elem_name = elem.getUnqualifiedType().getAsString();
+        if (ann == "dpgen.in") {
+          if (!is_real(*et))
+            fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
+                                               "double, not '{}'",
+                                               out.name, elem.getAsString()));
+          out.kind = ParamKind::In;
+          any_in = true;
+        } else if (ann == "dpgen.out") {
+          if (!is_real(*et))
+            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
+                                               "double, not '{}'",
+                                               out.name, elem.getAsString()));
+          if (elem.isConstQualified())
+            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name));
+          out.kind = ParamKind::Out;
+          any_out = true;
+        } else {
+          out.kind = ParamKind::ConstArray;
+        }
+      } else {
+        auto t = scalar_type(q);
+        if (!t)
+          fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
+                                             "subset",
+                                             out.name, q.getAsString()));
+        if (!ann.empty())
+          fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
+                                             "parameters (pass a one-element array to "
+                                             "differentiate a scalar)",
+                                             out.name));
+        out.kind = ParamKind::Scalar;
+        out.elem = *t;
+        out.elem_name = q.getUnqualifiedType().getAsString();
+      }
+      out.spelling = p->getType().getAsString();
+      k_.params.push_back(out);
+    }
+    if (!any_in)
+      fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
+                                           "nothing to differentiate",
+                                           k_.name));
+    if (!any_out)
+      fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
+    // Bind parameters (after the vector is complete, so pointers stay valid).
+    for (size_t i = 0; i < k_.params.size(); ++i) {
+      const Param& p = k_.params[i];
+      Binding b;
+      b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
+      b.param = &p;
+      env_[fn_->getParamDecl(i)] = b;
+    }
+    // Mixed precision between inputs and outputs is almost always a mistake.
+    std::optional<Type> real;
+    for (const auto& p : k_.params)
+      if (p.kind == ParamKind::In || p.kind == ParamKind::Out) {
+        if (real && *real != p.elem)
+          fail(fn_->getLocation(), fmt::format("kernel '{}' mixes float and double arrays "
+                                               "('{}' is {}); use one precision for all "
+                                               "DPGEN_IN and DPGEN_OUT arrays",
+                                               k_.name, p.name, type_spelling(p.elem)));
+        real = p.elem;
+      }
+  }
+
+  // ---- statements ----------------------------------------------------------
+
+  void body(const Stmt* s) {
+    if (!s)
+      fail(fn_->getLocation(), "kernel has no body");
+    if (lower(s) == Escape::Always && !loops_.empty())
+      fail(s->getBeginLoc(), "unreachable");
+  }
+
+  Escape lower(const Stmt* s) {
+    if (const auto* c = dyn_cast<CompoundStmt>(s)) {
+      for (const Stmt* child : c->body()) {
+        if (lower(child) == Escape::Always) {
+          if (child != c->body_back())
+            fail(c->body_back()->getBeginLoc(), "statement after 'continue'/'return' is never "
+                                                "executed");
+          return Escape::Always;
+        }
+      }
+      return Escape::None;
+    }
+    if (isa<NullStmt>(s))
+      return Escape::None;
+    if (const auto* d = dyn_cast<DeclStmt>(s)) {
+      for (const Decl* decl : d->decls())
+        declare(decl);
+      return Escape::None;
+    }
+    if (const auto* f = dyn_cast<ForStmt>(s)) {
+      for_loop(f);
+      return Escape::None;
+    }
+    if (const auto* i = dyn_cast<IfStmt>(s))
+      return if_stmt(i);
+    if (isa<ContinueStmt>(s)) {
+      if (loops_.empty())
+        fail(s->getBeginLoc(), "'continue' outside a loop");
+      return Escape::Always;
+    }
+    if (const auto* r = dyn_cast<ReturnStmt>(s)) {
+      if (!loops_.empty())
+        fail(s->getBeginLoc(), "'return' inside a loop is outside the kernel subset; use "
+                               "'continue' or an if/else");
+      if (r->getRetValue())
+        fail(s->getBeginLoc(), "a kernel returns nothing");
+      return Escape::Always;
+    }
+    if (const auto* e = dyn_cast<clang::Expr>(s)) {
+      expr_stmt(e);
+      return Escape::None;
+    }
+    if (isa<WhileStmt>(s) || isa<DoStmt>(s))
+      fail(s->getBeginLoc(), "while/do loops are outside the kernel subset: write a for loop "
+                             "with an integer counter and bounds that depend on parameters only");
+    if (isa<GotoStmt>(s) || isa<IndirectGotoStmt>(s) || isa<LabelStmt>(s))
+      fail(s->getBeginLoc(), "'goto' is outside the kernel subset");
+    if (isa<BreakStmt>(s))
+      fail(s->getBeginLoc(), "'break' is outside the kernel subset: loop bounds must fix the "
+                             "iteration space");
+    if (isa<SwitchStmt>(s))
+      fail(s->getBeginLoc(), "'switch' is outside the kernel subset; use if/else on indices");
+    if (isa<CXXForRangeStmt>(s))
+      fail(s->getBeginLoc(), "range-based for is outside the kernel subset; use an integer "
+                             "counter");
+    fail(s->getBeginLoc(), fmt::format("statement '{}' is outside the kernel subset",
+                                       s->getStmtClassName()));
+  }
+
+  // `if (c) A else B`; a branch ending in continue/return puts the negated
+  // condition on the path of everything that follows.
+  Escape if_stmt(const IfStmt* s) {
+    if (s->getInit() || s->getConditionVariable())
+      fail(s->getBeginLoc(), "if with an initializer or a declaration is outside the subset");
+    ExprP c = cond(s->getCond());
+    size_t depth = path_.size();
+    auto env_before = env_;
+    int first_local = next_local_id_;
+
+    path_.push_back({c, true});
+    Escape then_e = lower(s->getThen());
+    path_.resize(depth);
+    auto env_then = env_;
+    int after_then = next_local_id_;
+
+    env_ = env_before;
+    Escape else_e = Escape::None;
+    if (s->getElse()) {
+      path_.push_back({c, false});
+      else_e = lower(s->getElse());
+      path_.resize(depth);
+    }
+    auto env_else = env_;
+    int after_else = next_local_id_;
+
+    // Merge values assigned in the branches: v = c ? v_then : v_else. A
+    // branch that escaped contributes nothing to what follows.
+    for (auto& [decl, b] : env_) {
+      if (b.kind != Binding::Value)
+        continue;
+      ExprP t = env_then[decl].value, e = env_else[decl].value;
+      if (then_e == Escape::Always)
+        t = e;
+      if (else_e == Escape::Always)
+        e = t;
+      if (t == e) {
+        b.value = t;
+        continue;
+      }
+      if (!t || !e) {
+        b.value = nullptr; // assigned in one branch only: uninitialised after
+        continue;
+      }
+      // Values made inside a branch are inlined into the select, so nothing
+      // of a branch is evaluated where the branch does not run.
+      t = inline_locals(t, first_local, after_then);
+      e = inline_locals(e, after_then, after_else);
+      b.value = make_local(decl->getNameAsString(), decl, select(c, t, e));
+    }
+    if (then_e == Escape::Always && else_e == Escape::Always)
+      return Escape::Always;
+    if (then_e == Escape::Always)
+      path_.push_back({c, false});
+    if (else_e == Escape::Always)
+      path_.push_back({c, true});
+    return Escape::None;
+  }
+
+  ExprP inline_locals(const ExprP& e, int from, int to) {
+    if (!e)
+      return e;
+    if (e->op == Op::Local) {
+      if (e->local->id >= from && e->local->id < to)
+        return inline_locals(e->local->def, from, to);
+      return e;
+    }
+    bool changed = false;
+    std::vector<ExprP> ops;
+    for (const auto& o : e->ops) {
+      ops.push_back(inline_locals(o, from, to));
+      changed = changed || ops.back() != o;
+    }
+    if (!changed)
+      return e;
+    auto copy = std::make_shared<Expr>(*e);
+    copy->ops = std::move(ops);
+    return copy;
+  }
+
+  ExprP make_local(const std::string& base, const VarDecl* decl, ExprP def) {
+    auto l = std::make_shared<LocalVar>();
+    std::string name = base;
+    for (int n = 1; local_names_.count(name) || is_reserved(name); ++n)
+      name = fmt::format("{}_{}", base, n);
+    local_names_.insert(name);
+    l->name = name;
+    l->def = def;
+    l->id = next_local_id_++;
+    l->kernel_level = loops_.empty();
+    if (def->type == Type::Int)
+      l->type_name = decl && decl->getType()->isIntegerType()
+                         ? decl->getType().getUnqualifiedType().getAsString()
+                         : "int";
+    else
+      l->type_name = type_spelling(def->type);
+    if (l->kernel_level)
+      k_.kernel_locals.push_back(l);
+    return local_ref(l);
+  }
+
+  bool is_reserved(const std::string& name) const {
+    if (k_.find_param(name))
+      return true;
+    for (const auto& l : loops_)
+      if (l->var == name)
+        return true;
+    return false;
+  }
+
+  void declare(const Decl* d) {
+    const auto* v = dyn_cast<VarDecl>(d);
+    if (!v)
+      fail(d->getLocation(), "only variable declarations are allowed in a kernel");
+    if (v->isStaticLocal() || v->hasGlobalStorage())
+      fail(v->getLocation(), fmt::format("static variable '{}' is global state, outside the "
+                                         "kernel subset",
+                                         v->getNameAsString()));
+    auto t = scalar_type(v->getType());
+    if (!t || v->getType()->isReferenceType())
+      fail(v->getLocation(), fmt::format("local '{}' of type '{}' is outside the kernel subset "
+                                         "(int, float, double or bool values only)",
+                                         v->getNameAsString(), v->getType().getAsString()));
+    Binding b;
+    b.kind = Binding::Value;
+    b.kernel_level = loops_.empty();
+    if (const clang::Expr* init = v->getInit()) {
+      ExprP e = expr(init);
+      b.value = make_local(v->getNameAsString(), v, cast(e, *t));
+    }
+    env_[v] = b;
+  }
+
+  void for_loop(const ForStmt* f) {
+    // init: `int i = lo`
+    const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit());
+    if (!ds || !ds->isSingleDecl())
+      fail(f->getBeginLoc(), "a kernel loop must declare its counter: 'for (int i = lo; i < hi; "
+                             "++i)'");
+    const auto* var = dyn_cast<VarDecl>(ds->getSingleDecl());
+    if (!var || !var->getInit())
+      fail(f->getBeginLoc(), "loop counter needs an initial value");
+    QualType vt = var->getType().getCanonicalType();
+    if (!vt->isIntegerType() || vt->isUnsignedIntegerType() || vt->isBooleanType())
+      fail(var->getLocation(), fmt::format("loop counter '{}' must have a signed integer type "
+                                           "(adjoint loops shift indices below zero)",
+                                           var->getNameAsString()));
+    ExprP init = expr(var->getInit());
+    // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`
+    const auto* c = dyn_cast_or_null<BinaryOperator>(f->getCond());
+    const auto* lhs = c ? dyn_cast<DeclRefExpr>(c->getLHS()->IgnoreParenImpCasts()) : nullptr;
+    if (!c || !lhs || lhs->getDecl() != var)
+      fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
+           fmt::format("loop condition must compare the counter '{}' with a bound: "
+                       "'{} < hi'",
+                       var->getNameAsString(), var->getNameAsString()));
+    ExprP bound = expr(c->getRHS());
+    // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
+    int step = loop_step(f->getInc(), var);
+    if (step == 0)
+      fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
+           "loop increment must be ++i, i++ or i += 1 (or --i for a loop counting down)");
+    ExprP lo, hi;
+    ExprP one = int_const(1);
+    switch (c->getOpcode()) {
+    case BO_LT:
+      lo = init, hi = bound;
+      break;
+    case BO_LE:
+      lo = init, hi = binary(Op::Add, bound, one);
+      break;
+    case BO_GT:
+      lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init, one);
+      break;
+    case BO_GE:
+      lo = bound, hi = binary(Op::Add, init, one);
+      break;
+    default:
+      fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=");
+    }
+    if ((step > 0) != (c->getOpcode() == BO_LT || c->getOpcode() == BO_LE))
+      fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition");
+    for (const auto& [what, e, loc] :
+         {std::tuple{"lower", lo, var->getInit()->getBeginLoc()},
+          std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
+      auto p = to_poly(e);
+      if (!p)
+        fail(loc, fmt::format("{} bound of loop '{}' must be a polynomial in the integer "
+                              "parameters",
+                              what, var->getNameAsString()));
+      for (const auto& [m, coef] : p->terms())
+        for (const auto& s : m)
+          if (s[0] == '@')
+            fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}': only "
+                                  "rectangular loop nests are in the subset",
+                                  what, var->getNameAsString(), s.substr(1)));
+    }
+    if (loops_.size() == 3)
+      fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset");
+    if (is_reserved(var->getNameAsString()) || local_names_.count(var->getNameAsString()))
+      fail(var->getLocation(), fmt::format("loop counter '{}' reuses a name already in the "
+                                           "kernel",
+                                           var->getNameAsString()));
+
+    auto loop = std::make_shared<Loop>();
+    loop->var = var->getNameAsString();
+    loop->type_name = var->getType().getUnqualifiedType().getAsString();
+    loop->lo = lo;
+    loop->hi = hi;
+    Binding b;
+    b.kind = Binding::LoopVar;
+    b.value = loop_var(loop->var);
+    env_[var] = b;
+
+    check_not_assigned(f->getBody(), var);
+    size_t depth = path_.size();
+    auto env_before = env_;
+    loops_.push_back(loop);
+    Escape e = lower(f->getBody());
+    (void)e; // a body ending in continue is fine
+    loops_.pop_back();
+    path_.resize(depth);
+    // Values assigned inside a loop body do not flow out of it (no
+    // loop-carried scalars in the subset).
+    for (auto& [decl, bnd] : env_) {
+      auto it = env_before.find(decl);
+      if (it != env_before.end() && bnd.kind == Binding::Value && it->second.value != bnd.value &&
+          decl->getDeclContext() == fn_)
+        loop_carried_ = decl;
+    }
+    env_ = env_before;
+    if (loop_carried_)
+      fail(loop_carried_->getLocation(),
+           fmt::format("'{}' is assigned inside a loop and declared outside it: a value carried "
+                       "from one iteration to the next is outside the kernel subset",
+                       loop_carried_->getNameAsString()));
+  }
+  const VarDecl* loop_carried_ = nullptr;
+
+  int loop_step(const clang::Expr* inc, const VarDecl* var) {
+    if (!inc)
+      return 0;
+    inc = inc->IgnoreParens();
+    auto is_var = [&](const clang::Expr* e) {
+      const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+      return r && r->getDecl() == var;
+    };
+    if (const auto* u = dyn_cast<UnaryOperator>(inc)) {
+      if (!is_var(u->getSubExpr()))
+        return 0;
+      return u->isIncrementOp() ? 1 : u->isDecrementOp() ? -1 : 0;
+    }
+    if (const auto* b = dyn_cast<CompoundAssignOperator>(inc)) {
+      clang::Expr::EvalResult r;
+      if (!is_var(b->getLHS()) || !b->getRHS()->EvaluateAsInt(r, ctx_) || r.Val.getInt() != 1)
+        return 0;
+      return b->getOpcode() == BO_AddAssign ? 1 : b->getOpcode() == BO_SubAssign ? -1 : 0;
+    }
+    return 0;
+  }
+
+  void check_not_assigned(const Stmt* s, const VarDecl* var) {
+    if (!s)
+      return;
+    auto refers = [&](const clang::Expr* e) {
+      const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+      return r && r->getDecl() == var;
+    };
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp() && refers(b->getLHS()))
+      fail(b->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
+                                            var->getNameAsString()));
+    if (const auto* u = dyn_cast<UnaryOperator>(s);
+        u && u->isIncrementDecrementOp() && refers(u->getSubExpr()))
+      fail(u->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
+                                            var->getNameAsString()));
+    for (const Stmt* c : s->children())
+      check_not_assigned(c, var);
+  }
+
+  // An expression statement: an assignment to an output element or a local.
+  void expr_stmt(const clang::Expr* e) {
+    e = e->IgnoreParens();
+    if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->isIncrementDecrementOp()) {
+      assign(u->getSubExpr(), u->isIncrementOp() ? BO_AddAssign : BO_SubAssign, nullptr,
+             u->getOperatorLoc());
+      return;
+    }
+    const auto* b = dyn_cast<BinaryOperator>(e);
+    if (!b || !b->isAssignmentOp()) {
+      if (isa<CallExpr>(e))
+        (void)expr(e); // reports the unknown call
+      fail(e->getExprLoc(), "expression statement has no effect on an output; only "
+                            "assignments are in the kernel subset");
+    }
+    assign(b->getLHS(), b->getOpcode(), b->getRHS(), b->getOperatorLoc());
+  }
+
+  void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
+              SourceLocation loc) {
+    lhs = lhs->IgnoreParenImpCasts();
+    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(lhs)) {
+      const Param* p = array_param(sub);
+      if (p->kind != ParamKind::Out)
+        fail(sub->getBeginLoc(), fmt::format("'{}' is written but is not a DPGEN_OUT parameter; "
+                                             "inputs and constant arrays are read only",
+                                             p->name));
+      if (op != BO_Assign)
+        fail(loc, fmt::format("compound assignment to output '{}' reads the output; assign "
+                              "each element once with '='",
+                              p->name));
+      ExprP idx = expr(sub->getIdx());
+      if (idx->type != Type::Int)
+        fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
+      ExprP value = cast(expr(rhs), p->elem);
+      add_store(p->name, idx, value, pos(sub->getBeginLoc()), sub->getBeginLoc());
+      return;
+    }
+    const auto* ref = dyn_cast<DeclRefExpr>(lhs);
+    const auto* var = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+    if (!var)
+      fail(lhs->getBeginLoc(), "assignment target is outside the kernel subset (write to an "
+                               "output element or a local variable)");
+    auto it = env_.find(var);
+    if (it == env_.end()) {
+      if (var->hasGlobalStorage())
+        fail(lhs->getBeginLoc(), fmt::format("write to '{}': global state is outside the kernel "
+                                             "subset",
+                                             var->getNameAsString()));
+      fail(lhs->getBeginLoc(), fmt::format("'{}' is outside the kernel subset",
+                                           var->getNameAsString()));
+    }
+    Binding& b = it->second;
+    if (b.kind != Binding::Value)
+      fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
+                                           "read only",
+                                           var->getNameAsString()));
+    if (b.kernel_level && !loops_.empty())
+      fail(lhs->getBeginLoc(), fmt::format("'{}' is declared outside the loop and assigned "
+                                           "inside it: a value carried from one iteration to "
+                                           "the next is outside the kernel subset",
+                                           var->getNameAsString()));
+    Type t = *scalar_type(var->getType());
+    ExprP value;
+    if (op == BO_Assign) {
+      value = expr(rhs);
+    } else {
+      if (!b.value)
+        fail(lhs->getBeginLoc(), fmt::format("'{}' is used before it has a value",
+                                             var->getNameAsString()));
+      ExprP r = rhs ? expr(rhs) : int_const(1);
+      Op bop;
+      switch (op) {
+      case BO_AddAssign:
+        bop = Op::Add;
+        break;
+      case BO_SubAssign:
+        bop = Op::Sub;
+        break;
+      case BO_MulAssign:
+        bop = Op::Mul;
+        break;
+      case BO_DivAssign:
+        bop = Op::Div;
+        break;
+      default:
+        fail(loc, "this compound assignment is outside the kernel subset");
+      }
+      value = binary(bop, b.value, r);
+    }
+    b.value = make_local(var->getNameAsString(), var, cast(value, t));
+  }
+
+  void add_store(const std::string& array, ExprP idx, ExprP value, SourcePos p,
+                 SourceLocation loc) {
+    std::vector<const Loop*> key;
+    for (const auto& l : loops_)
+      key.push_back(l.get());
+    auto it = nest_index_.find(key);
+    if (it == nest_index_.end()) {
+      Nest n;
+      for (const auto& l : loops_)
+        n.loops.push_back(*l);
+      k_.nests.push_back(n);
+      it = nest_index_.emplace(key, k_.nests.size() - 1).first;
+    }
+    Nest& nest = k_.nests[it->second];
+    // One store per output and path: a second store whose path is not
+    // provably disjoint would overwrite the first.
+    for (const auto& s : nest.stores)
+      if (s.array == array && !paths_disjoint(s.path, path_))
+        fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
+                              "line {}); write each element once",
+                              array, s.pos.line));
+    nest.stores.push_back({array, idx, value, path_, p});
+    store_locs_[{p.line, p.col}] = loc;
+  }
+  std::map<std::pair<unsigned, unsigned>, SourceLocation> store_locs_;
+
+  static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
+    for (const auto& x : a)
+      for (const auto& y : b)
+        if (x.cond == y.cond && x.positive != y.positive)
+          return true;
+    return false;
+  }
+
+  // Each output cell is written by exactly one iteration: the write index
+  // must be affine and one-to-one over the loop box.
+  void check_outputs() {
+    for (auto& nest : k_.nests) {
+      for (auto& s : nest.stores) {
+        auto p = to_poly(s.index);
+        if (!p)
+          fail_at(s.pos, fmt::format("index of output '{}' must be an affine function of the "
+                                     "loop counters (no conditional or data-dependent writes)",
+                                     s.array));
+        std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
+        for (const auto& l : nest.loops) {
+          Poly c = p->coefficient("@" + l.var);
+          for (const auto& [m, coef] : c.terms())
+            for (const auto& sym : m)
+              if (sym[0] == '@')
+                fail_at(s.pos, fmt::format("index of output '{}' multiplies loop counters",
+                                           s.array));
+          if (c == Poly())
+            fail_at(s.pos, fmt::format("output '{}' is written at the same index by every "
+                                       "iteration of loop '{}' (a reduction or a loop-carried "
+                                       "dependence); each element must be written once",
+                                       s.array, l.var));
+          dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+        }
+        check_one_to_one(s, dims);
+      }
+    }
+  }
+
+  // Mixed-radix test: with the counters ordered by coefficient, every
+  // coefficient exceeds the largest offset the smaller ones can reach:
+  //   sum_{smaller} |c| * (extent - 1) < |c_next|.
+  void check_one_to_one(const Store& s, std::vector<std::pair<Poly, Poly>> dims) {
+    auto size_key = [](const Poly& c) { return std::make_pair(c.degree(), c.str()); };
+    std::sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
+      if (a.first.degree() != b.first.degree())
+        return a.first.degree() < b.first.degree();
+      if (a.first.is_constant() && b.first.is_constant())
+        return std::llabs(a.first.constant_term()) < std::llabs(b.first.constant_term());
+      return size_key(a.first) < size_key(b.first);
+    });
+    Poly reach;
+    for (size_t i = 0; i < dims.size(); ++i) {
+      Poly c = dims[i].first;
+      if (c.is_constant() && c.constant_term() < 0)
+        c = -c;
+      if (i > 0) {
+        Poly slack = c - reach; // must be >= 1
+        bool ok = slack.is_constant() && slack.constant_term() >= 1;
+        if (!ok)
+          fail_at(s.pos, fmt::format("cannot prove that output '{}' is written at most once per "
+                                     "element: index coefficient '{}' against a reach of '{}'; "
+                                     "make the row length the loop bound",
+                                     s.array, c.str(), reach.str()));
+      }
+      reach = reach + c * (dims[i].second - Poly::constant(1));
+    }
+  }
+
+  [[noreturn]] void fail_at(const SourcePos& p, const std::string& msg) {
+    auto it = store_locs_.find({p.line, p.col});
+    fail(it != store_locs_.end() ? it->second : fn_->getLocation(), msg);
+  }
+
+  // ---- expressions -----------------------------------------------------------
+
+  const Param* array_param(const ArraySubscriptExpr* sub) {
+    const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
+    const auto* ref = dyn_cast<DeclRefExpr>(base);
+    if (!ref) {
+      if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
+        fail(base->getBeginLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                                  "parameter directly: a[i + 1]");
+      fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+    }
+    auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
+    if (it == env_.end() || it->second.kind != Binding::ArrayParam) {
+      if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && v->hasGlobalStorage())
+        fail(base->getBeginLoc(), fmt::format("'{}' is global state, outside the kernel subset",
+                                              v->getNameAsString()));
+      fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+    }
+    return it->second.param;
+  }
+
+  ExprP cond(const clang::Expr* e) {
+    ExprP c = expr(e);
+    if (c->type != Type::Bool)
+      c = binary(Op::Ne, c, c->type == Type::Int ? int_const(0) : real_const(0, c->type, ""));
+    return c;
+  }
+
+  ExprP expr(const clang::Expr* e) {
+    e = e->IgnoreParens();
+    if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
+      return cast_expr(c, c->getSubExpr());
+    if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
+      return cast_expr(c, c->getSubExpr());
+    if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
+      return expr(m->getSubExpr());
+    if (const auto* w = dyn_cast<ExprWithCleanups>(e))
+      return expr(w->getSubExpr());
+    if (const auto* c = dyn_cast<ConstantExpr>(e))
+      return expr(c->getSubExpr());
+    if (const auto* l = dyn_cast<IntegerLiteral>(e))
+      return int_const(static_cast<long long>(l->getValue().getSExtValue()));
+    if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
+      Type t = type_of(e);
+      return real_const(l->getValueAsApproximateDouble(), t, text(l));
+    }
+    if (const auto* l = dyn_cast<CXXBoolLiteralExpr>(e))
+      return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
+    if (const auto* r = dyn_cast<DeclRefExpr>(e))
+      return decl_ref(r);
+    if (const auto* s = dyn_cast<ArraySubscriptExpr>(e)) {
+      const Param* p = array_param(s);
+      if (p->kind == ParamKind::Out)
+        fail(s->getBeginLoc(), fmt::format("reads output '{}': outputs are write-only in a "
+                                           "kernel (read the input it came from instead)",
+                                           p->name));
+      ExprP idx = expr(s->getIdx());
+      if (idx->type != Type::Int)
+        fail(s->getIdx()->getBeginLoc(), "array index must be an integer");
+      return read(p->name, idx, p->elem, pos(s->getBeginLoc()));
+    }
+    if (const auto* u = dyn_cast<UnaryOperator>(e)) {
+      switch (u->getOpcode()) {
+      case UO_Minus:
+        return unary(Op::Neg, expr(u->getSubExpr()));
+      case UO_Plus:
+        return expr(u->getSubExpr());
+      case UO_LNot:
+        return unary(Op::Not, cond(u->getSubExpr()));
+      case UO_Deref:
+      case UO_AddrOf:
+        fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
+                                  "parameters directly");
+      default:
+        fail(u->getOperatorLoc(), "increment/decrement inside an expression is outside the "
+                                  "kernel subset");
+      }
+    }
+    if (const auto* b = dyn_cast<BinaryOperator>(e))
+      return binary_expr(b);
+    if (const auto* c = dyn_cast<ConditionalOperator>(e)) {
+      ExprP cc = cond(c->getCond());
+      Type t = type_of(c);
+      return select(cc, cast(expr(c->getTrueExpr()), t), cast(expr(c->getFalseExpr()), t));
+    }
+    if (const auto* c = dyn_cast<CallExpr>(e))
+      return call_expr(c);
+    fail(e->getExprLoc(), fmt::format("expression '{}' is outside the kernel subset",
+                                      e->getStmtClassName()));
+  }
+
+  ExprP cast_expr(const CastExpr* c, const clang::Expr* sub) {
+    switch (c->getCastKind()) {
+    case CK_LValueToRValue:
+    case CK_NoOp:
+    case CK_IntegralCast:
+      return expr(sub);
+    case CK_IntegralToFloating:
+    case CK_FloatingCast:
+    case CK_FloatingToIntegral:
+      return cast(expr(sub), type_of(c));
+    case CK_IntegralToBoolean:
+    case CK_FloatingToBoolean:
+      return cond(sub);
+    case CK_BooleanToSignedIntegral:
+    case CK_ToVoid:
+    default:
+      if (c->getType()->isPointerType() || sub->getType()->isPointerType())
+        fail(c->getExprLoc(), "pointer arithmetic is outside the kernel subset");
+      fail(c->getExprLoc(), fmt::format("conversion '{}' is outside the kernel subset",
+                                        c->getCastKindName()));
+    }
+  }
+
+  ExprP decl_ref(const DeclRefExpr* r) {
+    if (const auto* ec = dyn_cast<EnumConstantDecl>(r->getDecl()))
+      return int_const(ec->getInitVal().getSExtValue());
+    const auto* v = dyn_cast<VarDecl>(r->getDecl());
+    if (!v)
+      fail(r->getLocation(), fmt::format("'{}' is outside the kernel subset",
+                                         r->getDecl()->getNameAsString()));
+    auto it = env_.find(v);
+    if (it == env_.end()) {
+      // A global constant with a known value is a constant.
+      if (v->hasGlobalStorage() && v->getType().isConstQualified()) {
+        if (const clang::Expr* init = v->getAnyInitializer()) {
+          clang::Expr::EvalResult res;
+          if (init->EvaluateAsRValue(res, ctx_) && res.Val.isFloat())
+            return real_const(res.Val.getFloat().convertToDouble(), type_of(r));
+          if (init->EvaluateAsRValue(res, ctx_) && res.Val.isInt())
+            return int_const(res.Val.getInt().getSExtValue());
+        }
+      }
+      fail(r->getLocation(), fmt::format("'{}' is global state, outside the kernel subset; "
+                                         "pass it as a parameter",
+                                         v->getNameAsString()));
+    }
+    const Binding& b = it->second;
+    switch (b.kind) {
+    case Binding::ScalarParam:
+      return param(b.param->name, b.param->elem);
+    case Binding::ArrayParam:
+      fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
+                                         "read",
+                                         b.param->name));
+    case Binding::LoopVar:
+      return b.value;
+    case Binding::Value:
+      if (!b.value)
+        fail(r->getLocation(), fmt::format("'{}' may be used before it has a value",
+                                           v->getNameAsString()));
+      return b.value;
+    }
+    return nullptr;
+  }
+
+  ExprP binary_expr(const BinaryOperator* b) {
+    if (b->isAssignmentOp())
+      fail(b->getOperatorLoc(), "assignment inside an expression is outside the kernel subset");
+    if (b->getOpcode() == BO_Comma)
+      fail(b->getOperatorLoc(), "comma operator is outside the kernel subset");
+    if (b->getOpcode() == BO_LAnd || b->getOpcode() == BO_LOr)
+      return binary(b->getOpcode() == BO_LAnd ? Op::And : Op::Or, cond(b->getLHS()),
+                    cond(b->getRHS()));
+    ExprP l = expr(b->getLHS()), r = expr(b->getRHS());
+    switch (b->getOpcode()) {
+    case BO_Add:
+      return binary(Op::Add, l, r);
+    case BO_Sub:
+      return binary(Op::Sub, l, r);
+    case BO_Mul:
+      return binary(Op::Mul, l, r);
+    case BO_Div:
+      return binary(Op::Div, l, r);
+    case BO_Rem:
+      return binary(Op::Rem, l, r);
+    case BO_LT:
+      return binary(Op::Lt, l, r);
+    case BO_LE:
+      return binary(Op::Le, l, r);
+    case BO_GT:
+      return binary(Op::Gt, l, r);
+    case BO_GE:
+      return binary(Op::Ge, l, r);
+    case BO_EQ:
+      return binary(Op::Eq, l, r);
+    case BO_NE:
+      return binary(Op::Ne, l, r);
+    default:
+      fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
+                                            b->getOpcodeStr().str()));
+    }
+  }
+
+  ExprP call_expr(const CallExpr* c) {
+    const FunctionDecl* f = c->getDirectCallee();
+    if (!f)
+      fail(c->getBeginLoc(), "indirect call is outside the kernel subset");
+    if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
+      fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
+                                         f->getNameAsString()));
+    std::string fnname = math_function(f);
+    bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
+                        f->getBuiltinID() != 0;
+    if (fnname.empty() || !from_library)
+      fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
+                                         "kernel subset calls only {}",
+                                         f->getQualifiedNameAsString(), kSupportedCalls));
+    Type t = type_of(c);
+    std::vector<ExprP> args;
+    for (const clang::Expr* a : c->arguments())
+      args.push_back(cast(expr(a), t == Type::Int ? type_of(a) : t));
+    if (fnname == "fmin")
+      fnname = "min";
+    if (fnname == "fmax")
+      fnname = "max";
+    if (fnname == "fabs")
+      fnname = "abs";
+    size_t want = (fnname == "min" || fnname == "max" || fnname == "pow") ? 2 : 1;
+    if (args.size() != want)
+      fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
+                                         fnname, want));
+    return call(fnname, args, t);
+  }
+};
+
+// ---- Finding kernels ------------------------------------------------------
+
+// Matches every function definition carrying an annotation; the callback
+// keeps those marked DPGEN_KERNEL in the main file.
+class KernelCollector : public MatchFinder::MatchCallback {
+public:
+  KernelCollector(std::vector<Kernel>& out, bool& ok, std::string file)
+      : out_(out), ok_(ok), file_(std::move(file)) {}
+
+  void run(const MatchFinder::MatchResult& r) override {
+    const auto* fn = r.Nodes.getNodeAs<FunctionDecl>("kernel");
+    if (!fn || annotation(fn) != "dpgen.kernel")
+      return;
+    if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation())))
+      return;
+    if (fn->isTemplateInstantiation())
+      return;
+    found_ = true;
+    Kernel k;
+    if (Lowerer(*r.Context, fn).run(k)) {
+      k.file = file_;
+      out_.push_back(std::move(k));
+    } else {
+      ok_ = false;
+    }
+  }
+  bool found() const { return found_; }
+
+private:
+  std::vector<Kernel>& out_;
+  bool& ok_;
+  std::string file_;
+  bool found_ = false;
+};
+
+class Consumer : public ASTConsumer {
+public:
+  Consumer(std::vector<Kernel>& out, bool& ok, std::string file)
+      : collector_(out, ok, file), ok_(ok) {
+    // A kernel: an annotated function definition (DPGEN_KERNEL).
+    auto kernel = functionDecl(isDefinition(), hasAttr(attr::Annotate)).bind("kernel");
+    finder_.addMatcher(kernel, &collector_);
+  }
+
+  void HandleTranslationUnit(ASTContext& ctx) override {
+    if (ctx.getDiagnostics().hasErrorOccurred()) {
+      ok_ = false;
+      return; // a syntax error was reported by Clang already
+    }
+    finder_.matchAST(ctx);
+    if (!collector_.found() && ok_) {
+      auto& d = ctx.getDiagnostics();
+      const auto& sm = ctx.getSourceManager();
+      unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error,
+                                      "no DPGEN_KERNEL function in this file (mark a kernel "
+                                      "with DPGEN_KERNEL from dpgen/annotate.hpp)");
+      d.Report(sm.getLocForStartOfFile(sm.getMainFileID()), id);
+      ok_ = false;
+    }
+  }
+
+private:
+  KernelCollector collector_;
+  MatchFinder finder_;
+  bool& ok_;
+};
+
+class Action : public ASTFrontendAction {
+public:
+  Action(std::vector<Kernel>& out, bool& ok, std::string file)
+      : out_(out), ok_(ok), file_(std::move(file)) {}
+  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance&, llvm::StringRef) override {
+    return std::make_unique<Consumer>(out_, ok_, file_);
+  }
+
+private:
+  std::vector<Kernel>& out_;
+  bool& ok_;
+  std::string file_;
+};
+
+} // namespace
+
+bool lower_file(const std::string& file, const FrontendOptions& opts,
+                std::vector<Kernel>& kernels) {
+  std::vector<std::string> args = {"clang++", "-fsyntax-only"};
+  if (!opts.resource_dir.empty())
+    args.push_back("-resource-dir=" + opts.resource_dir);
+  bool has_std = false;
+  for (const auto& a : opts.compiler_args)
+    has_std = has_std || a.rfind("-std=", 0) == 0;
+  if (!has_std)
+    args.push_back("-std=c++17");
+  args.push_back("-xc++");
+  args.insert(args.end(), opts.compiler_args.begin(), opts.compiler_args.end());
+  args.push_back(file);
+
+  bool ok = true;
+  std::vector<Kernel> found;
+  auto files = llvm::vfs::getRealFileSystem();
+  auto fm = llvm::makeIntrusiveRefCnt<FileManager>(FileSystemOptions(), files);
+  tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file), fm.get());
+  bool ran = inv.run();
+  if (!ran)
+    ok = false;
+  kernels.insert(kernels.end(), found.begin(), found.end());
+  return ok;
+}
+
+} // namespace dpgen

@@ -1,0 +1,155 @@
+// Expression printer: C++ precedence levels, minimal parentheses.
+#include "print.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+
+namespace dpgen {
+
+namespace {
+
+// Larger binds tighter (C++ precedence).
+int precedence(const Expr& e) {
+  switch (e.op) {
+  case Op::Select:
+    return 1;
+  case Op::Or:
+    return 2;
+  case Op::And:
+    return 3;
+  case Op::Eq:
+  case Op::Ne:
+    return 4;
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+    return 5;
+  case Op::Add:
+  case Op::Sub:
+    return 6;
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+    return 7;
+  case Op::Neg:
+  case Op::Not:
+    return 8;
+  case Op::IntConst:
+    return e.ival < 0 ? 8 : 10;
+  case Op::RealConst:
+    return e.rval < 0 ? 8 : 10;
+  default:
+    return 10;
+  }
+}
+
+const char* symbol(Op op) {
+  switch (op) {
+  case Op::Add:
+    return "+";
+  case Op::Sub:
+    return "-";
+  case Op::Mul:
+    return "*";
+  case Op::Div:
+    return "/";
+  case Op::Rem:
+    return "%";
+  case Op::Lt:
+    return "<";
+  case Op::Le:
+    return "<=";
+  case Op::Gt:
+    return ">";
+  case Op::Ge:
+    return ">=";
+  case Op::Eq:
+    return "==";
+  case Op::Ne:
+    return "!=";
+  case Op::And:
+    return "&&";
+  case Op::Or:
+    return "||";
+  default:
+    return "?";
+  }
+}
+
+std::string wrap(const ExprP& e, int min_prec) {
+  std::string s = print(e);
+  return precedence(*e) < min_prec ? "(" + s + ")" : s;
+}
+
+std::string bound_set(const std::vector<Poly>& set, const std::string& fn,
+                      const std::string& int_type) {
+  std::vector<std::string> parts;
+  std::set<std::string> seen;
+  for (const auto& p : set)
+    if (seen.insert(p.str()).second)
+      parts.push_back(p.str());
+  if (parts.empty())
+    return fn == "max" ? fmt::format("std::numeric_limits<{}>::min()", int_type)
+                       : fmt::format("std::numeric_limits<{}>::max()", int_type);
+  if (parts.size() == 1)
+    return parts[0];
+  if (parts.size() == 2)
+    return fmt::format("std::{}<{}>({}, {})", fn, int_type, parts[0], parts[1]);
+  return fmt::format("std::{}<{}>({{{}}})", fn, int_type, fmt::join(parts, ", "));
+}
+
+} // namespace
+
+std::string real_literal(double v, Type t) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEn") == std::string::npos)
+    s += ".0";
+  return t == Type::Float ? s + "f" : s;
+}
+
+std::string print(const ExprP& e) {
+  switch (e->op) {
+  case Op::IntConst:
+    return std::to_string(e->ival);
+  case Op::RealConst:
+    return !e->text.empty() ? e->text : real_literal(e->rval, e->type);
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+    return e->name;
+  case Op::Read:
+    return fmt::format("{}[{}]", e->name, print(e->ops[0]));
+  case Op::Neg:
+    return "-" + wrap(e->ops[0], 9);
+  case Op::Not:
+    return "!" + wrap(e->ops[0], 9);
+  case Op::Select:
+    return fmt::format("{} ? {} : {}", wrap(e->ops[0], 2), wrap(e->ops[1], 2), wrap(e->ops[2], 1));
+  case Op::Call: {
+    std::vector<std::string> args;
+    for (const auto& a : e->ops)
+      args.push_back(print(a));
+    return fmt::format("std::{}({})", e->name, fmt::join(args, ", "));
+  }
+  case Op::Cast:
+    return fmt::format("static_cast<{}>({})", type_spelling(e->type), print(e->ops[0]));
+  default: {
+    // Binary, left-associative: a right operand of equal precedence keeps its
+    // parentheses, so floating-point evaluation order is exactly the IR's.
+    int p = precedence(*e);
+    return fmt::format("{} {} {}", wrap(e->ops[0], p), symbol(e->op), wrap(e->ops[1], p + 1));
+  }
+  }
+}
+
+std::string print_max(const std::vector<Poly>& set, const std::string& int_type) {
+  return bound_set(set, "max", int_type);
+}
+
+std::string print_min(const std::vector<Poly>& set, const std::string& int_type) {
+  return bound_set(set, "min", int_type);
+}
+
+} // namespace dpgen

@@ -1,0 +1,267 @@
+// Schedule: group every read of a DPGEN_IN array into gather blocks or
+// scatter units (see schedule.hpp for the worked example).
+#include "schedule.hpp"
+
+#include "derive.hpp"
+#include "print.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace dpgen {
+
+namespace {
+
+std::string domain_key(const Domain& d) {
+  std::string s;
+  for (const auto& b : d) {
+    s += "{";
+    for (const auto& [v, iv] : b.dims) {
+      s += v + ":";
+      for (const auto& p : iv.lo)
+        s += p.str() + ",";
+      s += "/";
+      for (const auto& p : iv.hi)
+        s += p.str() + ",";
+      s += ";";
+    }
+    s += "}";
+  }
+  return s;
+}
+
+// The layout decomposition of one affine index: coefficient per counter,
+// shift per counter, base. nullopt if the index is not affine in the counters.
+struct Decomposed {
+  std::vector<std::pair<std::string, Poly>> layout;
+  std::map<std::string, Poly> shift;
+  Poly base;
+};
+
+std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
+  Decomposed out;
+  Poly rest = index;
+  for (const auto& l : nest.loops) {
+    std::string v = "@" + l.var;
+    Poly c = index.coefficient(v);
+    for (const auto& [m, coef] : c.terms())
+      for (const auto& s : m)
+        if (s[0] == '@')
+          return std::nullopt; // a product of counters: not affine
+    if (c == Poly())
+      continue;
+    out.layout.push_back({l.var, c});
+    rest = rest - c * Poly::symbol(v);
+  }
+  for (const auto& [m, coef] : rest.terms())
+    for (const auto& s : m)
+      if (s[0] == '@')
+        return std::nullopt;
+  // Shifts: the largest coefficient first takes the multiples of its leading
+  // monomial (`+nx` with layout j*nx + i is j+1); a unit coefficient last
+  // takes what is left (`+1` is i+1).
+  std::vector<size_t> order(out.layout.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return out.layout[a].second.degree() > out.layout[b].second.degree();
+  });
+  for (size_t idx : order) {
+    const auto& [var, c] = out.layout[idx];
+    Poly delta;
+    if (c.is_constant()) {
+      long long cc = c.constant_term();
+      bool divisible = true;
+      for (const auto& [m, coef] : rest.terms())
+        divisible = divisible && coef % cc == 0;
+      if (divisible) {
+        for (const auto& [m, coef] : rest.terms()) {
+          Poly t = Poly::constant(coef / cc);
+          for (const auto& s : m)
+            t = t * Poly::symbol(s);
+          delta = delta + t;
+        }
+      }
+    } else {
+      // leading monomial of c (highest degree, then first in order)
+      const Poly::Monomial* lead = nullptr;
+      long long lead_coef = 0;
+      for (const auto& [m, coef] : c.terms())
+        if (!lead || m.size() > lead->size()) {
+          lead = &m;
+          lead_coef = coef;
+        }
+      auto it = rest.terms().find(*lead);
+      if (it != rest.terms().end() && it->second % lead_coef == 0)
+        delta = Poly::constant(it->second / lead_coef);
+    }
+    if (!(delta == Poly())) {
+      out.shift[var] = delta;
+      rest = rest - c * delta;
+    }
+  }
+  out.base = rest;
+  return out;
+}
+
+std::string layout_key(const std::string& array, const Nest* nest, const Decomposed& d) {
+  std::string s = fmt::format("{}|{}|", array, static_cast<const void*>(nest));
+  for (const auto& [v, c] : d.layout)
+    s += v + "*" + c.str() + ";";
+  return s + "|" + d.base.str();
+}
+
+// A block is bulk when its domain is one box that is not provably narrow
+// (a constant number of cells) in any layout counter.
+bool is_bulk(const Block& b, const GatherGroup& g) {
+  if (b.domain.size() != 1)
+    return false;
+  const Box& box = b.domain.front();
+  for (const auto& [v, c] : g.layout) {
+    auto it = box.dims.find("@" + v);
+    if (it == box.dims.end())
+      return false;
+    for (const auto& lo : it->second.lo)
+      for (const auto& hi : it->second.hi)
+        if ((hi - lo).is_constant())
+          return false;
+  }
+  return true;
+}
+
+std::string describe_read(const Expr* r) {
+  return fmt::format("{}[{}]", r->name, print(r->ops[0]));
+}
+
+} // namespace
+
+Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {
+  Box loop_box;
+  for (const auto& l : nest.loops) {
+    Interval iv;
+    iv.lo.push_back(*to_poly(l.lo));
+    iv.hi.push_back(*to_poly(l.hi));
+    loop_box.dims["@" + l.var] = iv;
+  }
+  Domain d = {simplify(loop_box)};
+  for (const auto& pc : s.path) {
+    auto cd = condition_domain(pc.cond);
+    if (!cd) {
+      guards.push_back(pc);
+      continue;
+    }
+    d = pc.positive ? intersect(d, *cd) : subtract(d, *cd);
+  }
+  return d;
+}
+
+AdjointPlan schedule(const Kernel& k) {
+  AdjointPlan plan;
+  plan.kernel = &k;
+  std::map<std::string, size_t> group_index;
+  std::map<std::string, size_t> block_index; // group|store|shift|piece -> block
+
+  for (const auto& param : k.params) {
+    if (param.kind != ParamKind::In)
+      continue;
+    for (const auto& nest : k.nests) {
+      for (const auto& store : nest.stores) {
+        std::vector<PathCond> guards;
+        Domain sdom = store_domain(nest, store, guards);
+        if (sdom.empty())
+          continue; // never executes
+        ScatterUnit scatter{param.name, &nest, &store, {}};
+        for (const Expr* r : reads_in(store.value)) {
+          if (r->name != param.name)
+            continue;
+          ExprP partial = derivative(store.value, {r});
+          if (!partial)
+            continue; // read only through a condition or an index
+          auto pieces = index_pieces(r->ops[0]);
+          std::vector<std::pair<IndexPiece, Decomposed>> affine;
+          bool invertible = pieces.has_value();
+          if (pieces)
+            for (const auto& piece : *pieces) {
+              auto dec = decompose(piece.value, nest);
+              if (!dec) {
+                invertible = false;
+                break;
+              }
+              affine.push_back({piece, *dec});
+            }
+          if (!invertible) {
+            scatter.reads.push_back({r, partial});
+            plan.remarks.push_back(
+                {r->pos, fmt::format("read '{}' in kernel '{}' has an index that cannot be "
+                                     "inverted (data-dependent or not affine): its adjoint is "
+                                     "computed in scatter form, serially",
+                                     describe_read(r), k.name)});
+            continue;
+          }
+          for (const auto& [piece, dec] : affine) {
+            Domain bdom = intersect(sdom, piece.where);
+            if (bdom.empty())
+              continue;
+            std::string gkey = layout_key(param.name, &nest, dec);
+            auto git = group_index.find(gkey);
+            if (git == group_index.end()) {
+              GatherGroup g;
+              g.array = param.name;
+              g.nest = &nest;
+              g.layout = dec.layout;
+              g.base = dec.base;
+              for (const auto& l : nest.loops) {
+                bool in_layout = false;
+                for (const auto& [v, c] : dec.layout)
+                  in_layout = in_layout || v == l.var;
+                if (!in_layout)
+                  g.reduced.push_back(l.var);
+              }
+              plan.gathers.push_back(g);
+              git = group_index.emplace(gkey, plan.gathers.size() - 1).first;
+            }
+            GatherGroup& g = plan.gathers[git->second];
+            std::string shift_key;
+            for (const auto& [v, p] : dec.shift)
+              shift_key += v + "=" + p.str() + ";";
+            std::string bkey = fmt::format("{}|{}|{}|{}", gkey, static_cast<const void*>(&store),
+                                           shift_key, domain_key(bdom));
+            auto bit = block_index.find(bkey);
+            if (bit == block_index.end()) {
+              Block b;
+              b.shift = dec.shift;
+              b.domain = bdom;
+              b.guards = guards;
+              b.terms.push_back({&store, {}, nullptr});
+              b.comment = describe_read(r);
+              g.blocks.push_back(b);
+              bit = block_index.emplace(bkey, g.blocks.size() - 1).first;
+            } else if (g.blocks[bit->second].comment.find(describe_read(r)) == std::string::npos) {
+              g.blocks[bit->second].comment += ", " + describe_read(r);
+            }
+            g.blocks[bit->second].terms.front().reads.insert(r);
+          }
+        }
+        if (!scatter.reads.empty())
+          plan.scatters.push_back(scatter);
+      }
+    }
+  }
+  // Partials of the merged reads of each block, and the bulk classification.
+  for (auto& g : plan.gathers) {
+    for (auto& b : g.blocks) {
+      for (auto& t : b.terms)
+        t.partial = derivative(t.store->value, t.reads);
+      b.bulk = is_bulk(b, g);
+    }
+    g.blocks.erase(std::remove_if(g.blocks.begin(), g.blocks.end(),
+                                  [](const Block& b) { return !b.terms.front().partial; }),
+                   g.blocks.end());
+  }
+  plan.gathers.erase(std::remove_if(plan.gathers.begin(), plan.gathers.end(),
+                                    [](const GatherGroup& g) { return g.blocks.empty(); }),
+                     plan.gathers.end());
+  return plan;
+}
+
+} // namespace dpgen

@@ -1,0 +1,88 @@
+// Schedule (phase 4): decide, for every read of a differentiable input, where
+// its adjoint contribution is summed.
+//
+// Worked example (the upwind step, seed eq. 17). The forward loop reads d at
+// three places per iteration i:  d[i+1], d[i], d[i-1]. Scatter form pushes
+// each partial into the cell that was read:
+//     for i:  d_adj[i+1] += p1(i)*g[i];  d_adj[i] += p0(i)*g[i];  d_adj[i-1] += ...
+// which races as soon as the loop is parallel. Gather form turns it around:
+// cell c of d was read as d[i+1] by iteration i = c-1, as d[i] by i = c and
+// as d[i-1] by i = c+1, so
+//     for c:  d_adj[c] += p1(c-1)*g[c-1] + p0(c)*g[c] + pm(c+1)*g[c+1]
+// where each term exists only if its iteration exists (c-1 in the loop's
+// domain, the wrap piece not taken, ...). Every cell is written by exactly one
+// iteration of the c loop: no atomics, and the loop vectorizes.
+//
+// Mechanically: an index is piecewise affine in the loop counters
+// (index_pieces); its linear part is the array's *layout* (`j*nx + i`), the
+// rest decomposes into a per-counter *shift* (`+nx` = one row, j+1) and a
+// base. Reads with the same layout and base form a gather group; each
+// (store, shift, piece) is a block whose iteration is cell - shift and whose
+// iteration domain is the store's path domain intersected with the piece.
+// An index that is not piecewise affine (data dependent) cannot be inverted:
+// its reads get a scatter unit, run serially.
+#pragma once
+
+#include "affine.hpp"
+#include "ir.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+/// One store's contribution to a cell: d store.value / d reads, times the
+/// output seed.
+struct Term {
+  const Store* store = nullptr;
+  std::set<const Expr*> reads;
+  ExprP partial;
+};
+
+/// Terms evaluated at one iteration: iteration = cell - shift.
+struct Block {
+  std::map<std::string, Poly> shift; // layout counter -> shift
+  Domain domain;                     // iteration domain (all counters)
+  std::vector<PathCond> guards;      // run-time conditions of the store's path
+  std::vector<Term> terms;
+  bool bulk = false;   // part of the branch-free interior loop
+  std::string comment; // which read this is, for the generated code
+};
+
+struct GatherGroup {
+  std::string array;
+  const Nest* nest = nullptr;
+  std::vector<std::pair<std::string, Poly>> layout; // counter -> coefficient, loop order
+  Poly base;
+  std::vector<std::string> reduced; // counters summed over inside a cell
+  std::vector<Block> blocks;
+};
+
+struct ScatterUnit {
+  std::string array;
+  const Nest* nest = nullptr;
+  const Store* store = nullptr;
+  std::vector<std::pair<const Expr*, ExprP>> reads; // read, partial
+};
+
+struct Remark {
+  SourcePos pos;
+  std::string text;
+};
+
+struct AdjointPlan {
+  const Kernel* kernel = nullptr;
+  std::vector<GatherGroup> gathers;
+  std::vector<ScatterUnit> scatters;
+  std::vector<Remark> remarks;
+};
+
+AdjointPlan schedule(const Kernel& k);
+
+/// The iteration domain of a store: its loop box intersected with the index
+/// conditions on its path; other conditions are returned as guards.
+Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards);
+
+} // namespace dpgen
