@@ -183,8 +183,10 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.str());
   }
   const Store& s = *b.terms.front().store;
-  code.line("// {}[{}] = f(..., {}, ...){}: += ∂f/∂({}) · {}_adj", s.array, print(s.index),
-            b.comment, iter_desc.empty() ? "" : " at " + iter_desc, b.comment, s.array);
+  std::string out_cell = fmt::format("{}[{}]", s.array, print(s.index));
+  code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj[{}]", out_cell, b.comment,
+            iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array,
+            print(s.index));
 
   std::vector<Box> boxes;
   if (cx.edge) {
@@ -235,6 +237,65 @@ void emit_block(const BlockContext& cx, const Block& b) {
 }
 
 // ---- a gather group ------------------------------------------------------------
+
+void collect_selects(const ExprP& e, std::vector<ExprP>& conds, std::set<const LocalVar*>& seen) {
+  if (!e)
+    return;
+  if (e->op == Op::Local) {
+    if (!e->local->kernel_level && seen.insert(e->local.get()).second)
+      collect_selects(e->local->def, conds, seen);
+    return;
+  }
+  if (e->op == Op::Select)
+    conds.push_back(e->ops[0]);
+  for (const auto& o : e->ops)
+    collect_selects(o, conds, seen);
+}
+
+// Shrinks the interior so that the index conditions of its terms (a periodic
+// wrap `i == n - 1 ? 0 : i + 1`) are decided there: a narrow condition box at
+// the low end raises the interior's lower bound, one at the high end lowers
+// its upper bound. Cells given up go to the guarded edge loop.
+void narrow_for_selects(const GatherGroup& g, Box& interior) {
+  for (const auto& b : g.blocks) {
+    if (!b.bulk)
+      continue;
+    std::vector<ExprP> conds;
+    std::set<const LocalVar*> seen;
+    const Term& t = b.terms.front();
+    collect_selects(t.partial, conds, seen);
+    collect_selects(t.store->index, conds, seen);
+    for (const auto& pc : b.guards)
+      collect_selects(pc.cond, conds, seen);
+    for (const auto& c : conds) {
+      auto cd = condition_domain(c);
+      if (!cd)
+        continue;
+      for (const auto& box : *cd)
+        for (const auto& [key, iv] : box.dims) {
+          auto in = interior.dims.find(key);
+          if (in == interior.dims.end() || iv.lo.size() != 1 || iv.hi.size() != 1)
+            continue;
+          Poly width = iv.hi[0] - iv.lo[0];
+          if (!width.is_constant())
+            continue;
+          auto sit = b.shift.find(key.substr(1));
+          Poly d = sit == b.shift.end() ? Poly() : sit->second;
+          Poly lo = iv.lo[0] + d, hi = iv.hi[0] + d; // in cell space
+          auto near = [](const std::vector<Poly>& set, const Poly& p) {
+            for (const auto& q : set)
+              if ((p - q).is_constant())
+                return true;
+            return false;
+          };
+          if (near(in->second.lo, lo))
+            in->second.lo.push_back(hi);
+          else if (near(in->second.hi, hi))
+            in->second.hi.push_back(lo);
+        }
+    }
+  }
+}
 
 std::vector<Poly> shifted(const std::vector<Poly>& set, const Poly& d) {
   std::vector<Poly> out;
@@ -338,6 +399,7 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
     std::string t = loop_type(nest, v);
     bounds[v] = {min_of_max(los, t, true), min_of_max(his, t, false)};
   }
+  narrow_for_selects(g, interior);
   interior = simplify(interior);
   bool any_bulk = false;
   for (const auto& b : g.blocks)
@@ -621,6 +683,7 @@ std::string formatted(const std::string& code, const std::string& name) {
   clang::format::FormatStyle style = clang::format::getLLVMStyle();
   style.ColumnLimit = 100;
   style.SortIncludes = clang::format::FormatStyle::SI_Never;
+  style.PointerAlignment = clang::format::FormatStyle::PAS_Left;
   auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
   auto out = clang::tooling::applyAllReplacements(code, repl);
   if (!out) {

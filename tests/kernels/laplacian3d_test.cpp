@@ -1,0 +1,23 @@
+// laplacian3d (tests/kernels/): 3D 7-point, linear.
+#include "support/adjoint_check.hpp"
+
+#include "laplacian3d_adjoint.hpp"
+#include "test_kernels.hpp"
+
+TEST_CASE("laplacian3d adjoint") {
+  for (auto [nx, ny, nz] : {std::tuple{1, 1, 1}, {3, 3, 3}, {4, 5, 3}, {7, 6, 5}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    CAPTURE(nz);
+    size_t n = size_t(nx * ny * nz);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n};
+    p.out_sizes = {n};
+    p.linear = true;
+    p.forward = [&](auto in, auto out) { laplacian3d(in[0], out[0], nx, ny, nz, 0.5); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      laplacian3d_adjoint(in[0], adj[0], seed[0], nx, ny, nz, 0.5);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -1,0 +1,26 @@
+// Declarations of the test kernels (forward versions); one file per kernel.
+#pragma once
+
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void burgers_step(DPGEN_IN const double* u, DPGEN_OUT double* u_next, int n,
+                               double dt, double dx, double nu);
+DPGEN_KERNEL void varcoef_laplacian2d(DPGEN_IN const double* kc, DPGEN_IN const double* p,
+                                      DPGEN_OUT double* out, int nx, int ny, double h);
+DPGEN_KERNEL void laplacian3d(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny,
+                              int nz, double h);
+DPGEN_KERNEL void mac_divergence2d(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                   DPGEN_OUT double* div, int nx, int ny, double h);
+DPGEN_KERNEL void gradient2d(DPGEN_IN const double* p, DPGEN_OUT double* gx,
+                             DPGEN_OUT double* gy, int nx, int ny, double h);
+DPGEN_KERNEL void smooth_relax_f(DPGEN_IN const float* a, DPGEN_IN const float* b,
+                                 DPGEN_OUT float* out, int n, float rate);
+DPGEN_KERNEL void pointwise_math(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                 DPGEN_OUT double* out, int n);
+DPGEN_KERNEL void semi_lagrangian(DPGEN_IN const double* q, DPGEN_IN const double* vel,
+                                  DPGEN_OUT double* q_next, int n, double dt, double dx);
+DPGEN_KERNEL void scaled_rows(DPGEN_IN const double* a, DPGEN_IN const double* c,
+                              DPGEN_IN const double* nu, const double* mask, DPGEN_OUT double* out,
+                              int nx, int ny);
+DPGEN_KERNEL void minmod_slope(DPGEN_IN const double* q, DPGEN_OUT double* slope, int n,
+                               double dx);

@@ -1,0 +1,258 @@
+// Checks a forward kernel against its adjoint on random inputs:
+//  1. the dot-product test <J v, w> = <v, J^T w>, with J v from central
+//     differences (exact for a linear kernel, where h = 1);
+//  2. a finite-difference gradient of the scalar loss L = sum(0.5 f^2 + w f),
+//     every input component;
+//  3. the += contract: adjoints accumulate into what the caller passed;
+//  4. no out-of-bounds access: every array sits between NaN/canary guards.
+// Include after doctest.h.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace dpgen_test {
+
+template <typename T> struct Problem {
+  using Forward = std::function<void(const std::vector<const T*>&, const std::vector<T*>&)>;
+  using Adjoint = std::function<void(const std::vector<const T*>&, const std::vector<T*>&,
+                                     const std::vector<const T*>&)>;
+  std::vector<size_t> in_sizes, out_sizes;
+  std::vector<std::pair<double, double>> in_ranges; // default [-1, 1]
+  Forward forward;
+  Adjoint adjoint; // (inputs, input adjoints (+=), output seeds)
+  bool linear = false;
+};
+
+// An array with `pad` guard cells on each side.
+template <typename T> class Guarded {
+public:
+  static constexpr size_t pad = 16;
+  Guarded(size_t n, T guard) : data_(n + 2 * pad, guard), n_(n), guard_(guard) {}
+  T* data() { return data_.data() + pad; }
+  const T* data() const { return data_.data() + pad; }
+  T& operator[](size_t i) { return data()[i]; }
+  T operator[](size_t i) const { return data()[i]; }
+  size_t size() const { return n_; }
+  bool guards_intact() const {
+    for (size_t i = 0; i < pad; ++i)
+      if (!same(data_[i]) || !same(data_[pad + n_ + i]))
+        return false;
+    return true;
+  }
+
+private:
+  bool same(T v) const { return std::isnan(guard_) ? std::isnan(v) : v == guard_; }
+  std::vector<T> data_;
+  size_t n_;
+  T guard_;
+};
+
+template <typename T> struct Tolerances {
+  double fd_step, dot_rel, grad_rel;
+};
+
+template <typename T> Tolerances<T> tolerances(bool linear) {
+  if constexpr (sizeof(T) == 4)
+    return {linear ? 1.0 : 1e-2, linear ? 1e-5 : 2e-3, 1e-2};
+  else
+    return {linear ? 1.0 : 1e-6, linear ? 1e-12 : 1e-7, 1e-6};
+}
+
+template <typename T> class Checker {
+public:
+  Checker(const Problem<T>& p, uint64_t seed) : p_(p), rng_(seed) {}
+
+  void run() {
+    x_ = random_inputs();
+    dot_product_test();
+    gradient_test();
+    accumulate_test();
+  }
+
+private:
+  using Arrays = std::vector<Guarded<T>>;
+  const Problem<T>& p_;
+  std::mt19937_64 rng_;
+  Arrays x_;
+
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+
+  Arrays make(const std::vector<size_t>& sizes, T guard) {
+    Arrays a;
+    for (size_t n : sizes)
+      a.emplace_back(n, guard);
+    return a;
+  }
+
+  Arrays random_inputs() {
+    Arrays x = make(p_.in_sizes, T(NAN));
+    for (size_t a = 0; a < x.size(); ++a) {
+      auto [lo, hi] = a < p_.in_ranges.size() ? p_.in_ranges[a] : std::pair{-1.0, 1.0};
+      for (size_t i = 0; i < x[a].size(); ++i)
+        x[a][i] = T(uniform(lo, hi));
+    }
+    return x;
+  }
+
+  Arrays random_like(const std::vector<size_t>& sizes, double scale = 1.0) {
+    Arrays v = make(sizes, T(NAN));
+    for (auto& arr : v)
+      for (size_t i = 0; i < arr.size(); ++i)
+        arr[i] = T(scale * uniform(-1, 1));
+    return v;
+  }
+
+  static std::vector<const T*> cptrs(const Arrays& a) {
+    std::vector<const T*> p;
+    for (const auto& x : a)
+      p.push_back(x.data());
+    return p;
+  }
+  static std::vector<T*> ptrs(Arrays& a) {
+    std::vector<T*> p;
+    for (auto& x : a)
+      p.push_back(x.data());
+    return p;
+  }
+
+  // Outputs start at zero, so cells a kernel does not write compare equal.
+  Arrays forward(const Arrays& x) {
+    Arrays y = make(p_.out_sizes, T(-7777));
+    for (auto& arr : y)
+      for (size_t i = 0; i < arr.size(); ++i)
+        arr[i] = 0;
+    p_.forward(cptrs(x), ptrs(y));
+    for (const auto& arr : y)
+      REQUIRE_MESSAGE(arr.guards_intact(), "forward wrote outside an output");
+    return y;
+  }
+
+  Arrays adjoint(const Arrays& x, const Arrays& seeds, Arrays start) {
+    p_.adjoint(cptrs(x), ptrs(start), cptrs(seeds));
+    for (const auto& arr : start)
+      REQUIRE_MESSAGE(arr.guards_intact(), "adjoint wrote outside an input adjoint");
+    return start;
+  }
+
+  Arrays zeros(const std::vector<size_t>& sizes) {
+    Arrays z = make(sizes, T(12345));
+    for (auto& arr : z)
+      for (size_t i = 0; i < arr.size(); ++i)
+        arr[i] = 0;
+    return z;
+  }
+
+  Arrays shifted(const Arrays& x, const Arrays& v, double h) {
+    Arrays out = x;
+    for (size_t a = 0; a < x.size(); ++a)
+      for (size_t i = 0; i < x[a].size(); ++i)
+        out[a][i] = T(double(x[a][i]) + h * double(v[a][i]));
+    return out;
+  }
+
+  static double dot(const Arrays& a, const Arrays& b) {
+    double s = 0;
+    for (size_t k = 0; k < a.size(); ++k)
+      for (size_t i = 0; i < a[k].size(); ++i)
+        s += double(a[k][i]) * double(b[k][i]);
+    return s;
+  }
+
+  // <J v, w> with J v = (f(x + h v) - f(x - h v)) / 2h, against <v, J^T w>.
+  void dot_product_test() {
+    auto tol = tolerances<T>(p_.linear);
+    for (int trial = 0; trial < 3; ++trial) {
+      Arrays v = random_like(p_.in_sizes), w = random_like(p_.out_sizes);
+      Arrays fp = forward(shifted(x_, v, tol.fd_step)), fm = forward(shifted(x_, v, -tol.fd_step));
+      double lhs = 0, scale = 0;
+      for (size_t k = 0; k < fp.size(); ++k)
+        for (size_t i = 0; i < fp[k].size(); ++i) {
+          double jv = (double(fp[k][i]) - double(fm[k][i])) / (2 * tol.fd_step);
+          lhs += jv * double(w[k][i]);
+          scale += std::fabs(jv * double(w[k][i]));
+        }
+      Arrays jtw = adjoint(x_, w, zeros(p_.in_sizes));
+      double rhs = dot(v, jtw);
+      INFO("<Jv,w> = " << lhs << ", <v,J^T w> = " << rhs);
+      CHECK(std::fabs(lhs - rhs) <= tol.dot_rel * std::max(1.0, scale));
+    }
+  }
+
+  double loss(const Arrays& x, const Arrays& w) {
+    Arrays y = forward(x);
+    double l = 0;
+    for (size_t k = 0; k < y.size(); ++k)
+      for (size_t i = 0; i < y[k].size(); ++i)
+        l += 0.5 * double(y[k][i]) * double(y[k][i]) + double(w[k][i]) * double(y[k][i]);
+    return l;
+  }
+
+  // dL/dx from the adjoint (seed y + w) against central differences, per
+  // component.
+  void gradient_test() {
+    auto tol = tolerances<T>(false);
+    Arrays w = random_like(p_.out_sizes);
+    Arrays y = forward(x_);
+    Arrays seed = y;
+    for (size_t k = 0; k < seed.size(); ++k)
+      for (size_t i = 0; i < seed[k].size(); ++i)
+        seed[k][i] = y[k][i] + w[k][i];
+    Arrays g = adjoint(x_, seed, zeros(p_.in_sizes));
+    // Central differences of L carry a rounding error of about eps*|L|/h on
+    // top of the O(h^2) truncation: allow for both.
+    const double eps = sizeof(T) == 4 ? 6e-8 : 1.1e-16;
+    const double l0 = std::fabs(loss(x_, w));
+    int bad = 0;
+    for (size_t a = 0; a < x_.size(); ++a)
+      for (size_t i = 0; i < x_[a].size(); ++i) {
+        double h = tol.fd_step * std::max(1.0, std::fabs(double(x_[a][i])));
+        if constexpr (sizeof(T) == 4)
+          h = 1e-2;
+        Arrays xp = x_, xm = x_;
+        xp[a][i] = T(double(x_[a][i]) + h);
+        xm[a][i] = T(double(x_[a][i]) - h);
+        double fd = (loss(xp, w) - loss(xm, w)) / (double(xp[a][i]) - double(xm[a][i]));
+        double ad = double(g[a][i]);
+        double allowed = tol.grad_rel * std::max(1.0, std::fabs(fd)) + 64 * eps * l0 / h;
+        if (std::fabs(fd - ad) > allowed && bad++ < 5)
+          MESSAGE("input " << a << " cell " << i << ": finite difference " << fd << ", adjoint "
+                           << ad << ", allowed error " << allowed);
+      }
+    CHECK_MESSAGE(bad == 0, bad << " gradient components disagree with finite differences");
+  }
+
+  // adjoint(start = r) == r + adjoint(start = 0)
+  void accumulate_test() {
+    Arrays w = random_like(p_.out_sizes);
+    Arrays r = random_like(p_.in_sizes, 3.0);
+    Arrays fresh = adjoint(x_, w, zeros(p_.in_sizes));
+    Arrays start = zeros(p_.in_sizes);
+    for (size_t a = 0; a < r.size(); ++a)
+      for (size_t i = 0; i < r[a].size(); ++i)
+        start[a][i] = r[a][i];
+    Arrays acc = adjoint(x_, w, start);
+    double eps = sizeof(T) == 4 ? 1e-5 : 1e-13;
+    int bad = 0;
+    for (size_t a = 0; a < r.size(); ++a)
+      for (size_t i = 0; i < r[a].size(); ++i) {
+        double want = double(r[a][i]) + double(fresh[a][i]);
+        if (std::fabs(double(acc[a][i]) - want) > eps * std::max(1.0, std::fabs(want)))
+          ++bad;
+      }
+    CHECK_MESSAGE(bad == 0, bad << " adjoint cells overwrote instead of accumulating (+=)");
+  }
+};
+
+/// Runs all checks on `p` with a fixed seed.
+template <typename T> void check_adjoint(const Problem<T>& p, uint64_t seed = 20261121) {
+  Checker<T>(p, seed).run();
+}
+
+} // namespace dpgen_test
