@@ -24,3 +24,5 @@ DPGEN_KERNEL void scaled_rows(DPGEN_IN const double* a, DPGEN_IN const double* c
                               int nx, int ny);
 DPGEN_KERNEL void minmod_slope(DPGEN_IN const double* q, DPGEN_OUT double* slope, int n,
                                double dx);
+DPGEN_KERNEL void edge_cases(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                             DPGEN_OUT double* out, DPGEN_OUT double* ends, int n, double s);

@@ -363,9 +363,14 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
   std::string layout_desc;
   for (const auto& [v, c] : g.layout)
     layout_desc += (layout_desc.empty() ? "" : ", ") + v;
-  code.line("// {}: every cell {} gathers the reads of {} made by the loop over ({}){}",
-            g.array + "_adj", cell, g.array, layout_desc.empty() ? "-" : layout_desc,
-            g.reduced.empty() ? "" : fmt::format(", summed over {}", fmt::join(g.reduced, ", ")));
+  if (g.layout.empty())
+    code.line("// {}: one cell, summed over the iterations ({}) that read it", cell,
+              fmt::join(g.reduced, ", "));
+  else
+    code.line("// {}: each cell gathers the reads of {} made by the iterations ({}){}", cell,
+              g.array, layout_desc,
+              g.reduced.empty() ? ""
+                                : fmt::format(", summed over {}", fmt::join(g.reduced, ", ")));
   code.open("");
 
   // Cell lambdas: the guarded edge and the branch-free interior.
@@ -405,6 +410,19 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
   for (const auto& b : g.blocks)
     any_bulk = any_bulk || b.bulk;
 
+  if (g.layout.empty()) {
+    // A single cell (a constant index, e.g. the periodic wrap d[0]): sum the
+    // iterations that read it.
+    code.line("{} acc = 0;", elem);
+    code.line("bool hit = false;");
+    for (const auto& b : g.blocks)
+      emit_block({k, g, code, "acc", true, nullptr}, b);
+    code.line("if (hit)");
+    code.line("  {} += acc;", cell);
+    code.close();
+    return;
+  }
+
   // Edge cell: every block, each checked against its iteration domain.
   code.open(fmt::format("auto edge = [&]({})", params));
   code.line("{} acc = 0;", elem);
@@ -415,11 +433,6 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
   code.line("  {} += acc;", cell);
   code.close(";");
 
-  if (g.layout.empty()) {
-    code.line("edge();");
-    code.close();
-    return;
-  }
   if (any_bulk) {
     code.open(fmt::format("auto interior = [&]({})", params));
     code.line("{} acc = 0;", elem);
@@ -647,6 +660,13 @@ std::string param_list(const Kernel& k) {
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
+// Comments name the kernel file without its directory, so generated files do
+// not depend on where the tree was checked out.
+std::string base_name(const std::string& path) {
+  auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 void open_namespaces(Code& c, const Kernel& k) {
   for (const auto& ns : k.namespaces)
     c.raw(fmt::format("namespace {} {{\n", ns));
@@ -659,7 +679,7 @@ void close_namespaces(Code& c, const Kernel& k) {
 void emit_kernel(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   open_namespaces(code, k);
-  code.line("// Adjoint of {} ({}:{}).", k.name, k.file, k.pos.line);
+  code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
   code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
@@ -714,7 +734,7 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "#pragma once\n\n");
   for (const auto& p : plans) {
     open_namespaces(h, *p.kernel);
-    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, p.kernel->file,
+    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, base_name(p.kernel->file),
                       p.kernel->pos.line));
     h.raw(adjoint_signature(*p.kernel) + ";\n");
     close_namespaces(h, *p.kernel);

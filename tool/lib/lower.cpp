@@ -707,7 +707,7 @@ private:
     // One store per output and path: a second store whose path is not
     // provably disjoint would overwrite the first.
     for (const auto& s : nest.stores)
-      if (s.array == array && !paths_disjoint(s.path, path_))
+      if (s.array == array && !paths_disjoint(s.path, path_) && !indices_differ(s.index, idx))
         fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
                               "line {}); write each element once",
                               array, s.pos.line));
@@ -715,6 +715,15 @@ private:
     store_locs_[{p.line, p.col}] = loc;
   }
   std::map<std::pair<unsigned, unsigned>, SourceLocation> store_locs_;
+
+  // Two write indices that differ by a nonzero constant never meet.
+  static bool indices_differ(const ExprP& a, const ExprP& b) {
+    auto pa = to_poly(a), pb = to_poly(b);
+    if (!pa || !pb)
+      return false;
+    Poly d = *pa - *pb;
+    return d.is_constant() && d.constant_term() != 0;
+  }
 
   static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
     for (const auto& x : a)

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages dpgen needs, if any are missing (as root, or
+# through sudo). Everything comes from Debian; nothing is downloaded otherwise.
+set -euo pipefail
+packages=(
+  cmake ninja-build g++ make python3
+  clang-19 libclang-19-dev libclang-cpp19-dev llvm-19-dev llvm-19-tools
+  libeigen3-dev libfmt-dev doctest-dev liblbfgspp-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all packages present"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+as_root=()
+[ "$(id -u)" -eq 0 ] || as_root=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" apt-get update -qq
+"${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

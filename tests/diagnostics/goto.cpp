@@ -1,0 +1,15 @@
+// goto.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i == 0)
+      goto skip;
+    // CHECK: goto.cpp:[[@LINE-1]]:7: error: 'goto' is outside the kernel subset
+    out[i] = a[i];
+  skip:;
+  }
+}
