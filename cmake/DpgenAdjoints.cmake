@@ -25,14 +25,15 @@ function(dpgen_add_adjoints target)
     set(stamp ${gen_dir}/${stem}_adjoint.stamp)
     # The stamp is the rule's output; the generated files are byproducts that
     # keep their timestamps when their content does not change.
+    # dpgen writes ${stamp}.d listing every header the kernel includes, so
+    # editing one of them regenerates too.
     add_custom_command(
       OUTPUT ${stamp}
       BYPRODUCTS ${hpp} ${cpp}
-      COMMAND $<TARGET_FILE:dpgen> ${abs} --out-dir ${gen_dir}
+      COMMAND $<TARGET_FILE:dpgen> ${abs} --out-dir ${gen_dir} --stamp ${stamp}
               -- -std=c++17 -I${runtime_inc} -I${kdir} ${ARG_COMPILE_ARGS}
-      COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
       DEPENDS dpgen ${abs}
-      IMPLICIT_DEPENDS CXX ${abs}
+      DEPFILE ${stamp}.d
       COMMENT "dpgen: adjoint of ${kernel}"
       VERBATIM)
     list(APPEND generated ${stamp} ${cpp} ${hpp})

@@ -18,6 +18,10 @@ static cl::opt<std::string> out_dir("out-dir", cl::desc("directory for <stem>_ad
 static cl::opt<std::string> resource_dir("resource-dir",
                                          cl::desc("Clang resource directory (builtin headers)"),
                                          cl::init(DPGEN_CLANG_RESOURCE_DIR), cl::cat(category));
+static cl::opt<std::string> stamp("stamp",
+                                  cl::desc("after success, touch <file> and write <file>.d (a "
+                                           "make-style list of every file read)"),
+                                  cl::value_desc("file"), cl::cat(category));
 static cl::opt<bool> verbose("v", cl::desc("report written and unchanged files"),
                              cl::cat(category));
 
@@ -49,7 +53,9 @@ int main(int argc, const char** argv) {
   dpgen::GenerateOptions opts;
   opts.frontend.compiler_args = compiler_args;
   opts.frontend.resource_dir = resource_dir;
+  opts.frontend.driver = DPGEN_CLANG_DRIVER;
   opts.out_dir = out_dir;
   opts.verbose = verbose;
+  opts.stamp = stamp;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);
 }

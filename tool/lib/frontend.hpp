@@ -12,12 +12,15 @@ namespace dpgen {
 struct FrontendOptions {
   std::vector<std::string> compiler_args; // after `--`
   std::string resource_dir;               // Clang's builtin headers
+  std::string driver = "clang++";         // argv[0]: where the driver looks for GCC's headers
 };
 
 /// Parses `file` and lowers its kernels. Diagnostics go to stderr as
 /// `file:line:col: error: ...` (Clang's format); remarks likewise.
 /// Returns false if any error was reported.
+/// `deps`, if given, receives every file the parse read (for build-system
+/// dependency files).
 bool lower_file(const std::string& file, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels);
+                std::vector<Kernel>& kernels, std::vector<std::string>* deps = nullptr);
 
 } // namespace dpgen

@@ -18,6 +18,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
   bool ok = true;
   std::vector<PendingFile> pending;
   std::set<std::string> stems;
+  std::vector<std::string> deps;
   for (const auto& input : inputs) {
     std::vector<Kernel> kernels;
     if (!llvm::sys::fs::exists(input)) {
@@ -25,7 +26,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = false;
       continue;
     }
-    if (!lower_file(input, opts.frontend, kernels)) {
+    if (!lower_file(input, opts.frontend, kernels, &deps)) {
       ok = false;
       continue;
     }
@@ -64,6 +65,29 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
   if (!write_if_changed(pending, error, &written)) {
     llvm::errs() << "error: " << error << "\n";
     return 1;
+  }
+  if (!opts.stamp.empty()) {
+    // Make-style depfile: "<stamp>: <dep> <dep> ...", spaces escaped.
+    std::string d = opts.stamp + ":";
+    std::set<std::string> seen;
+    for (const auto& dep : deps)
+      if (seen.insert(dep).second) {
+        std::string esc;
+        for (char c : dep)
+          esc += c == ' ' ? std::string("\\ ") : std::string(1, c);
+        d += " \\\n  " + esc;
+      }
+    d += "\n";
+    if (!write_if_changed({{opts.stamp + ".d", d}}, error)) {
+      llvm::errs() << "error: " << error << "\n";
+      return 1;
+    }
+    std::error_code ec;
+    llvm::raw_fd_ostream stamp(opts.stamp, ec); // (re)written: a new timestamp
+    if (ec) {
+      llvm::errs() << opts.stamp << ": error: " << ec.message() << "\n";
+      return 1;
+    }
   }
   if (opts.verbose)
     llvm::errs() << fmt::format("dpgen: {} file(s) written, {} unchanged\n", written,

@@ -13,6 +13,9 @@ struct GenerateOptions {
   FrontendOptions frontend;
   std::string out_dir;
   bool verbose = false; // report which files were written / unchanged
+  /// If set: after a successful run, touch this file and write `<stamp>.d`,
+  /// a make-style dependency file listing every file the kernels include.
+  std::string stamp;
 };
 
 /// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} for each input. If any input

@@ -760,7 +760,61 @@ private:
         }
         check_one_to_one(s, dims);
       }
+      // Within one loop nest, every store to an output uses the same index
+      // (their paths are disjoint), so no two iterations meet.
+      if (!nest.loops.empty())
+        for (size_t a = 0; a < nest.stores.size(); ++a)
+          for (size_t b = a + 1; b < nest.stores.size(); ++b) {
+            const Store &x = nest.stores[a], &y = nest.stores[b];
+            if (x.array == y.array && !(*to_poly(x.index) == *to_poly(y.index)))
+              fail_at(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
+                                         "line {} of the same loop: dpgen cannot prove two "
+                                         "iterations never write the same element",
+                                         y.array, print_index(y), print_index(x), x.pos.line));
+          }
     }
+    // Across loop nests: an element written twice would be overwritten in
+    // the forward pass but counted twice in the adjoint. Accept only ranges
+    // that are provably apart.
+    for (size_t a = 0; a < k_.nests.size(); ++a)
+      for (size_t b = a + 1; b < k_.nests.size(); ++b)
+        for (const auto& x : k_.nests[a].stores)
+          for (const auto& y : k_.nests[b].stores) {
+            if (x.array != y.array)
+              continue;
+            auto rx = index_range(x, k_.nests[a]), ry = index_range(y, k_.nests[b]);
+            auto apart = [](const Poly& hi, const Poly& lo) { // hi < lo
+              Poly d = lo - hi;
+              return d.is_constant() && d.constant_term() > 0;
+            };
+            if (rx && ry && (apart(rx->second, ry->first) || apart(ry->second, rx->first)))
+              continue;
+            fail_at(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
+                                       "nest, and dpgen cannot prove the two write different "
+                                       "elements (the adjoint would count an overwritten "
+                                       "element twice); write each element in one loop, with "
+                                       "an index branch for the boundary",
+                                       y.array, x.pos.line));
+          }
+  }
+
+  static std::string print_index(const Store& s) { return to_poly(s.index)->str(); }
+
+  // [min, max] of a store's index over its loop box, when every counter's
+  // coefficient is a constant.
+  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
+    Poly p = *to_poly(s.index), lo, hi;
+    for (const auto& l : nest.loops) {
+      Poly c = p.coefficient("@" + l.var);
+      if (!c.is_constant())
+        return std::nullopt;
+      long long cc = c.constant_term();
+      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
+      lo = lo + c * (cc > 0 ? first : last);
+      hi = hi + c * (cc > 0 ? last : first);
+      p = p.without("@" + l.var);
+    }
+    return std::pair{lo + p, hi + p};
   }
 
   // Mixed-radix test: with the counters ordered by coefficient, every
@@ -1061,14 +1115,19 @@ private:
 
 class Consumer : public ASTConsumer {
 public:
-  Consumer(std::vector<Kernel>& out, bool& ok, std::string file)
-      : collector_(out, ok, file), ok_(ok) {
+  Consumer(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
+      : collector_(out, ok, file), ok_(ok), deps_(deps) {
     // A kernel: an annotated function definition (DPGEN_KERNEL).
     auto kernel = functionDecl(isDefinition(), hasAttr(attr::Annotate)).bind("kernel");
     finder_.addMatcher(kernel, &collector_);
   }
 
   void HandleTranslationUnit(ASTContext& ctx) override {
+    if (deps_) {
+      const auto& sm = ctx.getSourceManager();
+      for (auto it = sm.fileinfo_begin(); it != sm.fileinfo_end(); ++it)
+        deps_->push_back(it->first.getName().str());
+    }
     if (ctx.getDiagnostics().hasErrorOccurred()) {
       ok_ = false;
       return; // a syntax error was reported by Clang already
@@ -1089,27 +1148,29 @@ private:
   KernelCollector collector_;
   MatchFinder finder_;
   bool& ok_;
+  std::vector<std::string>* deps_;
 };
 
 class Action : public ASTFrontendAction {
 public:
-  Action(std::vector<Kernel>& out, bool& ok, std::string file)
-      : out_(out), ok_(ok), file_(std::move(file)) {}
+  Action(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
+      : out_(out), ok_(ok), file_(std::move(file)), deps_(deps) {}
   std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance&, llvm::StringRef) override {
-    return std::make_unique<Consumer>(out_, ok_, file_);
+    return std::make_unique<Consumer>(out_, ok_, file_, deps_);
   }
 
 private:
   std::vector<Kernel>& out_;
   bool& ok_;
   std::string file_;
+  std::vector<std::string>* deps_;
 };
 
 } // namespace
 
 bool lower_file(const std::string& file, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels) {
-  std::vector<std::string> args = {"clang++", "-fsyntax-only"};
+                std::vector<Kernel>& kernels, std::vector<std::string>* deps) {
+  std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
   if (!opts.resource_dir.empty())
     args.push_back("-resource-dir=" + opts.resource_dir);
   bool has_std = false;
@@ -1125,7 +1186,7 @@ bool lower_file(const std::string& file, const FrontendOptions& opts,
   std::vector<Kernel> found;
   auto files = llvm::vfs::getRealFileSystem();
   auto fm = llvm::makeIntrusiveRefCnt<FileManager>(FileSystemOptions(), files);
-  tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file), fm.get());
+  tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file, deps), fm.get());
   bool ran = inv.run();
   if (!ran)
     ok = false;
