@@ -22,7 +22,9 @@ public:
       auto it = local_memo_.find(e->local.get());
       if (it != local_memo_.end())
         return it->second;
-      ExprP r = d(e->local->def);
+      const ExprP& def = e->local->def;
+      // A call's rule reuses its value (d exp(a) = exp(a)·da): use the local.
+      ExprP r = def->op == Op::Call ? call_rule(def, e) : d(def);
       local_memo_[e->local.get()] = r;
       return r;
     }
@@ -68,7 +70,7 @@ public:
       // float <-> double: the derivative converts too; int -> real: zero
       return is_real(e->ops[0]->type) ? cast_or_null(d(e->ops[0]), e->type) : nullptr;
     case Op::Call:
-      return call_rule(e);
+      return call_rule(e, nullptr);
     default:
       return nullptr; // comparisons, logic, %: not real-valued
     }
@@ -93,7 +95,21 @@ private:
   static ExprP mul(ExprP a, ExprP b) { return a && b ? binary(Op::Mul, a, b) : nullptr; }
   static ExprP cast_or_null(ExprP a, Type t) { return a ? cast(a, t) : nullptr; }
 
-  ExprP call_rule(const ExprP& e) {
+  // The value of call `e` for rules that reuse it: `self` when the call is a
+  // local's definition, else a new local, so it is evaluated once.
+  static ExprP named(const ExprP& e, const ExprP& self) {
+    if (self)
+      return self;
+    static int counter = 0;
+    auto l = std::make_shared<LocalVar>();
+    l->name = e->name + "_v" + std::to_string(counter);
+    l->type_name = type_spelling(e->type);
+    l->def = e;
+    l->id = 1000000 + counter++; // after every user local
+    return local_ref(l);
+  }
+
+  ExprP call_rule(const ExprP& e, const ExprP& self) {
     const std::string& f = e->name;
     const ExprP& a = e->ops[0];
     if (f == "min" || f == "max") {
@@ -114,7 +130,7 @@ private:
       ExprP db = d(b);
       ExprP t1 = da ? mul(mul(b, call("pow", {a, binary(Op::Sub, b, lit(1, e))}, e->type)), da)
                     : nullptr;
-      ExprP t2 = db ? mul(mul(e, call("log", {a}, e->type)), db) : nullptr;
+      ExprP t2 = db ? mul(mul(named(e, self), call("log", {a}, e->type)), db) : nullptr;
       return add(t1, t2);
     }
     if (!da)
@@ -122,17 +138,19 @@ private:
     if (f == "abs") // d|a| = sign(a)·da
       return select(binary(Op::Lt, a, zero(a)), unary(Op::Neg, da), da);
     if (f == "sqrt") // d sqrt(a) = da / (2·sqrt(a))
-      return binary(Op::Div, da, binary(Op::Mul, lit(2, e), e));
+      return binary(Op::Div, da, binary(Op::Mul, lit(2, e), named(e, self)));
     if (f == "exp") // d exp(a) = exp(a)·da
-      return mul(e, da);
+      return mul(named(e, self), da);
     if (f == "log") // d log(a) = da / a
       return binary(Op::Div, da, a);
     if (f == "sin") // d sin(a) = cos(a)·da
       return mul(call("cos", {a}, e->type), da);
     if (f == "cos") // d cos(a) = -sin(a)·da
       return neg(mul(call("sin", {a}, e->type), da));
-    if (f == "tanh") // d tanh(a) = (1 - tanh²(a))·da
-      return mul(binary(Op::Sub, lit(1, e), binary(Op::Mul, e, e)), da);
+    if (f == "tanh") { // d tanh(a) = (1 - tanh²(a))·da
+      ExprP t = named(e, self);
+      return mul(binary(Op::Sub, lit(1, e), binary(Op::Mul, t, t)), da);
+    }
     throw std::logic_error("derive: no rule for call to " + f);
   }
 };

@@ -129,6 +129,29 @@ bool is_bulk(const Block& b, const GatherGroup& g) {
   return true;
 }
 
+// The index reads data (an array, or a real value converted to int).
+bool data_dependent(const ExprP& e) {
+  if (e->op == Op::Read || (e->op == Op::Cast && is_real(e->ops[0]->type)))
+    return true;
+  if (e->op == Op::Local)
+    return data_dependent(e->local->def);
+  for (const auto& o : e->ops)
+    if (data_dependent(o))
+      return true;
+  return false;
+}
+
+bool uses_rem(const ExprP& e) {
+  if (e->op == Op::Rem)
+    return true;
+  if (e->op == Op::Local)
+    return uses_rem(e->local->def);
+  for (const auto& o : e->ops)
+    if (uses_rem(o))
+      return true;
+  return false;
+}
+
 std::string describe_read(const Expr* r) {
   return fmt::format("{}[{}]", r->name, print(r->ops[0]));
 }
@@ -191,11 +214,15 @@ AdjointPlan schedule(const Kernel& k) {
             }
           if (!invertible) {
             scatter.reads.push_back({r, partial});
+            bool has_rem = uses_rem(r->ops[0]) && !data_dependent(r->ops[0]);
             plan.remarks.push_back(
                 {r->pos, fmt::format("read '{}' in kernel '{}' has an index that cannot be "
                                      "inverted (data-dependent or not affine): its adjoint is "
-                                     "computed in scatter form, serially",
-                                     describe_read(r), k.name)});
+                                     "computed in scatter form, serially{}",
+                                     describe_read(r), k.name,
+                                     has_rem ? " (for the gather form, write a periodic wrap "
+                                               "as a conditional index: i == n - 1 ? 0 : i + 1)"
+                                             : "")});
             continue;
           }
           for (const auto& [piece, dec] : affine) {
