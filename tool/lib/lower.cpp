@@ -911,7 +911,9 @@ private:
       ExprP idx = expr(s->getIdx());
       if (idx->type != Type::Int)
         fail(s->getIdx()->getBeginLoc(), "array index must be an integer");
-      return read(p->name, idx, p->elem, pos(s->getBeginLoc()));
+      ExprP r = read(p->name, idx, p->elem, pos(s->getBeginLoc()));
+      std::const_pointer_cast<Expr>(r)->text = text(s); // as written, for remarks
+      return r;
     }
     if (const auto* u = dyn_cast<UnaryOperator>(e)) {
       switch (u->getOpcode()) {
