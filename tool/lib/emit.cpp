@@ -132,6 +132,7 @@ struct BlockContext {
   const GatherGroup& g;
   Code& code;
   std::string acc;
+  std::string hit;    // flag set when a term applies (edge cells)
   bool edge;          // guarded: check that the iteration is in the domain
   const Box* interior; // cell-space interior box (interior mode)
 };
@@ -229,7 +230,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? "hit = true;" : "");
+    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? cx.hit + " = true;" : "");
     for (int i = 0; i < opened; ++i)
       code.close();
     code.close();
@@ -352,39 +353,11 @@ std::string min_of_max(const std::vector<std::vector<Poly>>& cands, const std::s
   return fmt::format("std::{}<{}>({{{}}})", fn, t, fmt::join(parts, ", "));
 }
 
-void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
-  const Nest& nest = *g.nest;
-  std::string elem = elem_of(k, g.array);
-  Poly cell_index = g.base;
-  for (const auto& [v, c] : g.layout)
-    cell_index = cell_index + c * Poly::symbol("c_" + v);
-  std::string cell = fmt::format("{}_adj[{}]", g.array, cell_index.str());
-
-  std::string layout_desc;
-  for (const auto& [v, c] : g.layout)
-    layout_desc += (layout_desc.empty() ? "" : ", ") + v;
-  if (g.layout.empty())
-    code.line("// {}: one cell, summed over the iterations ({}) that read it", cell,
-              fmt::join(g.reduced, ", "));
-  else
-    code.line("// {}: each cell gathers the reads of {} made by the iterations ({}){}", cell,
-              g.array, layout_desc,
-              g.reduced.empty() ? ""
-                                : fmt::format(", summed over {}", fmt::join(g.reduced, ", ")));
-  code.open("");
-
-  // Cell lambdas: the guarded edge and the branch-free interior.
-  std::vector<std::string> cell_params;
-  for (const auto& [v, c] : g.layout)
-    cell_params.push_back(fmt::format("const {} c_{}", loop_type(nest, v), v));
-  std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
-
-  // Bounding box of the cells, interior box (cell space, "@v" keys).
-  Box interior;
-  std::map<std::string, std::pair<std::string, std::string>> bounds; // v -> (lo, hi) text
+// Cell bounding box of a group, per layout counter: (lo, hi) as C++.
+std::map<std::string, std::pair<std::string, std::string>> cell_bounds(const GatherGroup& g) {
+  std::map<std::string, std::pair<std::string, std::string>> bounds;
   for (const auto& [v, c] : g.layout) {
     std::vector<std::vector<Poly>> los, his;
-    Interval in;
     for (const auto& b : g.blocks) {
       auto sit = b.shift.find(v);
       Poly d = sit == b.shift.end() ? Poly() : sit->second;
@@ -392,94 +365,161 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
         const Interval& iv = box.dims.at("@" + v);
         los.push_back(shifted(iv.lo, d));
         his.push_back(shifted(iv.hi, d));
-        if (b.bulk) {
-          for (const auto& p : shifted(iv.lo, d))
-            in.lo.push_back(p);
-          for (const auto& p : shifted(iv.hi, d))
-            in.hi.push_back(p);
-        }
       }
     }
-    interior.dims["@" + v] = in;
-    std::string t = loop_type(nest, v);
+    std::string t = loop_type(*g.nest, v);
     bounds[v] = {min_of_max(los, t, true), min_of_max(his, t, false)};
   }
-  narrow_for_selects(g, interior);
-  interior = simplify(interior);
-  bool any_bulk = false;
-  for (const auto& b : g.blocks)
-    any_bulk = any_bulk || b.bulk;
+  return bounds;
+}
 
-  if (g.layout.empty()) {
+// The memory index of cell (c_j, c_i, ...) of a group's layout.
+std::string cell_index(const GatherGroup& g) {
+  Poly index = g.base;
+  for (const auto& [v, c] : g.layout)
+    index = index + c * Poly::symbol("c_" + v);
+  return index.str();
+}
+
+std::string adj_cell(const GatherGroup& g) {
+  return fmt::format("{}_adj[{}]", g.array, cell_index(g));
+}
+
+// One cell loop for one or more gather groups that share a layout and a cell
+// box (several inputs of one kernel, fused so the loop reads shared data once).
+void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGroup*>& gs) {
+  const GatherGroup& g0 = *gs.front();
+  const Nest& nest = *g0.nest;
+  const bool fused = gs.size() > 1;
+  auto acc_name = [&](const GatherGroup& g) { return fused ? "acc_" + g.array : std::string("acc"); };
+  auto hit_name = [&](const GatherGroup& g) { return fused ? "hit_" + g.array : std::string("hit"); };
+
+  std::string layout_desc;
+  for (const auto& [v, c] : g0.layout)
+    layout_desc += (layout_desc.empty() ? "" : ", ") + v;
+  std::vector<std::string> cells;
+  for (const auto* g : gs)
+    cells.push_back(adj_cell(*g));
+  std::vector<std::string> arrays;
+  for (const auto* g : gs)
+    arrays.push_back(g->array);
+  if (g0.layout.empty())
+    code.line("// {}: one cell, summed over the iterations ({}) that read it",
+              fmt::join(cells, ", "), fmt::join(g0.reduced, ", "));
+  else
+    code.line("// {}: each cell gathers the reads of {} made by the iterations ({}){}",
+              fmt::join(cells, ", "), fmt::join(arrays, ", "), layout_desc,
+              g0.reduced.empty() ? ""
+                                 : fmt::format(", summed over {}", fmt::join(g0.reduced, ", ")));
+  code.open("");
+
+  auto edge_body = [&]() {
+    for (const auto* g : gs) {
+      code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
+      code.line("bool {} = false;", hit_name(*g));
+      for (const auto& b : g->blocks)
+        emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
+      code.line("if ({})", hit_name(*g));
+      code.line("  {} += {};", adj_cell(*g), acc_name(*g));
+    }
+  };
+  if (g0.layout.empty()) {
     // A single cell (a constant index, e.g. the periodic wrap d[0]): sum the
     // iterations that read it.
-    code.line("{} acc = 0;", elem);
-    code.line("bool hit = false;");
-    for (const auto& b : g.blocks)
-      emit_block({k, g, code, "acc", true, nullptr}, b);
-    code.line("if (hit)");
-    code.line("  {} += acc;", cell);
+    edge_body();
     code.close();
     return;
   }
 
+  std::vector<std::string> cell_params;
+  for (const auto& [v, c] : g0.layout)
+    cell_params.push_back(fmt::format("const {} c_{}", loop_type(nest, v), v));
+  std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
+
+  // Interior box (cell space, "@v" keys): inside every bulk block of every
+  // group, narrowed so index conditions are decided.
+  Box interior;
+  bool any_bulk = false;
+  for (const auto& [v, c] : g0.layout) {
+    Interval& in = interior.dims["@" + v];
+    for (const auto* g : gs)
+      for (const auto& b : g->blocks) {
+        if (!b.bulk)
+          continue;
+        any_bulk = true;
+        auto sit = b.shift.find(v);
+        Poly d = sit == b.shift.end() ? Poly() : sit->second;
+        const Interval& iv = b.domain.front().dims.at("@" + v);
+        for (const auto& p : shifted(iv.lo, d))
+          in.lo.push_back(p);
+        for (const auto& p : shifted(iv.hi, d))
+          in.hi.push_back(p);
+      }
+  }
+  for (const auto* g : gs)
+    narrow_for_selects(*g, interior);
+  interior = simplify(interior);
+
   // Edge cell: every block, each checked against its iteration domain.
   code.open(fmt::format("auto edge = [&]({})", params));
-  code.line("{} acc = 0;", elem);
-  code.line("bool hit = false;");
-  for (const auto& b : g.blocks)
-    emit_block({k, g, code, "acc", true, nullptr}, b);
-  code.line("if (hit)");
-  code.line("  {} += acc;", cell);
+  edge_body();
   code.close(";");
-
   if (any_bulk) {
     code.open(fmt::format("auto interior = [&]({})", params));
-    code.line("{} acc = 0;", elem);
-    for (const auto& b : g.blocks)
-      if (b.bulk)
-        emit_block({k, g, code, "acc", false, &interior}, b);
-    code.line("{} += acc;", cell);
+    for (const auto* g : gs) {
+      bool has_bulk = false;
+      for (const auto& b : g->blocks)
+        has_bulk = has_bulk || b.bulk;
+      if (!has_bulk)
+        continue; // no term of this input reaches the interior
+      code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
+      for (const auto& b : g->blocks)
+        if (b.bulk)
+          emit_block({k, *g, code, acc_name(*g), "", false, &interior}, b);
+      code.line("{} += {};", adj_cell(*g), acc_name(*g));
+    }
     code.close(";");
   }
 
   // Ranges.
-  for (const auto& [v, c] : g.layout) {
+  auto bounds = cell_bounds(g0);
+  for (const auto& [v, c] : g0.layout) {
     std::string t = loop_type(nest, v);
     code.line("const {} lo_{} = {}, hi_{} = {};", t, v, bounds[v].first, v, bounds[v].second);
   }
   // The interior holds only if no narrow (edge) block reaches into it.
-  std::vector<std::string> apart;
   if (any_bulk) {
-    for (const auto& b : g.blocks) {
-      if (b.bulk)
-        continue;
-      std::map<std::string, Poly> fwd;
-      for (const auto& [v, c] : g.layout) {
-        auto it = b.shift.find(v);
-        fwd["@" + v] = it == b.shift.end() ? Poly() : it->second;
-      }
-      for (const auto& box : shift(b.domain, fwd)) {
-        Box cells;
-        for (const auto& [v, c] : g.layout)
-          cells.dims["@" + v] = box.dims.at("@" + v);
-        if (box_disjoint(cells, {interior}))
+    std::vector<std::string> apart;
+    for (const auto* g : gs)
+      for (const auto& b : g->blocks) {
+        if (b.bulk)
           continue;
-        std::vector<std::string> ors;
-        for (const auto& [key, iv] : box.dims) {
-          std::string v = key.substr(1);
-          std::string t = loop_type(nest, v);
-          std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
-          ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
-          if (cells.dims.count(key)) {
-            ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
-            ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
-          }
+        std::map<std::string, Poly> fwd;
+        for (const auto& [v, c] : g->layout) {
+          auto it = b.shift.find(v);
+          fwd["@" + v] = it == b.shift.end() ? Poly() : it->second;
         }
-        apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
+        for (const auto& box : shift(b.domain, fwd)) {
+          Box cells_box;
+          for (const auto& [v, c] : g->layout)
+            cells_box.dims["@" + v] = box.dims.at("@" + v);
+          if (box_disjoint(cells_box, {interior}))
+            continue;
+          std::vector<std::string> ors;
+          for (const auto& [key, iv] : box.dims) {
+            std::string v = key.substr(1);
+            std::string t = loop_type(nest, v);
+            std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
+            ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
+            if (cells_box.dims.count(key)) {
+              ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
+              ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
+            }
+          }
+          apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
+        }
       }
-    }
-    for (const auto& [v, c] : g.layout) {
+    for (const auto& [v, c] : g0.layout) {
       std::string t = loop_type(nest, v);
       const Interval& iv = interior.dims["@" + v];
       code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
@@ -490,7 +530,7 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
     if (!apart.empty()) {
       code.open(fmt::format("if (!({}))", fmt::join(apart, " && ")));
       code.line("// an edge term reaches into the interior: treat every cell as an edge");
-      for (const auto& [v, c] : g.layout)
+      for (const auto& [v, c] : g0.layout)
         code.line("in_lo_{} = in_hi_{} = hi_{};", v, v, v);
       code.close();
     }
@@ -498,9 +538,9 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
 
   // One-to-one layout over the cell box (mixed radix), else run serially.
   std::string parallel_if;
-  bool unit_1d = g.layout.size() == 1 && g.layout[0].second.is_constant();
+  bool unit_1d = g0.layout.size() == 1 && g0.layout[0].second.is_constant();
   if (!unit_1d) {
-    auto order = g.layout;
+    auto order = g0.layout;
     std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
       if (a.second.degree() != b.second.degree())
         return a.second.degree() < b.second.degree();
@@ -524,16 +564,14 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
 
   // Loops: outer counters with a per-row interior test, the innermost split
   // into edge / interior / edge.
-  size_t d = g.layout.size();
+  size_t d = g0.layout.size();
+  std::vector<std::string> all_cells;
+  for (const auto& [u, c] : g0.layout)
+    all_cells.push_back("c_" + u);
+  std::string args = fmt::format("{}", fmt::join(all_cells, ", "));
   std::function<void(size_t, std::string)> loops = [&](size_t level, std::string outer_edge) {
-    const std::string& v = g.layout[level].first;
+    const std::string& v = g0.layout[level].first;
     std::string t = loop_type(nest, v);
-    auto edge_args = [&]() {
-      std::vector<std::string> a;
-      for (const auto& [u, c] : g.layout)
-        a.push_back("c_" + u);
-      return fmt::format("{}", fmt::join(a, ", "));
-    };
     if (level + 1 < d) {
       if (level == 0)
         code.line("#pragma omp parallel for{}", parallel_if);
@@ -546,7 +584,6 @@ void emit_gather(Code& code, const Kernel& k, const GatherGroup& g) {
       code.close();
       return;
     }
-    std::string args = edge_args();
     auto loop = [&](const std::string& from, const std::string& to, const std::string& fn,
                     bool pragma) {
       if (pragma)
@@ -683,12 +720,32 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
   code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  // Gather groups of different inputs that share a loop nest, a layout and a
+  // cell box run in one fused loop.
+  std::set<const GatherGroup*> done;
+  auto key = [](const GatherGroup& g) {
+    std::string s = fmt::format("{}|{}|", static_cast<const void*>(g.nest), cell_index(g));
+    for (const auto& [v, b] : cell_bounds(g))
+      s += v + ":" + b.first + "," + b.second + ";";
+    return s;
+  };
   for (const auto& p : k.params) {
     if (p.kind != ParamKind::In)
       continue;
-    for (const auto& g : plan.gathers)
-      if (g.array == p.name)
-        emit_gather(code, k, g);
+    for (const auto& g : plan.gathers) {
+      if (g.array != p.name || done.count(&g))
+        continue;
+      std::vector<const GatherGroup*> fused = {&g};
+      for (const auto& h : plan.gathers)
+        if (&h != &g && h.array != g.array && !done.count(&h) && !h.layout.empty() &&
+            key(h) == key(g) && std::none_of(fused.begin(), fused.end(), [&](const auto* f) {
+              return f->array == h.array;
+            }))
+          fused.push_back(&h);
+      for (const auto* f : fused)
+        done.insert(f);
+      emit_gather(code, k, fused);
+    }
     for (const auto& u : plan.scatters)
       if (u.array == p.name)
         emit_scatter(code, u);
