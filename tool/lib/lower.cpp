@@ -12,6 +12,7 @@
 #include <clang/AST/ExprCXX.h>
 #include <clang/AST/Stmt.h>
 #include <clang/AST/StmtCXX.h>
+#include <clang/AST/StmtOpenMP.h>
 #include <clang/ASTMatchers/ASTMatchFinder.h>
 #include <clang/ASTMatchers/ASTMatchers.h>
 #include <clang/Basic/SourceManager.h>
@@ -273,6 +274,12 @@ private:
     }
     if (isa<NullStmt>(s))
       return Escape::None;
+    // `#pragma omp parallel for` (parsed with -fopenmp): the loop it wraps.
+    if (const auto* omp = dyn_cast<OMPExecutableDirective>(s)) {
+      if (!omp->hasAssociatedStmt())
+        fail(s->getBeginLoc(), "this OpenMP directive is outside the kernel subset");
+      return lower(omp->getInnermostCapturedStmt()->getCapturedStmt());
+    }
     if (const auto* d = dyn_cast<DeclStmt>(s)) {
       for (const Decl* decl : d->decls())
         declare(decl);
