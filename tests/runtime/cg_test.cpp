@@ -179,8 +179,8 @@ TEST_CASE("cg: a zero right-hand side gives the zero solution without iterating"
 
 TEST_CASE("cg: periodic Poisson with null-space mean removal") {
   // -d^2/dx^2 on a periodic grid: symmetric positive semi-definite, null space = constants.
-  const int n = 64;
-  const auto apply = [n](const VectorXd& v, VectorXd& y) {
+  constexpr int n = 64;
+  const auto apply = [](const VectorXd& v, VectorXd& y) {
     for (int i = 0; i < n; ++i)
       y[i] = 2.0 * v[i] - v[(i + 1) % n] - v[(i + n - 1) % n];
   };
