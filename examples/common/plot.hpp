@@ -68,20 +68,31 @@ inline void write_svg_plot(const std::string& path, const std::string& title,
     << "</text>\n";
   o << "<rect x='" << L << "' y='" << T << "' width='" << W - L - R << "' height='" << H - T - B
     << "' fill='none' stroke='black'/>\n";
+  auto num = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", std::fabs(v) < 1e-12 ? 0.0 : v);
+    return std::string(buf);
+  };
   for (int k = 0; k <= 5; ++k) {
-    double xv = x0 + (x1 - x0) * k / 5, yv = y0 + (y1 - y0) * k / 5;
+    double xv = x0 + (x1 - x0) * k / 5;
     o << "<line x1='" << px(xv) << "' y1='" << H - B << "' x2='" << px(xv) << "' y2='" << H - B + 5
       << "' stroke='black'/><text x='" << px(xv) << "' y='" << H - B + 18
-      << "' text-anchor='middle'>" << xv << "</text>\n";
-    std::ostringstream lab;
-    if (log_y)
-      lab << "1e" << std::round(yv * 10) / 10;
-    else
-      lab << yv;
+      << "' text-anchor='middle'>" << num(xv) << "</text>\n";
+  }
+  // y ticks: every decade on a log axis, six even steps otherwise.
+  std::vector<std::pair<double, std::string>> yticks;
+  if (log_y) {
+    int step = std::max(1, static_cast<int>(std::ceil((y1 - y0) / 8)));
+    for (int e = static_cast<int>(std::ceil(y0)); e <= y1; e += step)
+      yticks.push_back({double(e), "1e" + std::to_string(e)});
+  } else {
+    for (int k = 0; k <= 5; ++k)
+      yticks.push_back({y0 + (y1 - y0) * k / 5, num(y0 + (y1 - y0) * k / 5)});
+  }
+  for (const auto& [yv, lab] : yticks)
     o << "<line x1='" << L - 5 << "' y1='" << pyv(yv) << "' x2='" << L << "' y2='" << pyv(yv)
       << "' stroke='black'/><text x='" << L - 8 << "' y='" << pyv(yv) + 4
-      << "' text-anchor='end'>" << lab.str() << "</text>\n";
-  }
+      << "' text-anchor='end'>" << lab << "</text>\n";
   o << "<text x='" << (L + W - R) / 2 << "' y='" << H - 15 << "' text-anchor='middle'>" << xlabel
     << "</text>\n";
   o << "<text x='18' y='" << (T + H - B) / 2 << "' text-anchor='middle' transform='rotate(-90 18 "

@@ -237,6 +237,9 @@ void emit_block(const BlockContext& cx, const Block& b) {
   }
 }
 
+// Fewer cells than this run serially: a parallel region costs microseconds.
+constexpr int kMinParallelCells = 8192;
+
 // ---- a gather group ------------------------------------------------------------
 
 void collect_selects(const ExprP& e, std::vector<ExprP>& conds, std::set<const LocalVar*>& seen) {
@@ -536,8 +539,12 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
     }
   }
 
-  // One-to-one layout over the cell box (mixed radix), else run serially.
-  std::string parallel_if;
+  // Threads only for enough cells to pay for a parallel region, and only if
+  // the layout is one-to-one over the cell box (mixed radix): else serial.
+  std::vector<std::string> extents, conds;
+  for (const auto& [v, c] : g0.layout)
+    extents.push_back(fmt::format("(hi_{} - lo_{})", v, v));
+  conds.push_back(fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelCells));
   bool unit_1d = g0.layout.size() == 1 && g0.layout[0].second.is_constant();
   if (!unit_1d) {
     auto order = g0.layout;
@@ -546,7 +553,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
         return a.second.degree() < b.second.degree();
       return std::llabs(a.second.constant_term()) < std::llabs(b.second.constant_term());
     });
-    std::vector<std::string> reach, conds;
+    std::vector<std::string> reach;
     for (size_t i = 0; i < order.size(); ++i) {
       const auto& [v, c] = order[i];
       std::string coef = c.is_constant() ? std::to_string(std::llabs(c.constant_term())) : c.str();
@@ -557,10 +564,12 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       reach.push_back(fmt::format("({} - 1) * {}", fmt::format("(hi_{} - lo_{})", v, v),
                                   c.is_constant() ? coef : "(" + coef + ")"));
     }
-    code.line("// cells are distinct memory (mixed-radix test): safe to run in parallel");
-    code.line("const bool parallel_ok = {};", fmt::join(conds, " && "));
-    parallel_if = " if (parallel_ok)";
+    code.line("// threads if the cells are many and distinct memory (mixed-radix test)");
+  } else {
+    code.line("// threads if the cells are many");
   }
+  code.line("const bool parallel_ok = {};", fmt::join(conds, " && "));
+  std::string parallel_if = " if (parallel_ok)";
 
   // Loops: outer counters with a per-row interior test, the innermost split
   // into edge / interior / edge.
