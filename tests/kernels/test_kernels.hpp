@@ -27,3 +27,6 @@ DPGEN_KERNEL void minmod_slope(DPGEN_IN const double* q, DPGEN_OUT double* slope
 DPGEN_KERNEL void edge_cases(DPGEN_IN const double* a, DPGEN_IN const double* b,
                              DPGEN_OUT double* out, DPGEN_OUT double* ends, int n, double s);
 DPGEN_KERNEL void strided(DPGEN_IN const double* a, DPGEN_OUT double* out, int n);
+DPGEN_KERNEL void clipped_sample(DPGEN_IN const double* q, DPGEN_IN const double* a,
+                                 const double* mask, DPGEN_OUT double* out,
+                                 DPGEN_OUT double* masked, int n);

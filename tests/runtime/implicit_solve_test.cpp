@@ -2,6 +2,9 @@
 // Poisson operator against finite differences of the whole solve and against differentiating
 // through the unrolled CG iterations; periodic (null space) and non-symmetric cases; errors.
 #include "dpgen/implicit_solve.hpp"
+#include "neg_div_k_grad_1d_adjoint.hpp"
+#include "neg_div_k_grad_periodic2d_adjoint.hpp"
+#include "operators.hpp"
 
 #include <doctest/doctest.h>
 
@@ -23,73 +26,9 @@ VectorXd random_vector(Eigen::Index n, unsigned seed, double lo = -1.0, double h
   return v;
 }
 
-// The operators are written as kernels (raw pointers, the signatures dpgen reads and writes)
-// with hand-written adjoints in the generated signature: each differentiable input followed by
-// its `_adj` (accumulated with +=), the output replaced by its adjoint seed. A generated adjoint
-// can replace the hand-written one without touching the tests.
-
-// -d/dx(k dp/dx) on n cells with zero Dirichlet ghosts p[-1] = p[n] = 0; k on the n+1 faces:
-//   out[i] = (k[i] (p[i] - p[i-1]) + k[i+1] (p[i] - p[i+1])) / h^2.   SPD for k > 0.
-void neg_div_k_grad_1d(const double* p, const double* k, double* out, int n, double h) {
-  const double inv_h2 = 1.0 / (h * h);
-  for (int i = 0; i < n; ++i) {
-    const double left = i > 0 ? p[i - 1] : 0.0;
-    const double right = i < n - 1 ? p[i + 1] : 0.0;
-    out[i] = (k[i] * (p[i] - left) + k[i + 1] * (p[i] - right)) * inv_h2;
-  }
-}
-
-void neg_div_k_grad_1d_adjoint(const double* p, double* p_adj, const double* k, double* k_adj,
-                               const double* out_adj, int n, double h) {
-  const double inv_h2 = 1.0 / (h * h);
-  const auto pv = [&](int i) { return i >= 0 && i < n ? p[i] : 0.0; };
-  const auto g = [&](int i) { return i >= 0 && i < n ? out_adj[i] : 0.0; };
-  // Face j is read as k[i] by cell i = j and as k[i+1] by cell i = j-1.
-  for (int j = 0; j <= n; ++j)
-    k_adj[j] += (g(j) - g(j - 1)) * (pv(j) - pv(j - 1)) * inv_h2;
-  for (int i = 0; i < n; ++i) // the operator is symmetric in p
-    p_adj[i] += (k[i] * (g(i) - g(i - 1)) + k[i + 1] * (g(i) - g(i + 1))) * inv_h2;
-}
-
-// -div(k grad p) on a periodic nx-by-ny grid, k at cell centres averaged onto faces:
-//   out[c] = sum over the 4 neighbours m of (k[c] + k[m]) / 2 (p[c] - p[m]) / h^2.
-// Symmetric positive semi-definite with the constants as null space.
-void neg_div_k_grad_periodic2d(const double* p, const double* k, double* out, int nx, int ny,
-                               double h) {
-  const double inv_h2 = 1.0 / (h * h);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int c = j * nx + i;
-      const int m[4] = {j * nx + (i + 1) % nx, j * nx + (i + nx - 1) % nx, ((j + 1) % ny) * nx + i,
-                        ((j + ny - 1) % ny) * nx + i};
-      double sum = 0.0;
-      for (int e : m)
-        sum += 0.5 * (k[c] + k[e]) * (p[c] - p[e]);
-      out[c] = sum * inv_h2;
-    }
-}
-
-void neg_div_k_grad_periodic2d_adjoint(const double* p, double* p_adj, const double* k,
-                                       double* k_adj, const double* out_adj, int nx, int ny,
-                                       double h) {
-  const double inv_h2 = 1.0 / (h * h);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int c = j * nx + i;
-      const int m[4] = {j * nx + (i + 1) % nx, j * nx + (i + nx - 1) % nx, ((j + 1) % ny) * nx + i,
-                        ((j + ny - 1) % ny) * nx + i};
-      const double g = out_adj[c] * inv_h2;
-      for (int e : m) {
-        const double dk = 0.5 * (p[c] - p[e]) * g;
-        k_adj[c] += dk;
-        k_adj[e] += dk;
-        const double dp = 0.5 * (k[c] + k[e]) * g;
-        p_adj[c] += dp;
-        p_adj[e] -= dp;
-      }
-    }
-}
-
+// The operators are dpgen kernels (tests/runtime/operators/); their adjoints,
+// in particular w.r.t. the coefficient k that theta_bar needs, are generated
+// at build time.
 // Upwind advection (velocity c > 0) plus a shift, added to the 1D operator to make it
 // non-symmetric: (D p)_i = c (p_i - p_{i-1}) / h + sigma p_i; D^T q_i = c (q_i - q_{i+1}) / h
 // + sigma q_i (zero ghosts).
@@ -220,7 +159,7 @@ void unrolled_cg_backward(Apply&& apply, AdjointK&& adjoint_k, const CgTape& tap
 
 } // namespace
 
-TEST_CASE("the hand-written operator adjoints pass the dot-product test") {
+TEST_CASE("the generated operator adjoints pass the dot-product test") {
   // <J v, w> == <v, J^T w> for the Jacobian w.r.t. k (the operator is linear in k).
   const Problem1d pr;
   const VectorXd x = random_vector(pr.n, 22), dk = random_vector(pr.n + 1, 23);

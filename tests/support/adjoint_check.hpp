@@ -4,7 +4,9 @@
 //  2. a finite-difference gradient of the scalar loss L = sum(0.5 f^2 + w f),
 //     every input component;
 //  3. the += contract: adjoints accumulate into what the caller passed;
-//  4. no out-of-bounds access: every array sits between NaN/canary guards.
+//  4. no out-of-bounds access: every array sits between guard cells, NaN
+//     around what the kernels read and -0.0 around the adjoints they write
+//     (even an added +0.0 flips its sign).
 // Include after doctest.h.
 #pragma once
 
@@ -12,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <random>
 #include <string>
@@ -48,7 +51,8 @@ public:
   }
 
 private:
-  bool same(T v) const { return std::isnan(guard_) ? std::isnan(v) : v == guard_; }
+  // Bit for bit: a guard of -0.0 catches even `+= 0.0` (it turns into +0.0).
+  bool same(T v) const { return std::memcmp(&v, &guard_, sizeof(T)) == 0; }
   std::vector<T> data_;
   size_t n_;
   T guard_;
@@ -142,7 +146,7 @@ private:
   }
 
   Arrays zeros(const std::vector<size_t>& sizes) {
-    Arrays z = make(sizes, T(12345));
+    Arrays z = make(sizes, T(-0.0));
     for (auto& arr : z)
       for (size_t i = 0; i < arr.size(); ++i)
         arr[i] = 0;

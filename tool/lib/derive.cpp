@@ -155,17 +155,28 @@ private:
   }
 };
 
-void collect_reads(const ExprP& e, std::vector<const Expr*>& out, std::set<const Expr*>& seen,
-                   std::set<const LocalVar*>& seen_locals) {
+void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<ReadSite>& out,
+                   std::set<const Expr*>& seen, std::set<const LocalVar*>& seen_locals) {
   if (e->op == Op::Local) {
-    if (seen_locals.insert(e->local.get()).second)
-      collect_reads(e->local->def, out, seen, seen_locals);
+    if (seen_locals.insert(e->local.get()).second) {
+      std::vector<PathCond> none;
+      collect_reads(e->local->def, none, out, seen, seen_locals);
+    }
     return;
   }
   if (e->op == Op::Read && seen.insert(e.get()).second)
-    out.push_back(e.get());
+    out.push_back({e.get(), conds});
+  if (e->op == Op::Select) {
+    collect_reads(e->ops[0], conds, out, seen, seen_locals);
+    for (bool arm : {true, false}) {
+      conds.push_back({e->ops[0], arm});
+      collect_reads(e->ops[arm ? 1 : 2], conds, out, seen, seen_locals);
+      conds.pop_back();
+    }
+    return;
+  }
   for (const auto& o : e->ops)
-    collect_reads(o, out, seen, seen_locals);
+    collect_reads(o, conds, out, seen, seen_locals);
 }
 
 } // namespace
@@ -174,11 +185,12 @@ ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads) {
   return Deriver(reads).d(value);
 }
 
-std::vector<const Expr*> reads_in(const ExprP& e) {
-  std::vector<const Expr*> out;
+std::vector<ReadSite> reads_in(const ExprP& e) {
+  std::vector<ReadSite> out;
+  std::vector<PathCond> conds;
   std::set<const Expr*> seen;
   std::set<const LocalVar*> seen_locals;
-  collect_reads(e, out, seen, seen_locals);
+  collect_reads(e, conds, out, seen, seen_locals);
   return out;
 }
 

@@ -15,7 +15,16 @@ namespace dpgen {
 /// the primal values. nullptr stands for an exact zero.
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads);
 
+/// A Read node and the conditions of the conditional expressions whose arm it
+/// sits in (`i > 0 ? p[i - 1] : 0.0` reads p[i - 1] only where i > 0).
+/// Conditions are collected within one definition: a local's own reads are
+/// taken as unconditional where the local is defined.
+struct ReadSite {
+  const Expr* read;
+  std::vector<PathCond> conds;
+};
+
 /// Every Read node reachable from `e` (through Locals), in first-seen order.
-std::vector<const Expr*> reads_in(const ExprP& e);
+std::vector<ReadSite> reads_in(const ExprP& e);
 
 } // namespace dpgen

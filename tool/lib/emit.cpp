@@ -125,6 +125,20 @@ std::string loop_type(const Nest& n, const std::string& var) {
   return "int";
 }
 
+// Emits `const T name = def;` for each local in `locals` not yet in `done`.
+void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int>& done) {
+  for (const auto& [id, l] : locals)
+    if (done.insert(id).second)
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+}
+
+std::string conjunction(const std::vector<PathCond>& conds) {
+  std::vector<std::string> parts;
+  for (const auto& pc : conds)
+    parts.push_back(cond_text(pc));
+  return fmt::format("{}", fmt::join(parts, " && "));
+}
+
 // ---- one block: the terms of one (store, shift, piece) at one iteration -------
 
 struct BlockContext {
@@ -153,14 +167,20 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
   collect(seed_index, locals, vars);
   for (const auto& g : gs)
     collect(g, locals, vars);
+  std::set<int> done;
   if (!gs.empty()) {
+    // The guards' own locals first: the source computed them before branching.
+    std::map<int, LocalP> guard_locals;
+    std::set<std::string> unused;
+    for (const auto& g : gs)
+      collect(g, guard_locals, unused);
+    define_locals(code, guard_locals, done);
     std::vector<std::string> parts;
     for (const auto& g : gs)
       parts.push_back(print(g));
     code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
   }
-  for (const auto& [id, l] : locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
   code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())
@@ -634,51 +654,43 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
                           l.var, print(l.hi), l.var));
     ++opened;
   }
-  std::map<int, LocalP> locals;
+  // The store's path first (its locals are what the source computed before
+  // the branch), then the locals of the seed and of each read's partial, each
+  // read guarded by the arms it sits in.
+  std::set<int> done;
   std::set<std::string> vars;
-  std::vector<std::string> conds;
-  for (const auto& pc : s.path) {
-    collect(pc.cond, locals, vars);
-    conds.push_back(cond_text(pc));
-  }
-  // Conditions first (they guard what the locals read), then the locals.
-  if (!conds.empty()) {
+  if (!s.path.empty()) {
     std::map<int, LocalP> cond_locals;
-    std::set<std::string> unused;
     for (const auto& pc : s.path)
-      collect(pc.cond, cond_locals, unused);
-    for (const auto& [id, l] : cond_locals)
-      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-    code.open(fmt::format("if ({})", fmt::join(conds, " && ")));
+      collect(pc.cond, cond_locals, vars);
+    define_locals(code, cond_locals, done);
+    code.open(fmt::format("if ({})", conjunction(s.path)));
     ++opened;
-    locals.clear();
-    for (const auto& [id, l] : cond_locals)
-      locals[id] = l;
-    std::map<int, LocalP> body;
-    for (const auto& [r, p] : u.reads) {
-      collect(p, body, vars);
-      collect(r->ops[0], body, vars);
-    }
-    collect(s.index, body, vars);
-    for (const auto& [id, l] : body)
-      if (!cond_locals.count(id))
-        code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  } else {
-    for (const auto& [r, p] : u.reads) {
-      collect(p, locals, vars);
-      collect(r->ops[0], locals, vars);
-    }
-    collect(s.index, locals, vars);
-    for (const auto& [id, l] : locals)
-      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
   }
+  std::map<int, LocalP> seed_locals;
+  collect(s.index, seed_locals, vars);
+  define_locals(code, seed_locals, done);
   code.line("const {} seed = {}_adj[{}];", type_spelling(s.value->type), s.array, print(s.index));
-  for (const auto& [r, p] : u.reads) {
-    code.line("// {}[{}] = f(..., {}[{}], ...): {}_adj[{}] += ∂f/∂{}[{}] · seed", s.array,
-              print(s.index), r->name, print(r->ops[0]), r->name, print(r->ops[0]), r->name,
-              print(r->ops[0]));
-    code.line("{}_adj[{}] += {};", r->name, print(r->ops[0]),
-              print(binary(Op::Mul, p, param("seed", s.value->type))));
+  for (const auto& r : u.reads) {
+    code.line("// {}[{}] = f(..., {}, ...): {}_adj[{}] += ∂f/∂{} · seed", s.array,
+              print(s.index), r.read->text, r.read->name, print(r.read->ops[0]), r.read->text);
+    bool guarded = !r.conds.empty();
+    if (guarded) {
+      std::map<int, LocalP> cond_locals;
+      for (const auto& pc : r.conds)
+        collect(pc.cond, cond_locals, vars);
+      define_locals(code, cond_locals, done);
+      code.open(fmt::format("if ({})", conjunction(r.conds)));
+    }
+    std::map<int, LocalP> locals;
+    collect(r.partial, locals, vars);
+    collect(r.read->ops[0], locals, vars);
+    std::set<int> inner = done;
+    define_locals(code, locals, guarded ? inner : done);
+    code.line("{}_adj[{}] += {};", r.read->name, print(r.read->ops[0]),
+              print(binary(Op::Mul, r.partial, param("seed", s.value->type))));
+    if (guarded)
+      code.close();
   }
   for (int i = 0; i < opened; ++i)
     code.close();

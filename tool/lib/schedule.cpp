@@ -196,7 +196,8 @@ AdjointPlan schedule(const Kernel& k) {
         if (sdom.empty())
           continue; // never executes
         ScatterUnit scatter{param.name, &nest, &store, {}};
-        for (const Expr* r : reads_in(store.value)) {
+        for (const auto& site : reads_in(store.value)) {
+          const Expr* r = site.read;
           if (r->name != param.name)
             continue;
           ExprP partial = derivative(store.value, {r});
@@ -215,7 +216,7 @@ AdjointPlan schedule(const Kernel& k) {
               affine.push_back({piece, *dec});
             }
           if (!invertible) {
-            scatter.reads.push_back({r, partial});
+            scatter.reads.push_back({r, partial, site.conds});
             bool has_rem = uses_rem(r->ops[0]) && !data_dependent(r->ops[0]);
             plan.remarks.push_back(
                 {r->pos, fmt::format("read '{}' in kernel '{}' has an index that cannot be "
@@ -227,8 +228,22 @@ AdjointPlan schedule(const Kernel& k) {
                                              : "")});
             continue;
           }
+          // Conditions of the arms the read sits in: index conditions narrow
+          // its domain (so no cell outside what the source reads appears),
+          // others become guards.
+          Domain rdom = sdom;
+          std::vector<PathCond> rguards = guards;
+          std::string guard_key;
+          for (const auto& pc : site.conds) {
+            if (auto cd = condition_domain(pc.cond)) {
+              rdom = pc.positive ? intersect(rdom, *cd) : subtract(rdom, *cd);
+            } else {
+              rguards.push_back(pc);
+              guard_key += (pc.positive ? "+" : "-") + print(pc.cond) + ";";
+            }
+          }
           for (const auto& [piece, dec] : affine) {
-            Domain bdom = intersect(sdom, piece.where);
+            Domain bdom = intersect(rdom, piece.where);
             if (bdom.empty())
               continue;
             std::string gkey = layout_key(param.name, &nest, dec);
@@ -253,14 +268,14 @@ AdjointPlan schedule(const Kernel& k) {
             std::string shift_key;
             for (const auto& [v, p] : dec.shift)
               shift_key += v + "=" + p.str() + ";";
-            std::string bkey = fmt::format("{}|{}|{}|{}", gkey, static_cast<const void*>(&store),
-                                           shift_key, domain_key(bdom));
+            std::string bkey = fmt::format("{}|{}|{}|{}|{}", gkey, static_cast<const void*>(&store),
+                                           shift_key, domain_key(bdom), guard_key);
             auto bit = block_index.find(bkey);
             if (bit == block_index.end()) {
               Block b;
               b.shift = dec.shift;
               b.domain = bdom;
-              b.guards = guards;
+              b.guards = rguards;
               b.terms.push_back({&store, {}, nullptr});
               b.comment = describe_read(r);
               g.blocks.push_back(b);

@@ -60,11 +60,17 @@ struct GatherGroup {
   std::vector<Block> blocks;
 };
 
+struct ScatterRead {
+  const Expr* read;
+  ExprP partial;
+  std::vector<PathCond> conds; // the read happens only where these hold
+};
+
 struct ScatterUnit {
   std::string array;
   const Nest* nest = nullptr;
   const Store* store = nullptr;
-  std::vector<std::pair<const Expr*, ExprP>> reads; // read, partial
+  std::vector<ScatterRead> reads;
 };
 
 struct Remark {
