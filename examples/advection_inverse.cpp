@@ -64,6 +64,11 @@ int main(int argc, char** argv) try {
       args.get_int("--checkpoints", 0, "0: store every state; K > 0: Revolve with K snapshots");
   const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
   const std::string out = args.get_string("--out", "out/advection_inverse", "folder for pictures");
+  const double require = args.get_double(
+      "--require-reduction", 0, "exit with an error unless the loss drops by this factor");
+  const int check = args.get_int("--check-gradient", 0,
+                                 "1: compare the gradient with central differences at the start "
+                                 "and exit (status 1 if the relative error exceeds 1e-6)");
   if (args.finish())
     return 0;
   if (cells < 3 || steps < 1 || iters < 0 || checkpoints < 0)
@@ -107,6 +112,12 @@ int main(int argc, char** argv) try {
 
   Eigen::VectorXd u = Eigen::VectorXd::Constant(cells, 0.1); // first guess
   const Eigen::VectorXd u_start = u;
+  if (check) {
+    Eigen::VectorXd u0 = p.u_true + Eigen::VectorXd::LinSpaced(cells, -0.05, 0.05);
+    double err = dpgen_examples::gradient_check(loss_and_gradient, u0);
+    std::printf("gradient check: largest relative error %.2e along 3 random directions\n", err);
+    return err <= 1e-6 ? 0 : 1;
+  }
   std::unique_ptr<dpgen::Optimizer> optimizer;
   if (method == "gd")
     optimizer = std::make_unique<dpgen::GradientDescent>(lr);
@@ -126,12 +137,12 @@ int main(int argc, char** argv) try {
     curve_y.push_back(pr.loss);
   };
   dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u, opts);
+  const double reduction = s.initial_loss / s.final_loss;
   Eigen::VectorXd grad(cells);
   loss_and_gradient(u, grad); // final state for the pictures
 
   std::printf("loss %.6e -> %.6e (%.0fx lower) in %d iterations, %.2f s; %s\n", s.initial_loss,
-              s.final_loss, s.initial_loss / s.final_loss, s.iterations, s.total_seconds,
-              s.message.c_str());
+              s.final_loss, reduction, s.iterations, s.total_seconds, s.message.c_str());
   std::printf("per gradient: %lld forward steps (%lld recomputed), %d states stored, peak %zu "
               "bytes of states\n",
               last_stats.forward_steps, last_stats.recomputed_steps, last_stats.max_snapshots,
@@ -155,6 +166,11 @@ int main(int argc, char** argv) try {
                                   {"u used for the target", xs, vec(p.u_true), "#d62728", true}});
   std::printf("pictures: %sloss.svg %sdensity.svg %svelocity.svg\n", dir.c_str(), dir.c_str(),
               dir.c_str());
+  if (require > 0 && !(reduction >= require)) {
+    std::fprintf(stderr, "error: loss dropped %.3gx, less than the required %.3gx\n", reduction,
+                 require);
+    return 1;
+  }
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());

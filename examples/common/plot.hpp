@@ -142,27 +142,37 @@ inline void chunk(std::string& png, const char* type, const std::string& data) {
 }
 } // namespace detail
 
-/// A 2D field (row-major, nx by ny, row 0 at the bottom) as a PNG, each cell
-/// `scale` pixels wide, blue (negative) - white - red (positive), symmetric
-/// around zero with the given magnitude (0: the field's own max |v|).
-inline void write_png_field(const std::string& path, const std::vector<double>& f, int nx, int ny,
-                            int scale = 4, double magnitude = 0) {
-  if (f.size() != size_t(nx) * size_t(ny))
-    throw std::invalid_argument("write_png_field: field has " + std::to_string(f.size()) +
-                                " values, expected " + std::to_string(nx * ny));
+/// 2D fields (row-major, nx by ny, row 0 at the bottom) side by side in one
+/// PNG, separated by a grey gap, each cell `scale` pixels wide; blue
+/// (negative) - white - red (positive), one symmetric scale for all panels
+/// (`magnitude`, or 0 for the largest |value|).
+inline void write_png_panels(const std::string& path, const std::vector<std::vector<double>>& fs,
+                             int nx, int ny, int scale = 4, double magnitude = 0) {
+  for (const auto& f : fs)
+    if (f.size() != size_t(nx) * size_t(ny))
+      throw std::invalid_argument("write_png_panels: field has " + std::to_string(f.size()) +
+                                  " values, expected " + std::to_string(nx * ny));
   if (magnitude <= 0)
-    for (double v : f)
-      magnitude = std::max(magnitude, std::fabs(v));
+    for (const auto& f : fs)
+      for (double v : f)
+        magnitude = std::max(magnitude, std::fabs(v));
   if (magnitude <= 0)
     magnitude = 1;
-  const int w = nx * scale, h = ny * scale;
+  const int gap = 2 * scale, panel = nx * scale;
+  const int w = static_cast<int>(fs.size()) * (panel + gap) - gap, h = ny * scale;
   std::string raw;
   raw.reserve(size_t(h) * (1 + 3 * size_t(w)));
   for (int y = h - 1; y >= 0; --y) {
     raw.push_back(0); // filter: none
     for (int x = 0; x < w; ++x) {
-      double v = std::clamp(f[size_t(y / scale) * nx + size_t(x / scale)] / magnitude, -1.0, 1.0);
       auto c = [](double t) { return static_cast<char>(static_cast<int>(255 * t + 0.5)); };
+      int k = x / (panel + gap), px = x % (panel + gap);
+      if (px >= panel) {
+        raw += {c(0.6), c(0.6), c(0.6)};
+        continue;
+      }
+      double v = std::clamp(fs[size_t(k)][size_t(y / scale) * nx + size_t(px / scale)] / magnitude,
+                            -1.0, 1.0);
       if (v >= 0)
         raw += {c(1), c(1 - v), c(1 - v)};
       else
@@ -197,6 +207,12 @@ inline void write_png_field(const std::string& path, const std::vector<double>& 
   detail::chunk(png, "IDAT", z);
   detail::chunk(png, "IEND", "");
   write_atomically(path, png);
+}
+
+/// One 2D field as a PNG (see write_png_panels).
+inline void write_png_field(const std::string& path, const std::vector<double>& f, int nx, int ny,
+                            int scale = 4, double magnitude = 0) {
+  write_png_panels(path, {f}, nx, ny, scale, magnitude);
 }
 
 } // namespace dpgen_examples

@@ -1,0 +1,244 @@
+// PhiFlow's "differentiate pressure" demo, as the seed text describes it: a 2D
+// velocity field whose left half is optimized so that, after a pressure
+// projection (divergence, a CG Poisson solve, subtracting the pressure
+// gradient), its right half matches a target. The Poisson solve is
+// differentiated by the implicit-function rule: one more CG solve in the
+// backward pass, nothing of the forward iterations kept. Divergence, Poisson
+// operator and gradient are dpgen kernels with generated adjoints.
+#include "common/cli.hpp"
+#include "common/plot.hpp"
+#include "common/report.hpp"
+
+#include "dpgen/implicit_solve.hpp"
+#include "dpgen/optim.hpp"
+#include "dpgen/train.hpp"
+#include "example_kernels.hpp"
+#include "mac_divergence_periodic_adjoint.hpp"
+#include "mac_subtract_gradient_adjoint.hpp"
+#include "neg_laplacian_periodic_adjoint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <vector>
+
+namespace {
+
+using Eigen::VectorXd;
+
+// Periodic MAC grid: u[k], v[k] on the west and south faces of cell k.
+struct Grid {
+  int nx, ny;
+  double h;
+  int cells() const { return nx * ny; }
+  bool left(int k) const { return k % nx < nx / 2; } // the faces being optimized
+};
+
+// The projection P(u, v) = (u, v) - grad p with -laplace p = -div(u, v), and
+// what its backward pass needs (the pressure, for the warm start of the next
+// solve).
+struct Projection {
+  const Grid& g;
+  dpgen::CgOptions cg;
+  VectorXd pressure, lambda; // last solutions, warm starts
+  dpgen::CgSummary forward_summary, backward_summary;
+
+  void apply_a(const VectorXd& x, VectorXd& y) const {
+    neg_laplacian_periodic(x.data(), y.data(), g.nx, g.ny, g.h);
+  }
+
+  void forward(const VectorXd& u, const VectorXd& v, VectorXd& u_out, VectorXd& v_out) {
+    const int n = g.cells();
+    VectorXd div(n);
+    mac_divergence_periodic(u.data(), v.data(), div.data(), g.nx, g.ny, g.h);
+    VectorXd b = -div; // -laplace p = -div u
+    auto a = [&](const VectorXd& x, VectorXd& y) { apply_a(x, y); };
+    auto r = dpgen::solve_forward(a, b, cg, pressure.size() ? &pressure : nullptr);
+    pressure = r.solution;
+    forward_summary = r.summary;
+    u_out.resize(n);
+    v_out.resize(n);
+    mac_subtract_gradient(u.data(), v.data(), pressure.data(), u_out.data(), v_out.data(), g.nx,
+                          g.ny, g.h);
+  }
+
+  // Given the adjoints of the projected field, adds the adjoints of (u, v).
+  void backward(const VectorXd& u, const VectorXd& v, const VectorXd& u_out_adj,
+                const VectorXd& v_out_adj, VectorXd& u_adj, VectorXd& v_adj) {
+    const int n = g.cells();
+    VectorXd p_adj = VectorXd::Zero(n);
+    // (u, v, p) -> (u - dp/dx, v - dp/dy): generated adjoint.
+    mac_subtract_gradient_adjoint(u.data(), u_adj.data(), v.data(), v_adj.data(), pressure.data(),
+                                  p_adj.data(), u_out_adj.data(), v_out_adj.data(), g.nx, g.ny,
+                                  g.h);
+    // p = A^-1 b: b_adj = A^-T p_adj, one CG solve (A symmetric); A has no
+    // parameters here, so theta_bar is empty.
+    auto a = [&](const VectorXd& x, VectorXd& y) { apply_a(x, y); };
+    auto r = dpgen::solve_backward(a, p_adj, cg, lambda.size() ? &lambda : nullptr);
+    lambda = r.solution;
+    backward_summary = r.summary;
+    // b = -div(u, v): div_adj = -b_adj, then the generated divergence adjoint.
+    VectorXd div_adj = -lambda;
+    mac_divergence_periodic_adjoint(u.data(), u_adj.data(), v.data(), v_adj.data(),
+                                    div_adj.data(), g.nx, g.ny, g.h);
+  }
+};
+
+} // namespace
+
+int main(int argc, char** argv) try {
+  dpgen_examples::Args args(argc, argv, "pressure_optimization",
+                            "Optimize the left half of a 2D velocity field so that after a "
+                            "pressure projection its right half matches a target (dpgen).");
+  const int nx = args.get_int("--nx", 32, "cells in x (periodic)");
+  const int ny = args.get_int("--ny", 32, "cells in y (periodic)");
+  const int iters = args.get_int("--iters", 60, "optimizer iterations");
+  const std::string method = args.get_string("--optimizer", "gd", "gd, adam or lbfgs");
+  const double lr = args.get_double("--lr", 0.4, "learning rate (gd, adam)");
+  const double tol = args.get_double("--cg-tol", 1e-10, "relative CG tolerance, both solves");
+  const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
+  const std::string out =
+      args.get_string("--out", "out/pressure_optimization", "folder for pictures");
+  const double require = args.get_double(
+      "--require-reduction", 0, "exit with an error unless the loss drops by this factor");
+  const int check = args.get_int("--check-gradient", 0,
+                                 "1: compare the gradient with central differences at the start "
+                                 "and exit (status 1 if the relative error exceeds 1e-6)");
+  if (args.finish())
+    return 0;
+  if (nx < 4 || ny < 4 || nx % 2 || iters < 0)
+    throw std::invalid_argument("pressure_optimization: need even --nx >= 4, --ny >= 4, "
+                                "--iters >= 0");
+
+  const Grid g{nx, ny, 1.0 / nx};
+  const int n = g.cells();
+  Projection proj{g, {}, {}, {}, {}, {}};
+  proj.cg.relative_tolerance = tol;
+  proj.cg.absolute_tolerance = 1e-14;
+  proj.cg.max_iterations = 20 * n;
+  proj.cg.remove_null_space_mean = true; // periodic Poisson: constants are its null space
+  proj.cg.name = "pressure solve";
+
+  // The target: project a field that has a jet in the left half only; its
+  // right half after projection (the flow the jet induces) is what the
+  // optimization must reproduce from the left half alone.
+  VectorXd u_star = VectorXd::Zero(n), v_star = VectorXd::Zero(n);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      double x = (i + 0.5) / nx, y = (j + 0.5) / ny;
+      if (!g.left(j * nx + i))
+        continue; // reachable: the jet lives where the optimization acts
+      double bump = std::exp(-(std::pow((x - 0.4) / 0.06, 2) + std::pow((y - 0.5) / 0.2, 2)));
+      v_star[j * nx + i] = bump;                                         // upward jet
+      u_star[j * nx + i] = 0.5 * bump * std::sin(6.283185307179586 * y); // with a sway
+    }
+  VectorXd u_target, v_target;
+  proj.forward(u_star, v_star, u_target, v_target);
+
+  // The optimized variables: u and v on the left faces; the right half of the
+  // input field stays zero.
+  std::vector<int> left;
+  for (int k = 0; k < n; ++k)
+    if (g.left(k))
+      left.push_back(k);
+  const int m = static_cast<int>(left.size());
+  auto unpack = [&](const VectorXd& x, VectorXd& u, VectorXd& v) {
+    u = VectorXd::Zero(n), v = VectorXd::Zero(n);
+    for (int q = 0; q < m; ++q)
+      u[left[q]] = x[q], v[left[q]] = x[m + q];
+  };
+
+  // L = sum over the right half of |P(u, v) - target|^2.
+  VectorXd u_proj, v_proj;
+  auto loss_and_gradient = [&](const VectorXd& x, VectorXd& grad) {
+    VectorXd u, v;
+    unpack(x, u, v);
+    proj.forward(u, v, u_proj, v_proj);
+    VectorXd u_out_adj = VectorXd::Zero(n), v_out_adj = VectorXd::Zero(n);
+    double loss = 0;
+    for (int k = 0; k < n; ++k) {
+      if (g.left(k))
+        continue;
+      double du = u_proj[k] - u_target[k], dv = v_proj[k] - v_target[k];
+      loss += du * du + dv * dv;
+      u_out_adj[k] = 2 * du, v_out_adj[k] = 2 * dv;
+    }
+    VectorXd u_adj = VectorXd::Zero(n), v_adj = VectorXd::Zero(n);
+    proj.backward(u, v, u_out_adj, v_out_adj, u_adj, v_adj);
+    grad.resize(2 * m);
+    for (int q = 0; q < m; ++q)
+      grad[q] = u_adj[left[q]], grad[m + q] = v_adj[left[q]];
+    return loss;
+  };
+
+  std::unique_ptr<dpgen::Optimizer> optimizer;
+  if (method == "gd")
+    optimizer = std::make_unique<dpgen::GradientDescent>(lr);
+  else if (method == "adam")
+    optimizer = std::make_unique<dpgen::Adam>(dpgen::AdamOptions{lr});
+  else if (method == "lbfgs")
+    optimizer = std::make_unique<dpgen::Lbfgs>();
+  else
+    throw std::invalid_argument("pressure_optimization: --optimizer must be gd, adam or lbfgs");
+
+  VectorXd x = VectorXd::Zero(2 * m);
+  if (check) {
+    // The loss is quadratic in x, so central differences are exact for any
+    // step: a large one keeps the CG tolerance out of the comparison.
+    VectorXd x0 = VectorXd::LinSpaced(2 * m, -0.5, 0.5); // a generic point
+    double err = dpgen_examples::gradient_check(loss_and_gradient, x0, 3, 0.1);
+    std::printf("gradient check: largest relative error %.2e along 3 random directions\n", err);
+    return err <= 1e-6 ? 0 : 1;
+  }
+  std::vector<double> curve_x, curve_y;
+  dpgen::TrainOptions opts;
+  opts.max_iterations = iters;
+  opts.csv_path = csv;
+  opts.callback = [&](const dpgen::TrainProgress& p) {
+    dpgen_examples::print_progress(p);
+    curve_x.push_back(p.iteration);
+    curve_y.push_back(p.loss);
+  };
+  dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, x, opts);
+  VectorXd grad;
+  loss_and_gradient(x, grad); // the final projected field, for the pictures
+  const double reduction = s.initial_loss / s.final_loss;
+  std::printf("loss %.6e -> %.6e (%.0fx lower) in %d iterations, %.2f s; %s\n", s.initial_loss,
+              s.final_loss, reduction, s.iterations, s.total_seconds, s.message.c_str());
+  std::printf("last CG solves: forward %d iterations (residual %.2e), backward %d iterations "
+              "(residual %.2e)\n",
+              proj.forward_summary.iterations, proj.forward_summary.final_residual_norm,
+              proj.backward_summary.iterations, proj.backward_summary.final_residual_norm);
+
+  const std::string dir = dpgen_examples::output_dir(out);
+  auto vec = [](const VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+  VectorXd u_opt, v_opt;
+  unpack(x, u_opt, v_opt);
+  // Panels: optimized input | its projection | target projection (v, then u),
+  // coloured on the scale of the right halves (what is matched); the target's
+  // own jet saturates.
+  double right_max = 0;
+  for (int k = 0; k < n; ++k)
+    if (!g.left(k))
+      right_max = std::max({right_max, std::abs(u_target[k]), std::abs(v_target[k])});
+  dpgen_examples::write_png_panels(dir + "v_fields.png", {vec(v_opt), vec(v_proj), vec(v_target)},
+                                   nx, ny, 6, right_max);
+  dpgen_examples::write_png_panels(dir + "u_fields.png", {vec(u_opt), vec(u_proj), vec(u_target)},
+                                   nx, ny, 6, right_max);
+  dpgen_examples::write_svg_plot(dir + "loss.svg", "pressure_optimization: loss", "iteration",
+                                 "right-half error", {{"loss", curve_x, curve_y}}, true);
+  std::printf("pictures: %sv_fields.png %su_fields.png (optimized input | after projection | "
+              "target), %sloss.svg\n",
+              dir.c_str(), dir.c_str(), dir.c_str());
+  if (require > 0 && !(reduction >= require)) {
+    std::fprintf(stderr, "error: loss dropped %.3gx, less than the required %.3gx\n", reduction,
+                 require);
+    return 1;
+  }
+  return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "error: %s\n", e.what());
+  return 1;
+}
