@@ -130,6 +130,7 @@ int main(int argc, char** argv) try {
   dpgen::TrainOptions opts;
   opts.max_iterations = iters;
   opts.csv_path = csv;
+  dpgen_examples::ensure_parent(csv);
   std::vector<double> curve_x, curve_y;
   opts.callback = [&](const dpgen::TrainProgress& pr) {
     dpgen_examples::print_progress(pr);

@@ -196,6 +196,7 @@ int main(int argc, char** argv) try {
   dpgen::TrainOptions opts;
   opts.max_iterations = iters;
   opts.csv_path = csv;
+  dpgen_examples::ensure_parent(csv);
   opts.callback = [&](const dpgen::TrainProgress& p) {
     dpgen_examples::print_progress(p);
     curve_x.push_back(p.iteration);

@@ -42,6 +42,13 @@ double gradient_check(LossGradient&& f, const Eigen::VectorXd& x, int trials = 3
   return worst;
 }
 
+/// Creates the folder a file is to be written in (for --csv PATH).
+inline void ensure_parent(const std::string& file) {
+  auto parent = std::filesystem::path(file).parent_path();
+  if (!file.empty() && !parent.empty())
+    std::filesystem::create_directories(parent);
+}
+
 /// Creates `dir` (and parents); returns it with a trailing slash.
 inline std::string output_dir(const std::string& dir) {
   std::filesystem::create_directories(dir);
