@@ -484,11 +484,11 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   interior = simplify(interior);
 
   // Edge cell: every block, each checked against its iteration domain.
-  code.open(fmt::format("auto edge = [&]({})", params));
+  code.open(fmt::format("auto edge = [=]({})", params));
   edge_body();
   code.close(";");
   if (any_bulk) {
-    code.open(fmt::format("auto interior = [&]({})", params));
+    code.open(fmt::format("auto interior = [=]({})", params));
     for (const auto* g : gs) {
       bool has_bulk = false;
       for (const auto& b : g->blocks)
@@ -829,6 +829,12 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// loop; edge cells check each term's iteration domain.\n");
   c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <limits>\n\n");
+  c.raw("namespace {\n"
+        "// std::min/std::max with the same result (the first argument on ties), by\n"
+        "// value so loops around them vectorize.\n"
+        "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"
+        "template <typename T> inline T dpgen_max(T a, T b) { return a < b ? b : a; }\n"
+        "} // namespace\n\n");
   for (const auto& p : plans) {
     emit_kernel(c, p);
     c.raw("\n");

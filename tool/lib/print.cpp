@@ -131,7 +131,10 @@ std::string print(const ExprP& e) {
     std::vector<std::string> args;
     for (const auto& a : e->ops)
       args.push_back(print(a));
-    return fmt::format("std::{}({})", e->name, fmt::join(args, ", "));
+    // min/max by value (see kMinMaxHelpers): std::min returns a reference,
+    // which keeps GCC from vectorizing the loop around it.
+    bool by_value = e->name == "min" || e->name == "max";
+    return fmt::format("{}{}({})", by_value ? "dpgen_" : "std::", e->name, fmt::join(args, ", "));
   }
   case Op::Cast:
     return fmt::format("static_cast<{}>({})", type_spelling(e->type), print(e->ops[0]));

@@ -1,0 +1,204 @@
+// Generated adjoints against their forward kernels, hand-written gather
+// adjoints and scatter adjoints (the form general AD tools emit), side by side
+// in one run. Each benchmark's argument is the OpenMP thread count.
+#include "hand_adjoints.hpp"
+
+#include "burgers_step_adjoint.hpp"
+#include "divergence2d_adjoint.hpp"
+#include "kernels.hpp"
+#include "laplacian2d_adjoint.hpp"
+#include "laplacian3d_adjoint.hpp"
+#include "test_kernels.hpp"
+#include "upwind_step_adjoint.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <random>
+#include <vector>
+
+namespace {
+
+constexpr int kN2 = 2048;    // 2D grids: 2048 x 2048
+constexpr int kN1 = 1 << 22; // 1D: 2^22 cells
+constexpr int kN3 = 160;     // 3D: 160^3
+
+std::vector<double> random_field(size_t n, double lo, double hi, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> dist(lo, hi);
+  std::vector<double> v(n);
+  for (auto& x : v)
+    x = dist(rng);
+  return v;
+}
+
+// Runs `body` as the timed loop with `state.range(0)` OpenMP threads, and
+// reports the cells processed per second.
+template <typename Body> void run(benchmark::State& state, size_t cells, Body&& body) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    body();
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(cells));
+}
+
+// ---- laplacian2d -------------------------------------------------------------
+struct Lap2 {
+  size_t n = size_t(kN2) * kN2;
+  std::vector<double> a = random_field(n, -1, 1, 1), out = std::vector<double>(n),
+                      g = random_field(n, -1, 1, 2), a_adj = std::vector<double>(n);
+};
+Lap2& lap2() {
+  static Lap2 d;
+  return d;
+}
+void BM_laplacian2d_forward(benchmark::State& s) {
+  auto& d = lap2();
+  run(s, d.n, [&] { laplacian2d(d.a.data(), d.out.data(), kN2, kN2, 0.1); });
+}
+void BM_laplacian2d_generated(benchmark::State& s) {
+  auto& d = lap2();
+  run(s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+}
+void BM_laplacian2d_hand_gather(benchmark::State& s) {
+  auto& d = lap2();
+  run(s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+}
+void BM_laplacian2d_scatter(benchmark::State& s) {
+  auto& d = lap2();
+  run(s, d.n, [&] { hand::laplacian2d_scatter(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+}
+
+// ---- divergence2d ------------------------------------------------------------
+struct Div2 {
+  size_t n = size_t(kN2) * kN2;
+  std::vector<double> u = random_field(n, -1, 1, 3), v = random_field(n, -1, 1, 4),
+                      out = std::vector<double>(n), g = random_field(n, -1, 1, 5),
+                      u_adj = std::vector<double>(n), v_adj = std::vector<double>(n);
+};
+Div2& div2() {
+  static Div2 d;
+  return d;
+}
+void BM_divergence2d_forward(benchmark::State& s) {
+  auto& d = div2();
+  run(s, d.n, [&] { divergence2d(d.u.data(), d.v.data(), d.out.data(), kN2, kN2, 0.1); });
+}
+void BM_divergence2d_generated(benchmark::State& s) {
+  auto& d = div2();
+  run(s, d.n, [&] {
+    divergence2d_adjoint(d.u.data(), d.u_adj.data(), d.v.data(), d.v_adj.data(), d.g.data(), kN2,
+                         kN2, 0.1);
+  });
+}
+void BM_divergence2d_hand_gather(benchmark::State& s) {
+  auto& d = div2();
+  run(s, d.n,
+      [&] { hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+}
+void BM_divergence2d_scatter(benchmark::State& s) {
+  auto& d = div2();
+  run(s, d.n, [&] {
+    hand::divergence2d_scatter(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1);
+  });
+}
+
+// ---- upwind_step -------------------------------------------------------------
+struct Up1 {
+  size_t n = size_t(kN1);
+  std::vector<double> d = random_field(n, 0, 1, 6), u = random_field(n, -1, 1, 7),
+                      out = std::vector<double>(n), g = random_field(n, -1, 1, 8),
+                      d_adj = std::vector<double>(n), u_adj = std::vector<double>(n);
+};
+Up1& up1() {
+  static Up1 d;
+  return d;
+}
+const double kDt = 0.2, kDx = 1.0;
+void BM_upwind_forward(benchmark::State& s) {
+  auto& d = up1();
+  run(s, d.n, [&] { upwind_step(d.d.data(), d.u.data(), d.out.data(), kN1, kDt, kDx); });
+}
+void BM_upwind_generated(benchmark::State& s) {
+  auto& d = up1();
+  run(s, d.n, [&] {
+    upwind_step_adjoint(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
+                        kDt, kDx);
+  });
+}
+void BM_upwind_hand_gather(benchmark::State& s) {
+  auto& d = up1();
+  run(s, d.n, [&] {
+    hand::upwind_gather(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
+                        kDt, kDx);
+  });
+}
+void BM_upwind_scatter(benchmark::State& s) {
+  auto& d = up1();
+  run(s, d.n, [&] {
+    hand::upwind_scatter(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
+                         kDt, kDx);
+  });
+}
+
+// ---- laplacian3d (tests/kernels) -----------------------------------------------
+struct Lap3 {
+  size_t n = size_t(kN3) * kN3 * kN3;
+  std::vector<double> a = random_field(n, -1, 1, 9), out = std::vector<double>(n),
+                      g = random_field(n, -1, 1, 10), a_adj = std::vector<double>(n);
+};
+Lap3& lap3() {
+  static Lap3 d;
+  return d;
+}
+void BM_laplacian3d_forward(benchmark::State& s) {
+  auto& d = lap3();
+  run(s, d.n, [&] { laplacian3d(d.a.data(), d.out.data(), kN3, kN3, kN3, 0.1); });
+}
+void BM_laplacian3d_generated(benchmark::State& s) {
+  auto& d = lap3();
+  run(s, d.n,
+      [&] { laplacian3d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
+}
+
+// ---- burgers_step (tests/kernels): nonlinear -----------------------------------
+struct Burg {
+  size_t n = size_t(kN1);
+  std::vector<double> u = random_field(n, -1, 1, 11), out = std::vector<double>(n),
+                      g = random_field(n, -1, 1, 12), u_adj = std::vector<double>(n);
+};
+Burg& burg() {
+  static Burg d;
+  return d;
+}
+void BM_burgers_forward(benchmark::State& s) {
+  auto& d = burg();
+  run(s, d.n, [&] { burgers_step(d.u.data(), d.out.data(), kN1, 0.01, 0.1, 0.05); });
+}
+void BM_burgers_generated(benchmark::State& s) {
+  auto& d = burg();
+  run(s, d.n,
+      [&] { burgers_step_adjoint(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
+}
+
+} // namespace
+
+#define THREADS ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_laplacian2d_forward) THREADS;
+BENCHMARK(BM_laplacian2d_generated) THREADS;
+BENCHMARK(BM_laplacian2d_hand_gather) THREADS;
+BENCHMARK(BM_laplacian2d_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_divergence2d_forward) THREADS;
+BENCHMARK(BM_divergence2d_generated) THREADS;
+BENCHMARK(BM_divergence2d_hand_gather) THREADS;
+BENCHMARK(BM_divergence2d_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_upwind_forward) THREADS;
+BENCHMARK(BM_upwind_generated) THREADS;
+BENCHMARK(BM_upwind_hand_gather) THREADS;
+BENCHMARK(BM_upwind_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_laplacian3d_forward) THREADS;
+BENCHMARK(BM_laplacian3d_generated) THREADS;
+BENCHMARK(BM_burgers_forward) THREADS;
+BENCHMARK(BM_burgers_generated) THREADS;
+BENCHMARK_MAIN();
