@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Turns the JSON of bench_adjoints and bench_solvers (one run) and the
+generator timings into bench/results.md, and puts that table into README.md
+between the '<!-- bench:begin -->' and '<!-- bench:end -->' markers.
+usage: bench_table.py adjoints.json solvers.json generator.tsv results.md README.md command"""
+import json
+import re
+import sys
+
+
+def load(path):
+    with open(path) as f:
+        data = json.load(f)
+    return data["context"], {b["name"]: b for b in data["benchmarks"] if b.get("run_type") != "aggregate"}
+
+
+def ms(b):
+    unit = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+    return b["real_time"] * unit
+
+
+def main():
+    adj_json, sol_json, gen_tsv, out_md, readme, command = sys.argv[1:7]
+    ctx, adj = load(adj_json)
+    _, sol = load(sol_json)
+    lines = []
+    lines.append(f"Measured with `{command}` on {ctx.get('num_cpus')} CPUs at "
+                 f"{ctx.get('mhz_per_cpu')} MHz ({ctx.get('date', '')}); times are medians of "
+                 "Google Benchmark's repetitions, ratios are taken within this one run.\n")
+    lines.append("### Adjoint kernels (1 thread; `2T` = speedup of the generated adjoint on 2 threads)\n")
+    lines.append("| kernel | cells | forward ms | generated ms | hand gather ms | scatter ms | "
+                 "generated / forward | generated / hand | scatter / generated | 2T |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|")
+    kernels = [("laplacian2d", "2048²"), ("divergence2d", "2048²"), ("upwind", "2²²"),
+               ("laplacian3d", "160³"), ("burgers", "2²²")]
+    for k, cells in kernels:
+        def get(v, t=1):
+            return adj.get(f"BM_{k}_{v}/{t}/real_time")
+        f, g, hg, sc, g2 = get("forward"), get("generated"), get("hand_gather"), get("scatter"), get("generated", 2)
+        row = [k, cells, f"{ms(f):.2f}", f"{ms(g):.2f}",
+               f"{ms(hg):.2f}" if hg else "–", f"{ms(sc):.2f}" if sc else "–",
+               f"{ms(g) / ms(f):.2f}", f"{ms(g) / ms(hg):.2f}" if hg else "–",
+               f"{ms(sc) / ms(g):.2f}" if sc else "–", f"{ms(g) / ms(g2):.2f}x" if g2 else "–"]
+        lines.append("| " + " | ".join(row) + " |")
+    lines.append("\n### CG: forward solve against the implicit backward pass (`-div(k grad p)`, periodic, tol 1e-8)\n")
+    lines.append("| grid | forward ms | backward ms | backward / forward | CG iterations (fwd / bwd) |")
+    lines.append("|---|---|---|---|---|")
+    for n in (64, 128, 256, 512):
+        f, b = sol.get(f"BM_cg_forward/{n}"), sol.get(f"BM_cg_backward_implicit/{n}")
+        if f and b:
+            lines.append(f"| {n}² | {ms(f):.2f} | {ms(b):.2f} | {ms(b) / ms(f):.2f} | "
+                         f"{int(f['cg_iterations'])} / {int(b['cg_iterations'])} |")
+    lines.append("\n### Heap growth during a CG gradient (128², fixed iteration count)\n")
+    lines.append("| CG iterations | implicit rule | through the unrolled iterations |")
+    lines.append("|---|---|---|")
+    for it in (25, 100, 400):
+        i, u = sol.get(f"BM_cg_gradient_memory/0/{it}/iterations:1"), sol.get(f"BM_cg_gradient_memory/1/{it}/iterations:1")
+        if i and u:
+            lines.append(f"| {it} | {i['peak_heap_bytes'] / 1e6:.2f} MB | {u['peak_heap_bytes'] / 1e6:.2f} MB |")
+    lines.append("\n### Unrolled time loop: 10⁴ upwind steps on 256 cells, gradient w.r.t. d0 and u\n")
+    f = sol.get("BM_timeloop_forward")
+    lines.append(f"Forward alone: {ms(f):.2f} ms.\n")
+    lines.append("| states kept | gradient ms | gradient / forward | forward steps | Revolve formula | peak state bytes |")
+    lines.append("|---|---|---|---|---|---|")
+    for s in (0, 8, 16, 32):
+        b = sol.get(f"BM_timeloop_gradient/{s}")
+        if b:
+            name = "all (full tape)" if s == 0 else f"{s} snapshots (Revolve)"
+            lines.append(f"| {name} | {ms(b):.2f} | {ms(b) / ms(f):.2f} | {int(b['forward_steps'])} | "
+                         f"{int(b['predicted_steps'])} | {int(b['peak_state_bytes'])} |")
+    lines.append("\n### The generator's own time per kernel file (median of 5 runs, includes parsing `<cmath>`/`<algorithm>`)\n")
+    lines.append("| kernel file | dpgen ms |")
+    lines.append("|---|---|")
+    with open(gen_tsv) as fh:
+        for line in fh:
+            name, t = line.split()
+            lines.append(f"| {name} | {float(t):.0f} |")
+    table = "\n".join(lines) + "\n"
+    with open(out_md, "w") as fh:
+        fh.write("# Benchmark results\n\n" + table)
+    with open(readme) as fh:
+        text = fh.read()
+    new = re.sub(r"<!-- bench:begin -->.*<!-- bench:end -->",
+                 "<!-- bench:begin -->\n" + table + "<!-- bench:end -->", text, flags=re.S)
+    with open(readme, "w") as fh:
+        fh.write(new)
+
+
+if __name__ == "__main__":
+    main()
