@@ -116,6 +116,37 @@ std::string Poly::str() const {
   return out;
 }
 
+std::string Poly::code() const {
+  if (terms_.empty())
+    return "0";
+  auto wide = [](const std::string& s) { return s.rfind("c_", 0) == 0; };
+  std::vector<std::pair<Monomial, long long>> ts(terms_.begin(), terms_.end());
+  std::stable_sort(ts.begin(), ts.end(), [](const auto& a, const auto& b) {
+    return a.first.size() > b.first.size();
+  });
+  std::string out;
+  for (const auto& [m, c] : ts) {
+    long long mag = c < 0 ? -c : c;
+    Monomial syms = m;
+    std::stable_partition(syms.begin(), syms.end(), wide);
+    std::vector<std::string> factors;
+    for (const auto& s : syms)
+      factors.push_back(s[0] == '@' ? s.substr(1) : s);
+    if (syms.size() >= 2 && !wide(syms.front()))
+      factors.front() = "static_cast<std::ptrdiff_t>(" + factors.front() + ")";
+    if (mag != 1 || factors.empty())
+      factors.insert(factors.begin(), std::to_string(mag)); // 2 * c_j * nx
+    std::string term;
+    for (const auto& f : factors)
+      term += (term.empty() ? "" : " * ") + f;
+    if (out.empty())
+      out = (c < 0 ? "-" : "") + term;
+    else
+      out += (c < 0 ? " - " : " + ") + term;
+  }
+  return out;
+}
+
 std::optional<Poly> to_poly(const ExprP& e) {
   switch (e->op) {
   case Op::IntConst:
@@ -130,6 +161,10 @@ std::optional<Poly> to_poly(const ExprP& e) {
     if (e->type != Type::Int)
       return std::nullopt;
     return to_poly(e->local->def);
+  case Op::Cast: // an integer widened to 64 bits: the same value
+    if (e->type != Type::Int || e->ops[0]->type != Type::Int)
+      return std::nullopt;
+    return to_poly(e->ops[0]);
   case Op::Neg: {
     auto a = to_poly(e->ops[0]);
     if (!a)

@@ -45,6 +45,11 @@ public:
   const std::map<Monomial, long long>& terms() const { return terms_; }
   /// C++ source, e.g. "j * nx + i - 1".
   std::string str() const;
+  /// C++ source for generated code, where cell coordinates (`c_i`) are
+  /// std::ptrdiff_t: each product starts with one of them, or with a
+  /// parameter cast to std::ptrdiff_t, so no product of int sizes is computed
+  /// in 32 bits.
+  std::string code() const;
 
 private:
   std::map<Monomial, long long> terms_; // no zero coefficients

@@ -118,6 +118,12 @@ std::string elem_of(const Kernel& k, const std::string& array) {
   return p ? p->elem_name : "double";
 }
 
+// Cell coordinates and cell ranges of the gather loops are 64-bit, so the
+// cell index (Poly::code) never wraps in 32 bits; the counters of an
+// iteration keep the kernel's own type, so recomputed expressions are
+// evaluated exactly as the kernel evaluates them.
+constexpr const char* kCellType = "std::ptrdiff_t";
+
 std::string loop_type(const Nest& n, const std::string& var) {
   for (const auto& l : n.loops)
     if (l.var == var)
@@ -201,7 +207,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
   std::string iter_desc;
   for (const auto& [v, c] : cx.g.layout) {
     Poly it = Poly::symbol("c_" + v) + back["@" + v];
-    iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.str());
+    iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
   std::string out_cell = fmt::format("{}[{}]", s.array, print(s.index));
@@ -223,7 +229,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
     // Layout counters come from the cell.
     for (const auto& [v, c] : cx.g.layout) {
       Poly it = Poly::symbol("c_" + v) + back["@" + v];
-      code.line("const {} {} = {};", loop_type(nest, v), v, it.str());
+      code.line("const {} {} = {};", loop_type(nest, v), v, it.code());
     }
     int opened = 0;
     if (cx.edge) {
@@ -233,9 +239,9 @@ void emit_block(const BlockContext& cx, const Block& b) {
         if (d == box.dims.end())
           continue;
         for (const auto& lo : d->second.lo)
-          conds.push_back(fmt::format("{} >= {}", v, lo.str()));
+          conds.push_back(fmt::format("{} >= {}", v, lo.code()));
         for (const auto& hi : d->second.hi)
-          conds.push_back(fmt::format("{} < {}", v, hi.str()));
+          conds.push_back(fmt::format("{} < {}", v, hi.code()));
       }
       if (!conds.empty()) {
         code.open(fmt::format("if ({})", fmt::join(conds, " && ")));
@@ -366,8 +372,8 @@ std::string min_of_max(const std::vector<std::vector<Poly>>& cands, const std::s
       kept.push_back(p);
   }
   for (const auto& p : kept)
-    if (seen.insert(p.str()).second)
-      parts.push_back(p.str());
+    if (seen.insert(p.code()).second)
+      parts.push_back(p.code());
   if (parts.size() == 1)
     return parts[0];
   std::string fn = lower ? "min" : "max";
@@ -390,8 +396,7 @@ std::map<std::string, std::pair<std::string, std::string>> cell_bounds(const Gat
         his.push_back(shifted(iv.hi, d));
       }
     }
-    std::string t = loop_type(*g.nest, v);
-    bounds[v] = {min_of_max(los, t, true), min_of_max(his, t, false)};
+    bounds[v] = {min_of_max(los, kCellType, true), min_of_max(his, kCellType, false)};
   }
   return bounds;
 }
@@ -401,7 +406,7 @@ std::string cell_index(const GatherGroup& g) {
   Poly index = g.base;
   for (const auto& [v, c] : g.layout)
     index = index + c * Poly::symbol("c_" + v);
-  return index.str();
+  return index.code();
 }
 
 std::string adj_cell(const GatherGroup& g) {
@@ -412,7 +417,6 @@ std::string adj_cell(const GatherGroup& g) {
 // box (several inputs of one kernel, fused so the loop reads shared data once).
 void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGroup*>& gs) {
   const GatherGroup& g0 = *gs.front();
-  const Nest& nest = *g0.nest;
   const bool fused = gs.size() > 1;
   auto acc_name = [&](const GatherGroup& g) { return fused ? "acc_" + g.array : std::string("acc"); };
   auto hit_name = [&](const GatherGroup& g) { return fused ? "hit_" + g.array : std::string("hit"); };
@@ -456,7 +460,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
 
   std::vector<std::string> cell_params;
   for (const auto& [v, c] : g0.layout)
-    cell_params.push_back(fmt::format("const {} c_{}", loop_type(nest, v), v));
+    cell_params.push_back(fmt::format("const {} c_{}", kCellType, v));
   std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
 
   // Interior box (cell space, "@v" keys): inside every bulk block of every
@@ -506,10 +510,9 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
 
   // Ranges.
   auto bounds = cell_bounds(g0);
-  for (const auto& [v, c] : g0.layout) {
-    std::string t = loop_type(nest, v);
-    code.line("const {} lo_{} = {}, hi_{} = {};", t, v, bounds[v].first, v, bounds[v].second);
-  }
+  for (const auto& [v, c] : g0.layout)
+    code.line("const {} lo_{} = {}, hi_{} = {};", kCellType, v, bounds[v].first, v,
+              bounds[v].second);
   // The interior holds only if no narrow (edge) block reaches into it.
   if (any_bulk) {
     std::vector<std::string> apart;
@@ -531,7 +534,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
           std::vector<std::string> ors;
           for (const auto& [key, iv] : box.dims) {
             std::string v = key.substr(1);
-            std::string t = loop_type(nest, v);
+            std::string t = kCellType;
             std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
             ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
             if (cells_box.dims.count(key)) {
@@ -543,7 +546,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
         }
       }
     for (const auto& [v, c] : g0.layout) {
-      std::string t = loop_type(nest, v);
+      std::string t = kCellType;
       const Interval& iv = interior.dims["@" + v];
       code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
                 print_max(iv.lo, t), v);
@@ -576,7 +579,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
     std::vector<std::string> reach;
     for (size_t i = 0; i < order.size(); ++i) {
       const auto& [v, c] = order[i];
-      std::string coef = c.is_constant() ? std::to_string(std::llabs(c.constant_term())) : c.str();
+      std::string coef = c.is_constant() ? std::to_string(std::llabs(c.constant_term())) : c.code();
       if (i > 0)
         conds.push_back(fmt::format("{} < {}", fmt::join(reach, " + "), coef));
       else if (!c.is_constant())
@@ -600,7 +603,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   std::string args = fmt::format("{}", fmt::join(all_cells, ", "));
   std::function<void(size_t, std::string)> loops = [&](size_t level, std::string outer_edge) {
     const std::string& v = g0.layout[level].first;
-    std::string t = loop_type(nest, v);
+    std::string t = kCellType;
     if (level + 1 < d) {
       if (level == 0)
         code.line("#pragma omp parallel for{}", parallel_if);
@@ -828,7 +831,12 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
         "// loop; edge cells check each term's iteration domain.\n");
   c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
-  c.raw("#include <algorithm>\n#include <cmath>\n#include <limits>\n\n");
+  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n");
+  c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
+        "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
+        "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"
+        "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
+        "#endif\n\n");
   c.raw("namespace {\n"
         "// std::min/std::max with the same result (the first argument on ties), by\n"
         "// value so loops around them vectorize.\n"

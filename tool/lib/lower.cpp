@@ -256,6 +256,14 @@ private:
   void body(const Stmt* s) {
     if (!s)
       fail(fn_->getLocation(), "kernel has no body");
+    if (s->getBeginLoc().isMacroID()) {
+      std::string macro =
+          Lexer::getImmediateMacroName(s->getBeginLoc(), sm_, ctx_.getLangOpts()).str();
+      fail(sm_.getExpansionLoc(s->getBeginLoc()),
+           fmt::format("the body of kernel '{}' comes from macro '{}': write the loops out, so "
+                       "diagnostics and the generated code can point at them",
+                       k_.name, macro));
+    }
     if (lower(s) == Escape::Always && !loops_.empty())
       fail(s->getBeginLoc(), "unreachable");
   }
@@ -638,6 +646,7 @@ private:
       ExprP idx = expr(sub->getIdx());
       if (idx->type != Type::Int)
         fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
+      check_index_width(sub->getIdx(), idx, p->name);
       ExprP value = cast(expr(rhs), p->elem);
       add_store(p->name, idx, value, pos(sub->getBeginLoc()), sub->getBeginLoc());
       return;
@@ -859,6 +868,24 @@ private:
     fail(it != store_locs_.end() ? it->second : fn_->getLocation(), msg);
   }
 
+  // An index that multiplies three or more sizes and counters (a 3D
+  // `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
+  // 32-bit type it overflows, in the forward kernel and in its adjoint alike.
+  void check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array) {
+    QualType t = e->IgnoreImpCasts()->getType();
+    if (ctx_.getTypeSize(t) >= 64)
+      return;
+    auto p = to_poly(idx);
+    if (!p || p->degree() < 3)
+      return;
+    fail(e->getBeginLoc(), fmt::format("index of '{}' is computed in the {}-bit type '{}' but "
+                                       "multiplies {} sizes and counters ('{}'), which "
+                                       "overflows past 2^31 elements; compute it in "
+                                       "std::ptrdiff_t or long",
+                                       array, ctx_.getTypeSize(t), t.getAsString(), p->degree(),
+                                       p->str()));
+  }
+
   // ---- expressions -----------------------------------------------------------
 
   const Param* array_param(const ArraySubscriptExpr* sub) {
@@ -918,6 +945,7 @@ private:
       ExprP idx = expr(s->getIdx());
       if (idx->type != Type::Int)
         fail(s->getIdx()->getBeginLoc(), "array index must be an integer");
+      check_index_width(s->getIdx(), idx, p->name);
       ExprP r = read(p->name, idx, p->elem, pos(s->getBeginLoc()));
       std::const_pointer_cast<Expr>(r)->text = text(s); // as written, for remarks
       return r;
@@ -956,8 +984,24 @@ private:
     switch (c->getCastKind()) {
     case CK_LValueToRValue:
     case CK_NoOp:
-    case CK_IntegralCast:
       return expr(sub);
+    case CK_IntegralCast: {
+      // An explicit cast that widens to 64 bits is kept, so index arithmetic
+      // stays as wide in the adjoint as in the kernel; implicit promotions
+      // happen again by themselves around it.
+      ExprP inner = expr(sub);
+      const auto* implicit = dyn_cast<ImplicitCastExpr>(c);
+      bool explicit_cast = isa<ExplicitCastExpr>(c) || (implicit && implicit->isPartOfExplicitCast());
+      if (!explicit_cast || ctx_.getTypeSize(c->getType()) < 64 ||
+          ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
+        return inner;
+      auto w = std::make_shared<dpgen::Expr>();
+      w->op = Op::Cast;
+      w->type = Type::Int;
+      w->ops = {inner};
+      w->text = c->getType().getUnqualifiedType().getAsString();
+      return w;
+    }
     case CK_IntegralToFloating:
     case CK_FloatingCast:
     case CK_FloatingToIntegral:

@@ -88,8 +88,8 @@ std::string bound_set(const std::vector<Poly>& set, const std::string& fn,
   std::vector<std::string> parts;
   std::set<std::string> seen;
   for (const auto& p : set)
-    if (seen.insert(p.str()).second)
-      parts.push_back(p.str());
+    if (seen.insert(p.code()).second)
+      parts.push_back(p.code());
   if (parts.empty())
     return fn == "max" ? fmt::format("std::numeric_limits<{}>::min()", int_type)
                        : fmt::format("std::numeric_limits<{}>::max()", int_type);
@@ -136,8 +136,9 @@ std::string print(const ExprP& e) {
     bool by_value = e->name == "min" || e->name == "max";
     return fmt::format("{}{}({})", by_value ? "dpgen_" : "std::", e->name, fmt::join(args, ", "));
   }
-  case Op::Cast:
-    return fmt::format("static_cast<{}>({})", type_spelling(e->type), print(e->ops[0]));
+  case Op::Cast: // text: the integer type of a widening cast ("long")
+    return fmt::format("static_cast<{}>({})", e->text.empty() ? type_spelling(e->type) : e->text,
+                       print(e->ops[0]));
   default: {
     // Binary, left-associative: a right operand of equal precedence keeps its
     // parentheses, so floating-point evaluation order is exactly the IR's.
