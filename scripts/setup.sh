@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(
   cmake ninja-build g++ make python3
-  clang-19 libclang-19-dev libclang-cpp19-dev llvm-19-dev llvm-19-tools
+  clang-19 libclang-19-dev libclang-cpp19-dev llvm-19-dev llvm-19-tools libclang-rt-19-dev
+  libomp-19-dev
   libeigen3-dev libfmt-dev doctest-dev liblbfgspp-dev libbenchmark-dev
 )
 missing=()

@@ -1,12 +1,61 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, configures, builds with
-# -j2 and runs every test (ctest: kernel adjoints, generator golden and
-# diagnostic tests, runtime, examples).
-#   scripts/test.sh            (build tree: build/)
+# -j2 and runs every test, three times over:
+#   1. the normal build (build/): kernel adjoints, generator golden and
+#      diagnostic tests, runtime, examples;
+#   2. the same suite built with AddressSanitizer and UBSan (build-asan/);
+#   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
+#      DPGEN_FUZZ_SECONDS changes the length).
+# Ends with one line "tests: N passed, M failed" over all of them.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${DPGEN_BUILD_DIR:-$root/build}
 "$root/scripts/setup.sh"
+
+passed=0
+failed=0
+status=0
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+# Runs ctest in $1 and adds its counts to the totals.
+run_ctest() {
+  local dir=$1 name=$2
+  echo "== $name: ctest in $dir"
+  set +e
+  ctest --test-dir "$dir" --output-on-failure -j2 2>&1 | tee "$logs/$name.log"
+  local rc=${PIPESTATUS[0]}
+  set -e
+  local line total bad
+  line=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$logs/$name.log" | tail -1 || true)
+  total=$(sed -E 's/.*out of ([0-9]+).*/\1/' <<<"$line")
+  bad=$(sed -E 's/.*passed, ([0-9]+) tests failed.*/\1/' <<<"$line")
+  if [ -z "$line" ]; then total=0; bad=1; fi
+  passed=$((passed + total - bad))
+  failed=$((failed + bad))
+  [ "$rc" -eq 0 ] || status=1
+}
+
+# 1. The normal build.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j2
-ctest --test-dir "$build" --output-on-failure -j2
+run_ctest "$build" release
+
+# 2. Everything again under AddressSanitizer + UndefinedBehaviorSanitizer.
+san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san"
+cmake --build "$root/build-asan" -j2
+run_ctest "$root/build-asan" sanitizers
+
+# 3. The generator under libFuzzer (clang), from the shipped and test kernels.
+cmake -S "$root" -B "$root/build-fuzz" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang-19 -DCMAKE_CXX_COMPILER=clang++-19 -DDPGEN_BUILD_FUZZ=ON \
+  -DDPGEN_BUILD_TESTS=OFF -DDPGEN_BUILD_EXAMPLES=OFF \
+  -DDPGEN_FUZZ_SECONDS="${DPGEN_FUZZ_SECONDS:-60}" \
+  -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
+cmake --build "$root/build-fuzz" -j2 --target fuzz_generator
+run_ctest "$root/build-fuzz" fuzz
+
+echo "tests: $passed passed, $failed failed"
+exit $status

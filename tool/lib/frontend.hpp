@@ -13,6 +13,7 @@ struct FrontendOptions {
   std::vector<std::string> compiler_args; // after `--`
   std::string resource_dir;               // Clang's builtin headers
   std::string driver = "clang++";         // argv[0]: where the driver looks for GCC's headers
+  bool quiet = false;                     // drop diagnostics (fuzzing)
 };
 
 /// Parses `file` and lowers its kernels. Diagnostics go to stderr as
@@ -22,5 +23,11 @@ struct FrontendOptions {
 /// dependency files).
 bool lower_file(const std::string& file, const FrontendOptions& opts,
                 std::vector<Kernel>& kernels, std::vector<std::string>* deps = nullptr);
+
+/// The same for source text held in memory, named `name`; `headers` maps
+/// further in-memory files (e.g. "dpgen/annotate.hpp") to their contents.
+bool lower_code(const std::string& code, const std::string& name, const FrontendOptions& opts,
+                std::vector<Kernel>& kernels,
+                const std::vector<std::pair<std::string, std::string>>& headers = {});
 
 } // namespace dpgen

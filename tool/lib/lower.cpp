@@ -21,6 +21,8 @@
 #include <clang/Lex/Lexer.h>
 #include <clang/Tooling/Tooling.h>
 #include <fmt/format.h>
+#include <llvm/Support/MemoryBuffer.h>
+#include <llvm/Support/VirtualFileSystem.h>
 #include <llvm/Support/raw_ostream.h>
 
 #include <map>
@@ -1221,8 +1223,9 @@ private:
 
 } // namespace
 
-bool lower_file(const std::string& file, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels, std::vector<std::string>* deps) {
+namespace {
+
+std::vector<std::string> compiler_args(const FrontendOptions& opts) {
   std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
   if (!opts.resource_dir.empty())
     args.push_back("-resource-dir=" + opts.resource_dir);
@@ -1233,18 +1236,47 @@ bool lower_file(const std::string& file, const FrontendOptions& opts,
     args.push_back("-std=c++17");
   args.push_back("-xc++");
   args.insert(args.end(), opts.compiler_args.begin(), opts.compiler_args.end());
-  args.push_back(file);
+  return args;
+}
 
+bool run(std::vector<std::string> args, const std::string& file, const FrontendOptions& opts,
+         std::vector<Kernel>& kernels, std::vector<std::string>* deps,
+         llvm::IntrusiveRefCntPtr<llvm::vfs::FileSystem> files) {
+  args.push_back(file);
   bool ok = true;
   std::vector<Kernel> found;
-  auto files = llvm::vfs::getRealFileSystem();
   auto fm = llvm::makeIntrusiveRefCnt<FileManager>(FileSystemOptions(), files);
   tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file, deps), fm.get());
-  bool ran = inv.run();
-  if (!ran)
+  IgnoringDiagConsumer ignore;
+  if (opts.quiet)
+    inv.setDiagnosticConsumer(&ignore);
+  if (!inv.run())
     ok = false;
   kernels.insert(kernels.end(), found.begin(), found.end());
   return ok;
+}
+
+} // namespace
+
+bool lower_file(const std::string& file, const FrontendOptions& opts,
+                std::vector<Kernel>& kernels, std::vector<std::string>* deps) {
+  return run(compiler_args(opts), file, opts, kernels, deps, llvm::vfs::getRealFileSystem());
+}
+
+bool lower_code(const std::string& code, const std::string& name, const FrontendOptions& opts,
+                std::vector<Kernel>& kernels,
+                const std::vector<std::pair<std::string, std::string>>& headers) {
+  // The real file system (for <cmath>) under an in-memory one with the code.
+  auto memory = llvm::makeIntrusiveRefCnt<llvm::vfs::InMemoryFileSystem>();
+  memory->addFile("/dpgen-memory/" + name, 0, llvm::MemoryBuffer::getMemBufferCopy(code));
+  for (const auto& [path, text] : headers)
+    memory->addFile("/dpgen-memory/include/" + path, 0, llvm::MemoryBuffer::getMemBufferCopy(text));
+  auto overlay = llvm::makeIntrusiveRefCnt<llvm::vfs::OverlayFileSystem>(
+      llvm::vfs::getRealFileSystem());
+  overlay->pushOverlay(memory);
+  auto args = compiler_args(opts);
+  args.push_back("-I/dpgen-memory/include");
+  return run(args, "/dpgen-memory/" + name, opts, kernels, nullptr, overlay);
 }
 
 } // namespace dpgen

@@ -1,0 +1,71 @@
+// libFuzzer target over the generator's front half: mutated kernel sources go
+// through lowering, scheduling and emission. The tool must never crash or
+// hang, and every kernel it accepts must produce code that compiles: the
+// generated file is parsed by Clang, and a failure aborts (a finding).
+#include "lib/emit.hpp"
+#include "lib/frontend.hpp"
+#include "lib/schedule.hpp"
+
+#include <clang/Frontend/FrontendActions.h>
+#include <clang/Tooling/Tooling.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+std::string read_file(const char* path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+const std::string& annotate_header() {
+  static const std::string text = read_file(DPGEN_ANNOTATE_HPP);
+  return text;
+}
+
+dpgen::FrontendOptions options() {
+  dpgen::FrontendOptions o;
+  o.resource_dir = DPGEN_CLANG_RESOURCE_DIR;
+  o.driver = DPGEN_CLANG_DRIVER;
+  o.quiet = true;
+  return o;
+}
+
+// Parses the generated source with its header; true when it compiles.
+bool compiles(const dpgen::EmittedFile& f) {
+  std::vector<std::string> args = {"-std=c++17", "-w", "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
+  return clang::tooling::runToolOnCodeWithArgs(
+      std::make_unique<clang::SyntaxOnlyAction>(), f.source, args, "fuzz_adjoint.cpp",
+      DPGEN_CLANG_DRIVER, std::make_shared<clang::PCHContainerOperations>(),
+      {{"fuzz_adjoint.hpp", f.header}});
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size > 8192)
+    return 0;
+  std::string code(reinterpret_cast<const char*>(data), size);
+  std::vector<dpgen::Kernel> kernels;
+  if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels,
+                         {{"dpgen/annotate.hpp", annotate_header()}}))
+    return 0; // rejected with a diagnostic: fine
+  std::vector<dpgen::AdjointPlan> plans;
+  for (const auto& k : kernels)
+    plans.push_back(dpgen::schedule(k));
+  dpgen::EmittedFile f = dpgen::emit_file(plans, "fuzz.cpp", "fuzz");
+  if (!compiles(f)) {
+    llvm::errs() << "fuzz: accepted kernel produced code that does not compile:\n"
+                 << f.source << "\n--- input ---\n"
+                 << code << "\n";
+    std::abort();
+  }
+  return 0;
+}
