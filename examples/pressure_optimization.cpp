@@ -225,9 +225,9 @@ int main(int argc, char** argv) try {
     if (!g.left(k))
       right_max = std::max({right_max, std::abs(u_target[k]), std::abs(v_target[k])});
   dpgen_examples::write_png_panels(dir + "v_fields.png", {vec(v_opt), vec(v_proj), vec(v_target)},
-                                   nx, ny, 6, right_max);
+                                   nx, ny, 4, right_max);
   dpgen_examples::write_png_panels(dir + "u_fields.png", {vec(u_opt), vec(u_proj), vec(u_target)},
-                                   nx, ny, 6, right_max);
+                                   nx, ny, 4, right_max);
   dpgen_examples::write_svg_plot(dir + "loss.svg", "pressure_optimization: loss", "iteration",
                                  "right-half error", {{"loss", curve_x, curve_y}}, true);
   std::printf("pictures: %sv_fields.png %su_fields.png (optimized input | after projection | "
