@@ -114,30 +114,13 @@ int main(int argc, char** argv) try {
   const Eigen::VectorXd u_start = u;
   if (check) {
     Eigen::VectorXd u0 = p.u_true + Eigen::VectorXd::LinSpaced(cells, -0.05, 0.05);
-    double err = dpgen_examples::gradient_check(loss_and_gradient, u0);
-    std::printf("gradient check: largest relative error %.2e along 3 random directions\n", err);
-    return err <= 1e-6 ? 0 : 1;
+    return dpgen_examples::report_gradient_check(
+        dpgen_examples::gradient_check(loss_and_gradient, u0));
   }
-  std::unique_ptr<dpgen::Optimizer> optimizer;
-  if (method == "gd")
-    optimizer = std::make_unique<dpgen::GradientDescent>(lr);
-  else if (method == "adam")
-    optimizer = std::make_unique<dpgen::Adam>(dpgen::AdamOptions{lr});
-  else if (method == "lbfgs")
-    optimizer = std::make_unique<dpgen::Lbfgs>();
-  else
-    throw std::invalid_argument("advection_inverse: --optimizer must be gd, adam or lbfgs");
-  dpgen::TrainOptions opts;
-  opts.max_iterations = iters;
-  opts.csv_path = csv;
-  dpgen_examples::ensure_parent(csv);
-  std::vector<double> curve_x, curve_y;
-  opts.callback = [&](const dpgen::TrainProgress& pr) {
-    dpgen_examples::print_progress(pr);
-    curve_x.push_back(pr.iteration);
-    curve_y.push_back(pr.loss);
-  };
-  dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u, opts);
+  auto optimizer = dpgen_examples::make_optimizer(method, lr, "advection_inverse");
+  dpgen_examples::LossCurve curve;
+  dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u,
+                                       dpgen_examples::train_options(iters, csv, curve));
   const double reduction = s.initial_loss / s.final_loss;
   Eigen::VectorXd grad(cells);
   loss_and_gradient(u, grad); // final state for the pictures
@@ -155,7 +138,7 @@ int main(int argc, char** argv) try {
     xs[i] = (i + 0.5) * p.dx;
   auto vec = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
   dpgen_examples::write_svg_plot(dir + "loss.svg", "advection_inverse: loss", "iteration",
-                                 "|d(T) - target|^2", {{"loss", curve_x, curve_y}}, true);
+                                 "|d(T) - target|^2", {{"loss", curve.iteration, curve.loss}}, true);
   dpgen_examples::write_svg_plot(
       dir + "density.svg", "density after T steps", "x", "d",
       {{"d0", xs, vec(p.d0), "#999999", true},
@@ -167,12 +150,7 @@ int main(int argc, char** argv) try {
                                   {"u used for the target", xs, vec(p.u_true), "#d62728", true}});
   std::printf("pictures: %sloss.svg %sdensity.svg %svelocity.svg\n", dir.c_str(), dir.c_str(),
               dir.c_str());
-  if (require > 0 && !(reduction >= require)) {
-    std::fprintf(stderr, "error: loss dropped %.3gx, less than the required %.3gx\n", reduction,
-                 require);
-    return 1;
-  }
-  return 0;
+  return dpgen_examples::check_reduction(reduction, require);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return 1;

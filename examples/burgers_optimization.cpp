@@ -144,25 +144,16 @@ int main(int argc, char** argv) try {
 
   if (check) {
     const Eigen::VectorXd at = u_book + Eigen::VectorXd::LinSpaced(kCells, -0.05, 0.05);
-    const double err = dpgen_examples::gradient_check(loss_and_gradient, at);
-    std::printf("gradient check: largest relative error %.2e along 3 random directions\n", err);
-    return err <= 1e-6 ? 0 : 1;
+    return dpgen_examples::report_gradient_check(
+        dpgen_examples::gradient_check(loss_and_gradient, at));
   }
 
   Eigen::VectorXd u0 = Eigen::VectorXd::Zero(kCells); // the book's starting guess
   dpgen::GradientDescent optimizer(lr);
-  dpgen::TrainOptions opts;
-  opts.max_iterations = iters;
-  opts.csv_path = csv;
-  dpgen_examples::ensure_parent(csv);
-  std::vector<double> curve_x, curve_y;
-  opts.callback = [&](const dpgen::TrainProgress& pr) {
-    dpgen_examples::print_progress(pr);
-    curve_x.push_back(pr.iteration);
-    curve_y.push_back(pr.loss);
-  };
+  dpgen_examples::LossCurve curve;
   const auto start = std::chrono::steady_clock::now();
-  const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, optimizer, u0, opts);
+  const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, optimizer, u0,
+                                             dpgen_examples::train_options(iters, csv, curve));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   loss_and_gradient(u0, grad); // u16 of the final u0, for the pictures
@@ -181,7 +172,7 @@ int main(int argc, char** argv) try {
   }
   const std::string dir = dpgen_examples::output_dir(out);
   dpgen_examples::write_svg_plot(dir + "loss.svg", "burgers_optimization: loss", "iteration",
-                                 "sum((u16 - ref)^2) / N", {{"loss", curve_x, curve_y}}, true);
+                                 "sum((u16 - ref)^2) / N", {{"loss", curve.iteration, curve.loss}}, true);
   dpgen_examples::write_svg_plot(dir + "state_t16.svg", "states from the optimized u0", "x", "u",
                                  {{"reference (t = 0.5)", xs, vec(ref), "#2ca02c"},
                                   {"u16 (t = 0.5)", xs, vec(u16), "#1f77b4", true},
@@ -192,12 +183,8 @@ int main(int argc, char** argv) try {
   std::printf("pictures: %sloss.svg %sstate_t16.svg %sinitial_state.svg\n", dir.c_str(),
               dir.c_str(), dir.c_str());
 
-  if (require_reduction > 0 && !(s.initial_loss / s.final_loss >= require_reduction)) {
-    std::fprintf(stderr,
-                 "error: loss reduction %.3fx is below the required %.3fx (--require-reduction)\n",
-                 s.initial_loss / s.final_loss, require_reduction);
+  if (dpgen_examples::check_reduction(s.initial_loss / s.final_loss, require_reduction))
     return 1;
-  }
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());

@@ -173,36 +173,19 @@ int main(int argc, char** argv) try {
     return loss;
   };
 
-  std::unique_ptr<dpgen::Optimizer> optimizer;
-  if (method == "gd")
-    optimizer = std::make_unique<dpgen::GradientDescent>(lr);
-  else if (method == "adam")
-    optimizer = std::make_unique<dpgen::Adam>(dpgen::AdamOptions{lr});
-  else if (method == "lbfgs")
-    optimizer = std::make_unique<dpgen::Lbfgs>();
-  else
-    throw std::invalid_argument("pressure_optimization: --optimizer must be gd, adam or lbfgs");
+  auto optimizer = dpgen_examples::make_optimizer(method, lr, "pressure_optimization");
 
   VectorXd x = VectorXd::Zero(2 * m);
   if (check) {
     // The loss is quadratic in x, so central differences are exact for any
     // step: a large one keeps the CG tolerance out of the comparison.
     VectorXd x0 = VectorXd::LinSpaced(2 * m, -0.5, 0.5); // a generic point
-    double err = dpgen_examples::gradient_check(loss_and_gradient, x0, 3, 0.1);
-    std::printf("gradient check: largest relative error %.2e along 3 random directions\n", err);
-    return err <= 1e-6 ? 0 : 1;
+    return dpgen_examples::report_gradient_check(
+        dpgen_examples::gradient_check(loss_and_gradient, x0, 3, 0.1));
   }
-  std::vector<double> curve_x, curve_y;
-  dpgen::TrainOptions opts;
-  opts.max_iterations = iters;
-  opts.csv_path = csv;
-  dpgen_examples::ensure_parent(csv);
-  opts.callback = [&](const dpgen::TrainProgress& p) {
-    dpgen_examples::print_progress(p);
-    curve_x.push_back(p.iteration);
-    curve_y.push_back(p.loss);
-  };
-  dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, x, opts);
+  dpgen_examples::LossCurve curve;
+  dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, x,
+                                       dpgen_examples::train_options(iters, csv, curve));
   VectorXd grad;
   loss_and_gradient(x, grad); // the final projected field, for the pictures
   const double reduction = s.initial_loss / s.final_loss;
@@ -229,16 +212,11 @@ int main(int argc, char** argv) try {
   dpgen_examples::write_png_panels(dir + "u_fields.png", {vec(u_opt), vec(u_proj), vec(u_target)},
                                    nx, ny, 4, right_max);
   dpgen_examples::write_svg_plot(dir + "loss.svg", "pressure_optimization: loss", "iteration",
-                                 "right-half error", {{"loss", curve_x, curve_y}}, true);
+                                 "right-half error", {{"loss", curve.iteration, curve.loss}}, true);
   std::printf("pictures: %sv_fields.png %su_fields.png (optimized input | after projection | "
               "target), %sloss.svg\n",
               dir.c_str(), dir.c_str(), dir.c_str());
-  if (require > 0 && !(reduction >= require)) {
-    std::fprintf(stderr, "error: loss dropped %.3gx, less than the required %.3gx\n", reduction,
-                 require);
-    return 1;
-  }
-  return 0;
+  return dpgen_examples::check_reduction(reduction, require);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return 1;

@@ -1,6 +1,7 @@
 // Progress lines and output folders shared by the examples.
 #pragma once
 
+#include "dpgen/optim.hpp"
 #include "dpgen/train.hpp"
 
 #include <algorithm>
@@ -8,6 +9,9 @@
 #include <cstdio>
 #include <random>
 #include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <vector>
 #include <string>
 
 namespace dpgen_examples {
@@ -40,6 +44,59 @@ double gradient_check(LossGradient&& f, const Eigen::VectorXd& x, int trials = 3
     worst = std::max(worst, std::abs(fd - ad) / std::max(std::abs(ad), 1e-300));
   }
   return worst;
+}
+
+/// The optimizer named by --optimizer: "gd", "adam" or "lbfgs".
+inline std::unique_ptr<dpgen::Optimizer> make_optimizer(const std::string& name, double lr,
+                                                        const std::string& program) {
+  if (name == "gd")
+    return std::make_unique<dpgen::GradientDescent>(lr);
+  if (name == "adam")
+    return std::make_unique<dpgen::Adam>(dpgen::AdamOptions{lr});
+  if (name == "lbfgs")
+    return std::make_unique<dpgen::Lbfgs>();
+  throw std::invalid_argument(program + ": --optimizer must be gd, adam or lbfgs, not '" + name +
+                              "'");
+}
+
+/// The loss per iteration, for the loss plot.
+struct LossCurve {
+  std::vector<double> iteration, loss;
+};
+
+void ensure_parent(const std::string& file);
+
+/// Training options shared by the examples: at most `iters` updates, a
+/// progress line per iteration, the CSV log at `csv` (its folder created),
+/// the loss curve recorded into `curve`.
+inline dpgen::TrainOptions train_options(int iters, const std::string& csv, LossCurve& curve) {
+  dpgen::TrainOptions opts;
+  opts.max_iterations = iters;
+  opts.csv_path = csv;
+  ensure_parent(csv);
+  opts.callback = [&curve](const dpgen::TrainProgress& p) {
+    print_progress(p);
+    curve.iteration.push_back(p.iteration);
+    curve.loss.push_back(p.loss);
+  };
+  return opts;
+}
+
+/// --check-gradient: prints the result; the exit status (1 above 1e-6).
+inline int report_gradient_check(double error) {
+  std::printf("gradient check: largest relative error %.2e along 3 random directions\n", error);
+  return error <= 1e-6 ? 0 : 1;
+}
+
+/// --require-reduction: the exit status (1, with a message, when the loss
+/// dropped less than `required` times; 0 when `required` is 0).
+inline int check_reduction(double reduction, double required) {
+  if (required > 0 && !(reduction >= required)) {
+    std::fprintf(stderr, "error: loss dropped %.3gx, less than the required %.3gx\n", reduction,
+                 required);
+    return 1;
+  }
+  return 0;
 }
 
 /// Creates the folder a file is to be written in (for --csv PATH).

@@ -52,17 +52,7 @@ public:
           return (*this)(e->ops[2]);
       }
     }
-    bool changed = false;
-    std::vector<ExprP> ops;
-    for (const auto& o : e->ops) {
-      ops.push_back((*this)(o));
-      changed = changed || ops.back() != o;
-    }
-    if (!changed)
-      return e;
-    auto copy = std::make_shared<Expr>(*e);
-    copy->ops = std::move(ops);
-    return copy;
+    return map_operands(e, [&](const ExprP& o) { return (*this)(o); });
   }
 
 private:

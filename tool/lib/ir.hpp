@@ -90,6 +90,21 @@ ExprP select(ExprP c, ExprP a, ExprP b);
 ExprP call(const std::string& fn, std::vector<ExprP> args, Type t);
 ExprP cast(ExprP a, Type t);
 
+/// `e` with every operand replaced by f(operand); `e` itself if none changed.
+template <typename F> ExprP map_operands(const ExprP& e, F&& f) {
+  bool changed = false;
+  std::vector<ExprP> ops;
+  for (const auto& o : e->ops) {
+    ops.push_back(f(o));
+    changed = changed || ops.back() != o;
+  }
+  if (!changed)
+    return e;
+  auto copy = std::make_shared<Expr>(*e);
+  copy->ops = std::move(ops);
+  return copy;
+}
+
 bool is_const(const ExprP& e, double v);
 /// Structural equality (Locals compare by identity).
 bool same(const ExprP& a, const ExprP& b);

@@ -402,17 +402,7 @@ private:
         return inline_locals(e->local->def, from, to);
       return e;
     }
-    bool changed = false;
-    std::vector<ExprP> ops;
-    for (const auto& o : e->ops) {
-      ops.push_back(inline_locals(o, from, to));
-      changed = changed || ops.back() != o;
-    }
-    if (!changed)
-      return e;
-    auto copy = std::make_shared<Expr>(*e);
-    copy->ops = std::move(ops);
-    return copy;
+    return map_operands(e, [&](const ExprP& o) { return inline_locals(o, from, to); });
   }
 
   ExprP make_local(const std::string& base, const VarDecl* decl, ExprP def) {
