@@ -108,18 +108,15 @@ std::string elem_of(const Kernel& k, const std::string& array) {
   return p ? p->elem_name : "double";
 }
 
-// Cell coordinates and cell ranges of the gather loops are 64-bit, so the
-// cell index (Poly::code) never wraps in 32 bits; the counters of an
-// iteration keep the kernel's own type, so recomputed expressions are
-// evaluated exactly as the kernel evaluates them.
+// Integers of the gather loops (cell coordinates, ranges, the counters of an
+// iteration) are 64-bit: no index arithmetic on them wraps in 32 bits, and
+// GCC sees the affine accesses it needs to vectorize (a counter truncated to
+// int is opaque to it). Signed int locals are widened the same way by the
+// lowering; values are those of the kernel wherever the kernel's own
+// arithmetic does not overflow.
 constexpr const char* kCellType = "std::ptrdiff_t";
 
-std::string loop_type(const Nest& n, const std::string& var) {
-  for (const auto& l : n.loops)
-    if (l.var == var)
-      return l.type_name;
-  return "int";
-}
+std::string loop_type(const Nest&, const std::string&) { return kCellType; }
 
 // Emits `const T name = def;` for each local in `locals` not yet in `done`.
 void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int>& done) {

@@ -415,10 +415,15 @@ private:
     l->def = def;
     l->id = next_local_id_++;
     l->kernel_level = loops_.empty();
-    if (def->type == Type::Int)
-      l->type_name = decl && decl->getType()->isIntegerType()
-                         ? decl->getType().getUnqualifiedType().getAsString()
-                         : "int";
+    if (def->type == Type::Int) {
+      // Signed integers narrower than 64 bits become std::ptrdiff_t in the
+      // generated code (see emit.cpp: index arithmetic that vectorizes and
+      // never wraps); other integer types keep their own.
+      QualType t = decl ? decl->getType().getUnqualifiedType() : ctx_.IntTy;
+      bool widen = !t->isIntegerType() ||
+                   (t->isSignedIntegerType() && ctx_.getTypeSize(t) < 64);
+      l->type_name = widen ? "std::ptrdiff_t" : t.getAsString();
+    }
     else
       l->type_name = type_spelling(def->type);
     if (l->kernel_level)
