@@ -82,7 +82,7 @@ int main(int argc, char** argv) try {
   const int iters = args.get_int("--iters", 50, "gradient descent iterations");
   const double lr = args.get_double("--lr", 5.0, "learning rate");
   const std::string reference = args.get_string(
-      "--reference", DPGEN_SOURCE_DIR "/../shared/reference/burgers_t16_reference.txt",
+      "--reference", DPGEN_SOURCE_DIR "/examples/data/burgers_t16_reference.txt",
       "file with the 128 reference values at step 16");
   const std::string csv =
       args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
