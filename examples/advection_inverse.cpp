@@ -62,13 +62,7 @@ int main(int argc, char** argv) try {
   const double lr = args.get_double("--lr", 0.01, "learning rate (gd, adam)");
   const int checkpoints =
       args.get_int("--checkpoints", 0, "0: store every state; K > 0: Revolve with K snapshots");
-  const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
-  const std::string out = args.get_string("--out", "out/advection_inverse", "folder for pictures");
-  const double require = args.get_double(
-      "--require-reduction", 0, "exit with an error unless the loss drops by this factor");
-  const int check = args.get_int("--check-gradient", 0,
-                                 "1: compare the gradient with central differences at the start "
-                                 "and exit (status 1 if the relative error exceeds 1e-6)");
+  const auto common = dpgen_examples::common_options(args, "advection_inverse");
   if (args.finish())
     return 0;
   if (cells < 3 || steps < 1 || iters < 0 || checkpoints < 0)
@@ -112,7 +106,7 @@ int main(int argc, char** argv) try {
 
   Eigen::VectorXd u = Eigen::VectorXd::Constant(cells, 0.1); // first guess
   const Eigen::VectorXd u_start = u;
-  if (check) {
+  if (common.check) {
     Eigen::VectorXd u0 = p.u_true + Eigen::VectorXd::LinSpaced(cells, -0.05, 0.05);
     return dpgen_examples::report_gradient_check(
         dpgen_examples::gradient_check(loss_and_gradient, u0));
@@ -120,7 +114,7 @@ int main(int argc, char** argv) try {
   auto optimizer = dpgen_examples::make_optimizer(method, lr, "advection_inverse");
   dpgen_examples::LossCurve curve;
   dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u,
-                                       dpgen_examples::train_options(iters, csv, curve));
+                                       dpgen_examples::train_options(iters, common.csv, curve));
   const double reduction = s.initial_loss / s.final_loss;
   Eigen::VectorXd grad(cells);
   loss_and_gradient(u, grad); // final state for the pictures
@@ -132,7 +126,7 @@ int main(int argc, char** argv) try {
               last_stats.forward_steps, last_stats.recomputed_steps, last_stats.max_snapshots,
               last_stats.peak_snapshot_bytes);
 
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   std::vector<double> xs(cells);
   for (int i = 0; i < cells; ++i)
     xs[i] = (i + 0.5) * p.dx;
@@ -150,7 +144,7 @@ int main(int argc, char** argv) try {
                                   {"u used for the target", xs, vec(p.u_true), "#d62728", true}});
   std::printf("pictures: %sloss.svg %sdensity.svg %svelocity.svg\n", dir.c_str(), dir.c_str(),
               dir.c_str());
-  return dpgen_examples::check_reduction(reduction, require);
+  return dpgen_examples::check_reduction(reduction, common.require);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return 1;

@@ -84,16 +84,7 @@ int main(int argc, char** argv) try {
   const std::string reference = args.get_string(
       "--reference", DPGEN_SOURCE_DIR "/examples/data/burgers_t16_reference.txt",
       "file with the 128 reference values at step 16");
-  const std::string csv =
-      args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
-  const std::string out =
-      args.get_string("--out", "out/burgers_optimization", "folder for pictures");
-  const double require_reduction = args.get_double(
-      "--require-reduction", 0.0, "fail unless initial/final loss >= this (0: no check)");
-  const int check =
-      args.get_int("--check-gradient", 0,
-                   "1: compare the gradient with central differences near "
-                   "-sin(pi x) and exit (status 1 if the relative error exceeds 1e-6)");
+  const auto common = dpgen_examples::common_options(args, "burgers_optimization");
   if (args.finish())
     return 0;
   if (iters < 0)
@@ -142,7 +133,7 @@ int main(int argc, char** argv) try {
   const double book_loss = loss_and_gradient(u_book, grad);
   std::printf("loss of u0 = -sin(pi x) (the book's ground-truth initial state): %.6e\n", book_loss);
 
-  if (check) {
+  if (common.check) {
     const Eigen::VectorXd at = u_book + Eigen::VectorXd::LinSpaced(kCells, -0.05, 0.05);
     return dpgen_examples::report_gradient_check(
         dpgen_examples::gradient_check(loss_and_gradient, at));
@@ -153,7 +144,7 @@ int main(int argc, char** argv) try {
   dpgen_examples::LossCurve curve;
   const auto start = std::chrono::steady_clock::now();
   const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, optimizer, u0,
-                                             dpgen_examples::train_options(iters, csv, curve));
+                                             dpgen_examples::train_options(iters, common.csv, curve));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   loss_and_gradient(u0, grad); // u16 of the final u0, for the pictures
@@ -170,7 +161,7 @@ int main(int argc, char** argv) try {
     burgers_step(u, mid, next);
     std::swap(u, next);
   }
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   dpgen_examples::write_svg_plot(dir + "loss.svg", "burgers_optimization: loss", "iteration",
                                  "sum((u16 - ref)^2) / N", {{"loss", curve.iteration, curve.loss}}, true);
   dpgen_examples::write_svg_plot(dir + "state_t16.svg", "states from the optimized u0", "x", "u",
@@ -183,7 +174,7 @@ int main(int argc, char** argv) try {
   std::printf("pictures: %sloss.svg %sstate_t16.svg %sinitial_state.svg\n", dir.c_str(),
               dir.c_str(), dir.c_str());
 
-  if (dpgen_examples::check_reduction(s.initial_loss / s.final_loss, require_reduction))
+  if (dpgen_examples::check_reduction(s.initial_loss / s.final_loss, common.require))
     return 1;
   return 0;
 } catch (const std::exception& e) {

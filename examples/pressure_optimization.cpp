@@ -98,14 +98,7 @@ int main(int argc, char** argv) try {
   const std::string method = args.get_string("--optimizer", "gd", "gd, adam or lbfgs");
   const double lr = args.get_double("--lr", 0.4, "learning rate (gd, adam)");
   const double tol = args.get_double("--cg-tol", 1e-10, "relative CG tolerance, both solves");
-  const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
-  const std::string out =
-      args.get_string("--out", "out/pressure_optimization", "folder for pictures");
-  const double require = args.get_double(
-      "--require-reduction", 0, "exit with an error unless the loss drops by this factor");
-  const int check = args.get_int("--check-gradient", 0,
-                                 "1: compare the gradient with central differences at the start "
-                                 "and exit (status 1 if the relative error exceeds 1e-6)");
+  const auto common = dpgen_examples::common_options(args, "pressure_optimization");
   if (args.finish())
     return 0;
   if (nx < 4 || ny < 4 || nx % 2 || iters < 0)
@@ -176,7 +169,7 @@ int main(int argc, char** argv) try {
   auto optimizer = dpgen_examples::make_optimizer(method, lr, "pressure_optimization");
 
   VectorXd x = VectorXd::Zero(2 * m);
-  if (check) {
+  if (common.check) {
     // The loss is quadratic in x, so central differences are exact for any
     // step: a large one keeps the CG tolerance out of the comparison.
     VectorXd x0 = VectorXd::LinSpaced(2 * m, -0.5, 0.5); // a generic point
@@ -185,7 +178,7 @@ int main(int argc, char** argv) try {
   }
   dpgen_examples::LossCurve curve;
   dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, x,
-                                       dpgen_examples::train_options(iters, csv, curve));
+                                       dpgen_examples::train_options(iters, common.csv, curve));
   VectorXd grad;
   loss_and_gradient(x, grad); // the final projected field, for the pictures
   const double reduction = s.initial_loss / s.final_loss;
@@ -196,7 +189,7 @@ int main(int argc, char** argv) try {
               proj.forward_summary.iterations, proj.forward_summary.final_residual_norm,
               proj.backward_summary.iterations, proj.backward_summary.final_residual_norm);
 
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   auto vec = [](const VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
   VectorXd u_opt, v_opt;
   unpack(x, u_opt, v_opt);
@@ -216,7 +209,7 @@ int main(int argc, char** argv) try {
   std::printf("pictures: %sv_fields.png %su_fields.png (optimized input | after projection | "
               "target), %sloss.svg\n",
               dir.c_str(), dir.c_str(), dir.c_str());
-  return dpgen_examples::check_reduction(reduction, require);
+  return dpgen_examples::check_reduction(reduction, common.require);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return 1;

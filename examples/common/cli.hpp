@@ -91,4 +91,24 @@ private:
   bool help_ = false;
 };
 
+/// The options every example has besides its own.
+struct CommonOptions {
+  std::string csv;         ///< --csv: the training log
+  std::string out;         ///< --out: folder for pictures
+  double require = 0;      ///< --require-reduction: fail below this loss ratio
+  bool check = false;      ///< --check-gradient: compare with central differences and exit
+};
+
+inline CommonOptions common_options(Args& args, const std::string& name) {
+  CommonOptions o;
+  o.csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
+  o.out = args.get_string("--out", "out/" + name, "folder for pictures");
+  o.require = args.get_double("--require-reduction", 0,
+                              "exit with an error unless the loss drops by this factor");
+  o.check = args.get_int("--check-gradient", 0,
+                         "1: compare the gradient with central differences at the start and "
+                         "exit (status 1 if the relative error exceeds 1e-6)") != 0;
+  return o;
+}
+
 } // namespace dpgen_examples

@@ -2,6 +2,8 @@
 // solve on an explicit sparse SPD matrix, preconditioning, null spaces, and every error path.
 #include "dpgen/cg.hpp"
 
+#include "test_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -18,14 +20,7 @@ namespace {
 using dpgen::detail::format_number;
 using Eigen::VectorXd;
 
-Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed, double lo = -1.0, double hi = 1.0) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> dist(lo, hi);
-  VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    v[i] = dist(rng);
-  return v;
-}
+using dpgen_test::random_vector;
 
 // -div(k grad p) on an nx-by-ny cell grid with zero Dirichlet values outside, k at cell
 // centres averaged arithmetically onto faces: SPD for k > 0. Written as a stencil (the way a

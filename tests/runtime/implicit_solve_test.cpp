@@ -6,6 +6,8 @@
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
 #include "operators.hpp"
 
+#include "test_support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <limits>
@@ -17,14 +19,7 @@ namespace {
 
 using Eigen::VectorXd;
 
-VectorXd random_vector(Eigen::Index n, unsigned seed, double lo = -1.0, double hi = 1.0) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> dist(lo, hi);
-  VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    v[i] = dist(rng);
-  return v;
-}
+using dpgen_test::random_vector;
 
 // The operators are dpgen kernels (tests/runtime/operators/); their adjoints,
 // in particular w.r.t. the coefficient k that theta_bar needs, are generated
