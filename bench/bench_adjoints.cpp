@@ -1,7 +1,9 @@
-// Generated adjoints against their forward kernels, hand-written gather
-// adjoints and scatter adjoints (the form general AD tools emit), side by side
-// in one run. Each benchmark's argument is the OpenMP thread count.
-#include "hand_adjoints.hpp"
+// Generated adjoints against their forward kernels (as written, and peeled
+// where the written one does not vectorize), hand-written gather adjoints and
+// scatter adjoints (the form general AD tools emit), side by side in one run.
+// Each benchmark's argument is the OpenMP thread count (the forward kernels
+// and the scatter adjoints are serial code; they run at both counts too).
+#include "hand_written.hpp"
 
 #include "burgers_step_adjoint.hpp"
 #include "divergence2d_adjoint.hpp"
@@ -57,11 +59,15 @@ void BM_laplacian2d_forward(benchmark::State& s) {
   auto& d = lap2();
   run(s, d.n, [&] { laplacian2d(d.a.data(), d.out.data(), kN2, kN2, 0.1); });
 }
+void BM_laplacian2d_forward_peeled(benchmark::State& s) {
+  auto& d = lap2();
+  run(s, d.n, [&] { hand::laplacian2d_peeled(d.a.data(), d.out.data(), kN2, kN2, 0.1); });
+}
 void BM_laplacian2d_generated(benchmark::State& s) {
   auto& d = lap2();
   run(s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
 }
-void BM_laplacian2d_hand_gather(benchmark::State& s) {
+void BM_laplacian2d_hand(benchmark::State& s) {
   auto& d = lap2();
   run(s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
 }
@@ -85,6 +91,11 @@ void BM_divergence2d_forward(benchmark::State& s) {
   auto& d = div2();
   run(s, d.n, [&] { divergence2d(d.u.data(), d.v.data(), d.out.data(), kN2, kN2, 0.1); });
 }
+void BM_divergence2d_forward_peeled(benchmark::State& s) {
+  auto& d = div2();
+  run(s, d.n,
+      [&] { hand::divergence2d_peeled(d.u.data(), d.v.data(), d.out.data(), kN2, kN2, 0.1); });
+}
 void BM_divergence2d_generated(benchmark::State& s) {
   auto& d = div2();
   run(s, d.n, [&] {
@@ -92,7 +103,7 @@ void BM_divergence2d_generated(benchmark::State& s) {
                          kN2, 0.1);
   });
 }
-void BM_divergence2d_hand_gather(benchmark::State& s) {
+void BM_divergence2d_hand(benchmark::State& s) {
   auto& d = div2();
   run(s, d.n,
       [&] { hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1); });
@@ -120,6 +131,10 @@ void BM_upwind_forward(benchmark::State& s) {
   auto& d = up1();
   run(s, d.n, [&] { upwind_step(d.d.data(), d.u.data(), d.out.data(), kN1, kDt, kDx); });
 }
+void BM_upwind_forward_peeled(benchmark::State& s) {
+  auto& d = up1();
+  run(s, d.n, [&] { hand::upwind_peeled(d.d.data(), d.u.data(), d.out.data(), kN1, kDt, kDx); });
+}
 void BM_upwind_generated(benchmark::State& s) {
   auto& d = up1();
   run(s, d.n, [&] {
@@ -127,7 +142,7 @@ void BM_upwind_generated(benchmark::State& s) {
                         kDt, kDx);
   });
 }
-void BM_upwind_hand_gather(benchmark::State& s) {
+void BM_upwind_hand(benchmark::State& s) {
   auto& d = up1();
   run(s, d.n, [&] {
     hand::upwind_gather(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
@@ -161,6 +176,14 @@ void BM_laplacian3d_generated(benchmark::State& s) {
   run(s, d.n,
       [&] { laplacian3d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
 }
+void BM_laplacian3d_hand(benchmark::State& s) {
+  auto& d = lap3();
+  run(s, d.n, [&] { hand::laplacian3d_gather(d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
+}
+void BM_laplacian3d_scatter(benchmark::State& s) {
+  auto& d = lap3();
+  run(s, d.n, [&] { hand::laplacian3d_scatter(d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
+}
 
 // ---- burgers_step (tests/kernels): nonlinear -----------------------------------
 struct Burg {
@@ -176,29 +199,51 @@ void BM_burgers_forward(benchmark::State& s) {
   auto& d = burg();
   run(s, d.n, [&] { burgers_step(d.u.data(), d.out.data(), kN1, 0.01, 0.1, 0.05); });
 }
+void BM_burgers_forward_peeled(benchmark::State& s) {
+  auto& d = burg();
+  run(s, d.n, [&] { hand::burgers_peeled(d.u.data(), d.out.data(), kN1, 0.01, 0.1, 0.05); });
+}
 void BM_burgers_generated(benchmark::State& s) {
   auto& d = burg();
   run(s, d.n,
       [&] { burgers_step_adjoint(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
+}
+void BM_burgers_hand(benchmark::State& s) {
+  auto& d = burg();
+  run(s, d.n,
+      [&] { hand::burgers_gather(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
+}
+void BM_burgers_scatter(benchmark::State& s) {
+  auto& d = burg();
+  run(s, d.n,
+      [&] { hand::burgers_scatter(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
 }
 
 } // namespace
 
 #define THREADS ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
 BENCHMARK(BM_laplacian2d_forward) THREADS;
+BENCHMARK(BM_laplacian2d_forward_peeled) THREADS;
 BENCHMARK(BM_laplacian2d_generated) THREADS;
-BENCHMARK(BM_laplacian2d_hand_gather) THREADS;
-BENCHMARK(BM_laplacian2d_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_laplacian2d_hand) THREADS;
+BENCHMARK(BM_laplacian2d_scatter) THREADS;
 BENCHMARK(BM_divergence2d_forward) THREADS;
+BENCHMARK(BM_divergence2d_forward_peeled) THREADS;
 BENCHMARK(BM_divergence2d_generated) THREADS;
-BENCHMARK(BM_divergence2d_hand_gather) THREADS;
-BENCHMARK(BM_divergence2d_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_divergence2d_hand) THREADS;
+BENCHMARK(BM_divergence2d_scatter) THREADS;
 BENCHMARK(BM_upwind_forward) THREADS;
+BENCHMARK(BM_upwind_forward_peeled) THREADS;
 BENCHMARK(BM_upwind_generated) THREADS;
-BENCHMARK(BM_upwind_hand_gather) THREADS;
-BENCHMARK(BM_upwind_scatter)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_upwind_hand) THREADS;
+BENCHMARK(BM_upwind_scatter) THREADS;
 BENCHMARK(BM_laplacian3d_forward) THREADS;
 BENCHMARK(BM_laplacian3d_generated) THREADS;
+BENCHMARK(BM_laplacian3d_hand) THREADS;
+BENCHMARK(BM_laplacian3d_scatter) THREADS;
 BENCHMARK(BM_burgers_forward) THREADS;
+BENCHMARK(BM_burgers_forward_peeled) THREADS;
 BENCHMARK(BM_burgers_generated) THREADS;
+BENCHMARK(BM_burgers_hand) THREADS;
+BENCHMARK(BM_burgers_scatter) THREADS;
 BENCHMARK_MAIN();
