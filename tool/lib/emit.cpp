@@ -8,6 +8,7 @@
 #include <clang/Tooling/Core/Replacement.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 #include <functional>
 #include <set>
@@ -84,6 +85,8 @@ std::string cond_text(const PathCond& pc) {
 
 class Code {
 public:
+  explicit Code(int depth = 0) : depth_(depth) {}
+  int depth() const { return depth_; }
   template <typename... A> void line(fmt::format_string<A...> f, A&&... a) {
     out_ += std::string(2 * depth_, ' ') + fmt::format(f, std::forward<A>(a)...) + "\n";
   }
@@ -134,6 +137,8 @@ std::string conjunction(const std::vector<PathCond>& conds) {
 
 // ---- one block: the terms of one (store, shift, piece) at one iteration -------
 
+struct Factored;
+
 struct BlockContext {
   const Kernel& k;
   const GatherGroup& g;
@@ -142,12 +147,61 @@ struct BlockContext {
   std::string hit;    // flag set when a term applies (edge cells)
   bool edge;          // guarded: check that the iteration is in the domain
   const Box* interior; // cell-space interior box (interior mode)
+  Factored* factored = nullptr; // interior: shared invariant partials
 };
 
 // The locals a term needs, recomputed at its iteration, then `acc += partial
 // * seed`, all specialized to the box the iteration is known to lie in.
+// True when `e` is the same in every iteration (parameters and kernel-level
+// locals only): a partial that can be factored out of the cell's sum.
+bool invariant(const ExprP& e) {
+  if (e->op == Op::LoopVar || e->op == Op::Read)
+    return false;
+  if (e->op == Op::Local && !e->local->kernel_level)
+    return false;
+  for (const auto& o : e->ops)
+    if (!invariant(o))
+      return false;
+  return true;
+}
+
+// `text` with every whole-word `from` replaced by `to`.
+std::string replace_word(const std::string& text, const std::string& from, const std::string& to) {
+  std::string out;
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t i = 0; i < text.size();) {
+    bool at_word = text.compare(i, from.size(), from) == 0 && (i == 0 || !ident(text[i - 1])) &&
+                   (i + from.size() >= text.size() || !ident(text[i + from.size()]));
+    if (at_word) {
+      out += to;
+      i += from.size();
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
+
+// Partials shared by several terms of an interior cell, factored out:
+//   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0
+// (one multiplication instead of one per term, and a shorter dependence
+// chain on acc; the sum is the same up to rounding).
+struct Factored {
+  std::vector<std::pair<std::string, ExprP>> sums; // name, partial
+  std::string name_for(const ExprP& partial, Type t) {
+    std::string key = print(partial);
+    for (const auto& [name, p] : sums)
+      if (print(p) == key)
+        return name;
+    sums.push_back({"s" + std::to_string(sums.size()), partial});
+    (void)t;
+    return sums.back().first;
+  }
+};
+
 void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<PathCond>& guards,
-                const std::string& acc, const std::string& set_hit) {
+                const std::string& acc, const std::string& set_hit,
+                Factored* factored = nullptr) {
   Specializer spec(where);
   ExprP partial = spec(t.partial);
   ExprP seed_index = spec(t.store->index);
@@ -175,7 +229,10 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
   }
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
-  code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
+  if (factored && gs.empty() && invariant(partial))
+    code.line("{} += {};", factored->name_for(partial, t.store->value->type), print(seed));
+  else
+    code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())
     code.line("{}", set_hit);
   if (!gs.empty())
@@ -243,7 +300,8 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? cx.hit + " = true;" : "");
+    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? cx.hit + " = true;" : "",
+               cx.factored);
     for (int i = 0; i < opened; ++i)
       code.close();
     code.close();
@@ -486,10 +544,27 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
         has_bulk = has_bulk || b.bulk;
       if (!has_bulk)
         continue; // no term of this input reaches the interior
-      code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
+      std::string elem = elem_of(k, g->array);
+      code.line("{} {} = 0;", elem, acc_name(*g));
+      // The blocks go to a buffer first: the sums they factor out are
+      // declared before them.
+      Factored factored;
+      Code blocks(code.depth());
       for (const auto& b : g->blocks)
         if (b.bulk)
-          emit_block({k, *g, code, acc_name(*g), "", false, &interior}, b);
+          emit_block({k, *g, blocks, acc_name(*g), "", false, &interior, &factored}, b);
+      if (!factored.sums.empty())
+        code.line("// partials the same in every iteration, factored out: sums of seeds");
+      for (auto& [name, p] : factored.sums) {
+        name = fmt::format("{}_{}", acc_name(*g), name);
+        code.line("{} {} = 0;", elem, name);
+      }
+      std::string body = blocks.str();
+      for (size_t q = 0; q < factored.sums.size(); ++q) // s0 -> acc_s0 in the buffer
+        body = replace_word(body, "s" + std::to_string(q), factored.sums[q].first);
+      code.raw(body);
+      for (const auto& [name, p] : factored.sums)
+        code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
       code.line("{} += {};", adj_cell(*g), acc_name(*g));
     }
     code.close(";");
