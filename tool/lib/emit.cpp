@@ -188,13 +188,12 @@ std::string replace_word(const std::string& text, const std::string& from, const
 // chain on acc; the sum is the same up to rounding).
 struct Factored {
   std::vector<std::pair<std::string, ExprP>> sums; // name, partial
-  std::string name_for(const ExprP& partial, Type t) {
+  std::string name_for(const ExprP& partial) {
     std::string key = print(partial);
     for (const auto& [name, p] : sums)
       if (print(p) == key)
         return name;
     sums.push_back({"s" + std::to_string(sums.size()), partial});
-    (void)t;
     return sums.back().first;
   }
 };
@@ -230,7 +229,7 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
   if (factored && gs.empty() && invariant(partial))
-    code.line("{} += {};", factored->name_for(partial, t.store->value->type), print(seed));
+    code.line("{} += {};", factored->name_for(partial), print(seed));
   else
     code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())
