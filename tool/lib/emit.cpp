@@ -8,7 +8,6 @@
 #include <clang/Tooling/Core/Replacement.h>
 
 #include <algorithm>
-#include <cctype>
 #include <fmt/format.h>
 #include <functional>
 #include <set>
@@ -165,35 +164,19 @@ bool invariant(const ExprP& e) {
   return true;
 }
 
-// `text` with every whole-word `from` replaced by `to`.
-std::string replace_word(const std::string& text, const std::string& from, const std::string& to) {
-  std::string out;
-  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (size_t i = 0; i < text.size();) {
-    bool at_word = text.compare(i, from.size(), from) == 0 && (i == 0 || !ident(text[i - 1])) &&
-                   (i + from.size() >= text.size() || !ident(text[i + from.size()]));
-    if (at_word) {
-      out += to;
-      i += from.size();
-    } else {
-      out += text[i++];
-    }
-  }
-  return out;
-}
-
 // Partials shared by several terms of an interior cell, factored out:
 //   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0
 // (one multiplication instead of one per term, and a shorter dependence
 // chain on acc; the sum is the same up to rounding).
 struct Factored {
+  std::string prefix;                              // the accumulator's name
   std::vector<std::pair<std::string, ExprP>> sums; // name, partial
   std::string name_for(const ExprP& partial) {
     std::string key = print(partial);
     for (const auto& [name, p] : sums)
       if (print(p) == key)
         return name;
-    sums.push_back({"s" + std::to_string(sums.size()), partial});
+    sums.push_back({fmt::format("{}_s{}", prefix, sums.size()), partial});
     return sums.back().first;
   }
 };
@@ -547,21 +530,16 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.line("{} {} = 0;", elem, acc_name(*g));
       // The blocks go to a buffer first: the sums they factor out are
       // declared before them.
-      Factored factored;
+      Factored factored{acc_name(*g), {}};
       Code blocks(code.depth());
       for (const auto& b : g->blocks)
         if (b.bulk)
           emit_block({k, *g, blocks, acc_name(*g), "", false, &interior, &factored}, b);
       if (!factored.sums.empty())
         code.line("// partials the same in every iteration, factored out: sums of seeds");
-      for (auto& [name, p] : factored.sums) {
-        name = fmt::format("{}_{}", acc_name(*g), name);
+      for (const auto& [name, p] : factored.sums)
         code.line("{} {} = 0;", elem, name);
-      }
-      std::string body = blocks.str();
-      for (size_t q = 0; q < factored.sums.size(); ++q) // s0 -> acc_s0 in the buffer
-        body = replace_word(body, "s" + std::to_string(q), factored.sums[q].first);
-      code.raw(body);
+      code.raw(blocks.str());
       for (const auto& [name, p] : factored.sums)
         code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
       code.line("{} += {};", adj_cell(*g), acc_name(*g));
