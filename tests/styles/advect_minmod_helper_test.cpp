@@ -1,0 +1,23 @@
+// advect_minmod_helper (tests/styles/): static inline helper with early
+// returns; piecewise linear.
+#include "support/adjoint_check.hpp"
+
+#include "advect_minmod_helper_adjoint.hpp"
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void advect_minmod_helper(DPGEN_IN const double* q, DPGEN_OUT double* q_new, int n,
+                                       double c);
+
+TEST_CASE("styles: advect_minmod_helper") {
+  for (int n : {1, 3, 4, 9, 27}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { advect_minmod_helper(in[0], out[0], n, 0.4); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      advect_minmod_helper_adjoint(in[0], adj[0], seed[0], n, 0.4);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

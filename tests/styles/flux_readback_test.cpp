@@ -1,0 +1,24 @@
+// flux_readback (tests/styles/): an output read back after it is stored in
+// the same iteration; nonlinear.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "flux_readback_adjoint.hpp"
+
+DPGEN_KERNEL void flux_readback(DPGEN_IN const double* q, DPGEN_IN const double* vel,
+                                DPGEN_OUT double* flux, DPGEN_OUT double* dq, int n,
+                                double inv_dx);
+
+TEST_CASE("styles: flux_readback") {
+  for (int n : {1, 2, 3, 9, 24}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n), size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { flux_readback(in[0], in[1], out[0], out[1], n, 2.0); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      flux_readback_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], n, 2.0);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

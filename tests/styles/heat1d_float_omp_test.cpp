@@ -1,0 +1,22 @@
+// heat1d_float_omp (tests/styles/): float, omp parallel for; nonlinear.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "heat1d_float_omp_adjoint.hpp"
+
+DPGEN_KERNEL void heat1d_float_omp(DPGEN_IN const float* t, DPGEN_OUT float* t_new, int n,
+                                   float r);
+
+TEST_CASE("styles: heat1d_float_omp") {
+  for (int n : {1, 2, 3, 10, 33}) {
+    CAPTURE(n);
+    dpgen_test::Problem<float> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { heat1d_float_omp(in[0], out[0], n, 0.2f); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      heat1d_float_omp_adjoint(in[0], adj[0], seed[0], n, 0.2f);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

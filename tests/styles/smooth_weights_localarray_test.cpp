@@ -1,0 +1,24 @@
+// smooth_weights_localarray (tests/styles/): `const double w[3]`, inner tap
+// loop; linear.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "smooth_weights_localarray_adjoint.hpp"
+
+DPGEN_KERNEL void smooth_weights_localarray(DPGEN_IN const double* a, DPGEN_OUT double* out,
+                                            int n);
+
+TEST_CASE("styles: smooth_weights_localarray") {
+  for (int n : {1, 2, 3, 6, 30}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.linear = true;
+    p.forward = [&](auto in, auto out) { smooth_weights_localarray(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      smooth_weights_localarray_adjoint(in[0], adj[0], seed[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -1,0 +1,26 @@
+// two_nests_renamed (tests/styles/): two nests, different counter names;
+// the second nest also reads the first input (a[c]); nonlinear.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "two_nests_renamed_adjoint.hpp"
+
+#include <tuple>
+
+DPGEN_KERNEL void two_nests_renamed(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                    DPGEN_OUT double* x, DPGEN_OUT double* y, int m, int n);
+
+TEST_CASE("styles: two_nests_renamed") {
+  for (auto [m, n] : {std::tuple{1, 1}, {1, 0}, {2, 3}, {4, 2}, {3, 6}}) {
+    CAPTURE(m);
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(m * (n + 2)), size_t((m + 1) * (n + 2))};
+    p.out_sizes = {size_t(m * (n + 2)), size_t((m + 1) * (n + 2))};
+    p.forward = [&](auto in, auto out) { two_nests_renamed(in[0], in[1], out[0], out[1], m, n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      two_nests_renamed_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], m, n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
