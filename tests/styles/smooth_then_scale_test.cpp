@@ -1,0 +1,23 @@
+// smooth_then_scale (tests/styles/): two loops, same counter name, different
+// bounds, shared input; bilinear.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "smooth_then_scale_adjoint.hpp"
+
+DPGEN_KERNEL void smooth_then_scale(DPGEN_IN const double* a, DPGEN_IN const double* s,
+                                    DPGEN_OUT double* sm, DPGEN_OUT double* d, int n);
+
+TEST_CASE("styles: smooth_then_scale") {
+  for (int n : {1, 2, 3, 10}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n), size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { smooth_then_scale(in[0], in[1], out[0], out[1], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      smooth_then_scale_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
