@@ -7,5 +7,5 @@
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 1; i < n; ++i)
     out[i] = a[i] + out[i - 1];
-  // CHECK: read_output.cpp:[[@LINE-1]]:21: error: reads output 'out': outputs are write-only
+  // CHECK: read_output.cpp:[[@LINE-1]]:21: error: reads output 'out': the adjoint has only the output's seed, not its values
 }

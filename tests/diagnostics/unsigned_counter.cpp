@@ -1,4 +1,5 @@
-// An unsigned loop counter (adjoint loops shift indices below zero).
+// An unsigned counter counting down: `i >= 0` always holds and `--i` wraps.
+// (Unsigned counters counting up are accepted.)
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
@@ -6,7 +7,7 @@
 #include <cstddef>
 
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = n - 1; i >= 1; --i)
     out[i] = a[i];
-  // CHECK: unsigned_counter.cpp:[[@LINE-2]]:20: error: loop counter 'i' must have a signed integer type
+  // CHECK: unsigned_counter.cpp:[[@LINE-2]]:39: error: unsigned counter 'i' counts down
 }

@@ -69,9 +69,9 @@ triage_one() {
     local fns f0 b0 fb
     fns=$(grep -oE '^void [A-Za-z0-9_]+_adjoint\(' "$out/gen/${stem}_adjoint.cpp" | sed 's/^void //; s/_adjoint($//')
     f0=$(echo "$fns" | head -1)
-    b0=$(awk "/^void ${f0}_adjoint\\(/,/^}/" "$out/gen/${stem}_adjoint.cpp" | sed "s/\b${f0}\b/KERNEL/g")
+    b0=$(awk "/^void ${f0}_adjoint\\(/,/^}/" "$out/gen/${stem}_adjoint.cpp" | sed "s/${f0}/KERNEL/g")
     for f in $fns; do
-      fb=$(awk "/^void ${f}_adjoint\\(/,/^}/" "$out/gen/${stem}_adjoint.cpp" | sed "s/\b${f}\b/KERNEL/g")
+      fb=$(awk "/^void ${f}_adjoint\\(/,/^}/" "$out/gen/${stem}_adjoint.cpp" | sed "s/${f}/KERNEL/g")
       [ "$fb" = "$b0" ] || note="NOT-PURE: adjoints of identical kernels ${f0}/${f} differ beyond the name"
     done ;;
   esac

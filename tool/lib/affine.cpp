@@ -56,6 +56,14 @@ long long Poly::constant_term() const {
   return it == terms_.end() ? 0 : it->second;
 }
 
+bool Poly::mentions_any(char c) const {
+  for (const auto& [m, k] : terms_)
+    for (const auto& s : m)
+      if (!s.empty() && s[0] == c)
+        return true;
+  return false;
+}
+
 bool Poly::mentions(const std::string& s) const {
   for (const auto& [m, c] : terms_)
     if (std::find(m.begin(), m.end(), s) != m.end())
@@ -157,10 +165,17 @@ std::optional<Poly> to_poly(const ExprP& e) {
     return Poly::symbol(e->name);
   case Op::LoopVar:
     return Poly::symbol("@" + e->name);
-  case Op::Local:
+  case Op::Local: {
     if (e->type != Type::Int)
       return std::nullopt;
-    return to_poly(e->local->def);
+    auto p = to_poly(e->local->def);
+    // An integer local set once before every loop (`int x_min = *xmin;`,
+    // `int half = n / 2;`) is fixed for the whole kernel: a symbol like a
+    // parameter (the generated code defines it first).
+    if (!p && e->local->kernel_level)
+      return Poly::symbol(e->local->name);
+    return p;
+  }
   case Op::Cast: // an integer widened to 64 bits: the same value
     if (e->type != Type::Int || e->ops[0]->type != Type::Int)
       return std::nullopt;

@@ -36,6 +36,8 @@ public:
   bool is_constant() const;
   long long constant_term() const;
   bool mentions(const std::string& s) const;
+  /// Some symbol starts with `c` ('@': a loop counter).
+  bool mentions_any(char c) const;
   /// Coefficient of `var` (which must occur with degree <= 1): a polynomial.
   Poly coefficient(const std::string& var) const;
   /// The polynomial without any term that mentions `var`.

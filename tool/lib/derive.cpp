@@ -13,7 +13,7 @@ namespace {
 
 class Deriver {
 public:
-  explicit Deriver(const std::set<const Expr*>& reads) : reads_(reads) {}
+  Deriver(const std::set<const Expr*>& reads, DeriveNames& names) : reads_(reads), names_(names) {}
 
   ExprP d(const ExprP& e) {
     if (!is_real(e->type))
@@ -78,6 +78,7 @@ public:
 
 private:
   const std::set<const Expr*>& reads_;
+  DeriveNames& names_;
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
@@ -96,16 +97,21 @@ private:
   static ExprP cast_or_null(ExprP a, Type t) { return a ? cast(a, t) : nullptr; }
 
   // The value of call `e` for rules that reuse it: `self` when the call is a
-  // local's definition, else a new local, so it is evaluated once.
-  static ExprP named(const ExprP& e, const ExprP& self) {
+  // local's definition, else a local of its own, so it is evaluated once. The
+  // same call node always gets the same local, numbered in the order the
+  // kernel's derivatives first need them: names depend on the kernel only.
+  ExprP named(const ExprP& e, const ExprP& self) {
     if (self)
       return self;
-    static int counter = 0;
+    auto it = names_.calls.find(e.get());
+    if (it != names_.calls.end())
+      return local_ref(it->second);
     auto l = std::make_shared<LocalVar>();
-    l->name = e->name + "_v" + std::to_string(counter);
+    l->name = e->name + "_v" + std::to_string(names_.next);
     l->type_name = type_spelling(e->type);
     l->def = e;
-    l->id = 1000000 + counter++; // after every user local
+    l->id = 1000000 + names_.next++; // after every user local
+    names_.calls[e.get()] = l;
     return local_ref(l);
   }
 
@@ -181,8 +187,8 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
 
 } // namespace
 
-ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads) {
-  return Deriver(reads).d(value);
+ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names) {
+  return Deriver(reads, names).d(value);
 }
 
 std::vector<ReadSite> reads_in(const ExprP& e) {

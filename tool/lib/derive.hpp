@@ -6,14 +6,23 @@
 
 #include "ir.hpp"
 
+#include <map>
 #include <set>
 
 namespace dpgen {
 
+/// The locals derivative rules introduce for a kernel (the value of a call
+/// that its own derivative reuses, such as exp(a) in d exp(a) = exp(a)·da),
+/// one per call node, named in order of first use within the kernel.
+struct DeriveNames {
+  std::map<const Expr*, LocalP> calls;
+  int next = 0;
+};
+
 /// d value / d(reads): the partial of `value` w.r.t. the Read nodes in
 /// `reads` (occurrences that all read the same cell), as an expression over
 /// the primal values. nullptr stands for an exact zero.
-ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads);
+ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names);
 
 /// A Read node and the conditions of the conditional expressions whose arm it
 /// sits in (`i > 0 ? p[i - 1] : 0.0` reads p[i - 1] only where i > 0).

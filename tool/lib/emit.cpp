@@ -738,19 +738,68 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     code.close();
 }
 
-std::string param_list(const Kernel& k) {
+// Comments name the kernel file without its directory, so generated files do
+// not depend on where the tree was checked out.
+std::string base_name(const std::string& path) {
+  auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// A C++ string literal holding `s`.
+std::string literal(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// The write-once rules dpgen could not prove for all sizes, checked on entry:
+// sizes that break one would make the adjoint wrong, so they stop it with a
+// message naming the rule, the kernel line and the sizes.
+void emit_size_checks(Code& code, const Kernel& k) {
+  std::vector<std::string> shown;
+  for (const auto& p : k.params)
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int)
+      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
+  std::string sizes = shown.empty() ? "\"\""
+                                    : fmt::format("{}", fmt::join(shown, " + \", \" + "));
+  for (const auto& c : k.size_checks) {
+    code.line("// Run-time check (not provable from the kernel alone): {}.", c.what);
+    std::vector<std::string> parts = c.premises;
+    parts.push_back(fmt::format("!({})", c.must_hold));
+    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
+    std::string msg = fmt::format("{}:{}: {}_adjoint: these sizes break the rule that {}, so the "
+                                  "adjoint would be wrong (",
+                                  base_name(c.pos.file), c.pos.line, k.name, c.what);
+    code.line("throw std::invalid_argument(std::string({}) + {} + \")\");", literal(msg), sizes);
+    code.close();
+  }
+}
+
+// The adjoint's parameters. `shaped`: arrays of rows as the kernel declares
+// them (`const double (*a)[64]`); otherwise every array is a flat pointer.
+std::string param_list(const Kernel& k, bool shaped = true) {
   std::vector<std::string> ps;
+  auto array = [&](const Param& p, bool is_const, const std::string& name) {
+    std::string c = is_const ? "const " : "";
+    if (shaped && !p.rows.empty())
+      return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
+    return fmt::format("{}{}* {}", c, p.elem_name, name);
+  };
   for (const auto& p : k.params) {
     switch (p.kind) {
     case ParamKind::In:
-      ps.push_back(fmt::format("const {}* {}", p.elem_name, p.name));
-      ps.push_back(fmt::format("{}* {}_adj", p.elem_name, p.name));
+      ps.push_back(array(p, true, p.name));
+      ps.push_back(array(p, false, p.name + "_adj"));
       break;
     case ParamKind::Out:
-      ps.push_back(fmt::format("const {}* {}_adj", p.elem_name, p.name));
+      ps.push_back(array(p, true, p.name + "_adj"));
       break;
     case ParamKind::ConstArray:
-      ps.push_back(fmt::format("const {}* {}", p.elem_name, p.name));
+      ps.push_back(array(p, true, p.name));
       break;
     case ParamKind::Scalar:
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));
@@ -760,11 +809,40 @@ std::string param_list(const Kernel& k) {
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
-// Comments name the kernel file without its directory, so generated files do
-// not depend on where the tree was checked out.
-std::string base_name(const std::string& path) {
-  auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
+bool has_rows(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
+    return p.kind != ParamKind::Scalar && !p.rows.empty();
+  });
+}
+
+// The call from the shaped entry point to the flat one: rows of a
+// multi-dimensional array are contiguous, so its first element's address is
+// the flat array.
+std::string flat_arguments(const Kernel& k) {
+  std::vector<std::string> as;
+  auto array = [&](const Param& p, bool is_const, const std::string& name) {
+    if (p.rows.empty())
+      return name;
+    return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
+  };
+  for (const auto& p : k.params) {
+    switch (p.kind) {
+    case ParamKind::In:
+      as.push_back(array(p, true, p.name));
+      as.push_back(array(p, false, p.name + "_adj"));
+      break;
+    case ParamKind::Out:
+      as.push_back(array(p, true, p.name + "_adj"));
+      break;
+    case ParamKind::ConstArray:
+      as.push_back(array(p, true, p.name));
+      break;
+    case ParamKind::Scalar:
+      as.push_back(p.name);
+      break;
+    }
+  }
+  return fmt::format("{}", fmt::join(as, ", "));
 }
 
 void open_namespaces(Code& c, const Kernel& k) {
@@ -779,10 +857,20 @@ void close_namespaces(Code& c, const Kernel& k) {
 void emit_kernel(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   open_namespaces(code, k);
-  code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
-  code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
+  bool rows = has_rows(k);
+  if (rows) {
+    code.raw("namespace {\n");
+    code.line("// Adjoint of {} ({}:{}) on flat arrays; {}_adjoint below takes the arrays "
+              "of rows.",
+              k.name, base_name(k.file), k.pos.line, k.name);
+    code.open(fmt::format("void {}_adjoint_flat({})", k.name, param_list(k, false)));
+  } else {
+    code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
+    code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
+  }
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  emit_size_checks(code, k);
   // Gather groups of different inputs that share a loop nest, a layout and a
   // cell box run in one fused loop.
   std::set<const GatherGroup*> done;
@@ -814,6 +902,13 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
         emit_scatter(code, u);
   }
   code.close();
+  if (rows) {
+    code.raw("} // namespace\n\n");
+    code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
+    code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
+    code.line("{}_adjoint_flat({});", k.name, flat_arguments(k));
+    code.close();
+  }
   close_namespaces(code, k);
 }
 
@@ -870,7 +965,13 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
         "// loop; edge cells check each term's iteration domain.\n");
   c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
-  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n\n");
+  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n");
+  bool checks = false;
+  for (const auto& p : plans)
+    checks = checks || !p.kernel->size_checks.empty();
+  if (checks)
+    c.raw("#include <stdexcept>\n#include <string>\n");
+  c.raw("\n");
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
         "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"

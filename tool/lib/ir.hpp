@@ -117,6 +117,10 @@ struct Param {
   Type elem;             // element type of an array, type of a scalar
   std::string elem_name; // "double", "float", "int", ...
   std::string spelling;  // the parameter's declaration as written in the source
+  /// Row extents of a pointer to rows (`double (*a)[64]`, `double a[][64]`):
+  /// "[64]". Such an array is indexed a[j][i], read as the flat a[j * 64 + i];
+  /// the generated adjoint takes it in the same shape.
+  std::string rows;
 };
 
 struct Loop {
@@ -137,11 +141,29 @@ struct Store {
   ExprP value;
   std::vector<PathCond> path;
   SourcePos pos;
+  /// `out[k] += value`: adds to what the element held (the caller's contents
+  /// or an earlier store). The adjoint is the same as for `=`; the write-once
+  /// rule does not apply (a reduction or a flux accumulation is fine), but a
+  /// later `=` must not overwrite it.
+  bool accumulate = false;
+  /// Program order of the store statements in the kernel.
+  int seq = 0;
 };
 
 struct Nest {
   std::vector<Loop> loops; // outermost first; may be empty for straight-line code
   std::vector<Store> stores;
+};
+
+/// A condition on the sizes that the generated adjoint checks on entry, for a
+/// write-once rule dpgen could not prove from the kernel alone (a fixed row
+/// length against a size parameter, two loops whose ranges are apart only for
+/// some sizes). C++ conditions over the parameters and kernel-level locals.
+struct SizeCheck {
+  std::vector<std::string> premises; // where the rule matters (the loops run, ...)
+  std::string must_hold;
+  std::string what; // "output 'u' is written once per element"
+  SourcePos pos;
 };
 
 struct Kernel {
@@ -151,6 +173,7 @@ struct Kernel {
   std::vector<LocalP> kernel_locals;
   std::vector<PathCond> guards; // `if (...) return;` at kernel level, negated
   std::vector<Nest> nests;
+  std::vector<SizeCheck> size_checks;
   SourcePos pos;
   std::string file; // source file as given on the command line
 

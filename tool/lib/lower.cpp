@@ -4,6 +4,7 @@
 #include "frontend.hpp"
 
 #include "affine.hpp"
+#include "prove.hpp"
 
 #include <clang/AST/ASTConsumer.h>
 #include <clang/AST/ASTContext.h>
@@ -99,8 +100,16 @@ private:
   std::map<const VarDecl*, Binding> env_;
   std::vector<PathCond> path_;
   std::vector<std::shared_ptr<Loop>> loops_;
-  std::map<std::vector<const Loop*>, size_t> nest_index_;
+  // Each `for` statement lowered gets its own number; a nest is keyed by the
+  // numbers of the loops around it, so two nests never share an entry even
+  // when they reuse counter names (or a freed Loop's address).
+  std::vector<int> loop_ids_;
+  int next_loop_id_ = 0;
+  std::map<std::vector<int>, size_t> nest_index_;
   std::set<std::string> local_names_;
+  std::set<std::string> loop_names_; // every counter name the generated code uses
+  // Why a variable has no value here, where that is more than "not yet set".
+  std::map<const VarDecl*, std::string> why_unset_;
   int next_local_id_ = 0;
 
   // ---- diagnostics -------------------------------------------------------
@@ -126,6 +135,16 @@ private:
   }
 
   // ---- types ---------------------------------------------------------------
+
+  // A type as the generated code spells it: canonical, so a typedef of the
+  // user's (`FLOAT`, `real_t`) or a library alias (`size_t`) never appears in
+  // a generated file that does not declare it.
+  static std::string spelled(QualType q, bool keep_const = false) {
+    QualType c = q.getCanonicalType();
+    if (!keep_const)
+      c = c.getUnqualifiedType();
+    return c.getAsString();
+  }
 
   std::optional<Type> scalar_type(QualType q) const {
     q = q.getCanonicalType().getUnqualifiedType();
@@ -182,13 +201,29 @@ private:
                                            out.name));
       if (q->isPointerType()) {
         QualType elem = q->getPointeeType();
+        // Rows of a multi-dimensional array: double (*a)[64], double a[][64],
+        // or, in C, double a[n][n] (a variable-length row: flat in the
+        // generated signature).
+        bool const_rows = elem.isConstQualified();
+        while (const clang::ArrayType* at = ctx_.getAsArrayType(elem)) {
+          if (const auto* c = dyn_cast<ConstantArrayType>(at))
+            out.rows += fmt::format("[{}]", c->getSize().getZExtValue());
+          else if (!isa<VariableArrayType>(at))
+            fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
+                                               "kernel subset",
+                                               out.name));
+          elem = at->getElementType();
+          const_rows = const_rows || elem.isConstQualified();
+        }
+        if (const_rows)
+          elem.addConst();
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
                                              "float, double or an integer type",
                                              out.name, elem.getAsString()));
         out.elem = *et;
-        out.elem_name = elem.getUnqualifiedType().getAsString();
+        out.elem_name = spelled(elem);
         if (ann == "dpgen.in") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
@@ -221,9 +256,9 @@ private:
                                              out.name));
         out.kind = ParamKind::Scalar;
         out.elem = *t;
-        out.elem_name = q.getUnqualifiedType().getAsString();
+        out.elem_name = spelled(q);
       }
-      out.spelling = p->getType().getAsString();
+      out.spelling = spelled(p->getType(), /*keep_const=*/true);
       k_.params.push_back(out);
     }
     if (!any_in)
@@ -408,7 +443,7 @@ private:
   ExprP make_local(const std::string& base, const VarDecl* decl, ExprP def) {
     auto l = std::make_shared<LocalVar>();
     std::string name = base;
-    for (int n = 1; local_names_.count(name) || is_reserved(name); ++n)
+    for (int n = 1; local_names_.count(name) || loop_names_.count(name) || is_reserved(name); ++n)
       name = fmt::format("{}_{}", base, n);
     local_names_.insert(name);
     l->name = name;
@@ -422,13 +457,20 @@ private:
       QualType t = decl ? decl->getType().getUnqualifiedType() : ctx_.IntTy;
       bool widen = !t->isIntegerType() ||
                    (t->isSignedIntegerType() && ctx_.getTypeSize(t) < 64);
-      l->type_name = widen ? "std::ptrdiff_t" : t.getAsString();
+      l->type_name = widen ? "std::ptrdiff_t" : spelled(t);
     }
     else
       l->type_name = type_spelling(def->type);
     if (l->kernel_level)
       k_.kernel_locals.push_back(l);
     return local_ref(l);
+  }
+
+  std::string unset_message(const VarDecl* v, const char* plain) const {
+    auto it = why_unset_.find(v);
+    if (it != why_unset_.end())
+      return it->second;
+    return fmt::format("'{}' {}", v->getNameAsString(), plain);
   }
 
   bool is_reserved(const std::string& name) const {
@@ -464,29 +506,44 @@ private:
   }
 
   void for_loop(const ForStmt* f) {
-    // init: `int i = lo`
-    const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit());
-    if (!ds || !ds->isSingleDecl())
-      fail(f->getBeginLoc(), "a kernel loop must declare its counter: 'for (int i = lo; i < hi; "
-                             "++i)'");
-    const auto* var = dyn_cast<VarDecl>(ds->getSingleDecl());
-    if (!var || !var->getInit())
-      fail(f->getBeginLoc(), "loop counter needs an initial value");
+    // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
+    const VarDecl* var = nullptr;
+    const clang::Expr* init = nullptr;
+    if (const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit())) {
+      if (!ds->isSingleDecl())
+        fail(f->getBeginLoc(), "a kernel loop declares one counter: 'for (int i = lo; i < hi; "
+                               "++i)'");
+      var = dyn_cast<VarDecl>(ds->getSingleDecl());
+      if (!var || !var->getInit())
+        fail(f->getBeginLoc(), "loop counter needs an initial value");
+      init = var->getInit();
+    } else if (const auto* a = init_assignment(f); a) {
+      const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
+      var = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+      auto it = var ? env_.find(var) : env_.end();
+      if (!var || it == env_.end() || it->second.kind != Binding::Value)
+        fail(a->getLHS()->getBeginLoc(), "the loop counter must be a local variable of the "
+                                         "kernel: 'for (i = lo; i < hi; ++i)'");
+      init = a->getRHS();
+    } else {
+      fail(f->getBeginLoc(), "a kernel loop must set its counter: 'for (int i = lo; i < hi; ++i)' "
+                             "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'");
+    }
     QualType vt = var->getType().getCanonicalType();
-    if (!vt->isIntegerType() || vt->isUnsignedIntegerType() || vt->isBooleanType())
-      fail(var->getLocation(), fmt::format("loop counter '{}' must have a signed integer type "
-                                           "(adjoint loops shift indices below zero)",
+    if (!vt->isIntegerType() || vt->isBooleanType())
+      fail(var->getLocation(), fmt::format("loop counter '{}' must have an integer type",
                                            var->getNameAsString()));
-    ExprP init = expr(var->getInit());
-    // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`
+    ExprP init_value = expr(init);
+    // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`; also `i + 1 < n` or
+    // `n > i`: any comparison whose sides differ by +-i plus a bound.
     const auto* c = dyn_cast_or_null<BinaryOperator>(f->getCond());
-    const auto* lhs = c ? dyn_cast<DeclRefExpr>(c->getLHS()->IgnoreParenImpCasts()) : nullptr;
-    if (!c || !lhs || lhs->getDecl() != var)
+    BinaryOperatorKind cond_op = c ? c->getOpcode() : BO_Comma;
+    ExprP bound = c && c->isRelationalOp() ? loop_bound(c, var, cond_op) : nullptr;
+    if (!bound)
       fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
            fmt::format("loop condition must compare the counter '{}' with a bound: "
                        "'{} < hi'",
                        var->getNameAsString(), var->getNameAsString()));
-    ExprP bound = expr(c->getRHS());
     // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
     int step = loop_step(f->getInc(), var);
     if (step == 0)
@@ -494,26 +551,31 @@ private:
            "loop increment must be ++i, i++ or i += 1 (or --i for a loop counting down)");
     ExprP lo, hi;
     ExprP one = int_const(1);
-    switch (c->getOpcode()) {
+    switch (cond_op) {
     case BO_LT:
-      lo = init, hi = bound;
+      lo = init_value, hi = bound;
       break;
     case BO_LE:
-      lo = init, hi = binary(Op::Add, bound, one);
+      lo = init_value, hi = binary(Op::Add, bound, one);
       break;
     case BO_GT:
-      lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init, one);
+      lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init_value, one);
       break;
     case BO_GE:
-      lo = bound, hi = binary(Op::Add, init, one);
+      lo = bound, hi = binary(Op::Add, init_value, one);
       break;
     default:
       fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=");
     }
-    if ((step > 0) != (c->getOpcode() == BO_LT || c->getOpcode() == BO_LE))
+    if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
       fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition");
+    if (vt->isUnsignedIntegerType() && step < 0)
+      fail(f->getInc()->getBeginLoc(),
+           fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
+                       "count up, or use a signed counter",
+                       var->getNameAsString()));
     for (const auto& [what, e, loc] :
-         {std::tuple{"lower", lo, var->getInit()->getBeginLoc()},
+         {std::tuple{"lower", lo, init->getBeginLoc()},
           std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
       auto p = to_poly(e);
       if (!p)
@@ -529,45 +591,158 @@ private:
     }
     if (loops_.size() == 3)
       fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset");
-    if (is_reserved(var->getNameAsString()) || local_names_.count(var->getNameAsString()))
-      fail(var->getLocation(), fmt::format("loop counter '{}' reuses a name already in the "
-                                           "kernel",
-                                           var->getNameAsString()));
 
     auto loop = std::make_shared<Loop>();
+    // The counter keeps its name unless that would collide with a parameter,
+    // a local or an enclosing counter in the generated code.
     loop->var = var->getNameAsString();
-    loop->type_name = var->getType().getUnqualifiedType().getAsString();
+    for (int n = 1; is_reserved(loop->var) || local_names_.count(loop->var); ++n)
+      loop->var = fmt::format("{}_{}", var->getNameAsString(), n);
+    loop_names_.insert(loop->var);
+    loop->type_name = spelled(var->getType());
     loop->lo = lo;
     loop->hi = hi;
-    Binding b;
-    b.kind = Binding::LoopVar;
-    b.value = loop_var(loop->var);
-    env_[var] = b;
 
     check_not_assigned(f->getBody(), var);
     size_t depth = path_.size();
     auto env_before = env_;
+    auto why_before = why_unset_;
+    Binding b;
+    b.kind = Binding::LoopVar;
+    b.value = loop_var(loop->var);
+    env_[var] = b;
+    // Variables declared outside the loop and assigned in it (OpenMP
+    // `private` temporaries) start each iteration without a value: a read
+    // before the iteration's own assignment would be a value carried over
+    // from the previous iteration.
+    std::set<const VarDecl*> assigned;
+    assigned_vars(f->getBody(), assigned);
+    for (const VarDecl* v : assigned) {
+      auto it = env_.find(v);
+      if (it == env_.end() || it->second.kind != Binding::Value)
+        continue;
+      it->second.value = nullptr;
+      why_unset_[v] = fmt::format(
+          "'{}' is declared outside the loop and assigned inside it, and read here before it is "
+          "assigned in this iteration: a value carried from one iteration to the next (a running "
+          "sum or a recurrence) is outside the kernel subset; assign it before each use in the "
+          "iteration, or write a reduction into an output element with '+='",
+          v->getNameAsString());
+    }
     loops_.push_back(loop);
+    loop_ids_.push_back(next_loop_id_++);
     Escape e = lower(f->getBody());
     (void)e; // a body ending in continue is fine
     loops_.pop_back();
+    loop_ids_.pop_back();
     path_.resize(depth);
-    // Values assigned inside a loop body do not flow out of it (no
-    // loop-carried scalars in the subset).
-    for (auto& [decl, bnd] : env_) {
-      auto it = env_before.find(decl);
-      if (it != env_before.end() && bnd.kind == Binding::Value && it->second.value != bnd.value &&
-          decl->getDeclContext() == fn_)
-        loop_carried_ = decl;
-    }
     env_ = env_before;
-    if (loop_carried_)
-      fail(loop_carried_->getLocation(),
-           fmt::format("'{}' is assigned inside a loop and declared outside it: a value carried "
-                       "from one iteration to the next is outside the kernel subset",
-                       loop_carried_->getNameAsString()));
+    why_unset_ = why_before;
+    // After the loop, a variable it assigned holds what the last iteration
+    // left there: outside the subset.
+    for (const VarDecl* v : assigned) {
+      auto it = env_.find(v);
+      if (it == env_.end() || it->second.kind != Binding::Value)
+        continue;
+      it->second.value = nullptr;
+      why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
+                                  "is the last iteration's, outside the kernel subset",
+                                  v->getNameAsString());
+    }
+    if (const auto* d = dyn_cast_or_null<DeclStmt>(f->getInit()); !d) {
+      // A C89 counter is not a value after its loop either.
+      env_[var].value = nullptr;
+      why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
+                                    "bound instead",
+                                    var->getNameAsString());
+    }
   }
-  const VarDecl* loop_carried_ = nullptr;
+
+  // The bound of a loop condition as `counter op bound` (op returned in `op`):
+  // `i < n`, `i + 1 < n` (i < n - 1), `n > i` (i < n). Null when the sides do
+  // not differ by exactly +-counter plus something free of the counter.
+  ExprP loop_bound(const BinaryOperator* c, const VarDecl* var, BinaryOperatorKind& op) {
+    const auto* lhs = dyn_cast<DeclRefExpr>(c->getLHS()->IgnoreParenImpCasts());
+    if (lhs && lhs->getDecl() == var)
+      return expr(c->getRHS());
+    // The counter is bound to a placeholder while the sides are lowered.
+    auto saved = env_.find(var) != env_.end() ? std::optional<Binding>(env_[var]) : std::nullopt;
+    Binding b;
+    b.kind = Binding::LoopVar;
+    b.value = loop_var("@dpgen_counter");
+    env_[var] = b;
+    ExprP l = expr(c->getLHS()), r = expr(c->getRHS());
+    if (saved)
+      env_[var] = *saved;
+    else
+      env_.erase(var);
+    auto pl = to_poly(l), pr = to_poly(r);
+    if (!pl || !pr)
+      return nullptr;
+    Poly d = *pl - *pr; // condition: d op 0
+    Poly k = d.coefficient("@@dpgen_counter");
+    Poly rest = d.without("@@dpgen_counter");
+    if (!k.is_constant() || (k.constant_term() != 1 && k.constant_term() != -1) ||
+        rest.mentions_any('@'))
+      return nullptr;
+    op = c->getOpcode();
+    if (k.constant_term() == -1) { // -i + rest op 0  <=>  i (flipped op) rest
+      switch (op) {
+      case BO_LT: op = BO_GT; break;
+      case BO_LE: op = BO_GE; break;
+      case BO_GT: op = BO_LT; break;
+      case BO_GE: op = BO_LE; break;
+      default: break;
+      }
+      return poly_expr(rest);
+    }
+    return poly_expr(-rest); // i + rest op 0  <=>  i op -rest
+  }
+
+  // An integer expression for a polynomial over parameters and kernel-level
+  // locals (symbols resolve to what they name).
+  ExprP poly_expr(const Poly& p) {
+    ExprP sum;
+    for (const auto& [m, coef] : p.terms()) {
+      ExprP term = int_const(coef);
+      for (const auto& sym : m)
+        term = binary(Op::Mul, term, symbol_expr(sym));
+      sum = sum ? binary(Op::Add, sum, term) : term;
+    }
+    return sum ? sum : int_const(0);
+  }
+  ExprP symbol_expr(const std::string& sym) {
+    if (const Param* p = k_.find_param(sym))
+      return param(p->name, p->elem);
+    for (const auto& l : k_.kernel_locals)
+      if (l->name == sym)
+        return local_ref(l);
+    throw std::logic_error("lower: unknown symbol " + sym);
+  }
+
+  // The `i = lo` of a C89-style loop, if that is its init statement.
+  static const BinaryOperator* init_assignment(const ForStmt* f) {
+    const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit());
+    const auto* a = e ? dyn_cast<BinaryOperator>(e->IgnoreParens()) : nullptr;
+    return a && a->getOpcode() == BO_Assign ? a : nullptr;
+  }
+
+  // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
+  static void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
+    if (!s)
+      return;
+    auto target = [&](const clang::Expr* e) {
+      if (const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts()))
+        if (const auto* v = dyn_cast<VarDecl>(r->getDecl()))
+          out.insert(v);
+    };
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp())
+      target(b->getLHS());
+    if (const auto* u = dyn_cast<UnaryOperator>(s); u && u->isIncrementDecrementOp())
+      target(u->getSubExpr());
+    for (const Stmt* c : s->children())
+      assigned_vars(c, out);
+  }
 
   int loop_step(const clang::Expr* inc, const VarDecl* var) {
     if (!inc)
@@ -612,6 +787,8 @@ private:
   // An expression statement: an assignment to an output element or a local.
   void expr_stmt(const clang::Expr* e) {
     e = e->IgnoreParens();
+    if (const auto* w = dyn_cast<ExprWithCleanups>(e)) // temporaries: std::max(a, 0.0)
+      e = w->getSubExpr()->IgnoreParens();
     if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->isIncrementDecrementOp()) {
       assign(u->getSubExpr(), u->isIncrementOp() ? BO_AddAssign : BO_SubAssign, nullptr,
              u->getOperatorLoc());
@@ -630,22 +807,34 @@ private:
   void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
               SourceLocation loc) {
     lhs = lhs->IgnoreParenImpCasts();
-    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(lhs)) {
-      const Param* p = array_param(sub);
+    if (auto acc = element(lhs)) {
+      const Param* p = acc->param;
       if (p->kind != ParamKind::Out)
-        fail(sub->getBeginLoc(), fmt::format("'{}' is written but is not a DPGEN_OUT parameter; "
-                                             "inputs and constant arrays are read only",
-                                             p->name));
-      if (op != BO_Assign)
-        fail(loc, fmt::format("compound assignment to output '{}' reads the output; assign "
-                              "each element once with '='",
-                              p->name));
-      ExprP idx = expr(sub->getIdx());
-      if (idx->type != Type::Int)
-        fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
-      check_index_width(sub->getIdx(), idx, p->name);
-      ExprP value = cast(expr(rhs), p->elem);
-      add_store(p->name, idx, value, pos(sub->getBeginLoc()), sub->getBeginLoc());
+        fail(lhs->getBeginLoc(),
+             fmt::format("'{}' is written but is not a DPGEN_OUT parameter; inputs and constant "
+                         "arrays are read only{}",
+                         p->name,
+                         p->kind == ParamKind::In
+                             ? " (an array updated in place, as in Gauss-Seidel or an in-place "
+                               "time step, carries values from one iteration to the next: "
+                               "write the new values to a separate DPGEN_OUT array)"
+                             : ""));
+      ExprP value;
+      bool accumulate = false;
+      if (op == BO_Assign) {
+        value = expr(rhs);
+      } else if (op == BO_AddAssign || op == BO_SubAssign) {
+        ExprP r = rhs ? expr(rhs) : int_const(1);
+        value = op == BO_AddAssign ? r : unary(Op::Neg, r);
+        accumulate = true;
+      } else {
+        fail(loc, fmt::format("compound assignment '{}' to output '{}' needs the element's "
+                              "previous value, which the adjoint does not have; only '=', '+=' "
+                              "and '-=' write outputs",
+                              BinaryOperator::getOpcodeStr(op).str(), p->name));
+      }
+      add_store(p->name, acc->index, cast(value, p->elem), accumulate, pos(lhs->getBeginLoc()),
+                lhs->getBeginLoc());
       return;
     }
     const auto* ref = dyn_cast<DeclRefExpr>(lhs);
@@ -667,19 +856,13 @@ private:
       fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
                                            "read only",
                                            var->getNameAsString()));
-    if (b.kernel_level && !loops_.empty())
-      fail(lhs->getBeginLoc(), fmt::format("'{}' is declared outside the loop and assigned "
-                                           "inside it: a value carried from one iteration to "
-                                           "the next is outside the kernel subset",
-                                           var->getNameAsString()));
     Type t = *scalar_type(var->getType());
     ExprP value;
     if (op == BO_Assign) {
       value = expr(rhs);
     } else {
       if (!b.value)
-        fail(lhs->getBeginLoc(), fmt::format("'{}' is used before it has a value",
-                                             var->getNameAsString()));
+        fail(lhs->getBeginLoc(), unset_message(var, "used before it has a value"));
       ExprP r = rhs ? expr(rhs) : int_const(1);
       Op bop;
       switch (op) {
@@ -703,29 +886,103 @@ private:
     b.value = make_local(var->getNameAsString(), var, cast(value, t));
   }
 
-  void add_store(const std::string& array, ExprP idx, ExprP value, SourcePos p,
-                 SourceLocation loc) {
-    std::vector<const Loop*> key;
-    for (const auto& l : loops_)
-      key.push_back(l.get());
-    auto it = nest_index_.find(key);
+  Nest& current_nest() {
+    auto it = nest_index_.find(loop_ids_);
     if (it == nest_index_.end()) {
       Nest n;
       for (const auto& l : loops_)
         n.loops.push_back(*l);
       k_.nests.push_back(n);
-      it = nest_index_.emplace(key, k_.nests.size() - 1).first;
+      it = nest_index_.emplace(loop_ids_, k_.nests.size() - 1).first;
     }
-    Nest& nest = k_.nests[it->second];
-    // One store per output and path: a second store whose path is not
-    // provably disjoint would overwrite the first.
-    for (const auto& s : nest.stores)
-      if (s.array == array && !paths_disjoint(s.path, path_) && !indices_differ(s.index, idx))
-        fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
-                              "line {}); write each element once",
-                              array, s.pos.line));
-    nest.stores.push_back({array, idx, value, path_, p});
+    return k_.nests[it->second];
+  }
+
+  // `prefix` holds wherever `path` holds: its conditions open `path`.
+  static bool is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path) {
+    if (prefix.size() > path.size())
+      return false;
+    for (size_t i = 0; i < prefix.size(); ++i)
+      if (prefix[i].cond != path[i].cond || prefix[i].positive != path[i].positive)
+        return false;
+    return true;
+  }
+
+  static bool same_index(const ExprP& a, const ExprP& b) {
+    auto pa = to_poly(a), pb = to_poly(b);
+    return pa && pb ? *pa == *pb : same(a, b);
+  }
+
+  // The store of this iteration that a later statement on the current path
+  // sees at `array[idx]`: the last one to that element whose path is still
+  // open. nullptr when there is none.
+  Store* visible_store(Nest& nest, const std::string& array, const ExprP& idx) {
+    for (auto it = nest.stores.rbegin(); it != nest.stores.rend(); ++it)
+      if (it->array == array && same_index(it->index, idx) && is_prefix(it->path, path_))
+        return &*it;
+    return nullptr;
+  }
+
+  void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
+                 SourceLocation loc) {
+    Nest& nest = current_nest();
+    // A second store to the same element in one iteration updates the first:
+    // `x[k] = a; ... x[k] += b;` stores a + b, and a store under a further
+    // condition keeps the earlier value where that condition fails.
+    if (Store* prev = visible_store(nest, array, idx)) {
+      ExprP updated = accumulate ? binary(Op::Add, prev->value, value) : value;
+      ExprP cond;
+      for (size_t i = prev->path.size(); i < path_.size(); ++i) {
+        ExprP c = path_[i].positive ? path_[i].cond : unary(Op::Not, path_[i].cond);
+        cond = cond ? binary(Op::And, cond, c) : c;
+      }
+      prev->value = cond ? select(cond, updated, prev->value) : updated;
+      prev->pos = p;
+      store_locs_[{p.line, p.col}] = loc;
+      return;
+    }
+    // Otherwise a store whose path is not provably disjoint from another
+    // store's to an element that may be the same would overwrite it.
+    for (auto& s : nest.stores) {
+      if (s.array != array || paths_disjoint(s.path, path_) || (s.accumulate && accumulate))
+        continue;
+      auto pa = to_poly(s.index), pb = to_poly(idx);
+      Facts facts;
+      for (const auto& l : loops_)
+        add_nonempty(*l, facts);
+      for (const auto& pc : path_)
+        add_facts(pc, facts);
+      if (pa && pb) {
+        Poly g1 = *pa - *pb - Poly::constant(1), g2 = *pb - *pa - Poly::constant(1);
+        if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
+          continue;
+        if (!(*pa - *pb).mentions_any('@') && !accumulate && !s.accumulate &&
+            is_prefix(path_, s.path)) {
+          // Different elements for some sizes only (u[0] and u[n - 1]): where
+          // they are the same, this store overwrites the earlier one, which
+          // then contributes nothing. The earlier store gets that condition.
+          s.path.push_back({binary(Op::Eq, s.index, idx), false});
+          continue;
+        }
+      }
+      fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
+                            "line {}); write each element once",
+                            array, s.pos.line));
+    }
+    Store st{array, idx, value, path_, p};
+    st.accumulate = accumulate;
+    st.seq = next_store_seq_++;
+    nest.stores.push_back(st);
     store_locs_[{p.line, p.col}] = loc;
+  }
+  int next_store_seq_ = 0;
+
+  // Facts about the parameters on the current path.
+  Facts facts_of_path() const {
+    Facts f;
+    for (const auto& pc : path_)
+      add_facts(pc, f);
+    return f;
   }
   std::map<std::pair<unsigned, unsigned>, SourceLocation> store_locs_;
 
@@ -747,7 +1004,9 @@ private:
   }
 
   // Each output cell is written by exactly one iteration: the write index
-  // must be affine and one-to-one over the loop box.
+  // must be affine and one-to-one over the loop box. Inequalities between
+  // sizes that the rule needs are proved from what the kernel says about them
+  // (the loops run, its guards); the rest become run-time checks.
   void check_outputs() {
     for (auto& nest : k_.nests) {
       for (auto& s : nest.stores) {
@@ -764,22 +1023,29 @@ private:
               if (sym[0] == '@')
                 fail_at(s.pos, fmt::format("index of output '{}' multiplies loop counters",
                                            s.array));
-          if (c == Poly())
+          if (c == Poly()) {
+            if (s.accumulate)
+              continue; // a reduction: every iteration adds to the same element
             fail_at(s.pos, fmt::format("output '{}' is written at the same index by every "
                                        "iteration of loop '{}' (a reduction or a loop-carried "
-                                       "dependence); each element must be written once",
+                                       "dependence); each element must be written once with "
+                                       "'=', or summed into with '+='",
                                        s.array, l.var));
+          }
           dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
         }
-        check_one_to_one(s, dims);
+        if (!s.accumulate)
+          check_one_to_one(nest, s, dims);
       }
       // Within one loop nest, every store to an output uses the same index
-      // (their paths are disjoint), so no two iterations meet.
+      // (their paths are disjoint), so no two iterations meet; stores that
+      // all add ('+=') may go anywhere.
       if (!nest.loops.empty())
         for (size_t a = 0; a < nest.stores.size(); ++a)
           for (size_t b = a + 1; b < nest.stores.size(); ++b) {
             const Store &x = nest.stores[a], &y = nest.stores[b];
-            if (x.array == y.array && !(*to_poly(x.index) == *to_poly(y.index)))
+            if (x.array == y.array && !(x.accumulate && y.accumulate) &&
+                !(*to_poly(x.index) == *to_poly(y.index)))
               fail_at(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                          "line {} of the same loop: dpgen cannot prove two "
                                          "iterations never write the same element",
@@ -787,28 +1053,117 @@ private:
           }
     }
     // Across loop nests: an element written twice would be overwritten in
-    // the forward pass but counted twice in the adjoint. Accept only ranges
-    // that are provably apart.
-    for (size_t a = 0; a < k_.nests.size(); ++a)
-      for (size_t b = a + 1; b < k_.nests.size(); ++b)
-        for (const auto& x : k_.nests[a].stores)
-          for (const auto& y : k_.nests[b].stores) {
-            if (x.array != y.array)
-              continue;
-            auto rx = index_range(x, k_.nests[a]), ry = index_range(y, k_.nests[b]);
-            auto apart = [](const Poly& hi, const Poly& lo) { // hi < lo
-              Poly d = lo - hi;
-              return d.is_constant() && d.constant_term() > 0;
-            };
-            if (rx && ry && (apart(rx->second, ry->first) || apart(ry->second, rx->first)))
-              continue;
-            fail_at(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
-                                       "nest, and dpgen cannot prove the two write different "
-                                       "elements (the adjoint would count an overwritten "
-                                       "element twice); write each element in one loop, with "
-                                       "an index branch for the boundary",
-                                       y.array, x.pos.line));
+    // the forward pass but counted twice in the adjoint. A later '+=' adds to
+    // what an earlier store left, which is fine; a later '=' must write other
+    // elements than every earlier store.
+    struct Ref {
+      const Nest* nest;
+      const Store* store;
+    };
+    std::vector<Ref> all;
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores)
+        all.push_back({&n, &st});
+    std::sort(all.begin(), all.end(),
+              [](const Ref& a, const Ref& b) { return a.store->seq < b.store->seq; });
+    for (size_t a = 0; a < all.size(); ++a)
+      for (size_t b = a + 1; b < all.size(); ++b) {
+        const Nest &nx = *all[a].nest, &ny = *all[b].nest;
+        const Store &x = *all[a].store, &y = *all[b].store;
+        if (x.array != y.array || &nx == &ny)
+          continue;
+        size_t shared = shared_loops(nx, ny);
+        if (y.accumulate) {
+          // Sequential nests: the '+=' runs after the whole earlier nest. In
+          // nests inside a shared loop, only when both touch an element in the
+          // same iteration of the shared loops: the same index, in those
+          // counters alone.
+          if (shared == 0 || (*to_poly(x.index) == *to_poly(y.index) &&
+                              only_counters(*to_poly(x.index), nx, shared)))
+            continue;
+        }
+        Facts facts;
+        for (const Nest* n : {&nx, &ny})
+          for (const auto& l : n->loops)
+            add_nonempty(l, facts);
+        for (const Store* st : {&x, &y})
+          for (const auto& pc : st->path)
+            add_facts(pc, facts);
+        auto rx = index_range(x, nx), ry = index_range(y, ny);
+        if (rx && ry) {
+          // apart: max x < min y, or max y < min x
+          Poly one = Poly::constant(1);
+          Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
+          if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
+            continue;
+          Poly one_ = Poly::constant(1);
+          bool overlap = prove_nonneg(-g1 - one_, facts) && prove_nonneg(-g2 - one_, facts);
+          if (shared == 0 && !overlap) {
+            SizeCheck c;
+            c.premises = premises(facts_premises(nx, x, ny, y));
+            c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
+            c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
+                                 "elements [{}, {}] and [{}, {}], which must not overlap",
+                                 y.array, x.pos.line, y.pos.line, rx->first.str(),
+                                 rx->second.str(), ry->first.str(), ry->second.str());
+            c.pos = y.pos;
+            k_.size_checks.push_back(c);
+            continue;
           }
+        }
+        fail_at(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
+                                   "nest, and dpgen cannot prove the two write different "
+                                   "elements (the adjoint would count an overwritten "
+                                   "element twice); write each element in one loop, with "
+                                   "an index branch for the boundary",
+                                   y.array, x.pos.line));
+      }
+  }
+
+  // The C++ conditions under which a check applies: both stores execute.
+  std::vector<std::string> facts_premises(const Nest& nx, const Store& x, const Nest& ny,
+                                          const Store& y) {
+    std::vector<std::string> out;
+    for (const Nest* n : {&nx, &ny})
+      for (const auto& l : n->loops)
+        out.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+    for (const Store* st : {&x, &y})
+      for (const auto& pc : st->path) {
+        Facts f;
+        add_facts(pc, f);
+        for (const auto& p : f)
+          out.push_back(fmt::format("({}) >= 0", p.code()));
+      }
+    return out;
+  }
+  static std::vector<std::string> premises(std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+
+  // How many outer loops two nests share (the same `for` statements).
+  size_t shared_loops(const Nest& a, const Nest& b) const {
+    const std::vector<int>* ka = nullptr;
+    const std::vector<int>* kb = nullptr;
+    for (const auto& [key, idx] : nest_index_) {
+      if (&k_.nests[idx] == &a)
+        ka = &key;
+      if (&k_.nests[idx] == &b)
+        kb = &key;
+    }
+    size_t n = 0;
+    while (ka && kb && n < ka->size() && n < kb->size() && (*ka)[n] == (*kb)[n])
+      ++n;
+    return n;
+  }
+
+  // The polynomial mentions no counter but the first `shared` loops of `nest`.
+  static bool only_counters(const Poly& p, const Nest& nest, size_t shared) {
+    for (size_t i = shared; i < nest.loops.size(); ++i)
+      if (p.mentions("@" + nest.loops[i].var))
+        return false;
+    return true;
   }
 
   static std::string print_index(const Store& s) { return to_poly(s.index)->str(); }
@@ -833,7 +1188,10 @@ private:
   // Mixed-radix test: with the counters ordered by coefficient, every
   // coefficient exceeds the largest offset the smaller ones can reach:
   //   sum_{smaller} |c| * (extent - 1) < |c_next|.
-  void check_one_to_one(const Store& s, std::vector<std::pair<Poly, Poly>> dims) {
+  // Proved from the facts where the store runs (its loops run, its guards
+  // hold); otherwise checked at run time.
+  void check_one_to_one(const Nest& nest, const Store& s,
+                        std::vector<std::pair<Poly, Poly>> dims) {
     auto size_key = [](const Poly& c) { return std::make_pair(c.degree(), c.str()); };
     std::sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
       if (a.first.degree() != b.first.degree())
@@ -842,19 +1200,32 @@ private:
         return std::llabs(a.first.constant_term()) < std::llabs(b.first.constant_term());
       return size_key(a.first) < size_key(b.first);
     });
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : s.path)
+      add_facts(pc, facts);
     Poly reach;
     for (size_t i = 0; i < dims.size(); ++i) {
       Poly c = dims[i].first;
       if (c.is_constant() && c.constant_term() < 0)
         c = -c;
       if (i > 0) {
-        Poly slack = c - reach; // must be >= 1
-        bool ok = slack.is_constant() && slack.constant_term() >= 1;
-        if (!ok)
-          fail_at(s.pos, fmt::format("cannot prove that output '{}' is written at most once per "
-                                     "element: index coefficient '{}' against a reach of '{}'; "
-                                     "make the row length the loop bound",
-                                     s.array, c.str(), reach.str()));
+        Poly slack = c - reach - Poly::constant(1); // must be >= 0
+        if (!prove_nonneg(slack, facts)) {
+          if (prove_nonneg(-slack - Poly::constant(1), facts))
+            fail_at(s.pos, fmt::format("output '{}' is written twice per element: index "
+                                       "coefficient '{}' against a reach of '{}'",
+                                       s.array, c.str(), reach.str()));
+          SizeCheck chk;
+          chk.premises = premises(facts_premises(nest, s, nest, s));
+          chk.must_hold = fmt::format("({}) >= 0", slack.code());
+          chk.what = fmt::format("output '{}' is written once per element: its index steps by "
+                                 "'{}' where the faster counters reach '{}'",
+                                 s.array, c.str(), reach.str());
+          chk.pos = s.pos;
+          k_.size_checks.push_back(chk);
+        }
       }
       reach = reach + c * (dims[i].second - Poly::constant(1));
     }
@@ -875,18 +1246,74 @@ private:
     auto p = to_poly(idx);
     if (!p || p->degree() < 3)
       return;
-    fail(e->getBeginLoc(), fmt::format("index of '{}' is computed in the {}-bit type '{}' but "
-                                       "multiplies {} sizes and counters ('{}'), which "
-                                       "overflows past 2^31 elements; compute it in "
-                                       "std::ptrdiff_t or long",
-                                       array, ctx_.getTypeSize(t), t.getAsString(), p->degree(),
-                                       p->str()));
+    // The forward kernel has the same limit; the adjoint computes its indices
+    // in 64 bits, so this is a warning about the user's code, not an error.
+    if (warned_width_)
+      return; // once per kernel
+    warned_width_ = true;
+    auto& d = ctx_.getDiagnostics();
+    unsigned id = d.getCustomDiagID(DiagnosticsEngine::Warning, "%0");
+    d.Report(e->getBeginLoc(), id)
+        << fmt::format("index of '{}' is computed in the {}-bit type '{}' but multiplies {} sizes "
+                       "and counters ('{}'): past 2^31 elements it overflows in this kernel (the "
+                       "generated adjoint computes it in 64 bits); compute it in std::ptrdiff_t "
+                       "or long",
+                       array, ctx_.getTypeSize(t), t.getAsString(), p->degree(), p->str());
   }
+  bool warned_width_ = false;
 
   // ---- expressions -----------------------------------------------------------
 
-  const Param* array_param(const ArraySubscriptExpr* sub) {
+  // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
+  // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).
+  struct Access {
+    const Param* param;
+    ExprP index;
+  };
+
+  std::optional<Access> element(const clang::Expr* e) {
+    e = e->IgnoreParens();
+    if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
+      const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
+      if (isa<DeclRefExpr>(base))
+        return Access{array_base(base), int_const(0)};
+      fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                                "parameter directly: a[i + 1]");
+    }
+    const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
+    if (!sub)
+      return std::nullopt;
+    ExprP idx = expr(sub->getIdx());
+    if (idx->type != Type::Int)
+      fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
     const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
+    if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
+      // a[j][i]: row j of an array of rows, each `extent` elements long.
+      QualType rt = row->getType().getCanonicalType();
+      const clang::ArrayType* at = ctx_.getAsArrayType(rt);
+      if (!at)
+        fail(base->getBeginLoc(),
+             "rows reached through a pointer ('double** a', a[j][i]) are outside the kernel "
+             "subset: dpgen cannot prove rows do not overlap; pass the array as 'double (*a)[N]', "
+             "'double a[][N]' or a flat pointer with a[j * N + i]");
+      ExprP extent;
+      if (const auto* c = dyn_cast<ConstantArrayType>(at))
+        extent = int_const(static_cast<long long>(c->getSize().getZExtValue()));
+      else if (const auto* v = dyn_cast<VariableArrayType>(at))
+        extent = expr(v->getSizeExpr());
+      else
+        fail(base->getBeginLoc(), "this array type is outside the kernel subset");
+      auto inner = element(row);
+      ExprP flat = binary(Op::Add, binary(Op::Mul, inner->index, extent), idx);
+      // (the flat index of a[j][i] is computed by the compiler in 64 bits)
+      return Access{inner->param, flat};
+    }
+    const Param* p = array_base(base);
+    check_index_width(sub->getIdx(), idx, p->name);
+    return Access{p, idx};
+  }
+
+  const Param* array_base(const clang::Expr* base) {
     const auto* ref = dyn_cast<DeclRefExpr>(base);
     if (!ref) {
       if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
@@ -933,18 +1360,21 @@ private:
       return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
     if (const auto* r = dyn_cast<DeclRefExpr>(e))
       return decl_ref(r);
-    if (const auto* s = dyn_cast<ArraySubscriptExpr>(e)) {
-      const Param* p = array_param(s);
-      if (p->kind == ParamKind::Out)
-        fail(s->getBeginLoc(), fmt::format("reads output '{}': outputs are write-only in a "
-                                           "kernel (read the input it came from instead)",
-                                           p->name));
-      ExprP idx = expr(s->getIdx());
-      if (idx->type != Type::Int)
-        fail(s->getIdx()->getBeginLoc(), "array index must be an integer");
-      check_index_width(s->getIdx(), idx, p->name);
-      ExprP r = read(p->name, idx, p->elem, pos(s->getBeginLoc()));
-      std::const_pointer_cast<Expr>(r)->text = text(s); // as written, for remarks
+    if (auto acc = element(e)) {
+      const Param* p = acc->param;
+      if (p->kind == ParamKind::Out) {
+        // An output read back in the iteration that stored it: that value.
+        Store* st = visible_store(current_nest(), p->name, acc->index);
+        if (!st || st->accumulate)
+          fail(e->getBeginLoc(),
+               fmt::format("reads output '{}'{}: the adjoint has only the output's seed, not its "
+                           "values; read the input it came from, or store it earlier in the same "
+                           "iteration and read it back at the same index",
+                           p->name, st ? " after '+=' (its previous contents)" : ""));
+        return st->value;
+      }
+      ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
+      std::const_pointer_cast<Expr>(r)->text = text(e); // as written, for remarks
       return r;
     }
     if (const auto* u = dyn_cast<UnaryOperator>(e)) {
@@ -955,7 +1385,7 @@ private:
         return expr(u->getSubExpr());
       case UO_LNot:
         return unary(Op::Not, cond(u->getSubExpr()));
-      case UO_Deref:
+      case UO_Deref: // `*p` of a parameter is an element access (handled above)
       case UO_AddrOf:
         fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
                                   "parameters directly");
@@ -996,7 +1426,7 @@ private:
       w->op = Op::Cast;
       w->type = Type::Int;
       w->ops = {inner};
-      w->text = c->getType().getUnqualifiedType().getAsString();
+      w->text = spelled(c->getType());
       return w;
     }
     case CK_IntegralToFloating:
@@ -1051,8 +1481,7 @@ private:
       return b.value;
     case Binding::Value:
       if (!b.value)
-        fail(r->getLocation(), fmt::format("'{}' may be used before it has a value",
-                                           v->getNameAsString()));
+        fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
       return b.value;
     }
     return nullptr;

@@ -185,6 +185,7 @@ AdjointPlan schedule(const Kernel& k) {
   plan.kernel = &k;
   std::map<std::string, size_t> group_index;
   std::map<std::string, size_t> block_index; // group|store|shift|piece -> block
+  DeriveNames names;
 
   for (const auto& param : k.params) {
     if (param.kind != ParamKind::In)
@@ -200,7 +201,7 @@ AdjointPlan schedule(const Kernel& k) {
           const Expr* r = site.read;
           if (r->name != param.name)
             continue;
-          ExprP partial = derivative(store.value, {r});
+          ExprP partial = derivative(store.value, {r}, names);
           if (!partial)
             continue; // read only through a condition or an index
           auto pieces = index_pieces(r->ops[0]);
@@ -295,7 +296,7 @@ AdjointPlan schedule(const Kernel& k) {
   for (auto& g : plan.gathers) {
     for (auto& b : g.blocks) {
       for (auto& t : b.terms)
-        t.partial = derivative(t.store->value, t.reads);
+        t.partial = derivative(t.store->value, t.reads, names);
       b.bulk = is_bulk(b, g);
     }
     g.blocks.erase(std::remove_if(g.blocks.begin(), g.blocks.end(),

@@ -1,0 +1,35 @@
+// Prove: facts about the sizes a kernel runs with, and a small prover over
+// them. The write-once rule for outputs reduces to inequalities between
+// polynomials in the parameters ("the row stride exceeds the last column
+// index": nx - (nx - 2) >= 1); many hold only for the sizes the kernel can
+// run with at all (a loop `for (i = 1; i < nx - 1; ++i)` that runs has
+// nx >= 3) or after a leading guard (`if (n < 3) return;`). What cannot be
+// proved here becomes a run-time check in the generated adjoint.
+#pragma once
+
+#include "affine.hpp"
+#include "ir.hpp"
+
+#include <vector>
+
+namespace dpgen {
+
+/// `f >= 0` for each f: facts that hold wherever a store executes.
+using Facts = std::vector<Poly>;
+
+/// Facts a path condition gives about the parameters: comparisons of integer
+/// polynomials that mention no loop counter, joined by && (or negated ||).
+/// Conditions it cannot read give no fact (never a wrong one).
+void add_facts(const PathCond& pc, Facts& out);
+
+/// The loop runs at least once: hi - lo - 1 >= 0.
+void add_nonempty(const Loop& l, Facts& out);
+
+/// True when `goal >= 0` follows from `facts` for all integers (sound, not
+/// complete): Fourier-Motzkin elimination shows that `goal <= -1` together
+/// with the facts has no rational solution. Products of two symbols are
+/// treated as unknowns of their own, bounded below by the products of the
+/// symbols' lower bounds.
+bool prove_nonneg(const Poly& goal, const Facts& facts);
+
+} // namespace dpgen
