@@ -26,7 +26,9 @@
 #include <llvm/Support/VirtualFileSystem.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include <functional>
 #include <map>
+#include <numeric>
 #include <set>
 
 namespace dpgen {
@@ -65,8 +67,10 @@ std::string annotation(const Decl* d) {
 
 // What a name in the kernel body refers to.
 struct Binding {
-  enum Kind { ScalarParam, ArrayParam, LoopVar, Value } kind;
+  enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray } kind;
   ExprP value;              // Value: current SSA value (null: uninitialised)
+  std::vector<ExprP> elems; // LocalArray: each element's value (null: unset)
+  Type elem = Type::Double; // LocalArray: element type
   const Param* param = nullptr;
   bool kernel_level = false; // Value defined outside every loop
 };
@@ -337,12 +341,26 @@ private:
     if (const auto* i = dyn_cast<IfStmt>(s))
       return if_stmt(i);
     if (isa<ContinueStmt>(s)) {
+      if (unrolling_ > 0)
+        fail(s->getBeginLoc(), "'continue' in a small constant loop that dpgen unrolls (it "
+                               "reads or writes a local array, or sums into a variable); use "
+                               "an if/else");
       if (loops_.empty())
         fail(s->getBeginLoc(), "'continue' outside a loop");
       return Escape::Always;
     }
     if (const auto* r = dyn_cast<ReturnStmt>(s)) {
-      if (!loops_.empty())
+      if (!frames_.empty() && loops_.size() == frames_.back().loop_depth) {
+        // `return v;` in a helper being inlined: v where this path holds.
+        InlineFrame& fr = frames_.back();
+        if (!r->getRetValue())
+          fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
+        ExprP v = cast(expr(r->getRetValue()), fr.ret);
+        fr.returns.push_back(
+            {std::vector<PathCond>(path_.begin() + long(fr.path_depth), path_.end()), v});
+        return Escape::Always;
+      }
+      if (!loops_.empty() || unrolling_ > 0)
         fail(s->getBeginLoc(), "'return' inside a loop is outside the kernel subset; use "
                                "'continue' or an if/else");
       if (r->getRetValue())
@@ -398,27 +416,30 @@ private:
 
     // Merge values assigned in the branches: v = c ? v_then : v_else. A
     // branch that escaped contributes nothing to what follows.
-    for (auto& [decl, b] : env_) {
-      if (b.kind != Binding::Value)
-        continue;
-      ExprP t = env_then[decl].value, e = env_else[decl].value;
+    auto merge = [&](const VarDecl* decl, ExprP t, ExprP e) -> ExprP {
       if (then_e == Escape::Always)
         t = e;
       if (else_e == Escape::Always)
         e = t;
-      if (t == e) {
-        b.value = t;
-        continue;
-      }
-      if (!t || !e) {
-        b.value = nullptr; // assigned in one branch only: uninitialised after
-        continue;
-      }
+      if (t == e)
+        return t;
+      if (!t || !e)
+        return nullptr; // assigned in one branch only: uninitialised after
       // Values made inside a branch are inlined into the select, so nothing
       // of a branch is evaluated where the branch does not run.
       t = inline_locals(t, first_local, after_then);
       e = inline_locals(e, after_then, after_else);
-      b.value = make_local(decl->getNameAsString(), decl, select(c, t, e));
+      return make_local(decl->getNameAsString(), decl, select(c, t, e));
+    };
+    for (auto& [decl, b] : env_) {
+      if (b.kind == Binding::Value) {
+        b.value = merge(decl, env_then[decl].value, env_else[decl].value);
+      } else if (b.kind == Binding::LocalArray) {
+        const auto& te = env_then[decl].elems;
+        const auto& ee = env_else[decl].elems;
+        for (size_t i = 0; i < b.elems.size() && i < te.size() && i < ee.size(); ++i)
+          b.elems[i] = merge(decl, te[i], ee[i]);
+      }
     }
     if (then_e == Escape::Always && else_e == Escape::Always)
       return Escape::Always;
@@ -490,10 +511,15 @@ private:
       fail(v->getLocation(), fmt::format("static variable '{}' is global state, outside the "
                                          "kernel subset",
                                          v->getNameAsString()));
+    if (const auto* at = ctx_.getAsConstantArrayType(v->getType())) {
+      declare_array(v, at);
+      return;
+    }
     auto t = scalar_type(v->getType());
     if (!t || v->getType()->isReferenceType())
       fail(v->getLocation(), fmt::format("local '{}' of type '{}' is outside the kernel subset "
-                                         "(int, float, double or bool values only)",
+                                         "(int, float, double or bool values, and small arrays "
+                                         "of them)",
                                          v->getNameAsString(), v->getType().getAsString()));
     Binding b;
     b.kind = Binding::Value;
@@ -505,7 +531,102 @@ private:
     env_[v] = b;
   }
 
+  // A small local array (`double w[3] = {...}`, a line buffer `double v[5]`):
+  // each element is a local value, indexed by constants (counters of small
+  // constant loops count as constants: those loops are unrolled).
+  void declare_array(const VarDecl* v, const ConstantArrayType* at) {
+    auto t = scalar_type(at->getElementType());
+    uint64_t n = at->getSize().getZExtValue();
+    if (!t || ctx_.getAsArrayType(at->getElementType()))
+      fail(v->getLocation(), fmt::format("local array '{}' of type '{}' is outside the kernel "
+                                         "subset (one-dimensional arrays of int, float or "
+                                         "double)",
+                                         v->getNameAsString(), v->getType().getAsString()));
+    if (n > 64)
+      fail(v->getLocation(), fmt::format("local array '{}' has {} elements; dpgen keeps local "
+                                         "arrays of up to 64 elements in registers",
+                                         v->getNameAsString(), n));
+    Binding b;
+    b.kind = Binding::LocalArray;
+    b.elem = *t;
+    b.elems.assign(n, nullptr);
+    if (const clang::Expr* init = v->getInit()) {
+      const auto* list = dyn_cast<InitListExpr>(init->IgnoreImplicit());
+      if (!list)
+        fail(init->getBeginLoc(), "a local array is initialised with a braced list");
+      for (unsigned i = 0; i < list->getNumInits() && i < n; ++i)
+        b.elems[i] = make_local(fmt::format("{}_{}", v->getNameAsString(), i), nullptr,
+                                cast(expr(list->getInit(i)), *t));
+      // Elements the list leaves out are zero, as in C.
+      for (uint64_t i = list->getNumInits(); i < n; ++i)
+        b.elems[i] = cast(int_const(0), *t);
+    }
+    env_[v] = b;
+  }
+
+  // The element of a local array that `idx` names: it must be a constant.
+  size_t local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n) {
+    ExprP idx = expr(idx_expr);
+    auto p = to_poly(idx);
+    if (!p || !p->is_constant())
+      fail(idx_expr->getBeginLoc(),
+           fmt::format("index of local array '{}' must be a constant (or the counter of a small "
+                       "loop with constant bounds, which dpgen unrolls)",
+                       v->getNameAsString()));
+    long long k = p->constant_term();
+    if (k < 0 || k >= static_cast<long long>(n))
+      fail(idx_expr->getBeginLoc(), fmt::format("index {} is outside local array '{}' of {} "
+                                                "elements",
+                                                k, v->getNameAsString(), n));
+    return static_cast<size_t>(k);
+  }
+
+  // `a[k]` of a local array: its binding and element, if that is what `e` is.
+  std::optional<std::pair<const VarDecl*, size_t>> local_element(const clang::Expr* e) {
+    const auto* sub = dyn_cast<ArraySubscriptExpr>(e->IgnoreParens());
+    if (!sub)
+      return std::nullopt;
+    const auto* ref = dyn_cast<DeclRefExpr>(sub->getBase()->IgnoreParenImpCasts());
+    const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+    auto it = v ? env_.find(v) : env_.end();
+    if (it == env_.end() || it->second.kind != Binding::LocalArray)
+      return std::nullopt;
+    return std::pair{v, local_index(sub->getIdx(), v, it->second.elems.size())};
+  }
+
+  // A loop with constant bounds and at most 16 iterations that touches a
+  // local array or assigns a variable declared outside it (`s += w[m] *
+  // a[i + m]`) is unrolled: its counter is a constant in each copy.
+  int unrolling_ = 0;
+  bool should_unroll(const ForStmt* f, long long lo, long long hi) {
+    if (hi - lo > 16 || hi <= lo)
+      return false;
+    bool touches = false;
+    std::function<void(const Stmt*)> scan = [&](const Stmt* s) {
+      if (!s)
+        return;
+      if (const auto* r = dyn_cast<DeclRefExpr>(s))
+        if (const auto* v = dyn_cast<VarDecl>(r->getDecl()); v && env_.count(v) &&
+                                                              env_[v].kind == Binding::LocalArray)
+          touches = true;
+      for (const Stmt* c : s->children())
+        scan(c);
+    };
+    scan(f->getBody());
+    std::set<const VarDecl*> assigned;
+    assigned_vars(f->getBody(), assigned);
+    for (const VarDecl* v : assigned)
+      if (env_.count(v) && env_[v].kind == Binding::Value)
+        touches = true;
+    return touches;
+  }
+
   void for_loop(const ForStmt* f) {
+    if (!frames_.empty())
+      fail(f->getBeginLoc(), fmt::format("a loop in helper '{}': helpers called from a kernel "
+                                         "compute a value without loops; write the loop in the "
+                                         "kernel",
+                                         frames_.back().fn->getNameAsString()));
     // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
     const VarDecl* var = nullptr;
     const clang::Expr* init = nullptr;
@@ -589,6 +710,36 @@ private:
                                   "rectangular loop nests are in the subset",
                                   what, var->getNameAsString(), s.substr(1)));
     }
+    {
+      auto plo = to_poly(lo), phi = to_poly(hi);
+      if (plo->is_constant() && phi->is_constant() &&
+          should_unroll(f, plo->constant_term(), phi->constant_term())) {
+        check_not_assigned(f->getBody(), var);
+        auto saved = env_.count(var) ? std::optional<Binding>(env_[var]) : std::nullopt;
+        size_t depth = path_.size();
+        ++unrolling_;
+        for (long long k = plo->constant_term(); k < phi->constant_term(); ++k) {
+          long long v = step > 0 ? k : plo->constant_term() + phi->constant_term() - 1 - k;
+          Binding b;
+          b.kind = Binding::Value;
+          b.value = int_const(v);
+          env_[var] = b;
+          lower(f->getBody());
+          path_.resize(depth);
+        }
+        --unrolling_;
+        if (saved) {
+          env_[var] = *saved;
+          env_[var].value = nullptr;
+          why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
+                                        "bound instead",
+                                        var->getNameAsString());
+        } else {
+          env_.erase(var);
+        }
+        return;
+      }
+    }
     if (loops_.size() == 3)
       fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset");
 
@@ -619,9 +770,12 @@ private:
     assigned_vars(f->getBody(), assigned);
     for (const VarDecl* v : assigned) {
       auto it = env_.find(v);
-      if (it == env_.end() || it->second.kind != Binding::Value)
+      if (it == env_.end() ||
+          (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
         continue;
       it->second.value = nullptr;
+      for (auto& el : it->second.elems)
+        el = nullptr;
       why_unset_[v] = fmt::format(
           "'{}' is declared outside the loop and assigned inside it, and read here before it is "
           "assigned in this iteration: a value carried from one iteration to the next (a running "
@@ -642,9 +796,12 @@ private:
     // left there: outside the subset.
     for (const VarDecl* v : assigned) {
       auto it = env_.find(v);
-      if (it == env_.end() || it->second.kind != Binding::Value)
+      if (it == env_.end() ||
+          (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
         continue;
       it->second.value = nullptr;
+      for (auto& el : it->second.elems)
+        el = nullptr;
       why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
                                   "is the last iteration's, outside the kernel subset",
                                   v->getNameAsString());
@@ -732,7 +889,10 @@ private:
     if (!s)
       return;
     auto target = [&](const clang::Expr* e) {
-      if (const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts()))
+      e = e->IgnoreParenImpCasts();
+      if (const auto* sub = dyn_cast<ArraySubscriptExpr>(e)) // an element of a local array
+        e = sub->getBase()->IgnoreParenImpCasts();
+      if (const auto* r = dyn_cast<DeclRefExpr>(e))
         if (const auto* v = dyn_cast<VarDecl>(r->getDecl()))
           out.insert(v);
     };
@@ -807,8 +967,30 @@ private:
   void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
               SourceLocation loc) {
     lhs = lhs->IgnoreParenImpCasts();
+    if (auto le = local_element(lhs)) {
+      Binding& b = env_[le->first];
+      ExprP& slot = b.elems[le->second];
+      std::string name = fmt::format("{}_{}", le->first->getNameAsString(), le->second);
+      if (op == BO_Assign) {
+        slot = make_local(name, nullptr, cast(expr(rhs), b.elem));
+        return;
+      }
+      if (!slot)
+        fail(lhs->getBeginLoc(), unset_message(le->first, "used before it has a value"));
+      ExprP r = rhs ? expr(rhs) : int_const(1);
+      Op bop = op == BO_AddAssign ? Op::Add : op == BO_SubAssign ? Op::Sub
+               : op == BO_MulAssign ? Op::Mul : op == BO_DivAssign ? Op::Div : Op::Rem;
+      if (bop == Op::Rem)
+        fail(loc, "this compound assignment is outside the kernel subset");
+      slot = make_local(name, nullptr, cast(binary(bop, slot, r), b.elem));
+      return;
+    }
     if (auto acc = element(lhs)) {
       const Param* p = acc->param;
+      if (!frames_.empty())
+        fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
+                                             "values; store them in the kernel",
+                                             frames_.back().fn->getNameAsString(), p->name));
       if (p->kind != ParamKind::Out)
         fail(lhs->getBeginLoc(),
              fmt::format("'{}' is written but is not a DPGEN_OUT parameter; inputs and constant "
@@ -1045,7 +1227,8 @@ private:
           for (size_t b = a + 1; b < nest.stores.size(); ++b) {
             const Store &x = nest.stores[a], &y = nest.stores[b];
             if (x.array == y.array && !(x.accumulate && y.accumulate) &&
-                !(*to_poly(x.index) == *to_poly(y.index)))
+                !(*to_poly(x.index) == *to_poly(y.index)) &&
+                !residues_differ(*to_poly(x.index), *to_poly(y.index)))
               fail_at(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                          "line {} of the same loop: dpgen cannot prove two "
                                          "iterations never write the same element",
@@ -1082,6 +1265,8 @@ private:
                               only_counters(*to_poly(x.index), nx, shared)))
             continue;
         }
+        if (residues_differ(*to_poly(x.index), *to_poly(y.index)))
+          continue;
         Facts facts;
         for (const Nest* n : {&nx, &ny})
           for (const auto& l : n->loops)
@@ -1140,6 +1325,28 @@ private:
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;
+  }
+
+  // Two indices never meet when every counter coefficient of both is a
+  // multiple of some g > 1 and their remaining parts differ by a constant that
+  // is not (fine[2 * i] and fine[2 * i + 1]).
+  static bool residues_differ(const Poly& x, const Poly& y) {
+    long long g = 0;
+    Poly rx = x, ry = y;
+    for (const Poly* p : {&x, &y})
+      for (const auto& [m, coef] : p->terms()) {
+        bool counter = false;
+        for (const auto& sym : m)
+          counter = counter || sym[0] == '@';
+        if (!counter)
+          continue;
+        if (m.size() != 1)
+          return false; // a counter times a size: no constant modulus
+        g = std::gcd(g, coef < 0 ? -coef : coef);
+        (p == &x ? rx : ry) = (p == &x ? rx : ry).without(m[0]);
+      }
+    Poly d = rx - ry;
+    return g > 1 && d.is_constant() && d.constant_term() % g != 0;
   }
 
   // How many outer loops two nests share (the same `for` statements).
@@ -1264,6 +1471,102 @@ private:
 
   // ---- expressions -----------------------------------------------------------
 
+  // ---- helper functions ---------------------------------------------------------
+
+  // A user function called from a kernel (a limiter, a flux, minmod) is
+  // differentiated by inlining: its parameters are bound to the arguments'
+  // values (arrays to the kernel's arrays), its body is lowered like the
+  // kernel's, and its returns become one value, selected by the conditions
+  // under which each return is reached.
+  struct InlineFrame {
+    const FunctionDecl* fn;
+    size_t path_depth;
+    size_t loop_depth;
+    Type ret;
+    std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
+  };
+  std::vector<InlineFrame> frames_;
+
+  ExprP inline_call(const CallExpr* c, const FunctionDecl* f) {
+    const FunctionDecl* def = nullptr;
+    f->hasBody(def);
+    for (const auto& fr : frames_)
+      if (fr.fn->getCanonicalDecl() == def->getCanonicalDecl())
+        fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
+                                           def->getNameAsString()));
+    if (frames_.size() == 16)
+      fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
+    if (isa<CXXMethodDecl>(def) || def->isVariadic())
+      fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
+                                         "free helper functions only",
+                                         def->getNameAsString()));
+    auto rt = scalar_type(def->getReturnType());
+    if (!rt || def->getReturnType()->isReferenceType())
+      fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
+                                         "returns an int, float, double or bool value",
+                                         def->getNameAsString(),
+                                         def->getReturnType().getAsString()));
+    if (c->getNumArgs() != def->getNumParams())
+      fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
+    // Bind the parameters (arguments are evaluated in the caller's scope).
+    std::vector<std::pair<const VarDecl*, Binding>> binds;
+    for (unsigned i = 0; i < def->getNumParams(); ++i) {
+      const ParmVarDecl* pd = def->getParamDecl(i);
+      const clang::Expr* arg = c->getArg(i);
+      QualType pt = pd->getType();
+      if (pt->isPointerType()) {
+        const clang::Expr* base = arg->IgnoreParenImpCasts();
+        const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
+        if (!ap)
+          fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
+                                               "'{}' must be an array parameter of the kernel "
+                                               "itself (no pointer arithmetic)",
+                                               pd->getNameAsString(), def->getNameAsString()));
+        Binding b;
+        b.kind = Binding::ArrayParam;
+        b.param = ap;
+        binds.push_back({pd, b});
+        continue;
+      }
+      if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified())
+        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' is a non-const "
+                                            "reference: a helper returns its result by value",
+                                            pd->getNameAsString(), def->getNameAsString()));
+      auto t = scalar_type(pt.getNonReferenceType());
+      if (!t)
+        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
+                                            "the kernel subset",
+                                            pd->getNameAsString(), def->getNameAsString(),
+                                            pt.getAsString()));
+      Binding b;
+      b.kind = Binding::Value;
+      b.value = make_local(pd->getNameAsString(), pd, cast(expr(arg), *t));
+      binds.push_back({pd, b});
+    }
+    for (const auto& [pd, b] : binds)
+      env_[pd] = b;
+    frames_.push_back({def, path_.size(), loops_.size(), *rt, {}});
+    Escape e = lower(def->getBody());
+    InlineFrame fr = frames_.back();
+    frames_.pop_back();
+    path_.resize(fr.path_depth);
+    if (e != Escape::Always || fr.returns.empty())
+      fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
+                                                    "returning a value",
+                                                    def->getNameAsString()));
+    // The last return is reached when no earlier one was.
+    ExprP v = fr.returns.back().second;
+    for (size_t i = fr.returns.size() - 1; i-- > 0;) {
+      ExprP cond;
+      for (const auto& pc : fr.returns[i].first) {
+        ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
+        cond = cond ? binary(Op::And, cond, c1) : c1;
+      }
+      v = cond ? select(cond, fr.returns[i].second, v) : fr.returns[i].second;
+    }
+    return v;
+  }
+
   // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
   // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).
   struct Access {
@@ -1360,6 +1663,12 @@ private:
       return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
     if (const auto* r = dyn_cast<DeclRefExpr>(e))
       return decl_ref(r);
+    if (auto le = local_element(e)) {
+      const ExprP& v = env_[le->first].elems[le->second];
+      if (!v)
+        fail(e->getBeginLoc(), unset_message(le->first, "may be used before it has a value"));
+      return v;
+    }
     if (auto acc = element(e)) {
       const Param* p = acc->param;
       if (p->kind == ParamKind::Out) {
@@ -1479,6 +1788,10 @@ private:
                                          b.param->name));
     case Binding::LoopVar:
       return b.value;
+    case Binding::LocalArray:
+      fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
+                                         "can be read",
+                                         v->getNameAsString()));
     case Binding::Value:
       if (!b.value)
         fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
@@ -1535,6 +1848,8 @@ private:
     std::string fnname = math_function(f);
     bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                         f->getBuiltinID() != 0;
+    if (!from_library && f->hasBody())
+      return inline_call(c, f);
     if (fnname.empty() || !from_library)
       fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
                                          "kernel subset calls only {}",
