@@ -45,3 +45,21 @@ for kernel in upwind_step divergence2d laplacian2d; do
   } > "$out"
   echo "wrote $out"
 done
+
+# Per-rule golden files: tests/golden/rules/<rule>.cpp holds a small kernel
+# that shows one rule, its RUN lines, and (after the marker) the CHECK lines of
+# the generated source, side by side.
+marker="// ---- generated code (scripts/update-golden.sh writes what follows) ----"
+for input in "$root"/tests/golden/rules/*.cpp; do
+  [ -e "$input" ] || continue
+  stem=$(basename "$input" .cpp)
+  "$dpgen" "$input" --out-dir "$tmp" -- -I"$root/runtime/include" 2>/dev/null
+  head=$(sed "/^\/\/ ---- generated code/,\$d" "$input")
+  {
+    printf '%s\n' "$head"
+    echo "$marker"
+    checks CPP "$tmp/${stem}_adjoint.cpp"
+  } > "$input.new"
+  mv "$input.new" "$input"
+  echo "wrote $input"
+done

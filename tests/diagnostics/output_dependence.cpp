@@ -9,5 +9,5 @@ DPGEN_KERNEL void cumsum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n)
   out[0] = a[0];
   for (int i = 1; i < n; ++i)
     out[i] = out[i - 1] + a[i];
-  // CHECK: output_dependence.cpp:[[@LINE-1]]:14: error: reads output 'out': the adjoint has only the output's seed, not its values
+  // CHECK: output_dependence.cpp:[[@LINE-1]]:14: error: output 'out' is read here and written on line 11, in the same loop or later: a value carried from one iteration to the next through an output
 }

@@ -30,3 +30,6 @@ DPGEN_KERNEL void strided(DPGEN_IN const double* a, DPGEN_OUT double* out, int n
 DPGEN_KERNEL void clipped_sample(DPGEN_IN const double* q, DPGEN_IN const double* a,
                                  const double* mask, DPGEN_OUT double* out,
                                  DPGEN_OUT double* masked, int n);
+DPGEN_KERNEL void leading_dim(DPGEN_IN const double* a, DPGEN_OUT double* b, const int* xmin,
+                              const int* xmax, int ny, int ld);
+DPGEN_KERNEL void fixed_rows(DPGEN_IN const double (*a)[8], DPGEN_OUT double b[][8], int n);

@@ -8,6 +8,7 @@
 #include <clang/Tooling/Core/Replacement.h>
 
 #include <algorithm>
+#include <deque>
 #include <fmt/format.h>
 #include <functional>
 #include <set>
@@ -854,20 +855,11 @@ void close_namespaces(Code& c, const Kernel& k) {
     c.raw(fmt::format("}} // namespace {}\n", *it));
 }
 
-void emit_kernel(Code& code, const AdjointPlan& plan) {
+// The statements of an adjoint function: kernel-level locals, size checks,
+// the gather loops (fused where they share a nest, layout and cell box) and
+// the scatter loops.
+void emit_body(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
-  open_namespaces(code, k);
-  bool rows = has_rows(k);
-  if (rows) {
-    code.raw("namespace {\n");
-    code.line("// Adjoint of {} ({}:{}) on flat arrays; {}_adjoint below takes the arrays "
-              "of rows.",
-              k.name, base_name(k.file), k.pos.line, k.name);
-    code.open(fmt::format("void {}_adjoint_flat({})", k.name, param_list(k, false)));
-  } else {
-    code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
-    code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
-  }
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
   emit_size_checks(code, k);
@@ -901,7 +893,148 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
       if (u.array == p.name)
         emit_scatter(code, u);
   }
+}
+
+// `T* name` for a parameter of the forward kernel's declaration.
+std::string forward_params(const Kernel& k) {
+  std::vector<std::string> ps;
+  for (const auto& p : k.params)
+    ps.push_back(p.declaration);
+  return fmt::format("{}", fmt::join(ps, ", "));
+}
+
+bool reads_array(const ExprP& e, const std::string& array, std::set<const LocalVar*>& seen) {
+  if (!e)
+    return false;
+  if (e->op == Op::Read && e->name == array)
+    return true;
+  if (e->op == Op::Local)
+    return seen.insert(e->local.get()).second && reads_array(e->local->def, array, seen);
+  for (const auto& o : e->ops)
+    if (reads_array(o, array, seen))
+      return true;
+  return false;
+}
+
+bool nest_reads(const Nest& n, const std::string& array) {
+  std::set<const LocalVar*> seen;
+  for (const auto& st : n.stores) {
+    if (reads_array(st.value, array, seen) || reads_array(st.index, array, seen))
+      return true;
+    for (const auto& pc : st.path)
+      if (reads_array(pc.cond, array, seen))
+        return true;
+  }
+  return false;
+}
+
+// A kernel whose later loop nests read what earlier ones wrote (work
+// arrays): one adjoint per nest, run in reverse order. The driver recomputes
+// the work arrays with the forward kernel (into buffers, NaN where the
+// kernel writes nothing), seeds them with their own seeds, and lets each
+// nest's adjoint add to them before the nest that wrote them reads them.
+void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
+  std::deque<Kernel> stages;
+  std::vector<AdjointPlan> plans;
+  for (size_t j = 0; j < k.nests.size(); ++j) {
+    Kernel s = k;
+    s.name = fmt::format("{}_nest{}", k.name, j + 1);
+    s.nests = {k.nests[j]};
+    s.size_checks.clear();
+    for (auto& p : s.params)
+      if (k.intermediates.count(p.name))
+        p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
+    stages.push_back(std::move(s));
+    plans.push_back(schedule(stages.back()));
+  }
+  code.raw("namespace {\n");
+  for (size_t j = 0; j < stages.size(); ++j) {
+    const Kernel& s = stages[j];
+    code.line("// Adjoint of loop nest {} of {} ({}:{}).", j + 1, k.name, base_name(k.file),
+              s.nests.front().stores.front().pos.line);
+    code.open(fmt::format("void {}_adjoint({})", s.name, param_list(s, false)));
+    emit_body(code, plans[j]);
+    code.close();
+    code.raw("\n");
+  }
+  code.raw("} // namespace\n\n");
+  code.line("// The forward kernel, which recomputes the work arrays.");
+  code.line("void {}({});", k.name, forward_params(k));
+  code.raw("\n");
+  code.line("// Adjoint of {} ({}:{}): its loop nests backwards; the work arrays {} are "
+            "recomputed first.",
+            k.name, base_name(k.file), k.pos.line,
+            fmt::join(k.intermediates.begin(), k.intermediates.end(), ", "));
+  code.open(fmt::format("void {}({})", fn_name, param_list(k, false)));
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  emit_size_checks(code, k);
+  std::vector<std::string> fwd;
+  for (const auto& p : k.params) {
+    if (p.kind == ParamKind::Out) {
+      code.line("const std::ptrdiff_t {}_n = {};", p.name, k.extent.at(p.name));
+      code.line("std::vector<{}> {}_v(static_cast<std::size_t>({}_n), "
+                "std::numeric_limits<{}>::quiet_NaN());",
+                p.elem_name, p.name, p.name, p.elem_name);
+      if (k.intermediates.count(p.name))
+        code.line("std::vector<{}> {}_b({}_adj, {}_adj + {}_n); // its seed, then more", p.elem_name,
+                  p.name, p.name, p.name, p.name);
+      std::string data = p.name + "_v.data()";
+      fwd.push_back(p.rows.empty() ? data
+                                   : fmt::format("reinterpret_cast<{} (*){}>({})", p.elem_name,
+                                                 p.rows, data));
+    } else if (p.kind == ParamKind::Scalar || p.rows.empty()) {
+      fwd.push_back(p.name);
+    } else {
+      fwd.push_back(fmt::format("reinterpret_cast<const {} (*){}>({})", p.elem_name, p.rows,
+                                p.name));
+    }
+  }
+  code.line("{}({});", k.name, fmt::join(fwd, ", "));
+  for (size_t j = stages.size(); j-- > 0;) {
+    const Kernel& s = stages[j];
+    std::vector<std::string> args;
+    for (const auto& p : s.params) {
+      bool work = k.intermediates.count(p.name) > 0;
+      switch (p.kind) {
+      case ParamKind::In:
+        args.push_back(work ? p.name + "_v.data()" : p.name);
+        args.push_back(work ? p.name + "_b.data()" : p.name + "_adj");
+        break;
+      case ParamKind::Out:
+        args.push_back(work ? p.name + "_b.data()" : p.name + "_adj");
+        break;
+      case ParamKind::ConstArray:
+      case ParamKind::Scalar:
+        args.push_back(p.name);
+        break;
+      }
+    }
+    code.line("{}_adjoint({});", s.name, fmt::join(args, ", "));
+  }
   code.close();
+}
+
+void emit_kernel(Code& code, const AdjointPlan& plan) {
+  const Kernel& k = *plan.kernel;
+  open_namespaces(code, k);
+  bool rows = has_rows(k);
+  std::string name = k.name + (rows ? "_adjoint_flat" : "_adjoint");
+  if (rows)
+    code.raw("namespace {\n");
+  if (!k.intermediates.empty()) {
+    emit_staged(code, k, name);
+  } else {
+    if (rows)
+      code.line("// Adjoint of {} ({}:{}) on flat arrays; {}_adjoint below takes the arrays "
+                "of rows.",
+                k.name, base_name(k.file), k.pos.line, k.name);
+    else
+      code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
+    code.open(fmt::format("void {}({})", name, param_list(k, !rows)));
+    emit_body(code, plan);
+    code.close();
+  }
   if (rows) {
     code.raw("} // namespace\n\n");
     code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
@@ -971,6 +1104,11 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
     checks = checks || !p.kernel->size_checks.empty();
   if (checks)
     c.raw("#include <stdexcept>\n#include <string>\n");
+  bool staged = false;
+  for (const auto& p : plans)
+    staged = staged || !p.kernel->intermediates.empty();
+  if (staged)
+    c.raw("#include <vector>\n");
   c.raw("\n");
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"

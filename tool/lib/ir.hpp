@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,8 @@ struct Param {
   /// "[64]". Such an array is indexed a[j][i], read as the flat a[j * 64 + i];
   /// the generated adjoint takes it in the same shape.
   std::string rows;
+  /// The declaration as C++ with canonical types, e.g. `const double* a`.
+  std::string declaration;
 };
 
 struct Loop {
@@ -174,6 +177,12 @@ struct Kernel {
   std::vector<PathCond> guards; // `if (...) return;` at kernel level, negated
   std::vector<Nest> nests;
   std::vector<SizeCheck> size_checks;
+  /// Outputs that later loop nests read (work arrays). The adjoint recomputes
+  /// them with the forward kernel and runs the nests in reverse order.
+  std::set<std::string> intermediates;
+  /// For each output: C++ code for how many elements its stores can reach
+  /// (one past the largest index), for buffers the adjoint allocates.
+  std::map<std::string, std::string> extent;
   SourcePos pos;
   std::string file; // source file as given on the command line
 

@@ -88,7 +88,9 @@ public:
     try {
       header();
       body(fn_->getBody());
+      check_intermediates();
       check_outputs();
+      output_extents();
     } catch (const Rejected&) {
       return false;
     }
@@ -263,6 +265,13 @@ private:
         out.elem_name = spelled(q);
       }
       out.spelling = spelled(p->getType(), /*keep_const=*/true);
+      {
+        std::string decl;
+        llvm::raw_string_ostream os(decl);
+        PrintingPolicy policy(ctx_.getLangOpts());
+        p->getType().getCanonicalType().print(os, policy, out.name);
+        out.declaration = os.str();
+      }
       k_.params.push_back(out);
     }
     if (!any_in)
@@ -1159,6 +1168,83 @@ private:
   }
   int next_store_seq_ = 0;
 
+  // Reads of intermediates: which array, in which nest, after which store.
+  struct IntermediateRead {
+    std::string array;
+    std::vector<int> nest_key;
+    int seq; // stores numbered below this one came before the read
+    SourceLocation loc;
+  };
+  std::vector<IntermediateRead> intermediate_reads_;
+
+  bool written_by_other_nest(const std::string& array) const {
+    for (const auto& [key, idx] : nest_index_)
+      if (key != loop_ids_)
+        for (const auto& st : k_.nests[idx].stores)
+          if (st.array == array)
+            return true;
+    return false;
+  }
+
+  const std::vector<int>* nest_key(const Nest& n) const {
+    for (const auto& [key, idx] : nest_index_)
+      if (&k_.nests[idx] == &n)
+        return &key;
+    return nullptr;
+  }
+
+  // An intermediate is written before it is read, by nests that do not share
+  // a loop with the nests that read it (a buffer refilled per row would hold
+  // only the last row when the adjoint recomputes it), and no nest both
+  // writes it and reads it.
+  std::vector<std::pair<std::string, SourceLocation>> kernel_level_work_reads_;
+  bool path_reads_ok_ = false;
+
+  void check_intermediates() {
+    // A work array read outside every loop into a local would be needed by
+    // every nest's adjoint; only stores outside loops may read it directly.
+    for (const auto& [array, loc] : kernel_level_work_reads_)
+      for (const auto& l : k_.kernel_locals) {
+        std::function<bool(const ExprP&)> reads = [&](const ExprP& e) {
+          if (!e)
+            return false;
+          if (e->op == Op::Read && e->name == array)
+            return true;
+          if (e->op == Op::Local)
+            return reads(e->local->def);
+          return std::any_of(e->ops.begin(), e->ops.end(), reads);
+        };
+        if (reads(l->def))
+          fail(loc, fmt::format("a local outside every loop reads work array '{}'; use the "
+                                "element directly in the store, or read it inside a loop",
+                                array));
+      }
+    for (const auto& r : intermediate_reads_)
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != r.array)
+            continue;
+          const auto* key = nest_key(n);
+          size_t shared = 0;
+          while (key && shared < key->size() && shared < r.nest_key.size() &&
+                 (*key)[shared] == r.nest_key[shared])
+            ++shared;
+          if (st.seq >= r.seq || *key == r.nest_key)
+            fail(r.loc, fmt::format("output '{}' is read here and written on line {}, in the same "
+                                    "loop or later: a value carried from one iteration to the "
+                                    "next through an output (a recurrence, like a prefix sum, or "
+                                    "an in-place update) is outside the kernel subset; write the "
+                                    "new values to another array",
+                                    r.array, st.pos.line));
+          if (shared > 0)
+            fail(r.loc, fmt::format("work array '{}' is written (line {}) and read inside the "
+                                    "same outer loop: dpgen recomputes work arrays once for the "
+                                    "whole kernel; write it in a loop nest of its own, or use a "
+                                    "local array",
+                                    r.array, st.pos.line));
+        }
+  }
+
   // Facts about the parameters on the current path.
   Facts facts_of_path() const {
     Facts f;
@@ -1377,19 +1463,48 @@ private:
 
   // [min, max] of a store's index over its loop box, when every counter's
   // coefficient is a constant.
+  // (The sign of a coefficient that is a size, like nx in j * nx + i, is
+  // proved from the facts where the store runs.)
   static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : s.path)
+      add_facts(pc, facts);
     Poly p = *to_poly(s.index), lo, hi;
     for (const auto& l : nest.loops) {
       Poly c = p.coefficient("@" + l.var);
-      if (!c.is_constant())
+      bool up = prove_nonneg(c, facts);
+      if (!up && !prove_nonneg(-c, facts))
         return std::nullopt;
-      long long cc = c.constant_term();
       Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
-      lo = lo + c * (cc > 0 ? first : last);
-      hi = hi + c * (cc > 0 ? last : first);
+      lo = lo + c * (up ? first : last);
+      hi = hi + c * (up ? last : first);
       p = p.without("@" + l.var);
     }
     return std::pair{lo + p, hi + p};
+  }
+
+  // One past the largest index each output's stores reach, for the buffers
+  // of an adjoint that recomputes the forward kernel (work arrays).
+  void output_extents() {
+    if (k_.intermediates.empty())
+      return;
+    std::map<std::string, std::vector<std::string>> ends;
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores) {
+        auto r = index_range(st, n);
+        if (!r)
+          fail_at(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
+                                      "adjoint must recompute because a later loop reads '{}'",
+                                      st.array, *k_.intermediates.begin()));
+        ends[st.array].push_back(
+            fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
+      }
+    for (const auto& [array, e] : ends)
+      k_.extent[array] = e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
+                                       : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})",
+                                                     fmt::join(e, ", "));
   }
 
   // Mixed-radix test: with the counters ordered by coefficient, every
@@ -1673,7 +1788,22 @@ private:
       const Param* p = acc->param;
       if (p->kind == ParamKind::Out) {
         // An output read back in the iteration that stored it: that value.
-        Store* st = visible_store(current_nest(), p->name, acc->index);
+        auto nit = nest_index_.find(loop_ids_);
+        Store* st = nit == nest_index_.end()
+                        ? nullptr
+                        : visible_store(k_.nests[nit->second], p->name, acc->index);
+        // An output an earlier loop nest wrote (a work array: fluxes, then
+        // the update from them): an intermediate, read like an input; the
+        // adjoint recomputes it and runs the nests backwards.
+        if (!st && written_by_other_nest(p->name)) {
+          if (loops_.empty() && !path_reads_ok_)
+            kernel_level_work_reads_.push_back({p->name, e->getBeginLoc()});
+          ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
+          std::const_pointer_cast<Expr>(r)->text = text(e);
+          k_.intermediates.insert(p->name);
+          intermediate_reads_.push_back({p->name, loop_ids_, next_store_seq_, e->getBeginLoc()});
+          return r;
+        }
         if (!st || st->accumulate)
           fail(e->getBeginLoc(),
                fmt::format("reads output '{}'{}: the adjoint has only the output's seed, not its "
