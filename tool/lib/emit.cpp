@@ -788,9 +788,13 @@ std::string param_list(const Kernel& k, bool shaped = true) {
     std::string c = is_const ? "const " : "";
     if (shaped && !p.rows.empty())
       return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
+    if (shaped && !p.container.empty())
+      return fmt::format("{}{}& {}", c, p.container, name);
     return fmt::format("{}{}* {}", c, p.elem_name, name);
   };
   for (const auto& p : k.params) {
+    if (shaped && p.synthetic)
+      continue;
     switch (p.kind) {
     case ParamKind::In:
       ps.push_back(array(p, true, p.name));
@@ -810,10 +814,31 @@ std::string param_list(const Kernel& k, bool shaped = true) {
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
+// Arrays of rows or std::vectors: the user-facing entry point takes them as
+// declared and calls a flat twin.
 bool has_rows(const Kernel& k) {
   return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
-    return p.kind != ParamKind::Scalar && !p.rows.empty();
+    return p.kind != ParamKind::Scalar && (!p.rows.empty() || !p.container.empty());
   });
+}
+
+bool has_vectors(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(),
+                     [](const Param& p) { return !p.container.empty(); });
+}
+
+// The vector adjoint of an input has its input's size (it is accumulated
+// element by element).
+void emit_vector_checks(Code& code, const Kernel& k) {
+  for (const auto& p : k.params)
+    if (!p.container.empty() && p.kind == ParamKind::In) {
+      code.open(fmt::format("if ({}_adj.size() != {}.size())", p.name, p.name));
+      code.line("throw std::invalid_argument(\"{}_adjoint: {}_adj has \" + "
+                "std::to_string({}_adj.size()) + \" elements but {} has \" + "
+                "std::to_string({}.size()));",
+                k.name, p.name, p.name, p.name, p.name);
+      code.close();
+    }
 }
 
 // The call from the shaped entry point to the flat one: rows of a
@@ -822,6 +847,8 @@ bool has_rows(const Kernel& k) {
 std::string flat_arguments(const Kernel& k) {
   std::vector<std::string> as;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
+    if (!p.container.empty())
+      return name + ".data()";
     if (p.rows.empty())
       return name;
     return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
@@ -839,7 +866,14 @@ std::string flat_arguments(const Kernel& k) {
       as.push_back(array(p, true, p.name));
       break;
     case ParamKind::Scalar:
-      as.push_back(p.name);
+      // a vector's size: the size() of the vector it follows
+      if (p.synthetic) {
+        std::string vec = p.name.substr(0, p.name.size() - 5); // "<vec>_size"
+        const Param* v = k.find_param(vec);
+        as.push_back((v && v->kind == ParamKind::Out ? vec + "_adj" : vec) + ".size()");
+      } else {
+        as.push_back(p.name);
+      }
       break;
     }
   }
@@ -899,7 +933,8 @@ void emit_body(Code& code, const AdjointPlan& plan) {
 std::string forward_params(const Kernel& k) {
   std::vector<std::string> ps;
   for (const auto& p : k.params)
-    ps.push_back(p.declaration);
+    if (!p.synthetic)
+      ps.push_back(p.declaration);
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
@@ -1039,6 +1074,7 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
     code.raw("} // namespace\n\n");
     code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
     code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
+    emit_vector_checks(code, k);
     code.line("{}_adjoint_flat({});", k.name, flat_arguments(k));
     code.close();
   }
@@ -1080,6 +1116,11 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
         "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
         "#pragma once\n\n");
+  bool vectors = false;
+  for (const auto& p : plans)
+    vectors = vectors || has_vectors(*p.kernel);
+  if (vectors)
+    h.raw("#include <vector>\n\n");
   for (const auto& p : plans) {
     open_namespaces(h, *p.kernel);
     h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, base_name(p.kernel->file),
@@ -1101,7 +1142,7 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n");
   bool checks = false;
   for (const auto& p : plans)
-    checks = checks || !p.kernel->size_checks.empty();
+    checks = checks || !p.kernel->size_checks.empty() || has_vectors(*p.kernel);
   if (checks)
     c.raw("#include <stdexcept>\n#include <string>\n");
   bool staged = false;

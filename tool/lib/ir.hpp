@@ -124,6 +124,11 @@ struct Param {
   std::string rows;
   /// The declaration as C++ with canonical types, e.g. `const double* a`.
   std::string declaration;
+  /// A std::vector<T>& parameter: its type ("std::vector<double>"). The
+  /// kernel's size() of it is the synthetic parameter `<name>_size` after it.
+  std::string container;
+  /// Not in the user's signature: the size dpgen passes for a vector.
+  bool synthetic = false;
 };
 
 struct Loop {

@@ -142,6 +142,16 @@ private:
 
   // ---- types ---------------------------------------------------------------
 
+  // T of a std::vector<T> (any allocator); null for any other type.
+  QualType vector_element(QualType q) const {
+    const auto* rd = q.getCanonicalType()->getAsCXXRecordDecl();
+    const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(rd);
+    if (!spec || spec->getName() != "vector" || !spec->isInStdNamespace() ||
+        spec->getTemplateArgs().size() < 1)
+      return QualType();
+    return spec->getTemplateArgs()[0].getAsType();
+  }
+
   // A type as the generated code spells it: canonical, so a typedef of the
   // user's (`FLOAT`, `real_t`) or a library alias (`size_t`) never appears in
   // a generated file that does not declare it.
@@ -201,11 +211,48 @@ private:
         fail(p->getLocation(), "every kernel parameter needs a name");
       std::string ann = annotation(p);
       QualType q = p->getType();
-      if (q->isReferenceType())
-        fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value "
-                                           "and arrays as pointers",
-                                           out.name));
-      if (q->isPointerType()) {
+      std::optional<Param> size_param;
+      if (q->isReferenceType()) {
+        QualType elem = vector_element(q.getNonReferenceType());
+        if (elem.isNull())
+          fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
+                                             "and arrays as pointers or std::vector<T>&",
+                                             out.name));
+        // std::vector<T>& u: elements u[i], size u.size(); the generated
+        // entry point takes the vectors, its flat twin u.data() and u.size().
+        bool is_const = q.getNonReferenceType().isConstQualified();
+        auto et = scalar_type(elem);
+        if (!et || *et == Type::Bool)
+          fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
+                                             "float, double or an integer type",
+                                             out.name, elem.getAsString()));
+        out.elem = *et;
+        out.elem_name = spelled(elem);
+        out.container = fmt::format("std::vector<{}>", out.elem_name);
+        if (ann == "dpgen.in" || ann == "dpgen.out") {
+          if (!is_real(*et))
+            fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
+                                               ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
+                                               out.name));
+          if (ann == "dpgen.out" && is_const)
+            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name));
+          out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
+          (ann == "dpgen.in" ? any_in : any_out) = true;
+        } else {
+          if (!is_const)
+            fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+                                               "mark it DPGEN_OUT, or make it const",
+                                               out.name));
+          out.kind = ParamKind::ConstArray;
+        }
+        Param sz;
+        sz.name = out.name + "_size";
+        sz.kind = ParamKind::Scalar;
+        sz.elem = Type::Int;
+        sz.elem_name = sz.spelling = "unsigned long";
+        sz.synthetic = true;
+        size_param = sz;
+      } else if (q->isPointerType()) {
         QualType elem = q->getPointeeType();
         // Rows of a multi-dimensional array: double (*a)[64], double a[][64],
         // or, in C, double a[n][n] (a variable-length row: flat in the
@@ -223,6 +270,13 @@ private:
         }
         if (const_rows)
           elem.addConst();
+        if (elem->isPointerType())
+          fail(p->getLocation(),
+               fmt::format("parameter '{}' is an array of row pointers ('{}'): dpgen cannot "
+                           "prove that rows do not overlap, so it cannot prove a gather adjoint "
+                           "correct; pass contiguous rows as 'double (*{})[N]', a flat pointer "
+                           "indexed {}[j * nx + i], or a std::vector",
+                           out.name, q.getAsString(), out.name, out.name));
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
@@ -269,10 +323,19 @@ private:
         std::string decl;
         llvm::raw_string_ostream os(decl);
         PrintingPolicy policy(ctx_.getLangOpts());
+        policy.SuppressTagKeyword = true;
         p->getType().getCanonicalType().print(os, policy, out.name);
         out.declaration = os.str();
       }
       k_.params.push_back(out);
+      if (size_param) {
+        for (const auto& other : k_.params)
+          if (other.name == size_param->name)
+            fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
+                                               "for vector '{}'",
+                                               other.name, out.name));
+        k_.params.push_back(*size_param);
+      }
     }
     if (!any_in)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
@@ -281,12 +344,14 @@ private:
     if (!any_out)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
     // Bind parameters (after the vector is complete, so pointers stay valid).
-    for (size_t i = 0; i < k_.params.size(); ++i) {
+    for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
       const Param& p = k_.params[i];
+      if (p.synthetic)
+        continue;
       Binding b;
       b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
       b.param = &p;
-      env_[fn_->getParamDecl(i)] = b;
+      env_[fn_->getParamDecl(unsigned(decl++))] = b;
     }
     // Mixed precision between inputs and outputs is almost always a mistake.
     std::optional<Type> real;
@@ -1490,6 +1555,12 @@ private:
   void output_extents() {
     if (k_.intermediates.empty())
       return;
+    for (const auto& p : k_.params)
+      if (!p.container.empty())
+        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
+                                             "kernel with std::vector parameter '{}': pass the "
+                                             "arrays as pointers",
+                                             *k_.intermediates.begin(), p.name));
     std::map<std::string, std::vector<std::string>> ends;
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
@@ -1698,6 +1769,18 @@ private:
       fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
                                 "parameter directly: a[i + 1]");
     }
+    if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
+        oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
+      // v[i] of a std::vector parameter
+      const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
+      if (!isa<DeclRefExpr>(base))
+        fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
+      const Param* p = array_base(base);
+      ExprP idx = expr(oc->getArg(1));
+      if (idx->type != Type::Int)
+        fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
+      return Access{p, idx};
+    }
     const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
     if (!sub)
       return std::nullopt;
@@ -1839,6 +1922,17 @@ private:
       ExprP cc = cond(c->getCond());
       Type t = type_of(c);
       return select(cc, cast(expr(c->getTrueExpr()), t), cast(expr(c->getFalseExpr()), t));
+    }
+    if (const auto* m = dyn_cast<CXXMemberCallExpr>(e)) {
+      const auto* obj = dyn_cast<DeclRefExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+      auto it = obj ? env_.find(dyn_cast<VarDecl>(obj->getDecl())) : env_.end();
+      const CXXMethodDecl* md = m->getMethodDecl();
+      if (it != env_.end() && it->second.kind == Binding::ArrayParam &&
+          !it->second.param->container.empty() && md && md->getName() == "size" &&
+          m->getNumArgs() == 0)
+        return param(it->second.param->name + "_size", Type::Int);
+      fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
+                            "parameter, the kernel may call size())");
     }
     if (const auto* c = dyn_cast<CallExpr>(e))
       return call_expr(c);
