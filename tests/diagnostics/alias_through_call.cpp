@@ -9,5 +9,5 @@ void smooth(const double* in, double* out, int n);
 
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   smooth(a, out, n);
-  // CHECK: alias_through_call.cpp:[[@LINE-1]]:3: error: call to 'smooth', which dpgen cannot differentiate; the kernel subset calls only
+  // CHECK: alias_through_call.cpp:[[@LINE-1]]:3: error: call to 'smooth', whose body dpgen cannot see
 }

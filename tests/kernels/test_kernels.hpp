@@ -33,3 +33,6 @@ DPGEN_KERNEL void clipped_sample(DPGEN_IN const double* q, DPGEN_IN const double
 DPGEN_KERNEL void leading_dim(DPGEN_IN const double* a, DPGEN_OUT double* b, const int* xmin,
                               const int* xmax, int ny, int ld);
 DPGEN_KERNEL void fixed_rows(DPGEN_IN const double (*a)[8], DPGEN_OUT double b[][8], int n);
+DPGEN_KERNEL void restrict_full_weighting(DPGEN_IN const double* fine, DPGEN_OUT double* coarse,
+                                          int nf);
+DPGEN_KERNEL void every_third(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int first);

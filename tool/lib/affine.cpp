@@ -197,6 +197,27 @@ std::optional<Poly> to_poly(const ExprP& e) {
       return std::nullopt;
     return e->op == Op::Add ? *a + *b : e->op == Op::Sub ? *a - *b : *a * *b;
   }
+  case Op::Div: {
+    // An integer division that is exact for every value: each coefficient
+    // is a multiple of the constant divisor (i / 2 where i = 2 + 2 * t).
+    if (e->type != Type::Int)
+      return std::nullopt;
+    auto a = to_poly(e->ops[0]);
+    auto b = to_poly(e->ops[1]);
+    if (!a || !b || !b->is_constant() || b->constant_term() == 0)
+      return std::nullopt;
+    long long d = b->constant_term();
+    Poly q;
+    for (const auto& [m, c] : a->terms()) {
+      if (c % d != 0)
+        return std::nullopt;
+      Poly t = Poly::constant(c / d);
+      for (const auto& sym : m)
+        t = t * Poly::symbol(sym);
+      q = q + t;
+    }
+    return q;
+  }
   default:
     return std::nullopt;
   }

@@ -283,8 +283,8 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, b.terms.front(), box, b.guards, cx.acc, cx.edge ? cx.hit + " = true;" : "",
-               cx.factored);
+    emit_terms(code, b.terms.front(), box, b.guards, cx.acc,
+               cx.hit.empty() ? "" : cx.hit + " = true;", cx.factored);
     for (int i = 0; i < opened; ++i)
       code.close();
     code.close();
@@ -529,13 +529,23 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
         continue; // no term of this input reaches the interior
       std::string elem = elem_of(k, g->array);
       code.line("{} {} = 0;", elem, acc_name(*g));
+      // A term under a run-time guard (a condition that is not a box of
+      // counters) may apply to no iteration of an interior cell, which the
+      // source then never read: such a cell is not written, as at an edge.
+      bool guarded = false;
+      for (const auto& b : g->blocks)
+        guarded = guarded || (b.bulk && !b.guards.empty());
+      if (guarded)
+        code.line("bool {} = false;", hit_name(*g));
       // The blocks go to a buffer first: the sums they factor out are
       // declared before them.
       Factored factored{acc_name(*g), {}};
       Code blocks(code.depth());
       for (const auto& b : g->blocks)
         if (b.bulk)
-          emit_block({k, *g, blocks, acc_name(*g), "", false, &interior, &factored}, b);
+          emit_block({k, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false, &interior,
+                      guarded ? nullptr : &factored},
+                     b);
       if (!factored.sums.empty())
         code.line("// partials the same in every iteration, factored out: sums of seeds");
       for (const auto& [name, p] : factored.sums)
@@ -543,7 +553,9 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.raw(blocks.str());
       for (const auto& [name, p] : factored.sums)
         code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
-      code.line("{} += {};", adj_cell(*g), acc_name(*g));
+      if (guarded)
+        code.line("if ({})", hit_name(*g));
+      code.line("{}{} += {};", guarded ? "  " : "", adj_cell(*g), acc_name(*g));
     }
     code.close(";");
   }

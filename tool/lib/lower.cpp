@@ -88,14 +88,42 @@ public:
     try {
       header();
       body(fn_->getBody());
+      if (failed_)
+        return false; // every statement's error is reported; the checks need them all
       check_intermediates();
       check_outputs();
       output_extents();
     } catch (const Rejected&) {
       return false;
     }
+    if (failed_)
+      return false;
     out = std::move(k_);
     return true;
+  }
+
+  // Errors in one statement do not stop the lowering of the next ones, so a
+  // run reports every error of a kernel. A variable whose declaration failed
+  // is poisoned: its uses are not reported again.
+  bool failed_ = false;
+  std::set<const VarDecl*> poisoned_;
+
+  // Lowers `s`; on an error (already reported) marks the kernel failed and
+  // goes on, unless inside a helper or an unrolled loop (whose copies would
+  // repeat the same error), where the error propagates.
+  Escape lower_recovering(const Stmt* s) {
+    if (!frames_.empty() || unrolling_ > 0)
+      return lower(s);
+    try {
+      return lower(s);
+    } catch (const Rejected&) {
+      failed_ = true;
+      if (const auto* d = dyn_cast<DeclStmt>(s))
+        for (const Decl* decl : d->decls())
+          if (const auto* v = dyn_cast<VarDecl>(decl))
+            poisoned_.insert(v);
+      return Escape::None;
+    }
   }
 
 private:
@@ -386,7 +414,7 @@ private:
   Escape lower(const Stmt* s) {
     if (const auto* c = dyn_cast<CompoundStmt>(s)) {
       for (const Stmt* child : c->body()) {
-        if (lower(child) == Escape::Always) {
+        if (lower_recovering(child) == Escape::Always) {
           if (child != c->body_back())
             fail(c->body_back()->getBeginLoc(), "statement after 'continue'/'return' is never "
                                                 "executed");
@@ -473,7 +501,7 @@ private:
     int first_local = next_local_id_;
 
     path_.push_back({c, true});
-    Escape then_e = lower(s->getThen());
+    Escape then_e = lower_recovering(s->getThen());
     path_.resize(depth);
     auto env_then = env_;
     int after_then = next_local_id_;
@@ -482,7 +510,7 @@ private:
     Escape else_e = Escape::None;
     if (s->getElse()) {
       path_.push_back({c, false});
-      else_e = lower(s->getElse());
+      else_e = lower_recovering(s->getElse());
       path_.resize(depth);
     }
     auto env_else = env_;
@@ -743,7 +771,10 @@ private:
     int step = loop_step(f->getInc(), var);
     if (step == 0)
       fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
-           "loop increment must be ++i, i++ or i += 1 (or --i for a loop counting down)");
+           "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
+           "counting down)");
+    if (step < -1)
+      fail(f->getInc()->getBeginLoc(), "a loop counting down steps by 1; count a strided loop up");
     ExprP lo, hi;
     ExprP one = int_const(1);
     switch (cond_op) {
@@ -798,7 +829,13 @@ private:
           b.kind = Binding::Value;
           b.value = int_const(v);
           env_[var] = b;
-          lower(f->getBody());
+          try {
+            lower(f->getBody());
+          } catch (const Rejected&) {
+            --unrolling_;
+            path_.resize(depth);
+            throw;
+          }
           path_.resize(depth);
         }
         --unrolling_;
@@ -820,13 +857,33 @@ private:
     auto loop = std::make_shared<Loop>();
     // The counter keeps its name unless that would collide with a parameter,
     // a local or an enclosing counter in the generated code.
-    loop->var = var->getNameAsString();
+    std::string base = var->getNameAsString() + (step > 1 ? "_step" : "");
+    loop->var = base;
     for (int n = 1; is_reserved(loop->var) || local_names_.count(loop->var); ++n)
-      loop->var = fmt::format("{}_{}", var->getNameAsString(), n);
+      loop->var = fmt::format("{}_{}", base, n);
     loop_names_.insert(loop->var);
     loop->type_name = spelled(var->getType());
     loop->lo = lo;
     loop->hi = hi;
+    ExprP counter = loop_var(loop->var);
+    if (step > 1) {
+      // for (i = lo; i < hi; i += s): the loop runs over the steps t in
+      // [0, (hi - lo + s - 1) / s) and i = lo + s * t.
+      auto trips = std::make_shared<LocalVar>();
+      trips->name = loop->var + "_count";
+      for (int n = 1; local_names_.count(trips->name) || is_reserved(trips->name); ++n)
+        trips->name = fmt::format("{}_count_{}", loop->var, n);
+      local_names_.insert(trips->name);
+      trips->type_name = "std::ptrdiff_t";
+      trips->def = binary(Op::Div, binary(Op::Add, binary(Op::Sub, hi, lo), int_const(step - 1)),
+                          int_const(step));
+      trips->id = next_local_id_++;
+      trips->kernel_level = true;
+      k_.kernel_locals.push_back(trips);
+      loop->lo = int_const(0);
+      loop->hi = local_ref(trips);
+      counter = binary(Op::Add, lo, binary(Op::Mul, int_const(step), counter));
+    }
 
     check_not_assigned(f->getBody(), var);
     size_t depth = path_.size();
@@ -834,7 +891,7 @@ private:
     auto why_before = why_unset_;
     Binding b;
     b.kind = Binding::LoopVar;
-    b.value = loop_var(loop->var);
+    b.value = counter;
     env_[var] = b;
     // Variables declared outside the loop and assigned in it (OpenMP
     // `private` temporaries) start each iteration without a value: a read
@@ -859,7 +916,7 @@ private:
     }
     loops_.push_back(loop);
     loop_ids_.push_back(next_loop_id_++);
-    Escape e = lower(f->getBody());
+    Escape e = lower_recovering(f->getBody());
     (void)e; // a body ending in continue is fine
     loops_.pop_back();
     loop_ids_.pop_back();
@@ -993,9 +1050,12 @@ private:
     }
     if (const auto* b = dyn_cast<CompoundAssignOperator>(inc)) {
       clang::Expr::EvalResult r;
-      if (!is_var(b->getLHS()) || !b->getRHS()->EvaluateAsInt(r, ctx_) || r.Val.getInt() != 1)
+      if (!is_var(b->getLHS()) || !b->getRHS()->EvaluateAsInt(r, ctx_))
         return 0;
-      return b->getOpcode() == BO_AddAssign ? 1 : b->getOpcode() == BO_SubAssign ? -1 : 0;
+      int64_t k = r.Val.getInt().getSExtValue();
+      if (k < 1 || k > 1024)
+        return 0;
+      return b->getOpcode() == BO_AddAssign ? int(k) : b->getOpcode() == BO_SubAssign ? -int(k) : 0;
     }
     return 0;
   }
@@ -1732,7 +1792,14 @@ private:
     for (const auto& [pd, b] : binds)
       env_[pd] = b;
     frames_.push_back({def, path_.size(), loops_.size(), *rt, {}});
-    Escape e = lower(def->getBody());
+    Escape e;
+    try {
+      e = lower(def->getBody());
+    } catch (const Rejected&) {
+      path_.resize(frames_.back().path_depth);
+      frames_.pop_back();
+      throw;
+    }
     InlineFrame fr = frames_.back();
     frames_.pop_back();
     path_.resize(fr.path_depth);
@@ -1986,6 +2053,8 @@ private:
     if (!v)
       fail(r->getLocation(), fmt::format("'{}' is outside the kernel subset",
                                          r->getDecl()->getNameAsString()));
+    if (poisoned_.count(v))
+      throw Rejected{}; // its declaration's error is reported already
     auto it = env_.find(v);
     if (it == env_.end()) {
       // A global constant with a known value is a constant.
@@ -2074,6 +2143,11 @@ private:
                         f->getBuiltinID() != 0;
     if (!from_library && f->hasBody())
       return inline_call(c, f);
+    if (!from_library)
+      fail(c->getBeginLoc(), fmt::format("call to '{}', whose body dpgen cannot see: helper "
+                                         "functions are inlined, so define '{}' in the kernel's "
+                                         "file or a header it includes",
+                                         f->getQualifiedNameAsString(), f->getNameAsString()));
     if (fnname.empty() || !from_library)
       fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
                                          "kernel subset calls only {}",

@@ -25,14 +25,15 @@ std::optional<Poly> difference(const ExprP& a, const ExprP& b) {
   return *pa - *pb;
 }
 
-// Facts for `c` (positive) or `!c`.
-void facts_of(const ExprP& c, bool positive, Facts& out) {
+// Facts for `c` (positive) or `!c`. True when the facts say exactly what
+// the condition says (a conjunction of comparisons), not just part of it.
+bool facts_of(const ExprP& c, bool positive, Facts& out) {
   if (c->op == Op::Not)
     return facts_of(c->ops[0], !positive, out);
   if ((c->op == Op::And && positive) || (c->op == Op::Or && !positive)) {
-    facts_of(c->ops[0], positive, out);
-    facts_of(c->ops[1], positive, out);
-    return;
+    bool a = facts_of(c->ops[0], positive, out);
+    bool b = facts_of(c->ops[1], positive, out);
+    return a && b;
   }
   Op op = c->op;
   if (!positive) { // !(a < b) is a >= b, ...
@@ -43,16 +44,16 @@ void facts_of(const ExprP& c, bool positive, Facts& out) {
     case Op::Ge: op = Op::Lt; break;
     case Op::Eq: op = Op::Ne; break;
     case Op::Ne: op = Op::Eq; break;
-    default: return;
+    default: return false;
     }
   }
   if (op != Op::Lt && op != Op::Le && op != Op::Gt && op != Op::Ge && op != Op::Eq)
-    return;
+    return false;
   if (c->ops.size() != 2 || c->ops[0]->type != Type::Int || c->ops[1]->type != Type::Int)
-    return;
+    return false;
   auto d = difference(c->ops[1], c->ops[0]); // b - a
   if (!d || mentions_counter(*d))
-    return;
+    return false;
   Poly one = Poly::constant(1);
   switch (op) {
   case Op::Lt: out.push_back(*d - one); break;  // a < b: b - a - 1 >= 0
@@ -65,6 +66,7 @@ void facts_of(const ExprP& c, bool positive, Facts& out) {
     break;
   default: break;
   }
+  return true;
 }
 
 // A linear constraint sum(coef[v] * v) + c >= 0 over unknowns numbered v.
@@ -92,6 +94,16 @@ constexpr size_t kMaxRows = 600;
 } // namespace
 
 void add_facts(const PathCond& pc, Facts& out) { facts_of(pc.cond, pc.positive, out); }
+
+bool implied(const PathCond& pc, const Facts& facts) {
+  Facts f;
+  if (!facts_of(pc.cond, pc.positive, f) || f.empty())
+    return false;
+  for (const auto& p : f)
+    if (!prove_nonneg(p, facts))
+      return false;
+  return true;
+}
 
 void add_nonempty(const Loop& l, Facts& out) {
   auto lo = to_poly(l.lo), hi = to_poly(l.hi);

@@ -22,6 +22,10 @@ using Facts = std::vector<Poly>;
 /// Conditions it cannot read give no fact (never a wrong one).
 void add_facts(const PathCond& pc, Facts& out);
 
+/// True when the condition is a conjunction of comparisons of parameters
+/// that `facts` prove (it holds wherever the facts do).
+bool implied(const PathCond& pc, const Facts& facts);
+
 /// The loop runs at least once: hi - lo - 1 >= 0.
 void add_nonempty(const Loop& l, Facts& out);
 

@@ -4,6 +4,7 @@
 
 #include "derive.hpp"
 #include "print.hpp"
+#include "prove.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -169,9 +170,16 @@ Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& gua
     loop_box.dims["@" + l.var] = iv;
   }
   Domain d = {simplify(loop_box)};
+  // A condition on the sizes that every iteration of the nest implies (an
+  // early `if (n < 3) return;` before loops that need n >= 3) guards nothing.
+  Facts runs;
+  for (const auto& l : nest.loops)
+    add_nonempty(l, runs);
   for (const auto& pc : s.path) {
     auto cd = condition_domain(pc.cond);
     if (!cd) {
+      if (!nest.loops.empty() && implied(pc, runs))
+        continue;
       guards.push_back(pc);
       continue;
     }

@@ -90,30 +90,24 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i + 1;
 // CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           if (!(n < 3)) {
-// CPP-NEXT:             acc += w_0 * v_adj[i];
-// CPP-NEXT:             hit = true;
-// CPP-NEXT:           }
+// CPP-NEXT:           acc += w_0 * v_adj[i];
+// CPP-NEXT:           hit = true;
 // CPP-NEXT:         }
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
 // CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           if (!(n < 3)) {
-// CPP-NEXT:             acc += w_1 * v_adj[i];
-// CPP-NEXT:             hit = true;
-// CPP-NEXT:           }
+// CPP-NEXT:           acc += w_1 * v_adj[i];
+// CPP-NEXT:           hit = true;
 // CPP-NEXT:         }
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i - 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
 // CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           if (!(n < 3)) {
-// CPP-NEXT:             acc += w_2 * v_adj[i];
-// CPP-NEXT:             hit = true;
-// CPP-NEXT:           }
+// CPP-NEXT:           acc += w_2 * v_adj[i];
+// CPP-NEXT:           hit = true;
 // CPP-NEXT:         }
 // CPP-NEXT:       }
 // CPP-NEXT:       if (hit)
@@ -121,27 +115,28 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
+// CPP-NEXT:       double acc_s0 = 0;
+// CPP-NEXT:       double acc_s1 = 0;
+// CPP-NEXT:       double acc_s2 = 0;
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i + 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i + 1;
-// CPP-NEXT:         if (!(n < 3)) {
-// CPP-NEXT:           acc += w_0 * v_adj[i];
-// CPP-NEXT:         }
+// CPP-NEXT:         acc_s0 += v_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         if (!(n < 3)) {
-// CPP-NEXT:           acc += w_1 * v_adj[i];
-// CPP-NEXT:         }
+// CPP-NEXT:         acc_s1 += v_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i - 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
-// CPP-NEXT:         if (!(n < 3)) {
-// CPP-NEXT:           acc += w_2 * v_adj[i];
-// CPP-NEXT:         }
+// CPP-NEXT:         acc_s2 += v_adj[i];
 // CPP-NEXT:       }
+// CPP-NEXT:       acc += w_0 * acc_s0;
+// CPP-NEXT:       acc += w_1 * acc_s1;
+// CPP-NEXT:       acc += w_2 * acc_s2;
 // CPP-NEXT:       u_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     const std::ptrdiff_t lo_i = 0, hi_i = n;
