@@ -1006,7 +1006,7 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   }
   code.raw("} // namespace\n\n");
   code.line("// The forward kernel, which recomputes the work arrays.");
-  code.line("void {}({});", k.name, forward_params(k));
+  code.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, forward_params(k));
   code.raw("\n");
   code.line("// Adjoint of {} ({}:{}): its loop nests backwards; the work arrays {} are "
             "recomputed first.",
@@ -1137,7 +1137,11 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
     open_namespaces(h, *p.kernel);
     h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, base_name(p.kernel->file),
                       p.kernel->pos.line));
+    if (p.kernel->c_linkage) // a C kernel: callable from C
+      h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
     h.raw(adjoint_signature(*p.kernel) + ";\n");
+    if (p.kernel->c_linkage)
+      h.raw("#ifdef __cplusplus\n}\n#endif\n");
     close_namespaces(h, *p.kernel);
     h.raw("\n");
   }

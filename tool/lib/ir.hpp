@@ -190,6 +190,7 @@ struct Kernel {
   std::map<std::string, std::string> extent;
   SourcePos pos;
   std::string file; // source file as given on the command line
+  bool c_linkage = false; // a C kernel: its adjoint is declared extern "C"
 
   const Param* find_param(const std::string& n) const {
     for (const auto& p : params)

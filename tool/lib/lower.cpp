@@ -2191,6 +2191,7 @@ public:
     Kernel k;
     if (Lowerer(*r.Context, fn).run(k)) {
       k.file = file_;
+      k.c_linkage = !r.Context->getLangOpts().CPlusPlus;
       out_.push_back(std::move(k));
     } else {
       ok_ = false;
@@ -2262,17 +2263,33 @@ private:
 
 namespace {
 
-std::vector<std::string> compiler_args(const FrontendOptions& opts) {
+bool is_c_file(const std::string& file) {
+  return file.size() > 2 && file.compare(file.size() - 2, 2, ".c") == 0;
+}
+
+// A `.c` kernel is parsed as C (C11 unless a C -std= is given); C++ -std=
+// flags meant for the rest of the build are dropped for it, and the other way
+// round.
+std::vector<std::string> compiler_args(const FrontendOptions& opts, const std::string& file) {
+  bool c = is_c_file(file);
   std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
   if (!opts.resource_dir.empty())
     args.push_back("-resource-dir=" + opts.resource_dir);
+  std::vector<std::string> rest;
   bool has_std = false;
-  for (const auto& a : opts.compiler_args)
-    has_std = has_std || a.rfind("-std=", 0) == 0;
+  for (const auto& a : opts.compiler_args) {
+    if (a.rfind("-std=", 0) == 0) {
+      bool cxx_std = a.find("++") != std::string::npos;
+      if (cxx_std == c)
+        continue; // the other language's standard
+      has_std = true;
+    }
+    rest.push_back(a);
+  }
   if (!has_std)
-    args.push_back("-std=c++17");
-  args.push_back("-xc++");
-  args.insert(args.end(), opts.compiler_args.begin(), opts.compiler_args.end());
+    args.push_back(c ? "-std=c11" : "-std=c++17");
+  args.push_back(c ? "-xc" : "-xc++");
+  args.insert(args.end(), rest.begin(), rest.end());
   return args;
 }
 
@@ -2297,7 +2314,7 @@ bool run(std::vector<std::string> args, const std::string& file, const FrontendO
 
 bool lower_file(const std::string& file, const FrontendOptions& opts,
                 std::vector<Kernel>& kernels, std::vector<std::string>* deps) {
-  return run(compiler_args(opts), file, opts, kernels, deps, llvm::vfs::getRealFileSystem());
+  return run(compiler_args(opts, file), file, opts, kernels, deps, llvm::vfs::getRealFileSystem());
 }
 
 bool lower_code(const std::string& code, const std::string& name, const FrontendOptions& opts,
@@ -2311,7 +2328,7 @@ bool lower_code(const std::string& code, const std::string& name, const Frontend
   auto overlay = llvm::makeIntrusiveRefCnt<llvm::vfs::OverlayFileSystem>(
       llvm::vfs::getRealFileSystem());
   overlay->pushOverlay(memory);
-  auto args = compiler_args(opts);
+  auto args = compiler_args(opts, name);
   args.push_back("-I/dpgen-memory/include");
   return run(args, "/dpgen-memory/" + name, opts, kernels, nullptr, overlay);
 }

@@ -1,16 +1,22 @@
 // dpgen annotation macros: mark a kernel and its differentiable inputs/outputs.
 // Under Clang (which is what the dpgen tool parses with) they become
-// [[clang::annotate]] attributes; under any other compiler they expand to
+// annotate attributes ([[clang::annotate]] in C++, the GNU spelling in C, so
+// the header serves .c kernels too); under any other compiler they expand to
 // nothing, so the forward kernel builds unchanged and without warnings.
 #pragma once
 
-#if defined(__clang__)
+#if defined(__clang__) && defined(__cplusplus)
 /// Marks a function as a kernel whose adjoint dpgen generates.
 #define DPGEN_KERNEL [[clang::annotate("dpgen.kernel")]]
 /// Marks a pointer parameter as a differentiable input (read only).
 #define DPGEN_IN [[clang::annotate("dpgen.in")]]
-/// Marks a pointer parameter as an output (written, never read).
+/// Marks a pointer parameter as an output (written; read back only where the
+/// same iteration or an earlier loop nest stored it).
 #define DPGEN_OUT [[clang::annotate("dpgen.out")]]
+#elif defined(__clang__)
+#define DPGEN_KERNEL __attribute__((annotate("dpgen.kernel")))
+#define DPGEN_IN __attribute__((annotate("dpgen.in")))
+#define DPGEN_OUT __attribute__((annotate("dpgen.out")))
 #else
 #define DPGEN_KERNEL
 #define DPGEN_IN
