@@ -20,7 +20,7 @@ int main() {
   const double c = 0.3;
   const Eigen::VectorXd v = Eigen::VectorXd::Random(n), w = Eigen::VectorXd::Random(n);
   Eigen::VectorXd kv(n), ktw = Eigen::VectorXd::Zero(n);
-  smooth(v.data(), kv.data(), n, c);                // K v
+  smooth(v.data(), kv.data(), n, c);                    // K v
   smooth_adjoint(v.data(), ktw.data(), w.data(), n, c); // K^T w, accumulated into ktw
   const double lhs = kv.dot(w), rhs = v.dot(ktw);
   const double rel = std::abs(lhs - rhs) / std::max(std::abs(lhs), std::abs(rhs));
