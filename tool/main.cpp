@@ -29,9 +29,9 @@ static cl::opt<bool> verbose("v",
                              cl::cat(category));
 
 // The folder holding dpgen/annotate.hpp, added to the compiler flags so that
-// kernels include it without -I: installed, <prefix>/<bindir>/<rel>
-// (DPGEN_INCLUDE_FROM_BIN, "../include" by default) next to this executable;
-// in the build tree, the source tree's runtime/include. Empty if neither has it.
+// kernels include it without -I: installed, <this executable's folder>/
+// DPGEN_INCLUDE_FROM_BIN (<prefix>/bin/../include); in the build tree, the
+// source tree's runtime/include. Empty if neither has it.
 static std::string runtime_include_dir(const char* argv0) {
   auto has_annotate = [](const std::string& dir) {
     return llvm::sys::fs::exists(dir + "/dpgen/annotate.hpp");
