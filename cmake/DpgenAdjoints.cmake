@@ -6,14 +6,42 @@
 # as <stem>_adjoint.{hpp,cpp}. Link <target> and include "<stem>_adjoint.hpp".
 # Editing a kernel or rebuilding dpgen regenerates; an unchanged output is not
 # rewritten, so nothing downstream rebuilds.
+#
+# The same file serves dpgen's own build, a parent project that adds dpgen
+# with add_subdirectory or FetchContent, and an installed dpgen
+# (find_package(dpgen CONFIG)): it runs the tool dpgen::dpgen and links
+# dpgen::runtime, which carries the include path of dpgen/annotate.hpp,
+# Eigen and OpenMP (for the generated code's pragmas).
+include_guard(GLOBAL)
+
 function(dpgen_add_adjoints target)
   cmake_parse_arguments(ARG "" "" "KERNELS;COMPILE_ARGS" ${ARGN})
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "dpgen_add_adjoints(${target}): unexpected arguments "
+                        "'${ARG_UNPARSED_ARGUMENTS}' (expected KERNELS <file>... "
+                        "[COMPILE_ARGS <flag>...])")
+  endif()
   if(NOT ARG_KERNELS)
     message(FATAL_ERROR "dpgen_add_adjoints(${target}): no KERNELS given")
   endif()
+  foreach(needed dpgen::dpgen dpgen::runtime)
+    if(NOT TARGET ${needed})
+      message(FATAL_ERROR "dpgen_add_adjoints(${target}): target ${needed} does not exist here "
+                          "(find_package(dpgen CONFIG) or add_subdirectory(<dpgen>) first)")
+    endif()
+  endforeach()
+  # In dpgen's build tree dpgen::dpgen is an alias of the tool target: depend on
+  # the target itself, so that rebuilding the tool regenerates. Installed, it
+  # is an imported executable: depend on its file.
+  get_target_property(tool dpgen::dpgen ALIASED_TARGET)
+  if(tool)
+    set(tool_dependency ${tool})
+  else()
+    set(tool dpgen::dpgen)
+    set(tool_dependency $<TARGET_FILE:dpgen::dpgen>)
+  endif()
   set(gen_dir ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
   file(MAKE_DIRECTORY ${gen_dir})
-  get_target_property(runtime_inc dpgen_runtime INTERFACE_INCLUDE_DIRECTORIES)
   set(generated)
   set(kernel_sources)
   foreach(kernel IN LISTS ARG_KERNELS)
@@ -26,13 +54,14 @@ function(dpgen_add_adjoints target)
     # The stamp is the rule's output; the generated files are byproducts that
     # keep their timestamps when their content does not change.
     # dpgen writes ${stamp}.d listing every header the kernel includes, so
-    # editing one of them regenerates too.
+    # editing one of them regenerates too. The tool adds the include path of
+    # dpgen/annotate.hpp itself.
     add_custom_command(
       OUTPUT ${stamp}
       BYPRODUCTS ${hpp} ${cpp}
-      COMMAND $<TARGET_FILE:dpgen> ${abs} --out-dir ${gen_dir} --stamp ${stamp}
-              -- -std=c++17 -I${runtime_inc} -I${kdir} ${ARG_COMPILE_ARGS}
-      DEPENDS dpgen ${abs}
+      COMMAND $<TARGET_FILE:${tool}> ${abs} --out-dir ${gen_dir} --stamp ${stamp}
+              -- -std=c++17 -I${kdir} ${ARG_COMPILE_ARGS}
+      DEPENDS ${tool_dependency} ${abs}
       DEPFILE ${stamp}.d
       COMMENT "dpgen: adjoint of ${kernel}"
       VERBATIM)
@@ -41,5 +70,5 @@ function(dpgen_add_adjoints target)
   endforeach()
   add_library(${target} STATIC ${kernel_sources} ${generated})
   target_include_directories(${target} PUBLIC ${gen_dir})
-  target_link_libraries(${target} PUBLIC dpgen_runtime OpenMP::OpenMP_CXX)
+  target_link_libraries(${target} PUBLIC dpgen::runtime)
 endfunction()

@@ -17,14 +17,12 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#ifndef DPGEN_SOURCE_DIR
-#define DPGEN_SOURCE_DIR "."
-#endif
 
 namespace {
 
@@ -45,12 +43,24 @@ void burgers_step(const Eigen::VectorXd& u, Eigen::VectorXd& mid, Eigen::VectorX
   advect_self_semi_lagrangian(mid.data(), next.data(), kCells, kDt, kDx);
 }
 
+// Where --reference points by default: data/burgers_t16_reference.txt next to
+// this executable (the build copies examples/data/ there); nothing of the
+// source tree is compiled in.
+std::string default_reference() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path dir = ec ? std::filesystem::path(".") : exe.parent_path();
+  return (dir / "data" / "burgers_t16_reference.txt").string();
+}
+
 // The reference state at step 16: exactly kCells numbers, whitespace separated.
 Eigen::VectorXd read_reference(const std::string& path) {
   std::ifstream in(path);
   if (!in)
-    throw std::runtime_error("burgers_optimization: cannot open the reference file '" + path +
-                             "' (give its path with --reference)");
+    throw std::runtime_error(
+        "burgers_optimization: cannot open the reference file '" + path +
+        "'; it is examples/data/burgers_t16_reference.txt of the dpgen sources, which the "
+        "build copies to data/ next to this executable: give its path with --reference");
   std::vector<double> values;
   std::string token;
   while (in >> token) {
@@ -76,19 +86,23 @@ std::vector<double> vec(const Eigen::VectorXd& v) {
 } // namespace
 
 int main(int argc, char** argv) try {
-  dpgen_examples::Args args(argc, argv, "burgers_optimization",
-                            "Recover the initial state of 1D Burgers from its state at t = 0.5 "
-                            "(the PBDL book's DP optimization, dpgen).");
-  const int iters = args.get_int("--iters", 50, "gradient descent iterations");
-  const double lr = args.get_double("--lr", 5.0, "learning rate");
-  const std::string reference = args.get_string(
-      "--reference", DPGEN_SOURCE_DIR "/examples/data/burgers_t16_reference.txt",
-      "file with the 128 reference values at step 16");
+  dpgen_examples::Args args(
+      argc, argv, "burgers_optimization",
+      "Recover the initial state of 1D Burgers from its state at t = 0.5 (the PBDL book's DP\n"
+      "optimization, dpgen).\n\n"
+      "Fixed setup, as in the book: N = 128 cells on [-1, 1], periodic; 32 steps of dt = 1/32\n"
+      "(explicit diffusion with nu = 0.01/(N pi), then semi-Lagrangian self-advection); loss\n"
+      "sum((u16 - reference)^2) / N at step 16; first guess u0 = 0; plain gradient descent.");
+  const int iters = args.get_int("--iters", 50, "gradient descent iterations", 0);
+  const double lr = args.get_double("--lr", 5.0, "learning rate", 0,
+                                    std::numeric_limits<double>::infinity(), true);
+  const std::string reference =
+      args.get_string("--reference", default_reference(),
+                      "file with the 128 reference values at step 16 (a copy of "
+                      "examples/data/burgers_t16_reference.txt)");
   const auto common = dpgen_examples::common_options(args, "burgers_optimization");
   if (args.finish())
     return 0;
-  if (iters < 0)
-    throw std::invalid_argument("burgers_optimization: --iters must be >= 0");
 
   const Eigen::VectorXd ref = read_reference(reference);
 

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -158,43 +159,55 @@ std::vector<double> vec(const VectorXd& v) {
 } // namespace
 
 int main(int argc, char** argv) try {
-  dpgen_examples::Args args(argc, argv, "solver_in_the_loop",
-                            "Train a network that corrects a coarse Burgers solver, with DP "
-                            "gradients through the solver and supervised on one-step pairs.");
+  dpgen_examples::Args args(
+      argc, argv, "solver_in_the_loop",
+      "Train a network that corrects a coarse Burgers solver, with DP gradients through the\n"
+      "solver and supervised on one-step pairs.\n\n"
+      "Fixed setup: x in [-1, 1], periodic; coarse steps of dt = 1/32 (explicit diffusion, then\n"
+      "semi-Lagrangian self-advection); the reference runs ratio x the cells with ratio\n"
+      "substeps, averaged onto the coarse cells; initial states: four sine modes with random\n"
+      "amplitudes (falling as 1/k) and phases, peak |u| in [0.25, 1]; held-out rollouts run\n"
+      "4 x --unroll steps.");
   Setup s;
-  s.coarse = args.get_int("--cells", 32, "coarse grid cells on [-1, 1]");
-  s.ratio = args.get_int("--ratio", 4, "the reference has ratio times the cells and time steps");
-  s.nu = args.get_double("--nu", s.nu, "viscosity");
-  const int train_ics = args.get_int("--train", 8, "training initial conditions");
-  const int test_ics = args.get_int("--test", 16, "held-out initial conditions");
-  const int horizon = args.get_int("--horizon", 32, "steps of the training trajectories");
-  const int unroll = args.get_int("--unroll", 16, "solver steps unrolled in DP training");
-  const int iters = args.get_int("--iters", 800, "Adam iterations of each training");
-  const double lr = args.get_double("--lr", 1e-3, "Adam learning rate (both trainings)");
-  const int channels = args.get_int("--channels", 8, "hidden channels of the network");
-  const int kernel = args.get_int("--kernel", 5, "convolution width (odd)");
-  const int hidden = args.get_int("--hidden", 1, "hidden convolution + tanh layers");
+  const double inf = std::numeric_limits<double>::infinity();
+  s.coarse = args.get_int("--cells", 32, "coarse grid cells on [-1, 1]", 3);
+  s.ratio =
+      args.get_int("--ratio", 4, "the reference has ratio times the cells and time steps", 1);
+  s.nu = args.get_double("--nu", s.nu, "viscosity (0.01/pi)", 0);
+  const int train_ics = args.get_int("--train", 8, "training initial conditions", 1);
+  const int test_ics = args.get_int("--test", 16, "held-out initial conditions", 1);
+  const int horizon = args.get_int("--horizon", 32, "steps of the training trajectories", 1);
+  const int unroll =
+      args.get_int("--unroll", 16, "solver steps unrolled in DP training (at most --horizon)", 1);
+  const int iters = args.get_int("--iters", 800, "Adam iterations of each training", 0);
+  const double lr =
+      args.get_double("--lr", 1e-3, "Adam learning rate (both trainings)", 0, inf, true);
+  const int channels = args.get_int("--channels", 8, "hidden channels of the network", 1);
+  const int kernel = args.get_int("--kernel", 5, "convolution width (odd, at most --cells)", 1);
+  const int hidden = args.get_int("--hidden", 1, "hidden convolution + tanh layers", 0);
   const int seed = args.get_int("--seed", 1, "seed of the initial conditions and the network");
-  const std::string csv = args.get_string("--csv", "", "CSV log of the DP training");
-  const std::string csv_sup =
-      args.get_string("--csv-supervised", "", "CSV log of the supervised training");
+  const std::string csv =
+      args.get_string("--csv", "", "CSV log of the DP training; none: no log");
+  const std::string csv_sup = args.get_string("--csv-supervised", "",
+                                              "CSV log of the supervised training; none: no log");
   const std::string out = args.get_string("--out", "out/solver_in_the_loop", "folder for pictures");
   const double require_reduction = args.get_double(
-      "--require-reduction", 0.0, "fail unless the DP training loss drops by this factor");
+      "--require-reduction", 0.0,
+      "fail unless the DP training loss drops by this factor (0: no requirement)", 0);
   const int require_dp_better = args.get_int(
-      "--require-dp-better", 0, "1: fail unless the DP-trained rollout error is the lowest");
+      "--require-dp-better", 0, "1: fail unless the DP-trained rollout error is the lowest", 0, 1);
   const int check = args.get_int("--check-gradient", 0,
                                  "1: compare both training gradients with central differences and "
-                                 "exit (status 1 if a relative error exceeds 1e-6)");
+                                 "exit (status 1 if a relative error exceeds 1e-6)",
+                                 0, 1);
   if (args.finish())
     return 0;
-  if (s.coarse < 3 || s.ratio < 1 || !(s.nu >= 0) || train_ics < 1 || test_ics < 1 || horizon < 1 ||
-      unroll < 1 || unroll > horizon || iters < 0 || channels < 1 || kernel < 1 ||
-      kernel % 2 == 0 || kernel > s.coarse)
-    throw std::invalid_argument(
-        "solver_in_the_loop: need --cells >= 3, --ratio >= 1, --nu >= 0, --train/--test >= 1, "
-        "1 <= --unroll <= --horizon, --iters >= 0, --channels >= 1 and an odd --kernel <= "
-        "--cells");
+  if (unroll > horizon)
+    args.fail("--unroll must be at most --horizon (" + std::to_string(horizon) + "), got " +
+              std::to_string(unroll));
+  if (kernel % 2 == 0 || kernel > s.coarse)
+    args.fail("--kernel must be odd and at most --cells (" + std::to_string(s.coarse) +
+              "), got " + std::to_string(kernel));
   const auto start = std::chrono::steady_clock::now();
 
   // Data: reference trajectories, training ones over the horizon, held-out ones (from their

@@ -6,6 +6,7 @@
 
 #include <llvm/Support/CommandLine.h>
 #include <llvm/Support/FileSystem.h>
+#include <llvm/Support/Path.h>
 #include <llvm/Support/raw_ostream.h>
 
 namespace cl = llvm::cl;
@@ -22,8 +23,29 @@ static cl::opt<std::string> stamp("stamp",
                                   cl::desc("after success, touch <file> and write <file>.d (a "
                                            "make-style list of every file read)"),
                                   cl::value_desc("file"), cl::cat(category));
-static cl::opt<bool> verbose("v", cl::desc("report written and unchanged files"),
+static cl::opt<bool> verbose("v",
+                             cl::desc("report written and unchanged files, and where "
+                                      "dpgen/annotate.hpp is found"),
                              cl::cat(category));
+
+// The folder holding dpgen/annotate.hpp, added to the compiler flags so that
+// kernels include it without -I: installed, <this executable's folder>/
+// DPGEN_INCLUDE_FROM_BIN (<prefix>/bin/../include); in the build tree, the
+// source tree's runtime/include. Empty if neither has it.
+static std::string runtime_include_dir(const char* argv0) {
+  auto has_annotate = [](const std::string& dir) {
+    return llvm::sys::fs::exists(dir + "/dpgen/annotate.hpp");
+  };
+  std::string exe = llvm::sys::fs::getMainExecutable(argv0, (void*)&runtime_include_dir);
+  if (!exe.empty()) {
+    llvm::SmallString<256> dir(llvm::sys::path::parent_path(exe));
+    llvm::sys::path::append(dir, DPGEN_INCLUDE_FROM_BIN);
+    llvm::sys::path::remove_dots(dir, /*remove_dot_dot=*/true);
+    if (has_annotate(std::string(dir)))
+      return std::string(dir);
+  }
+  return has_annotate(DPGEN_SOURCE_INCLUDE_DIR) ? DPGEN_SOURCE_INCLUDE_DIR : "";
+}
 
 int main(int argc, const char** argv) {
   // Everything after `--` goes to the compiler.
@@ -50,6 +72,13 @@ int main(int argc, const char** argv) {
                  << "' has no include/ (pass --resource-dir=$(clang-19 -print-resource-dir))\n";
     return 2;
   }
+  // After the user's flags: an -I of theirs comes first in the search order.
+  const std::string runtime_include = runtime_include_dir(argv[0]);
+  if (!runtime_include.empty())
+    compiler_args.push_back("-I" + runtime_include);
+  if (verbose)
+    llvm::errs() << "dpgen: dpgen/annotate.hpp from "
+                 << (runtime_include.empty() ? "the compiler flags only" : runtime_include) << "\n";
   dpgen::GenerateOptions opts;
   opts.frontend.compiler_args = compiler_args;
   opts.frontend.resource_dir = resource_dir;
