@@ -61,6 +61,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const auto& k : kernels)
     plans.push_back(dpgen::schedule(k));
   dpgen::EmittedFile f = dpgen::emit_file(plans, "fuzz.cpp", "fuzz");
+  // The output is a function of the kernel alone: the same input again, in
+  // the same process, gives the same text (no counters that survive a run).
+  std::vector<dpgen::Kernel> again;
+  dpgen::lower_code(code, "fuzz.cpp", options(), again, {{"dpgen/annotate.hpp", annotate_header()}});
+  std::vector<dpgen::AdjointPlan> plans2;
+  for (const auto& k : again)
+    plans2.push_back(dpgen::schedule(k));
+  dpgen::EmittedFile f2 = dpgen::emit_file(plans2, "fuzz.cpp", "fuzz");
+  if (f2.source != f.source || f2.header != f.header) {
+    llvm::errs() << "fuzz: the same kernel generated different code on a second run:\n"
+                 << code << "\n";
+    std::abort();
+  }
   if (!compiles(f)) {
     llvm::errs() << "fuzz: accepted kernel produced code that does not compile:\n"
                  << f.source << "\n--- input ---\n"
