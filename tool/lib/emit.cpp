@@ -2,6 +2,7 @@
 // scatter loops, and the file around them.
 #include "emit.hpp"
 
+#include "emit_util.hpp"
 #include "print.hpp"
 
 #include <clang/Format/Format.h>
@@ -61,79 +62,12 @@ private:
   std::map<const LocalVar*, ExprP> memo_;
 };
 
-void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string>& vars) {
-  if (!e)
-    return;
-  if (e->op == Op::LoopVar)
-    vars.insert(e->name);
-  if (e->op == Op::Local) {
-    if (e->local->kernel_level || locals.count(e->local->id))
-      return;
-    locals[e->local->id] = e->local;
-    collect(e->local->def, locals, vars);
-    return;
-  }
-  for (const auto& o : e->ops)
-    collect(o, locals, vars);
-}
-
-std::string cond_text(const PathCond& pc) {
-  return pc.positive ? print(pc.cond) : "!(" + print(pc.cond) + ")";
-}
-
-// ---- the code buffer ---------------------------------------------------------
-
-class Code {
-public:
-  explicit Code(int depth = 0) : depth_(depth) {}
-  int depth() const { return depth_; }
-  template <typename... A> void line(fmt::format_string<A...> f, A&&... a) {
-    out_ += std::string(2 * depth_, ' ') + fmt::format(f, std::forward<A>(a)...) + "\n";
-  }
-  void raw(const std::string& s) { out_ += s; }
-  void open(const std::string& s) {
-    out_ += std::string(2 * depth_, ' ') + s + (s.empty() ? "{\n" : " {\n");
-    ++depth_;
-  }
-  void close(const std::string& tail = "") {
-    --depth_;
-    out_ += std::string(2 * depth_, ' ') + "}" + tail + "\n";
-  }
-  const std::string& str() const { return out_; }
-
-private:
-  std::string out_;
-  int depth_ = 0;
-};
-
 std::string elem_of(const Kernel& k, const std::string& array) {
   const Param* p = k.find_param(array);
   return p ? p->elem_name : "double";
 }
 
-// Integers of the gather loops (cell coordinates, ranges, the counters of an
-// iteration) are 64-bit: no index arithmetic on them wraps in 32 bits, and
-// GCC sees the affine accesses it needs to vectorize (a counter truncated to
-// int is opaque to it). Signed int locals are widened the same way by the
-// lowering; values are those of the kernel wherever the kernel's own
-// arithmetic does not overflow.
-constexpr const char* kCellType = "std::ptrdiff_t";
-
 std::string loop_type(const Nest&, const std::string&) { return kCellType; }
-
-// Emits `const T name = def;` for each local in `locals` not yet in `done`.
-void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int>& done) {
-  for (const auto& [id, l] : locals)
-    if (done.insert(id).second)
-      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-}
-
-std::string conjunction(const std::vector<PathCond>& conds) {
-  std::vector<std::string> parts;
-  for (const auto& pc : conds)
-    parts.push_back(cond_text(pc));
-  return fmt::format("{}", fmt::join(parts, " && "));
-}
 
 // ---- one block: the terms of one (store, shift, piece) at one iteration -------
 
@@ -751,47 +685,6 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     code.close();
 }
 
-// Comments name the kernel file without its directory, so generated files do
-// not depend on where the tree was checked out.
-std::string base_name(const std::string& path) {
-  auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-// A C++ string literal holding `s`.
-std::string literal(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-// The write-once rules dpgen could not prove for all sizes, checked on entry:
-// sizes that break one would make the adjoint wrong, so they stop it with a
-// message naming the rule, the kernel line and the sizes.
-void emit_size_checks(Code& code, const Kernel& k) {
-  std::vector<std::string> shown;
-  for (const auto& p : k.params)
-    if (p.kind == ParamKind::Scalar && p.elem == Type::Int)
-      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
-  std::string sizes = shown.empty() ? "\"\""
-                                    : fmt::format("{}", fmt::join(shown, " + \", \" + "));
-  for (const auto& c : k.size_checks) {
-    code.line("// Run-time check (not provable from the kernel alone): {}.", c.what);
-    std::vector<std::string> parts = c.premises;
-    parts.push_back(fmt::format("!({})", c.must_hold));
-    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
-    std::string msg = fmt::format("{}:{}: {}_adjoint: these sizes break the rule that {}, so the "
-                                  "adjoint would be wrong (",
-                                  base_name(c.pos.file), c.pos.line, k.name, c.what);
-    code.line("throw std::invalid_argument(std::string({}) + {} + \")\");", literal(msg), sizes);
-    code.close();
-  }
-}
-
 // The adjoint's parameters. `shaped`: arrays of rows as the kernel declares
 // them (`const double (*a)[64]`); otherwise every array is a flat pointer.
 std::string param_list(const Kernel& k, bool shaped = true) {
@@ -824,19 +717,6 @@ std::string param_list(const Kernel& k, bool shaped = true) {
     }
   }
   return fmt::format("{}", fmt::join(ps, ", "));
-}
-
-// Arrays of rows or std::vectors: the user-facing entry point takes them as
-// declared and calls a flat twin.
-bool has_rows(const Kernel& k) {
-  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
-    return p.kind != ParamKind::Scalar && (!p.rows.empty() || !p.container.empty());
-  });
-}
-
-bool has_vectors(const Kernel& k) {
-  return std::any_of(k.params.begin(), k.params.end(),
-                     [](const Param& p) { return !p.container.empty(); });
 }
 
 // The vector adjoint of an input has its input's size (it is accumulated
@@ -892,15 +772,6 @@ std::string flat_arguments(const Kernel& k) {
   return fmt::format("{}", fmt::join(as, ", "));
 }
 
-void open_namespaces(Code& c, const Kernel& k) {
-  for (const auto& ns : k.namespaces)
-    c.raw(fmt::format("namespace {} {{\n", ns));
-}
-void close_namespaces(Code& c, const Kernel& k) {
-  for (auto it = k.namespaces.rbegin(); it != k.namespaces.rend(); ++it)
-    c.raw(fmt::format("}} // namespace {}\n", *it));
-}
-
 // The statements of an adjoint function: kernel-level locals, size checks,
 // the gather loops (fused where they share a nest, layout and cell box) and
 // the scatter loops.
@@ -908,7 +779,7 @@ void emit_body(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  emit_size_checks(code, k);
+  emit_size_checks(code, k, k.name + "_adjoint");
   // Gather groups of different inputs that share a loop nest, a layout and a
   // cell box run in one fused loop.
   std::set<const GatherGroup*> done;
@@ -1015,7 +886,7 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   code.open(fmt::format("void {}({})", fn_name, param_list(k, false)));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  emit_size_checks(code, k);
+  emit_size_checks(code, k, k.name + "_adjoint");
   std::vector<std::string> fwd;
   for (const auto& p : k.params) {
     if (p.kind == ParamKind::Out) {
@@ -1092,24 +963,6 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
   }
   close_namespaces(code, k);
 }
-
-// clang-format (LLVM style, 100 columns) over the generated text, so long
-// expressions wrap the way a person would wrap them.
-std::string formatted(const std::string& code, const std::string& name) {
-  clang::format::FormatStyle style = clang::format::getLLVMStyle();
-  style.ColumnLimit = 100;
-  style.SortIncludes = clang::format::FormatStyle::SI_Never;
-  style.PointerAlignment = clang::format::FormatStyle::PAS_Left;
-  auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
-  auto out = clang::tooling::applyAllReplacements(code, repl);
-  if (!out) {
-    llvm::consumeError(out.takeError());
-    return code;
-  }
-  return *out;
-}
-
-const char* kBanner = "// Generated by dpgen from {} -- do not edit; edit the kernel and rebuild.\n";
 
 } // namespace
 
