@@ -3,7 +3,9 @@
 #include "support/adjoint_check.hpp"
 
 #include "neg_div_k_grad_1d_adjoint.hpp"
+#include "neg_div_k_grad_1d_tangent.hpp"
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
+#include "neg_div_k_grad_periodic2d_tangent.hpp"
 #include "operators.hpp"
 
 TEST_CASE("neg_div_k_grad_1d adjoint") {
@@ -16,6 +18,9 @@ TEST_CASE("neg_div_k_grad_1d adjoint") {
     p.forward = [&](auto in, auto out) { neg_div_k_grad_1d(in[0], in[1], out[0], n, 0.5); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       neg_div_k_grad_1d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.5);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      neg_div_k_grad_1d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.5);
     };
     dpgen_test::check_adjoint(p);
   }
@@ -35,6 +40,9 @@ TEST_CASE("neg_div_k_grad_periodic2d adjoint") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       neg_div_k_grad_periodic2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      neg_div_k_grad_periodic2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, 0.5);
     };
     dpgen_test::check_adjoint(p);
   }
