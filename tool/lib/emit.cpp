@@ -400,7 +400,15 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
               fmt::join(cells, ", "), fmt::join(arrays, ", "), layout_desc,
               g0.reduced.empty() ? ""
                                  : fmt::format(", summed over {}", fmt::join(g0.reduced, ", ")));
-  code.open("");
+  // A null adjoint marks an inactive input: its loop is skipped (a fused
+  // loop runs only when all its inputs are active; see emit_body).
+  if (fused)
+    code.open("");
+  else
+    code.open(fmt::format("if ({}_adj != nullptr)", g0.array));
+  auto store_if = [&](const GatherGroup&, const std::string& cond) {
+    return cond.empty() ? std::string() : fmt::format("if ({})", cond);
+  };
 
   auto edge_body = [&]() {
     for (const auto* g : gs) {
@@ -408,7 +416,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.line("bool {} = false;", hit_name(*g));
       for (const auto& b : g->blocks)
         emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
-      code.line("if ({})", hit_name(*g));
+      code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(*g), acc_name(*g));
     }
   };
@@ -487,9 +495,10 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.raw(blocks.str());
       for (const auto& [name, p] : factored.sums)
         code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
-      if (guarded)
-        code.line("if ({})", hit_name(*g));
-      code.line("{}{} += {};", guarded ? "  " : "", adj_cell(*g), acc_name(*g));
+      std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
+      if (!cond.empty())
+        code.line("{}", cond);
+      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(*g), acc_name(*g));
     }
     code.close(";");
   }
@@ -636,7 +645,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
   code.line("// {}_adj: reads of {} in {}[{}] at indices that cannot be inverted; scatter form, "
             "serial",
             u.array, u.array, s.array, print(s.index));
-  code.open("");
+  code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
     code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", l.type_name, l.var, print(l.lo),
@@ -804,7 +813,22 @@ void emit_body(Code& code, const AdjointPlan& plan) {
           fused.push_back(&h);
       for (const auto* f : fused)
         done.insert(f);
+      if (fused.size() == 1) {
+        emit_gather(code, k, fused);
+        continue;
+      }
+      // Fused when every input is active; one loop each when some adjoint
+      // is null (an inactive input).
+      std::vector<std::string> all;
+      for (const auto* f : fused)
+        all.push_back(f->array + "_adj != nullptr");
+      code.open(fmt::format("if ({})", fmt::join(all, " && ")));
       emit_gather(code, k, fused);
+      code.close();
+      code.open("else");
+      for (const auto* f : fused)
+        emit_gather(code, k, {f});
+      code.close();
     }
     for (const auto& u : plan.scatters)
       if (u.array == p.name)

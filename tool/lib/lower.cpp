@@ -337,7 +337,7 @@ private:
           fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
                                              "subset",
                                              out.name, q.getAsString()));
-        if (!ann.empty())
+        if (!ann.empty() && ann != "dpgen.const")
           fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
                                              "parameters (pass a one-element array to "
                                              "differentiate a scalar)",

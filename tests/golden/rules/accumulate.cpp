@@ -47,7 +47,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT: void accumulate_adjoint(const double* q, double* q_adj, const double* rhs_adj,
 // CPP-NEXT:                         const double* energy_adj, int n) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -130,7 +130,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;

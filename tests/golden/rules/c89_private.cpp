@@ -54,7 +54,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   const double w_1 = 0.5;
 // CPP-NEXT:   const double w_2 = 0.25;
 // CPP-NEXT:   // u_adj[0]: one cell, summed over the iterations () that read it
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     double acc = 0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[0] reads u[0]: acc += ∂v[0]/∂u[0] · v_adj[0]
@@ -68,7 +68,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       u_adj[0] += acc;
 // CPP-NEXT:   }
 // CPP-NEXT:   // u_adj[n - 1]: one cell, summed over the iterations () that read it
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     double acc = 0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[n - 1] reads u[n - 1]: acc += ∂v[n - 1]/∂u[n - 1] · v_adj[n - 1]
@@ -82,7 +82,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       u_adj[n - 1] += acc;
 // CPP-NEXT:   }
 // CPP-NEXT:   // u_adj[c_i]: each cell gathers the reads of u made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;

@@ -46,7 +46,7 @@ DPGEN_KERNEL void helper_inline(DPGEN_IN const double* q, DPGEN_OUT double* slop
 // CPP-NEXT: // Adjoint of helper_inline (helper_inline.cpp:15).
 // CPP-NEXT: void helper_inline_adjoint(const double* q, double* q_adj, const double* slope_adj, int n) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;

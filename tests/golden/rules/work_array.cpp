@@ -46,7 +46,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: void work_array_nest1_adjoint(const double* q, double* q_adj, const double* flux_adj,
 // CPP-NEXT:                               const double* q_new_adj, int n, double c) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -103,7 +103,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: void work_array_nest2_adjoint(const double* q, double* q_adj, const double* flux, double* flux_adj,
 // CPP-NEXT:                               const double* q_new_adj, int n, double c) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -145,7 +145,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
 // CPP-NEXT:   // flux_adj[c_i]: each cell gathers the reads of flux made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (flux_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
