@@ -13,3 +13,17 @@ DPGEN_KERNEL void divergence2d(DPGEN_IN const double* u, DPGEN_IN const double* 
 
 DPGEN_KERNEL void laplacian2d(DPGEN_IN const double* a, DPGEN_OUT double* out,
                               int nx, int ny, double h);
+
+// Multigrid transfers (multigrid_transfer.cpp), used by dpgen/multigrid.hpp.
+// Bilinear prolongation along x: coarse nxc-by-ny -> fine 2nxc-by-ny. Ghost
+// weights per wall: periodic (self 0, wrap 1), Neumann (1, 0), Dirichlet (-1, 0).
+DPGEN_KERNEL void mg_prolong_x(DPGEN_IN const double* c, DPGEN_OUT double* f, int nxc, int ny,
+                               double west_self, double west_wrap, double east_self,
+                               double east_wrap);
+// Bilinear prolongation along y: 2nxc-by-nyc -> 2nxc-by-2nyc.
+DPGEN_KERNEL void mg_prolong_y(DPGEN_IN const double* c, DPGEN_OUT double* f, int nxc, int nyc,
+                               double south_self, double south_wrap, double north_self,
+                               double north_wrap);
+// Coefficient coarsening: mean of the 2x2 fine cells of each coarse cell.
+DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc,
+                                 int nyc);
