@@ -87,6 +87,51 @@ double contraction(dpgen::Multigrid& mg, const VectorXd& b) {
 
 } // namespace
 
+TEST_CASE("operator_diagonal probes the exact diagonal of 5- and 9-point stencils") {
+  // A 9-point operator whose off-diagonal entries differ from cell to cell (so a wrong colouring
+  // shows up): 20 + k[c] on the diagonal, -(1 + (k[c] + k[m]) / 100) to each neighbour m.
+  for (bool periodic : {true, false})
+    for (int nx = 1; nx <= 8; ++nx)
+      for (int ny = 1; ny <= 7; ++ny) {
+        CAPTURE(periodic);
+        CAPTURE(nx);
+        CAPTURE(ny);
+        const dpgen::LevelOperator nine_point = [periodic](const double* x, const double* k,
+                                                           double* y, int mx, int my, double) {
+          for (int j = 0; j < my; ++j)
+            for (int i = 0; i < mx; ++i) {
+              double sum = (20.0 + k[j * mx + i]) * x[j * mx + i];
+              for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                  int ii = i + di, jj = j + dj;
+                  if (di == 0 && dj == 0)
+                    continue;
+                  if (periodic) {
+                    ii = (ii + mx) % mx, jj = (jj + my) % my;
+                  } else if (ii < 0 || ii >= mx || jj < 0 || jj >= my) {
+                    continue;
+                  }
+                  // symmetric weight: depends on the pair of cells, not on the direction
+                  const double weight = 1.0 + 0.01 * (k[j * mx + i] + k[jj * mx + ii]);
+                  sum -= weight * x[jj * mx + ii];
+                }
+              y[j * mx + i] = sum;
+            }
+        };
+        const VectorXd k = random_vector(nx * ny, 11, 0.5, 2.0);
+        const Boundaries bc = Boundaries::all(periodic ? Boundary::periodic : Boundary::neumann);
+        const VectorXd probed = dpgen::operator_diagonal(nine_point, k, nx, ny, 0.1, bc);
+        VectorXd exact(nx * ny), unit = VectorXd::Zero(nx * ny), column(nx * ny);
+        for (int c = 0; c < nx * ny; ++c) {
+          unit[c] = 1.0;
+          nine_point(unit.data(), k.data(), column.data(), nx, ny, 0.1);
+          exact[c] = column[c];
+          unit[c] = 0.0;
+        }
+        CHECK((probed - exact).cwiseAbs().maxCoeff() == 0.0);
+      }
+}
+
 TEST_CASE("the V-cycle is a symmetric positive definite operator (a valid CG preconditioner)") {
   for (const Case& tc : kCases) {
     CAPTURE(tc.name);

@@ -65,45 +65,44 @@ using LevelOperator =
 
 namespace detail {
 
-// Probing colour of cell i on an axis of n cells: two cells of one colour are never
-// neighbours, also across a periodic wrap (i mod 3, with the last n mod 3 cells of a periodic
-// axis in colours of their own).
-inline int probe_colour(int i, int n, bool periodic) {
-  if (n <= 3)
-    return i;
-  const int tail = periodic ? n % 3 : 0;
-  return i < n - tail ? i % 3 : 3 + (i - (n - tail));
+// The cells of each probing colour along an axis of n cells: i mod 3, so two neighbours never
+// share a colour; on a periodic axis with n mod 3 = 1 the last cell (a neighbour of cell 0, also
+// colour 0) takes colour 1 instead, which neither of its neighbours n-2 (colour 2) and 0 has.
+// (With n mod 3 = 2 the wrapped pair n-1, 0 has colours 1, 0 already.)
+inline std::vector<std::vector<int>> probe_classes(int n, bool periodic) {
+  std::vector<std::vector<int>> classes(std::min(n, 3));
+  for (int i = 0; i < n; ++i) {
+    const bool moved = periodic && n > 3 && n % 3 == 1 && i == n - 1;
+    classes[moved ? 1 : i % 3].push_back(i);
+  }
+  return classes;
 }
-inline int probe_colours(int n, bool periodic) { return n <= 3 ? n : 3 + (periodic ? n % 3 : 0); }
 
 } // namespace detail
 
 /// diag(A) of a level operator on an nx-by-ny grid, matrix-free by probing: for a stencil of
-/// radius 1, A applied to the indicator of one colour class (cells whose (i mod 3, j mod 3)
-/// agree; no two of them are neighbours) returns A_cc at every cell c of the class. 9 to 25
-/// operator applications. Also the diagonal a Jacobi-preconditioned CG needs.
+/// radius 1 (5 or 9 points), A applied to the indicator of one colour class (cells whose colours
+/// along x and along y agree, no two of them neighbours) returns A_cc at every cell c of the
+/// class. At most 9 operator applications. Also the diagonal a Jacobi-preconditioned CG needs.
 inline Eigen::VectorXd operator_diagonal(const LevelOperator& op, const Eigen::VectorXd& k, int nx,
                                          int ny, double h, const Boundaries& boundaries) {
-  const bool px = boundaries.west == Boundary::periodic;
-  const bool py = boundaries.south == Boundary::periodic;
   const Eigen::Index n = static_cast<Eigen::Index>(nx) * ny;
   detail::require_size(k.size(), n, "operator_diagonal", "coefficient k");
-  std::vector<int> cx(nx), cy(ny);
-  for (int i = 0; i < nx; ++i)
-    cx[i] = detail::probe_colour(i, nx, px);
-  for (int j = 0; j < ny; ++j)
-    cy[j] = detail::probe_colour(j, ny, py);
-  Eigen::VectorXd probe(n), column(n), diagonal(n);
-  for (int a = 0; a < detail::probe_colours(ny, py); ++a)
-    for (int b = 0; b < detail::probe_colours(nx, px); ++b) {
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          probe[j * nx + i] = (cy[j] == a && cx[i] == b) ? 1.0 : 0.0;
+  const auto columns = detail::probe_classes(nx, boundaries.west == Boundary::periodic);
+  const auto rows = detail::probe_classes(ny, boundaries.south == Boundary::periodic);
+  Eigen::VectorXd probe = Eigen::VectorXd::Zero(n), column(n), diagonal(n);
+  for (const auto& row_class : rows)
+    for (const auto& column_class : columns) {
+      for (int j : row_class)
+        for (int i : column_class)
+          probe[static_cast<Eigen::Index>(j) * nx + i] = 1.0;
       op(probe.data(), k.data(), column.data(), nx, ny, h);
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-          if (cy[j] == a && cx[i] == b)
-            diagonal[j * nx + i] = column[j * nx + i];
+      for (int j : row_class)
+        for (int i : column_class) {
+          const Eigen::Index c = static_cast<Eigen::Index>(j) * nx + i;
+          diagonal[c] = column[c];
+          probe[c] = 0.0;
+        }
     }
   return diagonal;
 }
