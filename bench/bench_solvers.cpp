@@ -91,7 +91,9 @@ void BM_cg_backward_implicit(benchmark::State& state) {
   // A loss gradient as smooth as the forward right-hand side, so both solves
   // face the same conditioning: the difference is the implicit rule's own cost.
   const VectorXd x_bar = pr.b;
-  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) { pr.adjoint_k(xs, l, g); };
+  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(xs, l, g);
+  };
   int iterations = 0;
   for (auto _ : state) {
     VectorXd b_bar, k_bar = VectorXd::Zero(pr.k.size());
@@ -153,7 +155,9 @@ void BM_mgpcg_backward_implicit(benchmark::State& state) {
   options.preconditioner = mg.preconditioner();
   const VectorXd x = dpgen::solve_forward(mg.fine_operator(), pr.b, options).solution;
   const VectorXd x_bar = pr.b;
-  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) { pr.adjoint_k(xs, l, g); };
+  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(xs, l, g);
+  };
   int iterations = 0;
   for (auto _ : state) {
     VectorXd b_bar, k_bar = VectorXd::Zero(pr.k.size());

@@ -56,8 +56,9 @@ DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double*
       const int j0 = static_cast<int>(std::floor(y));
       const int j1 = j0 < ny - 1 ? j0 + 1 : j0;
       const double fx = x - i0, fy = y - j0;
-      u_out[k] = (1.0 - fy) * ((1.0 - fx) * u[j0 * (nx + 1) + i0] + fx * u[j0 * (nx + 1) + i0 + 1]) +
-                 fy * ((1.0 - fx) * u[j1 * (nx + 1) + i0] + fx * u[j1 * (nx + 1) + i0 + 1]);
+      u_out[k] =
+          (1.0 - fy) * ((1.0 - fx) * u[j0 * (nx + 1) + i0] + fx * u[j0 * (nx + 1) + i0 + 1]) +
+          fy * ((1.0 - fx) * u[j1 * (nx + 1) + i0] + fx * u[j1 * (nx + 1) + i0 + 1]);
     }
 }
 
@@ -66,8 +67,8 @@ DPGEN_KERNEL void flow_divergence(DPGEN_IN const double* u, DPGEN_IN const doubl
                                   DPGEN_OUT double* div, int nx, int ny, double h) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      div[j * nx + i] = (u[j * (nx + 1) + i + 1] - u[j * (nx + 1) + i] + v[(j + 1) * nx + i] -
-                         v[j * nx + i]) / h;
+      div[j * nx + i] =
+          (u[j * (nx + 1) + i + 1] - u[j * (nx + 1) + i] + v[(j + 1) * nx + i] - v[j * nx + i]) / h;
 }
 
 // The projection's velocity update: u -= dp/dx on the interior x faces.
@@ -151,5 +152,35 @@ DPGEN_KERNEL void flow_pressure_operator(DPGEN_IN const double* p, DPGEN_IN cons
       sum += j < ny - 1 ? 0.5 * (k[c] + k[c + nx]) * (p[c] - p[c + nx]) : 0.0;
       sum += j > 0 ? 0.5 * (k[c] + k[c - nx]) * (p[c] - p[c - nx]) : 0.0;
       out[c] = sum * inv_h2;
+    }
+}
+
+// The MacCormack correction of the marker transport (Selle et al. 2008, as PhiFlow's
+// advect.mac_cormack): with s_sl = s traced back (flow_advect_marker, +dt, no inflow) and
+// s_rev = s_sl traced forward (the same kernel with -dt), the corrected value
+//   s_sl + (s - s_rev) / 2
+// is clamped to the range of the 4 cells the backward trace interpolates between, so no new
+// extremum appears; then the inflow is added.
+DPGEN_KERNEL void flow_maccormack_marker(DPGEN_IN const double* s, DPGEN_IN const double* s_sl,
+                                         DPGEN_IN const double* s_rev, DPGEN_IN const double* u,
+                                         DPGEN_IN const double* v, DPGEN_IN const double* inflow,
+                                         DPGEN_OUT double* s_out, int nx, int ny, double dt_h) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int k = j * nx + i;
+      const double uc = 0.5 * (u[j * (nx + 1) + i] + u[j * (nx + 1) + i + 1]);
+      const double vc = 0.5 * (v[j * nx + i] + v[(j + 1) * nx + i]);
+      const double x = std::min(std::max(i - dt_h * uc, 0.0), nx - 1.0);
+      const double y = std::min(std::max(j - dt_h * vc, 0.0), ny - 1.0);
+      const int i0 = static_cast<int>(std::floor(x));
+      const int j0 = static_cast<int>(std::floor(y));
+      const int i1 = i0 < nx - 1 ? i0 + 1 : i0;
+      const int j1 = j0 < ny - 1 ? j0 + 1 : j0;
+      const double a = s[j0 * nx + i0], b = s[j0 * nx + i1];
+      const double c = s[j1 * nx + i0], d = s[j1 * nx + i1];
+      const double lo = std::min(std::min(a, b), std::min(c, d));
+      const double hi = std::max(std::max(a, b), std::max(c, d));
+      const double corrected = s_sl[k] + 0.5 * (s[k] - s_rev[k]);
+      s_out[k] = std::min(std::max(corrected, lo), hi) + inflow[k];
     }
 }

@@ -25,8 +25,7 @@ DPGEN_KERNEL void mg_prolong_y(DPGEN_IN const double* c, DPGEN_OUT double* f, in
                                double south_self, double south_wrap, double north_self,
                                double north_wrap);
 // Coefficient coarsening: mean of the 2x2 fine cells of each coarse cell.
-DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc,
-                                 int nyc);
+DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc, int nyc);
 
 // The 2D flow solver's kernels (flow2d.cpp, used by dpgen/flow2d.hpp): closed MAC
 // grid, marker s (nx*ny), u ((nx+1)*ny), v (nx*(ny+1)); dt_h = dt / h.
@@ -47,3 +46,7 @@ DPGEN_KERNEL void flow_subtract_gradient_u(DPGEN_IN const double* u, DPGEN_IN co
                                            DPGEN_OUT double* u_out, int nx, int ny, double h);
 DPGEN_KERNEL void flow_subtract_gradient_v(DPGEN_IN const double* v, DPGEN_IN const double* p,
                                            DPGEN_OUT double* v_out, int nx, int ny, double h);
+DPGEN_KERNEL void flow_maccormack_marker(DPGEN_IN const double* s, DPGEN_IN const double* s_sl,
+                                         DPGEN_IN const double* s_rev, DPGEN_IN const double* u,
+                                         DPGEN_IN const double* v, DPGEN_IN const double* inflow,
+                                         DPGEN_OUT double* s_out, int nx, int ny, double dt_h);

@@ -43,14 +43,14 @@ DPGEN_KERNEL void mg_prolong_y(DPGEN_IN const double* c, DPGEN_OUT double* f, in
         if (dj == 0)
           side = jc > 0 ? c[(jc - 1) * 2 * nxc + i] : south_self * c[i] + south_wrap * c[last];
         else
-          side = jc < nyc - 1 ? c[(jc + 1) * 2 * nxc + i] : north_self * c[last] + north_wrap * c[i];
+          side =
+              jc < nyc - 1 ? c[(jc + 1) * 2 * nxc + i] : north_self * c[last] + north_wrap * c[i];
         f[(2 * jc + dj) * 2 * nxc + i] = 0.75 * c[jc * 2 * nxc + i] + 0.25 * side;
       }
 }
 
 // A coarse cell's coefficient is the mean of its 2x2 fine cells.
-DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc,
-                                 int nyc) {
+DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc, int nyc) {
   for (int jc = 0; jc < nyc; ++jc)
     for (int ic = 0; ic < nxc; ++ic) {
       const int sw = 2 * jc * 2 * nxc + 2 * ic; // south-west fine cell

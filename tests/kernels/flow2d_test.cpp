@@ -121,3 +121,22 @@ TEST_CASE("flow_pressure_operator adjoint; -div grad is the operator") {
       CHECK(ap[c] == doctest::Approx(div[c]).epsilon(1e-12));
   }
 }
+
+TEST_CASE("flow_maccormack_marker adjoint") {
+  for (auto [nx, ny] : kGrids) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t cells = size_t(nx * ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {cells, cells, cells, size_t((nx + 1) * ny), size_t(nx * (ny + 1)), cells};
+    p.out_sizes = {cells};
+    p.forward = [&](auto in, auto out) {
+      flow_maccormack_marker(in[0], in[1], in[2], in[3], in[4], in[5], out[0], nx, ny, kDtH);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      flow_maccormack_marker_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], in[3], adj[3],
+                                     in[4], adj[4], in[5], adj[5], seed[0], nx, ny, kDtH);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -29,8 +29,7 @@ TEST_CASE("mg_prolong_x adjoint") {
           mg_prolong_x(in[0], out[0], nxc, ny, lo_self, lo_wrap, hi_self, hi_wrap);
         };
         p.adjoint = [&](auto in, auto adj, auto seed) {
-          mg_prolong_x_adjoint(in[0], adj[0], seed[0], nxc, ny, lo_self, lo_wrap, hi_self,
-                               hi_wrap);
+          mg_prolong_x_adjoint(in[0], adj[0], seed[0], nxc, ny, lo_self, lo_wrap, hi_self, hi_wrap);
         };
         dpgen_test::check_adjoint(p);
       }

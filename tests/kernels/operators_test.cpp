@@ -60,8 +60,8 @@ TEST_CASE("neg_div_k_grad_walls2d adjoint") {
                                walls[3]);
       };
       p.adjoint = [&](auto in, auto adj, auto seed) {
-        neg_div_k_grad_walls2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5,
-                                       walls[0], walls[1], walls[2], walls[3]);
+        neg_div_k_grad_walls2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5, walls[0],
+                                       walls[1], walls[2], walls[3]);
       };
       dpgen_test::check_adjoint(p);
     }

@@ -15,8 +15,8 @@
 
 namespace {
 
-using Eigen::VectorXd;
 using dpgen_test::random_vector;
+using Eigen::VectorXd;
 
 // A marker blob as inflow near the bottom, centred at (cx, cy) cells, radius r.
 VectorXd blob(int nx, int ny, double cx, double cy, double r, double amount) {
@@ -87,80 +87,85 @@ TEST_CASE("a flow step: divergence-free velocity, closed walls, few pressure ite
 TEST_CASE("gradient through T flow steps with Revolve matches central differences and the full "
           "tape") {
   const int nx = 8, ny = 10, steps = 6;
-  dpgen::FlowOptions options;
-  options.pressure_tolerance = 1e-13;
-  dpgen::Flow2d flow(nx, ny, 1.0, blob(nx, ny, 4, 2, 1.5, 0.3), options);
-  const VectorXd s0 = initial_state(flow, 2);
-  const Loss loss{flow, random_vector(flow.cells(), 3, 0.0, 1.0)};
+  for (auto advection :
+       {dpgen::MarkerAdvection::semi_lagrangian, dpgen::MarkerAdvection::maccormack}) {
+    CAPTURE(static_cast<int>(advection));
+    dpgen::FlowOptions options;
+    options.marker_advection = advection;
+    options.pressure_tolerance = 1e-13;
+    dpgen::Flow2d flow(nx, ny, 1.0, blob(nx, ny, 4, 2, 1.5, 0.3), options);
+    const VectorXd s0 = initial_state(flow, 2);
+    const Loss loss{flow, random_vector(flow.cells(), 3, 0.0, 1.0)};
 
-  // Gradient w.r.t. the whole initial state and the inflow.
-  VectorXd inflow_adj;
-  const auto gradient = [&](const dpgen::CheckpointOptions& cp) {
-    inflow_adj = VectorXd::Zero(flow.cells());
-    return dpgen::unrolled_gradient(
-        s0, steps, [&](int, const VectorXd& s, VectorXd& next) { flow.step(s, next); },
-        [&](int, const VectorXd& s, const VectorXd& next_adj, VectorXd& s_adj) {
-          flow.step_adjoint(s, next_adj, s_adj, inflow_adj);
-        },
-        [&](int t, const VectorXd& s, VectorXd& adj) {
-          if (t != steps)
-            return 0.0;
-          loss.add_gradient(s, adj);
-          return loss.value(s);
-        },
-        cp);
-  };
-  dpgen::CheckpointOptions revolve;
-  revolve.strategy = dpgen::CheckpointStrategy::revolve;
-  revolve.snapshots = 2;
-  const dpgen::UnrolledGradient g = gradient(revolve);
-  const VectorXd inflow_grad = inflow_adj;
-  CHECK(g.stats.max_snapshots <= 2);
-  CHECK(g.stats.recomputed_steps > 0);
-  const dpgen::UnrolledGradient full = gradient({});
-  CHECK(full.loss == g.loss);
-  CHECK(full.state_adjoint == g.state_adjoint); // bit for bit: deterministic recomputation
-  CHECK(inflow_adj == inflow_grad);
+    // Gradient w.r.t. the whole initial state and the inflow.
+    VectorXd inflow_adj;
+    const auto gradient = [&](const dpgen::CheckpointOptions& cp) {
+      inflow_adj = VectorXd::Zero(flow.cells());
+      return dpgen::unrolled_gradient(
+          s0, steps, [&](int, const VectorXd& s, VectorXd& next) { flow.step(s, next); },
+          [&](int, const VectorXd& s, const VectorXd& next_adj, VectorXd& s_adj) {
+            flow.step_adjoint(s, next_adj, s_adj, inflow_adj);
+          },
+          [&](int t, const VectorXd& s, VectorXd& adj) {
+            if (t != steps)
+              return 0.0;
+            loss.add_gradient(s, adj);
+            return loss.value(s);
+          },
+          cp);
+    };
+    dpgen::CheckpointOptions revolve;
+    revolve.strategy = dpgen::CheckpointStrategy::revolve;
+    revolve.snapshots = 2;
+    const dpgen::UnrolledGradient g = gradient(revolve);
+    const VectorXd inflow_grad = inflow_adj;
+    CHECK(g.stats.max_snapshots <= 2);
+    CHECK(g.stats.recomputed_steps > 0);
+    const dpgen::UnrolledGradient full = gradient({});
+    CHECK(full.loss == g.loss);
+    CHECK(full.state_adjoint == g.state_adjoint); // bit for bit: deterministic recomputation
+    CHECK(inflow_adj == inflow_grad);
 
-  // The loss of the whole simulation from an initial state and an inflow.
-  const auto simulate = [&](const VectorXd& s_init, const VectorXd& inflow) {
-    dpgen::Flow2d f(nx, ny, 1.0, inflow, options);
-    VectorXd s = s_init, next;
-    for (int t = 0; t < steps; ++t) {
-      f.step(s, next);
-      s = next;
+    // The loss of the whole simulation from an initial state and an inflow.
+    const auto simulate = [&](const VectorXd& s_init, const VectorXd& inflow) {
+      dpgen::Flow2d f(nx, ny, 1.0, inflow, options);
+      VectorXd s = s_init, next;
+      for (int t = 0; t < steps; ++t) {
+        f.step(s, next);
+        s = next;
+      }
+      return loss.value(s);
+    };
+    CHECK(simulate(s0, flow.inflow()) == doctest::Approx(g.loss).epsilon(1e-14));
+
+    // Directional derivatives along random directions: initial velocity only (wall faces stay
+    // shut), initial marker only, inflow. Central differences with step 1e-6: the semi-Lagrangian
+    // traces move by ~1e-6 cells, too little to cross a cell line in these seeds, so the error is
+    // the truncation O(eps^2) plus rounding O(1e-16 L / eps).
+    const auto directional = [&](const VectorXd& d_state, const VectorXd& d_inflow) {
+      const double eps = 1e-6;
+      return (simulate(s0 + eps * d_state, flow.inflow() + eps * d_inflow) -
+              simulate(s0 - eps * d_state, flow.inflow() - eps * d_inflow)) /
+             (2 * eps);
+    };
+    for (unsigned seed : {10u, 20u, 30u}) {
+      CAPTURE(seed);
+      VectorXd d_velocity = initial_state(flow, seed);
+      flow.marker(d_velocity).setZero();
+      const VectorXd zero_inflow = VectorXd::Zero(flow.cells());
+      const double fd_velocity = directional(d_velocity, zero_inflow);
+      CHECK(g.state_adjoint.dot(d_velocity) == doctest::Approx(fd_velocity).epsilon(1e-6));
+
+      VectorXd d_marker = VectorXd::Zero(flow.state_size());
+      flow.marker(d_marker) = random_vector(flow.cells(), seed + 1);
+      CHECK(g.state_adjoint.dot(d_marker) ==
+            doctest::Approx(directional(d_marker, zero_inflow)).epsilon(1e-6));
+
+      const VectorXd d_inflow = random_vector(flow.cells(), seed + 2);
+      CHECK(
+          inflow_grad.dot(d_inflow) ==
+          doctest::Approx(directional(VectorXd::Zero(flow.state_size()), d_inflow)).epsilon(1e-6));
     }
-    return loss.value(s);
-  };
-  CHECK(simulate(s0, flow.inflow()) == doctest::Approx(g.loss).epsilon(1e-14));
-
-  // Directional derivatives along random directions: initial velocity only (wall faces stay
-  // shut), initial marker only, inflow. Central differences with step 1e-6: the semi-Lagrangian
-  // traces move by ~1e-6 cells, too little to cross a cell line in these seeds, so the error is
-  // the truncation O(eps^2) plus rounding O(1e-16 L / eps).
-  const auto directional = [&](const VectorXd& d_state, const VectorXd& d_inflow) {
-    const double eps = 1e-6;
-    return (simulate(s0 + eps * d_state, flow.inflow() + eps * d_inflow) -
-            simulate(s0 - eps * d_state, flow.inflow() - eps * d_inflow)) /
-           (2 * eps);
-  };
-  for (unsigned seed : {10u, 20u, 30u}) {
-    CAPTURE(seed);
-    VectorXd d_velocity = initial_state(flow, seed);
-    flow.marker(d_velocity).setZero();
-    const VectorXd zero_inflow = VectorXd::Zero(flow.cells());
-    const double fd_velocity = directional(d_velocity, zero_inflow);
-    CHECK(g.state_adjoint.dot(d_velocity) == doctest::Approx(fd_velocity).epsilon(1e-6));
-
-    VectorXd d_marker = VectorXd::Zero(flow.state_size());
-    flow.marker(d_marker) = random_vector(flow.cells(), seed + 1);
-    CHECK(g.state_adjoint.dot(d_marker) ==
-          doctest::Approx(directional(d_marker, zero_inflow)).epsilon(1e-6));
-
-    const VectorXd d_inflow = random_vector(flow.cells(), seed + 2);
-    CHECK(inflow_grad.dot(d_inflow) ==
-          doctest::Approx(directional(VectorXd::Zero(flow.state_size()), d_inflow))
-              .epsilon(1e-6));
   }
 }
 

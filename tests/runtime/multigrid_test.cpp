@@ -21,8 +21,8 @@ namespace {
 
 using dpgen::Boundaries;
 using dpgen::Boundary;
-using Eigen::VectorXd;
 using dpgen_test::random_vector;
+using Eigen::VectorXd;
 
 // Wall weight of neg_div_k_grad_walls2d: 0 for Neumann, 2 for Dirichlet.
 double wall(Boundary b) { return b == Boundary::dirichlet ? 2.0 : 0.0; }
@@ -220,8 +220,8 @@ TEST_CASE("MG-preconditioned CG: iterations to 1e-8 stay flat as the grid grows"
         dpgen::CgOptions jacobi = cg;
         jacobi.preconditioner = nullptr;
         jacobi.max_iterations = 5000;
-        jacobi.jacobi_diagonal =
-            dpgen::operator_diagonal(operator_for(tc.bc), smooth_coefficient(n), n, n, 1.0 / n, tc.bc);
+        jacobi.jacobi_diagonal = dpgen::operator_diagonal(
+            operator_for(tc.bc), smooth_coefficient(n), n, n, 1.0 / n, tc.bc);
         jacobi_iterations = dpgen::solve_forward(mg.fine_operator(), b, jacobi).summary.iterations;
       }
     }
@@ -403,10 +403,10 @@ TEST_CASE("bad operators and inputs are rejected with a clear message") {
       dpgen::Multigrid(n, n, 1.0 / n, periodic, neg_div_k_grad_periodic2d, VectorXd::Ones(7)),
       "multigrid: coefficient k has size 7, expected 256", std::invalid_argument);
   CHECK_THROWS_WITH_AS(
-      dpgen::Multigrid(n, n, 1.0 / n,
-                       {Boundary::periodic, Boundary::neumann, Boundary::periodic,
-                        Boundary::periodic},
-                       neg_div_k_grad_periodic2d, k),
+      dpgen::Multigrid(
+          n, n, 1.0 / n,
+          {Boundary::periodic, Boundary::neumann, Boundary::periodic, Boundary::periodic},
+          neg_div_k_grad_periodic2d, k),
       "multigrid: periodic must be set on both sides of an axis (west periodic, east neumann, "
       "south periodic, north periodic)",
       std::invalid_argument);

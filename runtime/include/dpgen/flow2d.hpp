@@ -17,8 +17,15 @@
 
 namespace dpgen {
 
+/// How the marker is transported.
+enum class MarkerAdvection {
+  semi_lagrangian, ///< s(x - dt u), bilinear: first order, diffusive
+  maccormack,      ///< semi-Lagrangian plus the MacCormack correction with its clamp (PhiFlow's)
+};
+
 /// Settings of a Flow2d step.
 struct FlowOptions {
+  MarkerAdvection marker_advection = MarkerAdvection::semi_lagrangian;
   double dt = 1.0;       ///< time step
   double buoyancy = 1.0; ///< v += dt * buoyancy * s (marker averaged onto the y faces)
   /// The pressure solves (forward and backward): relative tolerance and iteration limit.
@@ -29,7 +36,7 @@ struct FlowOptions {
 /// A closed nx-by-ny MAC grid of cells of size h and one time step on it. The state is one
 /// vector [s, u, v]: the marker s at the nx*ny cell centres, u on the (nx+1)*ny x faces, v on the
 /// nx*(ny+1) y faces (wall faces zero). One step:
-///   s1 = s(x - dt u) + inflow                      semi-Lagrangian, marker
+///   s1 = s(x - dt u) + inflow                      semi-Lagrangian (or MacCormack), marker
 ///   u1 = u(x - dt u),  v1 = v(x - dt u) + dt b s1   semi-Lagrangian, velocity; buoyancy
 ///   A p = -div(u1, v1)                              A = -laplace with closed walls (MG-PCG)
 ///   (u2, v2) = (u1, v1) - grad p                    divergence-free
@@ -45,8 +52,8 @@ public:
     detail::require_size(inflow_.size(), cells(), "flow2d", "inflow");
     detail::require_finite(inflow_, "flow2d", "inflow");
     if (!(options_.dt > 0.0) || !std::isfinite(options_.buoyancy))
-      throw std::invalid_argument(detail::message("flow2d: dt = ", options_.dt,
-                                                  " must be > 0 and buoyancy finite"));
+      throw std::invalid_argument(
+          detail::message("flow2d: dt = ", options_.dt, " must be > 0 and buoyancy finite"));
     cg_.relative_tolerance = options_.pressure_tolerance;
     cg_.absolute_tolerance = 1e-300;
     cg_.max_iterations = options_.max_pressure_iterations;
@@ -114,16 +121,15 @@ public:
                                      next_adj.data() + cells() + u_faces(), nx_, ny_, h_);
     // A p = -div: lambda = A^+ P p_adj (A^T = A, same V-cycle), so div_adj = -lambda. A has no
     // parameters: nothing to accumulate for theta.
-    const LinearSolveResult backward =
-        solve_backward(multigrid_.fine_operator(), p_adj, cg_);
+    const LinearSolveResult backward = solve_backward(multigrid_.fine_operator(), p_adj, cg_);
     backward_summary_ = backward.summary;
     const VectorXd div_adj = -backward.solution;
     flow_divergence_adjoint(u1_.data(), u1_adj.data(), v1_.data(), v1_adj.data(), div_adj.data(),
                             nx_, ny_, h_);
     // v1 = v_advected + dt b s1
     VectorXd va_adj = VectorXd::Zero(v_faces());
-    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(), v1_adj.data(),
-                          nx_, ny_, options_.dt * options_.buoyancy);
+    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(), v1_adj.data(), nx_,
+                          ny_, options_.dt * options_.buoyancy);
     // u1 = u(x - dt u), v_advected = v(x - dt u), s1 = s(x - dt u) + inflow
     const double dt_h = options_.dt / h_;
     double* u_adj = state_adj.data() + cells();
@@ -132,8 +138,21 @@ public:
     const double* sv = state.data() + cells() + u_faces();
     flow_advect_u_adjoint(su, u_adj, sv, v_adj, u1_adj.data(), nx_, ny_, dt_h);
     flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h);
-    flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj,
-                               inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_, dt_h);
+    if (options_.marker_advection == MarkerAdvection::maccormack) {
+      VectorXd sl_adj = VectorXd::Zero(cells()), rev_adj = VectorXd::Zero(cells());
+      VectorXd none = VectorXd::Zero(cells()), none_adj = VectorXd::Zero(cells());
+      flow_maccormack_marker_adjoint(state.data(), state_adj.data(), s_sl_.data(), sl_adj.data(),
+                                     s_rev_.data(), rev_adj.data(), su, u_adj, sv, v_adj,
+                                     inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_,
+                                     dt_h);
+      flow_advect_marker_adjoint(s_sl_.data(), sl_adj.data(), su, u_adj, sv, v_adj, none.data(),
+                                 none_adj.data(), rev_adj.data(), nx_, ny_, -dt_h);
+      flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj, none.data(),
+                                 none_adj.data(), sl_adj.data(), nx_, ny_, dt_h);
+    } else {
+      flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj,
+                                 inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_, dt_h);
+    }
   }
 
   /// The last forward and backward pressure solves (iterations, residuals).
@@ -150,13 +169,13 @@ public:
 private:
   static int check_grid(int nx, int ny, double h) {
     if (nx < 2 || ny < 2 || !(h > 0.0))
-      throw std::invalid_argument(
-          detail::message("flow2d: need at least 2x2 cells and h > 0 (got ", nx, "x", ny,
-                          ", h = ", h, ")"));
+      throw std::invalid_argument(detail::message("flow2d: need at least 2x2 cells and h > 0 (got ",
+                                                  nx, "x", ny, ", h = ", h, ")"));
     return nx;
   }
 
-  // s1, va (advected v), u1, v1 (= va + buoyancy) and p of one step from `state`.
+  // s1 (and s_sl, s_rev for MacCormack), va (advected v), u1, v1 (= va + buoyancy) and p of
+  // one step from `state`.
   void forward(const Eigen::VectorXd& state) {
     const double dt_h = options_.dt / h_;
     const double* s = state.data();
@@ -166,7 +185,18 @@ private:
     u1_.resize(u_faces());
     va_.resize(v_faces());
     v1_.resize(v_faces());
-    flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h);
+    if (options_.marker_advection == MarkerAdvection::maccormack) {
+      // s_sl = s(x - dt u); s_rev = s_sl(x + dt u); then the corrected and clamped value.
+      s_sl_.resize(cells());
+      s_rev_.resize(cells());
+      const Eigen::VectorXd none = Eigen::VectorXd::Zero(cells());
+      flow_advect_marker(s, su, sv, none.data(), s_sl_.data(), nx_, ny_, dt_h);
+      flow_advect_marker(s_sl_.data(), su, sv, none.data(), s_rev_.data(), nx_, ny_, -dt_h);
+      flow_maccormack_marker(s, s_sl_.data(), s_rev_.data(), su, sv, inflow_.data(), s1_.data(),
+                             nx_, ny_, dt_h);
+    } else {
+      flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h);
+    }
     flow_advect_u(su, sv, u1_.data(), nx_, ny_, dt_h);
     flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h);
     flow_buoyancy(va_.data(), s1_.data(), v1_.data(), nx_, ny_, options_.dt * options_.buoyancy);
@@ -184,7 +214,7 @@ private:
   FlowOptions options_;
   Multigrid multigrid_;
   CgOptions cg_;
-  Eigen::VectorXd s1_, u1_, va_, v1_, p_;
+  Eigen::VectorXd s1_, u1_, va_, v1_, p_, s_sl_, s_rev_;
   CgSummary forward_summary_, backward_summary_;
 };
 

@@ -213,11 +213,11 @@ private:
   struct Level {
     int nx = 0, ny = 0;
     double h = 0.0;
-    Eigen::VectorXd k;           // coefficient, averaged 2x2 from the finer level
-    Eigen::VectorXd smoother;    // w / diag(A): one Jacobi sweep is x += smoother .* (b - A x)
-    Eigen::VectorXd b, x;        // right-hand side and correction (coarse levels)
-    Eigen::VectorXd scratch;     // A x, residuals, prolonged corrections
-    Eigen::VectorXd transfer;    // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
+    Eigen::VectorXd k;        // coefficient, averaged 2x2 from the finer level
+    Eigen::VectorXd smoother; // w / diag(A): one Jacobi sweep is x += smoother .* (b - A x)
+    Eigen::VectorXd b, x;     // right-hand side and correction (coarse levels)
+    Eigen::VectorXd scratch;  // A x, residuals, prolonged corrections
+    Eigen::VectorXd transfer; // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
     Eigen::Index cells() const { return static_cast<Eigen::Index>(nx) * ny; }
   };
 
@@ -279,10 +279,10 @@ private:
         break;
       if (last.nx % 2 != 0 || last.ny % 2 != 0) {
         if (wanted > 0)
-          throw std::invalid_argument(detail::message(
-              where, ": cannot build ", wanted, " levels from ", nx, "x", ny, ": level ",
-              levels() - 1, " has ", last.nx, "x", last.ny,
-              " cells and an odd side cannot be halved"));
+          throw std::invalid_argument(detail::message(where, ": cannot build ", wanted,
+                                                      " levels from ", nx, "x", ny, ": level ",
+                                                      levels() - 1, " has ", last.nx, "x", last.ny,
+                                                      " cells and an odd side cannot be halved"));
         break;
       }
       Level coarse;
@@ -293,8 +293,8 @@ private:
     if (coarsest.cells() > options_.max_coarse_cells)
       throw std::invalid_argument(detail::message(
           where, ": the ", nx, "x", ny, " grid coarsens to ", coarsest.nx, "x", coarsest.ny,
-          " cells (", levels(), " levels), more than max_coarse_cells = ",
-          options_.max_coarse_cells,
+          " cells (", levels(),
+          " levels), more than max_coarse_cells = ", options_.max_coarse_cells,
           " for the direct coarse solve; use sides m * 2^L with small m (e.g. powers of two)"));
     for (std::size_t l = 0; l < levels_.size(); ++l) {
       Level& level = levels_[l];
@@ -315,8 +315,8 @@ private:
   // smoother = w / diag(A), diag(A) > 0 checked.
   void set_smoother(int l) {
     Level& level = levels_[l];
-    const Eigen::VectorXd diagonal = operator_diagonal(op_, level.k, level.nx, level.ny, level.h,
-                                                       boundaries_);
+    const Eigen::VectorXd diagonal =
+        operator_diagonal(op_, level.k, level.nx, level.ny, level.h, boundaries_);
     for (int j = 0; j < level.ny; ++j)
       for (int i = 0; i < level.nx; ++i) {
         const double d = diagonal[j * level.nx + i];
@@ -345,15 +345,15 @@ private:
     }
     const std::string& where = options_.name;
     if (!a.allFinite())
-      throw std::invalid_argument(detail::message(
-          where, ": the operator returned NaN or Inf on the coarsest level (", level.nx, "x",
-          level.ny, ")"));
+      throw std::invalid_argument(
+          detail::message(where, ": the operator returned NaN or Inf on the coarsest level (",
+                          level.nx, "x", level.ny, ")"));
     const double scale = a.cwiseAbs().maxCoeff();
     const double asymmetry = (a - a.transpose()).cwiseAbs().maxCoeff();
     if (asymmetry > 1e-10 * scale)
       throw std::invalid_argument(detail::message(
-          where, ": the operator is not symmetric on the coarsest level (", level.nx, "x",
-          level.ny, "): max |A_ij - A_ji| = ", asymmetry, " against max |A_ij| = ", scale,
+          where, ": the operator is not symmetric on the coarsest level (", level.nx, "x", level.ny,
+          "): max |A_ij - A_ji| = ", asymmetry, " against max |A_ij| = ", scale,
           "; CG and this preconditioner need a symmetric operator"));
     null_space_ = (a.rowwise().sum()).cwiseAbs().maxCoeff() <= 1e-10 * scale;
     if (null_space_)
@@ -361,8 +361,8 @@ private:
     coarse_solver_.compute(a);
     if (coarse_solver_.info() != Eigen::Success)
       throw std::invalid_argument(detail::message(
-          where, ": the operator is not positive definite on the coarsest level (", level.nx,
-          "x", level.ny, null_space_ ? ", after removing the constants" : "",
+          where, ": the operator is not positive definite on the coarsest level (", level.nx, "x",
+          level.ny, null_space_ ? ", after removing the constants" : "",
           "); a Laplacian must be negated"));
   }
 
@@ -394,8 +394,8 @@ private:
     const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
     mg_prolong_x(coarse.x.data(), coarse.transfer.data(), coarse.nx, coarse.ny, w.self, w.wrap,
                  e.self, e.wrap);
-    mg_prolong_y(coarse.transfer.data(), fine.scratch.data(), coarse.nx, coarse.ny, s.self,
-                 s.wrap, n.self, n.wrap);
+    mg_prolong_y(coarse.transfer.data(), fine.scratch.data(), coarse.nx, coarse.ny, s.self, s.wrap,
+                 n.self, n.wrap);
     x += fine.scratch;
   }
 
