@@ -216,7 +216,7 @@ TEST_CASE("MG-preconditioned CG: iterations to 1e-8 stay flat as the grid grows"
       CHECK((solvable(mg, b) - ax).norm() <= 1.01e-8 * solvable(mg, b).norm());
       mg_iterations.push_back(r.summary.iterations);
       MESSAGE(tc.name, " n = ", n, " MG-PCG iterations = ", r.summary.iterations);
-      if (n == 256) { // the yardstick: Jacobi-preconditioned CG on the same problem
+      if (n == 128) { // the yardstick: Jacobi-preconditioned CG on the same problem
         dpgen::CgOptions jacobi = cg;
         jacobi.preconditioner = nullptr;
         jacobi.max_iterations = 5000;
@@ -230,7 +230,7 @@ TEST_CASE("MG-preconditioned CG: iterations to 1e-8 stay flat as the grid grows"
     CHECK(*std::max_element(mg_iterations.begin(), mg_iterations.end()) -
               *std::min_element(mg_iterations.begin(), mg_iterations.end()) <=
           3);
-    CHECK(jacobi_iterations > 10 * mg_iterations.back());
+    CHECK(jacobi_iterations > 10 * mg_iterations[2]); // at 128x128
   }
 }
 
