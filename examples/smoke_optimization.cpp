@@ -209,14 +209,38 @@ int main(int argc, char** argv) try {
     after.push_back(vec(reference));
     const auto ref_run = simulate(*flows[3], VectorXd::Zero(velocity_size));
     const double top = std::max(reference.maxCoeff(), 1e-12);
-    dpgen_examples::write_png_panels(dir + "final_before.png", before, nx, ny, 4 / scale + 1, top);
-    dpgen_examples::write_png_panels(dir + "final_optimized.png", after, nx, ny, 4 / scale + 1,
-                                     top);
-    for (int k = 1; k <= 5; ++k)
+    // The marker as fields with axes, panel titles and a colour bar.
+    auto figure = [&](const std::string& title, std::vector<std::string> panels) {
+      dpgen_examples::FieldFigure fig;
+      fig.title = title;
+      fig.panel_titles = std::move(panels);
+      fig.x_max = nx;
+      fig.y_max = ny;
+      fig.value_label = "marker";
+      fig.magnitude = top;
+      fig.cell_pixels = 4 / scale + 1;
+      return fig;
+    };
+    const std::vector<std::string> finals = {"plume 1", "plume 2", "plume 3", "reference"};
+    dpgen_examples::write_png_fields(
+        dir + "final_before.png", before, nx, ny,
+        figure("marker at step " + std::to_string(steps) + ", zero initial velocity", finals));
+    dpgen_examples::write_png_fields(
+        dir + "final_optimized.png", after, nx, ny,
+        figure("marker at step " + std::to_string(steps) + ", optimized initial velocity",
+               finals));
+    std::vector<std::string> frame_titles;
+    for (int k = 1; k <= 5; ++k) {
       frames.push_back(runs[0][size_t(k * steps / 5)]);
-    for (int k = 1; k <= 5; ++k)
+      frame_titles.push_back("ours, t=" + std::to_string(k * steps / 5));
+    }
+    for (int k = 1; k <= 5; ++k) {
       frames.push_back(vec(ref_run[size_t(k * steps / 5)].head(shape.cells())));
-    dpgen_examples::write_png_panels(dir + "frames.png", frames, nx, ny, 4 / scale + 1, top);
+      frame_titles.push_back("ref., t=" + std::to_string(k * steps / 5));
+    }
+    dpgen_examples::write_png_fields(dir + "frames.png", frames, nx, ny,
+                                     figure("optimized plume 1 against the reference",
+                                            frame_titles));
     dpgen_examples::write_svg_plot(dir + "loss.svg", "smoke_optimization: loss", "iteration",
                                    "sum of 1/2 |s_T - s_ref|^2",
                                    {{"loss", curve.iteration, curve.loss}}, true);
