@@ -296,7 +296,7 @@ TEST_CASE("non-convergence is an error on every rank with iterations and residua
   const VectorXd b = dec.local_part(random_vector(108, 32));
   const std::string e = error_of([&] { solver.solve(b, x); });
   CAPTURE(e);
-  CHECK(contains(e, "poisson (A x = b): CG + none did not converge (DIVERGED_ITS) after 3 "
+  CHECK(contains(e, "poisson forward (A x = b): CG + none did not converge (DIVERGED_ITS) after 3 "
                     "iterations, residual "));
   CHECK(contains(e, "> tolerance "));
   try {
@@ -317,11 +317,11 @@ TEST_CASE("bad input to a distributed solver names the rank and what is wrong") 
   LinearSolver solver(dec, apply, poisson_options(Preconditioner::jacobi));
   VectorXd x;
   std::string e = error_of([&] { solver.solve(VectorXd::Zero(dec.interior_size() + 1), x); });
-  CHECK(contains(e, dec.where() + ": poisson (A x = b): right-hand side has "));
+  CHECK(contains(e, dec.where() + ": poisson forward (A x = b): right-hand side has "));
   VectorXd b = VectorXd::Zero(dec.interior_size());
   b[0] = std::nan("");
   e = error_of([&] { solver.solve(b, x); });
-  CHECK(contains(e, dec.where() + ": poisson (A x = b): right-hand side contains nan"));
+  CHECK(contains(e, dec.where() + ": poisson forward (A x = b): right-hand side contains nan"));
   SolverOptions o = poisson_options(Preconditioner::jacobi);
   o.symmetric = false;
   e = error_of([&] { LinearSolver s(dec, apply, o); });

@@ -300,14 +300,14 @@ public:
   /// the solution on return (mean-free with a constant null space). Throws SolveError on every
   /// rank when the solve does not converge (and options.throw_on_failure).
   SolveSummary solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, bool use_initial_guess = false) {
-    return run(b, x, use_initial_guess, false);
+    return run(b, x, use_initial_guess, false, false);
   }
 
   /// Solves A^T lambda = x_bar: the same solve for a symmetric operator, KSPSolveTranspose
   /// otherwise. `lambda` as `x` in solve().
   SolveSummary solve_transpose(const Eigen::VectorXd& x_bar, Eigen::VectorXd& lambda,
                                bool use_initial_guess = false) {
-    return run(x_bar, lambda, use_initial_guess, !options_.symmetric);
+    return run(x_bar, lambda, use_initial_guess, true, !options_.symmetric);
   }
 
   /// y = A x and w = A^T v on interior vectors (through the MatShell; for tests and checks).
@@ -403,9 +403,11 @@ private:
     detail::check(VecRestoreArrayRead(v, &a), where(), "VecRestoreArrayRead");
   }
 
+  // The solve A x = rhs (backward: A^T lambda = x_bar, by KSPSolveTranspose when `transpose`).
   SolveSummary run(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, bool use_initial_guess,
-                   bool transpose) {
-    const std::string what = options_.name + (transpose ? " (A^T x = b)" : " (A x = b)");
+                   bool backward, bool transpose) {
+    const std::string what =
+        options_.name + (backward ? " backward (A^T lambda = x_bar)" : " forward (A x = b)");
     dec_.require_size(rhs.size(), dec_.interior_size(), what + ": right-hand side", "block");
     dpgen::detail::require_finite(rhs, dec_.where() + ": " + what, "right-hand side");
     set(b_, rhs);
