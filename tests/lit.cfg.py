@@ -6,7 +6,7 @@ config.name = "dpgen"
 config.test_format = lit.formats.ShTest(execute_external=False)
 config.suffixes = [".cpp", ".test"]
 config.test_source_root = os.path.dirname(__file__)
-config.excludes = ["kernels", "support", "runtime", "fuzz", "CMakeLists.txt", "lit.cfg.py"]
+config.excludes = ["kernels", "support", "runtime", "fuzz", "mpi", "CMakeLists.txt", "lit.cfg.py"]
 
 tools = config.llvm_tools_dir
 config.substitutions.append(("%dpgen", config.dpgen))
