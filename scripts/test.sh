@@ -2,8 +2,12 @@
 # The README's test command: installs what is missing, configures, builds with
 # -j2 and runs every test, three times over:
 #   1. the normal build (build/): kernel adjoints, generator golden and
-#      diagnostic tests, runtime, examples;
-#   2. the same suite built with AddressSanitizer and UBSan (build-asan/);
+#      diagnostic tests, runtime, examples, and the distributed runtime and
+#      examples (DPGEN_WITH_MPI, DPGEN_WITH_PETSC: under mpirun with 1, 2 and
+#      4 ranks, oversubscribed on 2 cores);
+#   2. the same suite built with AddressSanitizer and UBSan (build-asan/),
+#      MPI tests included (leaks inside OpenMPI, PETSc and hypre suppressed:
+#      tests/mpi/lsan.supp);
 #   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
@@ -36,13 +40,14 @@ run_ctest() {
 }
 
 # 1. The normal build.
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+mpi=(-DDPGEN_WITH_MPI=ON -DDPGEN_WITH_PETSC=ON)
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${mpi[@]}"
 cmake --build "$build" -j2
 run_ctest "$build" release
 
 # 2. Everything again under AddressSanitizer + UndefinedBehaviorSanitizer.
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${mpi[@]}" \
   -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san"
 cmake --build "$root/build-asan" -j2
 run_ctest "$root/build-asan" sanitizers

@@ -1,14 +1,15 @@
 // advection_inverse (examples/advection_inverse.cpp) on a 1D block decomposition: every rank
 // owns a block of the periodic grid, runs the generated upwind_step_halo kernel on it after a
 // halo exchange, and the generated adjoint plus the reverse exchange backwards; states are stored
-// or recomputed (Revolve) per rank. The loss is summed over ranks (MPI_Allreduce), the velocity
-// is updated block by block. The same loss history as the single-process example, to round-off.
+// or recomputed (Revolve) per rank (dpgen/mpi/checkpoint.hpp). The loss is summed over ranks
+// (MPI_Allreduce), the velocity is updated block by block. The same loss history as the
+// single-process example, to round-off.
 //
 //   mpirun -np 4 build/examples/mpi/advection_inverse_mpi --csv out/adv4.csv
 #include "common/cli.hpp"
 #include "mpi/mpi_common.hpp"
 
-#include "dpgen/checkpoint.hpp"
+#include "dpgen/mpi/checkpoint.hpp"
 #include "dpgen/mpi/decomposition.hpp"
 #include "dpgen/mpi/halo.hpp"
 #include "halo_kernels.hpp"
@@ -31,8 +32,8 @@ constexpr double kPi = 3.14159265358979323846;
 struct BlockStep {
   const Decomposition& dec;
   double dt, dx;
-  VectorXd u;     // padded velocity, halos exchanged
-  VectorXd u_adj; // padded adjoint of u, reverse-exchanged once at the end
+  VectorXd u;             // padded velocity, halos exchanged
+  VectorXd u_adj;         // padded adjoint of u, reverse-exchanged once at the end
   VectorXd d, out, d_adj; // padded work arrays
 
   BlockStep(const Decomposition& dec_, double dt_, double dx_)
@@ -68,8 +69,9 @@ struct BlockStep {
 };
 
 int run(int argc, char** argv) {
-  dpgen_examples::Args args(argc, argv, "advection_inverse_mpi",
-                            "advection_inverse on a block decomposition (MPI, dpgen halo kernels).");
+  dpgen_examples::Args args(
+      argc, argv, "advection_inverse_mpi",
+      "advection_inverse on a block decomposition (MPI, dpgen halo kernels).");
   const int cells = args.get_int("--cells", 128, "grid cells on [0, 1), periodic");
   const int steps = args.get_int("--steps", 100, "upwind steps T");
   const int iters = args.get_int("--iters", 300, "optimizer iterations");
@@ -77,7 +79,8 @@ int run(int argc, char** argv) {
   const double lr = args.get_double("--lr", 0.01, "learning rate");
   const int checkpoints =
       args.get_int("--checkpoints", 0, "0: store every state; K > 0: Revolve with K snapshots");
-  const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
+  const std::string csv =
+      args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
   const double require = args.get_double("--require-reduction", 0,
                                          "exit with an error unless the loss drops by this factor");
   const bool quiet = args.get_int("--quiet", 0, "1: no progress lines") != 0;
@@ -116,8 +119,8 @@ int run(int argc, char** argv) {
   // L(u) = sum over all ranks of |d(T) - target|^2, and this block of dL/du.
   auto loss_and_gradient = [&](const VectorXd& u, VectorXd& grad) {
     step.set_velocity(u);
-    const dpgen::UnrolledGradient g = dpgen::unrolled_gradient(
-        d0, steps, [&](int, const VectorXd& d, VectorXd& nx) { step.forward(d, nx); },
+    const dpgen::UnrolledGradient g = dpgen::mpi::unrolled_gradient(
+        dec, d0, steps, [&](int, const VectorXd& d, VectorXd& nx) { step.forward(d, nx); },
         [&](int, const VectorXd& d, const VectorXd& na, VectorXd& da) { step.adjoint(d, na, da); },
         [&](int t, const VectorXd& d, VectorXd& d_adj) {
           if (t != steps)
@@ -129,7 +132,7 @@ int run(int argc, char** argv) {
         cp);
     grad = step.velocity_gradient();
     stats = g.stats;
-    return dec.sum(g.loss); // MPI_Allreduce
+    return g.loss; // summed over the ranks (MPI_Allreduce)
   };
 
   VectorXd u = VectorXd::Constant(n, 0.1); // first guess
@@ -141,7 +144,8 @@ int run(int argc, char** argv) {
   MPI_Barrier(dec.comm());
   const auto start = std::chrono::steady_clock::now();
   const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double slowest = dpgen_examples::max_over_ranks(dec, seconds);
   const double reduction = s.initial_loss / s.final_loss;
   if (dec.rank() == 0) {

@@ -62,9 +62,8 @@ inline double max_over_ranks(const dpgen::mpi::Decomposition& dec, double x) {
 
 /// The optimizers whose updates act on each parameter alone (gd, adam), so that every rank
 /// updates its own block; L-BFGS needs global dot products inside LBFGS++ and is refused.
-inline std::unique_ptr<dpgen::Optimizer> make_distributed_optimizer(const std::string& name,
-                                                                    double lr,
-                                                                    const std::string& program) {
+inline std::unique_ptr<dpgen::Optimizer>
+make_distributed_optimizer(const std::string& name, double lr, const std::string& program) {
   if (name == "lbfgs")
     throw std::invalid_argument(program + ": --optimizer lbfgs is not available distributed "
                                           "(its dot products would be per rank); use gd or adam");

@@ -36,17 +36,18 @@ struct Projection {
   const Decomposition& dec;
   double h;
   dpgen::petsc::LinearSolver solver;
-  VectorXd pressure, lambda;   // last solutions: warm starts, and p for the backward pass
-  VectorXd up, vp, pp;         // padded inputs of the last forward pass, halos exchanged
+  VectorXd pressure, lambda; // last solutions: warm starts, and p for the backward pass
+  VectorXd up, vp, pp;       // padded inputs of the last forward pass, halos exchanged
   dpgen::petsc::SolveSummary forward_summary, backward_summary;
 
   Projection(const Decomposition& d, double h_, dpgen::petsc::SolverOptions options)
       : dec(d), h(h_),
-        solver(d,
-               [this](const VectorXd& x, VectorXd& y) {
-                 neg_laplacian_halo2d(x.data(), y.data(), dec.local(0), dec.local(1), h);
-               },
-               std::move(options)) {}
+        solver(
+            d,
+            [this](const VectorXd& x, VectorXd& y) {
+              neg_laplacian_halo2d(x.data(), y.data(), dec.local(0), dec.local(1), h);
+            },
+            std::move(options)) {}
 
   void forward(const VectorXd& u, const VectorXd& v, VectorXd& u_out, VectorXd& v_out) {
     const int nx = dec.local(0), ny = dec.local(1);
@@ -79,8 +80,8 @@ struct Projection {
     backward_summary = solver.solve_transpose(dec.interior(pa), lambda, lambda.size() > 0);
     // b = -div(u, v): div_adj = -b_adj, then the generated divergence adjoint
     const VectorXd div_seed = dec.pad(-lambda);
-    mac_divergence_halo_adjoint(up.data(), ua.data(), vp.data(), va.data(), div_seed.data(), nx,
-                                ny, h);
+    mac_divergence_halo_adjoint(up.data(), ua.data(), vp.data(), va.data(), div_seed.data(), nx, ny,
+                                h);
     exchange_halos_adjoint(dec, ua); // u and v were read in the east and north halos
     exchange_halos_adjoint(dec, va);
     u_adj = dec.interior(ua), v_adj = dec.interior(va);
@@ -97,10 +98,12 @@ int run(int argc, char** argv) {
   const std::string method = args.get_string("--optimizer", "gd", "gd or adam");
   const double lr = args.get_double("--lr", 0.4, "learning rate");
   const double tol = args.get_double("--cg-tol", 1e-10, "relative CG tolerance, both solves");
-  const std::string pc = args.get_string(
-      "--pc", "automatic", "preconditioner: automatic (BoomerAMG if PETSc has hypre, else GAMG), "
-                           "boomeramg, gamg, jacobi or none");
-  const std::string csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
+  const std::string pc =
+      args.get_string("--pc", "automatic",
+                      "preconditioner: automatic (BoomerAMG if PETSc has hypre, else GAMG), "
+                      "boomeramg, gamg, jacobi or none");
+  const std::string csv =
+      args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds)");
   const double require = args.get_double("--require-reduction", 0,
                                          "exit with an error unless the loss drops by this factor");
   const bool quiet = args.get_int("--quiet", 0, "1: no progress lines") != 0;

@@ -3,6 +3,7 @@
 // the dot-product test across ranks, and gradients through an unrolled, checkpointed time loop.
 // Run under mpirun with 1, 2 and 4 ranks (ctest: mpi.halo.np*).
 #include "dpgen/checkpoint.hpp"
+#include "dpgen/mpi/checkpoint.hpp"
 #include "dpgen/mpi/decomposition.hpp"
 #include "dpgen/mpi/halo.hpp"
 
@@ -40,10 +41,14 @@ using Eigen::VectorXd;
 // widths 1 to 3: every block has at least `halo` cells with 1, 2 and 4 ranks.
 std::vector<DecompositionOptions> layouts() {
   return {
-      {{13}, {true}, {}, 1},         {{13}, {false}, {}, 2},
-      {{16}, {true}, {}, 3},         {{10, 7}, {true, true}, {}, 1},
-      {{10, 7}, {true, false}, {}, 1}, {{9, 8}, {false, true}, {}, 2},
-      {{6, 5, 4}, {true, true, true}, {}, 1}, {{6, 5, 4}, {false, true, false}, {}, 1},
+      {{13}, {true}, {}, 1},
+      {{13}, {false}, {}, 2},
+      {{16}, {true}, {}, 3},
+      {{10, 7}, {true, true}, {}, 1},
+      {{10, 7}, {true, false}, {}, 1},
+      {{9, 8}, {false, true}, {}, 2},
+      {{6, 5, 4}, {true, true, true}, {}, 1},
+      {{6, 5, 4}, {false, true, false}, {}, 1},
       {{10, 7}, {true, true}, {1, 0}, 1}, // all ranks along y
   };
 }
@@ -172,8 +177,8 @@ TEST_CASE("upwind steps: loss and gradients through T steps equal the single-pro
         upwind_step(d.data(), u.data(), next.data(), n, dt, dx);
       },
       [&](int, const VectorXd& d, const VectorXd& next_adj, VectorXd& d_adj) {
-        upwind_step_adjoint(d.data(), d_adj.data(), u.data(), u_adj_ref.data(), next_adj.data(),
-                            n, dt, dx);
+        upwind_step_adjoint(d.data(), d_adj.data(), u.data(), u_adj_ref.data(), next_adj.data(), n,
+                            dt, dx);
       },
       [&](int t, const VectorXd& d, VectorXd& d_adj) {
         return loss_term(t, d, d_adj, target_mid, target_end);
@@ -193,8 +198,8 @@ TEST_CASE("upwind steps: loss and gradients through T steps equal the single-pro
     VectorXd u_adj = VectorXd::Zero(dec.padded_size());
     VectorXd dp = VectorXd::Zero(dec.padded_size()), out(dec.padded_size());
     VectorXd d_adj_p(dec.padded_size());
-    auto g = dpgen::unrolled_gradient(
-        dec.local_part(d0), steps,
+    auto g = dpgen::mpi::unrolled_gradient(
+        dec, dec.local_part(d0), steps,
         [&](int, const VectorXd& d, VectorXd& next) { // next = K(E(P d))
           dec.copy_interior(d, dp);
           dpgen::mpi::exchange_halos(dec, dp);
@@ -216,7 +221,7 @@ TEST_CASE("upwind steps: loss and gradients through T steps equal the single-pro
         [&](int t, const VectorXd& d, VectorXd& d_adj) { return loss_term(t, d, d_adj, mid, end); },
         cp);
     dpgen::mpi::exchange_halos_adjoint(dec, u_adj); // u was exchanged once, before the loop
-    return Result{dec.sum(g.loss), g.state_adjoint, dec.interior(u_adj)};
+    return Result{g.loss, g.state_adjoint, dec.interior(u_adj)}; // loss: summed over ranks
   };
 
   const Result full = distributed({});
@@ -300,8 +305,8 @@ TEST_CASE("3D Laplacian on blocks: values equal the periodic sum; dot-product te
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        const double sum = at(i + 1, j, k) + at(i - 1, j, k) + at(i, j + 1, k) +
-                           at(i, j - 1, k) + at(i, j, k + 1) + at(i, j, k - 1);
+        const double sum = at(i + 1, j, k) + at(i - 1, j, k) + at(i, j + 1, k) + at(i, j - 1, k) +
+                           at(i, j, k + 1) + at(i, j, k - 1);
         ref[(static_cast<Eigen::Index>(k) * ny + j) * nx + i] = (6.0 * at(i, j, k) - sum) / (h * h);
       }
   VectorXd pp = dec.pad(dec.local_part(p)), out = VectorXd::Zero(dec.padded_size());
@@ -312,8 +317,8 @@ TEST_CASE("3D Laplacian on blocks: values equal the periodic sum; dot-product te
   const VectorXd w = random_vector(dec.interior_size(), 80 + dec.rank());
   const VectorXd seed = dec.pad(w);
   VectorXd p_adj = VectorXd::Zero(dec.padded_size());
-  neg_laplacian_halo3d_adjoint(pp.data(), p_adj.data(), seed.data(), dec.padded(0),
-                               dec.padded(1), dec.padded(2), h);
+  neg_laplacian_halo3d_adjoint(pp.data(), p_adj.data(), seed.data(), dec.padded(0), dec.padded(1),
+                               dec.padded(2), h);
   dpgen::mpi::exchange_halos_adjoint(dec, p_adj);
   const double lhs = dec.dot(dec.interior(out), w);
   const double rhs = dec.dot(dec.local_part(p), dec.interior(p_adj));
@@ -346,4 +351,33 @@ TEST_CASE("bad decompositions and sizes are errors naming the rank and what is w
   CHECK(contains(e, "reverse halo exchange: adjoint has"));
   e = error_of([&] { dec.local_part(VectorXd::Zero(15)); });
   CHECK(contains(e, "global vector has 15 values, expected 16 (grid 16)"));
+}
+
+TEST_CASE("ranks that disagree on the time loop get an error instead of a deadlock") {
+  Decomposition dec(MPI_COMM_WORLD, {{16}, {true}, {}, 1});
+  const VectorXd s0 = VectorXd::Ones(dec.interior_size());
+  auto step = [&](int, const VectorXd& s, VectorXd& next) { next = s; };
+  auto step_adjoint = [&](int, const VectorXd&, const VectorXd& a, VectorXd& s_adj) { s_adj += a; };
+  auto loss = [&](int, const VectorXd& s, VectorXd& s_adj) {
+    s_adj += s;
+    return 0.5 * s.squaredNorm();
+  };
+  const bool last = dec.rank() == dec.size() - 1;
+  const dpgen::CheckpointOptions revolve{dpgen::CheckpointStrategy::revolve, last ? 3 : 4};
+  const std::string e = error_of(
+      [&] { dpgen::mpi::unrolled_gradient(dec, s0, 10, step, step_adjoint, loss, revolve); });
+  if (dec.size() == 1) {
+    CHECK(e.empty());
+  } else {
+    CAPTURE(e);
+    CHECK(contains(e, dec.where() +
+                          ": checkpoint: the ranks disagree on the time loop: rank 0 "
+                          "has 10 steps, Revolve with 4 snapshots, rank " +
+                          std::to_string(dec.size() - 1) +
+                          " has 10 steps, Revolve with 3 "
+                          "snapshots"));
+  }
+  // agreeing ranks: the loss is summed over them (11 loss terms of |1|^2 / 2 per cell)
+  const auto g = dpgen::mpi::unrolled_gradient(dec, s0, 10, step, step_adjoint, loss);
+  CHECK(g.loss == 11 * 0.5 * 16);
 }

@@ -102,8 +102,9 @@ TEST_CASE("the probed assembled copy equals the MatShell (2D periodic, 3D, 1D no
   const VectorXd k = random_vector(70, 1, 0.5, 2.0);
   Decomposition dec2(MPI_COMM_WORLD, {{10, 7}, {true, true}, {}, 1});
   VarCoefPoisson poisson(dec2, k, 0.1);
-  LinearSolver s2(dec2, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); },
-                  poisson_options(Preconditioner::jacobi));
+  LinearSolver s2(
+      dec2, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); },
+      poisson_options(Preconditioner::jacobi));
   check_probe(s2, 3);
 
   Decomposition dec3(MPI_COMM_WORLD, {{6, 5, 4}, {true, false, true}, {}, 1});
@@ -168,8 +169,8 @@ TEST_CASE("periodic variable-coefficient Poisson: solution and implicit gradient
   for (Preconditioner pc : pcs) {
     if (pc == Preconditioner::boomeramg && !dpgen::petsc::has_hypre())
       continue;
-    LinearSolver solver(dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); },
-                        poisson_options(pc));
+    LinearSolver solver(
+        dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); }, poisson_options(pc));
     CAPTURE(solver.preconditioner_name());
     VectorXd x;
     const auto forward = solver.solve(dec.local_part(b), x);
@@ -242,8 +243,8 @@ TEST_CASE("non-symmetric operator: GMRES forward, KSPSolveTranspose backward, gr
         o,
         [&](const VectorXd& v, VectorXd& wt) {
           VectorXd x0 = VectorXd::Zero(v.size()), u_adj = VectorXd::Zero(v.size());
-          upwind_step_halo_adjoint(x0.data(), wt.data(), up.data(), u_adj.data(), v.data(), nl,
-                                   dt, dx);
+          upwind_step_halo_adjoint(x0.data(), wt.data(), up.data(), u_adj.data(), v.data(), nl, dt,
+                                   dx);
         });
     CHECK(solver.preconditioner_name() == "jacobi");
     // dot-product test of the MatShell's transpose: <A x, y> = <x, A^T y>
@@ -280,8 +281,8 @@ TEST_CASE("non-symmetric operator: GMRES forward, KSPSolveTranspose backward, gr
   // central differences along a random direction (L is smooth in u away from u = 0)
   const VectorXd d = random_vector(n, 24);
   const double eps = 1e-6;
-  const double fd = (solve(u + eps * d, nullptr, nullptr) - solve(u - eps * d, nullptr, nullptr)) /
-                    (2 * eps);
+  const double fd =
+      (solve(u + eps * d, nullptr, nullptr) - solve(u - eps * d, nullptr, nullptr)) / (2 * eps);
   const double ad = dec.dot(u_bar, dec.local_part(d));
   CHECK(std::abs(fd - ad) <= 1e-6 * std::abs(ad));
 }
@@ -291,7 +292,8 @@ TEST_CASE("non-convergence is an error on every rank with iterations and residua
   VarCoefPoisson poisson(dec, random_vector(108, 31, 0.5, 2.0), 1.0 / 12);
   SolverOptions o = poisson_options(Preconditioner::none);
   o.max_iterations = 3;
-  LinearSolver solver(dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); }, o);
+  LinearSolver solver(
+      dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); }, o);
   VectorXd x;
   const VectorXd b = dec.local_part(random_vector(108, 32));
   const std::string e = error_of([&] { solver.solve(b, x); });
@@ -306,7 +308,8 @@ TEST_CASE("non-convergence is an error on every rank with iterations and residua
     CHECK(error.summary().residual_norm > error.summary().tolerance);
   }
   o.throw_on_failure = false;
-  LinearSolver quiet(dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); }, o);
+  LinearSolver quiet(
+      dec, [&](const VectorXd& x, VectorXd& y) { poisson.apply(x, y); }, o);
   CHECK_FALSE(quiet.solve(b, x).converged());
 }
 

@@ -72,13 +72,13 @@ public:
     for (int d = 0; d < dims_; ++d) {
       global_[d] = options.global[d];
       if (global_[d] < 1)
-        throw std::invalid_argument(detail::message(who, ": dimension ", axis(d), " has ",
-                                                    global_[d], " cells"));
+        throw std::invalid_argument(
+            detail::message(who, ": dimension ", axis(d), " has ", global_[d], " cells"));
       periods[d] = options.periodic.empty() || options.periodic[d] ? 1 : 0;
       procs[d] = options.processes.empty() ? 0 : options.processes[d];
       if (procs[d] < 0)
-        throw std::invalid_argument(detail::message(who, ": ", procs[d], " ranks requested in ",
-                                                    axis(d)));
+        throw std::invalid_argument(
+            detail::message(who, ": ", procs[d], " ranks requested in ", axis(d)));
     }
     long long requested = 1;
     bool all_given = true;
@@ -87,9 +87,9 @@ public:
       requested *= std::max(procs[d], 1);
     }
     if ((all_given && requested != size_) || (!all_given && size_ % requested != 0))
-      throw std::invalid_argument(detail::message(
-          who, ": process grid ", grid_string(procs), " does not fit the communicator's ", size_,
-          " ranks"));
+      throw std::invalid_argument(detail::message(who, ": process grid ", grid_string(procs),
+                                                  " does not fit the communicator's ", size_,
+                                                  " ranks"));
     MPI_Dims_create(size_, dims_, procs.data());
     for (int d = 0; d < dims_; ++d)
       procs_[d] = procs[d];
@@ -98,10 +98,12 @@ public:
     // every rank, so every rank throws alike.
     for (int d = 0; d < dims_; ++d)
       if (global_[d] / procs_[d] < halo_)
-        throw std::invalid_argument(detail::message(
-            who, ": ", global_[d], " cells in ", axis(d), " over ", procs_[d],
-            " ranks leaves a block of ", global_[d] / procs_[d], " cells, fewer than the halo "
-            "width ", halo_, " (use fewer ranks in ", axis(d), " or a larger grid)"));
+        throw std::invalid_argument(
+            detail::message(who, ": ", global_[d], " cells in ", axis(d), " over ", procs_[d],
+                            " ranks leaves a block of ", global_[d] / procs_[d],
+                            " cells, fewer than the halo "
+                            "width ",
+                            halo_, " (use fewer ranks in ", axis(d), " or a larger grid)"));
     MPI_Cart_create(comm, dims_, procs.data(), periods.data(), /*reorder=*/0, &cart_);
     MPI_Cart_coords(cart_, rank_, dims_, coords_.data());
     for (int d = 0; d < dims_; ++d) {
@@ -111,8 +113,8 @@ public:
       padded_[d] = local_[d] + 2 * halo_;
       MPI_Cart_shift(cart_, d, 1, &low_[d], &high_[d]);
     }
-    where_ = detail::message("rank ", rank_, " of ", size_, " (block ",
-                             grid_string(coords_, ","), " of ", grid_string(procs_), ")");
+    where_ = detail::message("rank ", rank_, " of ", size_, " (block ", grid_string(coords_, ","),
+                             " of ", grid_string(procs_), ")");
   }
 
   Decomposition(const Decomposition&) = delete;
@@ -168,8 +170,8 @@ public:
                     const char* kind) const {
     if (actual != expected)
       throw std::invalid_argument(detail::message(where_, ": ", what, " has ", actual,
-                                                  " values, expected ", expected, " (", kind,
-                                                  " ", shape_string(kind), ")"));
+                                                  " values, expected ", expected, " (", kind, " ",
+                                                  shape_string(kind), ")"));
   }
 
   /// The padded array of an interior vector, halos zero.
@@ -250,8 +252,8 @@ public:
   /// <a, b> of two distributed interior (or any equally distributed) vectors.
   double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
     if (a.size() != b.size())
-      throw std::invalid_argument(detail::message(where_, ": dot of vectors of sizes ", a.size(),
-                                                  " and ", b.size()));
+      throw std::invalid_argument(
+          detail::message(where_, ": dot of vectors of sizes ", a.size(), " and ", b.size()));
     return sum(a.dot(b));
   }
   /// ||a|| of a distributed vector.

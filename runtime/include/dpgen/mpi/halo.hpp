@@ -99,8 +99,8 @@ inline void zero(const Decomposition& dec, double* a, const Box& b) {
 // `from` is assigned to (or added into) the box `receive`. MPI_PROC_NULL on either side skips
 // that side (a non-periodic edge).
 inline void transfer(const Decomposition& dec, double* a, const Box& send, int to,
-                     const Box& receive, int from, int tag, bool add,
-                     std::vector<double>& out, std::vector<double>& in) {
+                     const Box& receive, int from, int tag, bool add, std::vector<double>& out,
+                     std::vector<double>& in) {
   if (to != MPI_PROC_NULL)
     pack(dec, a, send, out);
   else
@@ -153,8 +153,8 @@ inline void exchange_halos_adjoint(const Decomposition& dec, Eigen::VectorXd& a_
       detail::zero(dec, a_adj.data(), low_halo);
     // transpose of "my first own cells -> the low neighbour's high halo"
     const detail::Box high_halo = detail::slab(dec, d, h + n, 2 * h + n);
-    detail::transfer(dec, a_adj.data(), high_halo, high, detail::slab(dec, d, h, 2 * h), low,
-                     2 * d, true, out, in);
+    detail::transfer(dec, a_adj.data(), high_halo, high, detail::slab(dec, d, h, 2 * h), low, 2 * d,
+                     true, out, in);
     if (high != MPI_PROC_NULL)
       detail::zero(dec, a_adj.data(), high_halo);
   }

@@ -110,13 +110,13 @@ struct SolverOptions {
 /// What one distributed solve did (the same on every rank).
 struct SolveSummary {
   int iterations = 0;
-  double residual_norm = 0.;   ///< ||b - A x|| when the iteration stopped
-  double rhs_norm = 0.;        ///< ||b|| (after null-space removal)
-  double tolerance = 0.;       ///< the residual norm the solve had to reach
-  int reason = 0;              ///< PETSc's KSPConvergedReason
-  std::string reason_name;     ///< its name, e.g. "CONVERGED_RTOL", "DIVERGED_ITS"
-  std::string preconditioner;  ///< the preconditioner used, e.g. "hypre boomeramg"
-  std::string message;         ///< one line saying what happened, with numbers
+  double residual_norm = 0.;  ///< ||b - A x|| when the iteration stopped
+  double rhs_norm = 0.;       ///< ||b|| (after null-space removal)
+  double tolerance = 0.;      ///< the residual norm the solve had to reach
+  int reason = 0;             ///< PETSc's KSPConvergedReason
+  std::string reason_name;    ///< its name, e.g. "CONVERGED_RTOL", "DIVERGED_ITS"
+  std::string preconditioner; ///< the preconditioner used, e.g. "hypre boomeramg"
+  std::string message;        ///< one line saying what happened, with numbers
   bool converged() const { return reason > 0; }
 };
 
@@ -145,8 +145,8 @@ namespace detail {
 
 inline void check(PetscErrorCode code, const std::string& where, const char* call) {
   if (code != 0)
-    throw std::runtime_error(dpgen::detail::message(where, ": PETSc error ", static_cast<int>(code),
-                                                    " in ", call));
+    throw std::runtime_error(
+        dpgen::detail::message(where, ": PETSc error ", static_cast<int>(code), " in ", call));
 }
 
 // Colours for probing a stencil of radius r along a dimension of n cells: cells of the same
@@ -185,8 +185,8 @@ public:
         options_(std::move(options)) {
     const std::string& w = options_.name;
     if (!apply_)
-      throw std::invalid_argument(dpgen::detail::message(dec_.where(), ": ", w,
-                                                         ": no operator given"));
+      throw std::invalid_argument(
+          dpgen::detail::message(dec_.where(), ": ", w, ": no operator given"));
     if (!options_.symmetric && !apply_transpose_)
       throw std::invalid_argument(dpgen::detail::message(
           dec_.where(), ": ", w, ": a non-symmetric operator needs apply_transpose"));
@@ -212,11 +212,11 @@ public:
     const PetscInt N = static_cast<PetscInt>(dec_.global_size());
     const MPI_Comm comm = dec_.comm();
     detail::check(MatCreateShell(comm, n, n, N, N, this, &a_), where(), "MatCreateShell");
-    detail::check(MatShellSetOperation(a_, MATOP_MULT, (void (*)(void))&LinearSolver::shell_mult),
+    detail::check(MatShellSetOperation(a_, MATOP_MULT, (void (*)(void)) & LinearSolver::shell_mult),
                   where(), "MatShellSetOperation");
     if (apply_transpose_)
       detail::check(MatShellSetOperation(a_, MATOP_MULT_TRANSPOSE,
-                                         (void (*)(void))&LinearSolver::shell_mult_transpose),
+                                         (void (*)(void)) & LinearSolver::shell_mult_transpose),
                     where(), "MatShellSetOperation");
     detail::check(VecCreateMPI(comm, n, N, &b_), where(), "VecCreateMPI");
     detail::check(VecDuplicate(b_, &x_), where(), "VecDuplicate");
@@ -224,8 +224,7 @@ public:
       detail::check(MatNullSpaceCreate(comm, PETSC_TRUE, 0, nullptr, &null_space_), where(),
                     "MatNullSpaceCreate");
       detail::check(MatSetNullSpace(a_, null_space_), where(), "MatSetNullSpace");
-      detail::check(MatSetTransposeNullSpace(a_, null_space_), where(),
-                    "MatSetTransposeNullSpace");
+      detail::check(MatSetTransposeNullSpace(a_, null_space_), where(), "MatSetTransposeNullSpace");
     }
     // PETSc's global numbering: rank r owns the rows starts_[r] .. starts_[r+1]-1, its cells x
     // fastest, in rank order of the decomposition's communicator.
@@ -341,7 +340,7 @@ private:
       mpi::exchange_halos(dec_, in_); // the kernel reads its neighbours' cells
       apply_(in_, out_);
     } else {
-      apply_transpose_(in_, out_);           // adjoints land in w's own cells and halos
+      apply_transpose_(in_, out_);             // adjoints land in w's own cells and halos
       mpi::exchange_halos_adjoint(dec_, out_); // halo adjoints back to their owners
     }
     dec_.require_size(out_.size(), dec_.padded_size(), options_.name + ": operator output",
@@ -421,7 +420,8 @@ private:
     }
     detail::check(KSPSetInitialGuessNonzero(ksp_, use_initial_guess ? PETSC_TRUE : PETSC_FALSE),
                   where(), "KSPSetInitialGuessNonzero");
-    const PetscErrorCode code = transpose ? KSPSolveTranspose(ksp_, b_, x_) : KSPSolve(ksp_, b_, x_);
+    const PetscErrorCode code =
+        transpose ? KSPSolveTranspose(ksp_, b_, x_) : KSPSolve(ksp_, b_, x_);
     rethrow_or(code, transpose ? "KSPSolveTranspose" : "KSPSolve");
     if (null_space_) // the mean-free representative of the solution set
       detail::check(MatNullSpaceRemove(null_space_, x_), where(), "MatNullSpaceRemove");
@@ -444,15 +444,14 @@ private:
     s.preconditioner = pc_name_;
     const char* method = options_.symmetric ? "CG" : "GMRES";
     if (s.converged())
-      s.message = dpgen::detail::message(what, ": ", method, " + ", pc_name_, " converged (",
-                                         s.reason_name, ") in ", s.iterations,
-                                         " iterations, residual ", rnorm, " <= tolerance ",
-                                         s.tolerance);
+      s.message = dpgen::detail::message(
+          what, ": ", method, " + ", pc_name_, " converged (", s.reason_name, ") in ", s.iterations,
+          " iterations, residual ", rnorm, " <= tolerance ", s.tolerance);
     else
-      s.message = dpgen::detail::message(what, ": ", method, " + ", pc_name_,
-                                         " did not converge (", s.reason_name, ") after ",
-                                         s.iterations, " iterations, residual ", rnorm,
-                                         " > tolerance ", s.tolerance, " (||b|| = ", bnorm, ")");
+      s.message =
+          dpgen::detail::message(what, ": ", method, " + ", pc_name_, " did not converge (",
+                                 s.reason_name, ") after ", s.iterations, " iterations, residual ",
+                                 rnorm, " > tolerance ", s.tolerance, " (||b|| = ", bnorm, ")");
     if (!s.converged() && options_.throw_on_failure)
       throw SolveError(s);
     return s;
@@ -549,9 +548,8 @@ private:
     int rank = 0;
     MPI_Cart_rank(dec_.comm(), owner.data(), &rank);
     return starts_[rank] +
-           static_cast<PetscInt>((static_cast<Eigen::Index>(at[2]) * extent[1] + at[1]) *
-                                     extent[0] +
-                                 at[0]);
+           static_cast<PetscInt>(
+               (static_cast<Eigen::Index>(at[2]) * extent[1] + at[1]) * extent[0] + at[0]);
   }
 
   const mpi::Decomposition& dec_;
