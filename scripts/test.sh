@@ -6,8 +6,8 @@
 #      examples (DPGEN_WITH_MPI, DPGEN_WITH_PETSC: under mpirun with 1, 2 and
 #      4 ranks, oversubscribed on 2 cores);
 #   2. the same suite built with AddressSanitizer and UBSan (build-asan/),
-#      MPI tests included (leaks inside OpenMPI, PETSc and hypre suppressed:
-#      tests/mpi/lsan.supp);
+#      MPI tests included, with ASAN_OPTIONS=detect_leaks=0 for them only
+#      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay);
 #   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
