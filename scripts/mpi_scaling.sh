@@ -48,15 +48,16 @@ for np in 1 2 4; do
   echo -e "strong\tpressure\t$np\t${prs_side}x${prs_side}\t$(best_ms "$np" "$prs" --nx $prs_side --ny $prs_side --iters 4)" >>"$tsv"
 done
 
-python3 - "$tsv" "$root/bench/mpi_scaling.md" "$root/README.md" "$(nproc)" "$repeats" <<'PY'
+python3 - "$tsv" "$root/bench/mpi_scaling.md" "$root/README.md" "$(nproc --all)" "$repeats" \
+  "$(cut -d" " -f1-3 /proc/loadavg)" <<'PY'
 import re, sys, datetime
-tsv, out, readme, cores, repeats = sys.argv[1:6]
+tsv, out, readme, cores, repeats, load = sys.argv[1:7]
 rows = [l.rstrip("\n").split("\t") for l in open(tsv) if l.strip()]
 t = {(k, p, int(n)): (g, float(ms)) for k, p, n, g, ms in rows}
 names = {"advection": "advection_inverse_mpi (100 upwind steps, full tape)",
          "pressure": "pressure_optimization_mpi (2 CG + BoomerAMG solves to 1e-10)"}
 lines = [f"Measured with `scripts/mpi_scaling.sh` on {cores} cores shared with other work "
-         f"({datetime.date.today()}): milliseconds per gradient (forward and backward, the "
+         f"({datetime.date.today()}, load average {load} at the end): milliseconds per gradient (forward and backward, the "
          f"slowest rank), best of {repeats} runs, 1 OpenMP thread per rank. **4 ranks on "
          f"{cores} cores are oversubscribed**: that row measures the decomposition's overhead, "
          f"not a speed-up.", ""]

@@ -272,7 +272,25 @@ public:
                                    PETSC_DEFAULT, options_.max_iterations),
                   where(), "KSPSetTolerances");
     update_operator();
-    detail::check(KSPSetFromOptions(ksp_), where(), "KSPSetFromOptions");
+    // BoomerAMG solves its coarsest level directly by default; with a constant null space that
+    // matrix is singular and the preconditioner can come out indefinite (CG then stops with
+    // DIVERGED_INDEFINITE_PC, seen on a 256 x 128 periodic Poisson). Relax on the coarsest
+    // level instead, unless the user's options say otherwise. Set for this KSP's
+    // KSPSetFromOptions only, then taken out of PETSc's options database again.
+    const std::string coarse =
+        "-" + options_.options_prefix + "pc_hypre_boomeramg_relax_type_coarse";
+    PetscBool user_set = PETSC_FALSE;
+    detail::check(PetscOptionsHasName(nullptr, nullptr, coarse.c_str(), &user_set), where(),
+                  "PetscOptionsHasName");
+    const bool relax_coarse =
+        pc_ == Preconditioner::boomeramg && options_.constant_null_space && !user_set;
+    if (relax_coarse)
+      detail::check(PetscOptionsSetValue(nullptr, coarse.c_str(), "symmetric-SOR/Jacobi"), where(),
+                    "PetscOptionsSetValue");
+    const PetscErrorCode code = KSPSetFromOptions(ksp_);
+    if (relax_coarse)
+      PetscOptionsClearValue(nullptr, coarse.c_str());
+    detail::check(code, where(), "KSPSetFromOptions");
   }
 
   LinearSolver(const LinearSolver&) = delete;
