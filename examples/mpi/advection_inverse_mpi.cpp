@@ -32,13 +32,14 @@ constexpr double kPi = 3.14159265358979323846;
 struct BlockStep {
   const Decomposition& dec;
   double dt, dx;
-  VectorXd u;             // padded velocity, halos exchanged
-  VectorXd u_adj;         // padded adjoint of u, reverse-exchanged once at the end
-  VectorXd d, out, d_adj; // padded work arrays
+  VectorXd u;                   // padded velocity, halos exchanged
+  VectorXd u_adj;               // padded adjoint of u, reverse-exchanged once at the end
+  VectorXd d, out, seed, d_adj; // padded work arrays (the halos of out and seed stay 0)
 
   BlockStep(const Decomposition& dec_, double dt_, double dx_)
       : dec(dec_), dt(dt_), dx(dx_), d(VectorXd::Zero(dec_.padded_size())),
-        out(VectorXd::Zero(dec_.padded_size())), d_adj(dec_.padded_size()) {}
+        out(VectorXd::Zero(dec_.padded_size())), seed(VectorXd::Zero(dec_.padded_size())),
+        d_adj(dec_.padded_size()) {}
 
   void set_velocity(const VectorXd& u_interior) {
     u = dec.pad(u_interior);
@@ -49,17 +50,17 @@ struct BlockStep {
     dec.copy_interior(d_in, d);
     dpgen::mpi::exchange_halos(dec, d);
     upwind_step_halo(d.data(), u.data(), out.data(), dec.local(0), dt, dx);
-    next = dec.interior(out);
+    dec.extract_interior(out, next);
   }
   void adjoint(const VectorXd& d_in, const VectorXd& next_adj, VectorXd& d_in_adj) {
     dec.copy_interior(d_in, d);
     dpgen::mpi::exchange_halos(dec, d);
-    const VectorXd seed = dec.pad(next_adj);
+    dec.copy_interior(next_adj, seed);
     d_adj.setZero();
     upwind_step_halo_adjoint(d.data(), d_adj.data(), u.data(), u_adj.data(), seed.data(),
                              dec.local(0), dt, dx);
     dpgen::mpi::exchange_halos_adjoint(dec, d_adj); // halo adjoints back to their owners
-    d_in_adj += dec.interior(d_adj);
+    dec.extract_interior(d_adj, d_in_adj, /*add=*/true);
   }
   // dL/du on this block: u's halo adjoints (reads of u in the halos) back to their owners.
   VectorXd velocity_gradient() {
@@ -106,7 +107,7 @@ int run(int argc, char** argv) {
   }
   BlockStep step(dec, dt, dx);
   step.set_velocity(u_true);
-  VectorXd target = d0, next;
+  VectorXd target = d0, next(n);
   for (int t = 0; t < steps; ++t) {
     step.forward(target, next);
     target.swap(next);

@@ -191,12 +191,22 @@ public:
   }
   /// The interior (the block's own cells) of a padded array.
   Eigen::VectorXd interior(const Eigen::VectorXd& padded) const {
-    require_size(padded.size(), padded_size(), "padded array", "padded block");
     Eigen::VectorXd v(interior_size());
-    for_each_row([&](Eigen::Index flat, Eigen::Index row) {
-      std::copy_n(padded.data() + row, local_[0], v.data() + flat);
-    });
+    extract_interior(padded, v);
     return v;
+  }
+  /// interior = (or += with add) the interior of a padded array, into an existing vector of
+  /// interior_size() values (no allocation: for inner loops).
+  void extract_interior(const Eigen::VectorXd& padded, Eigen::VectorXd& interior,
+                        bool add = false) const {
+    require_size(padded.size(), padded_size(), "padded array", "padded block");
+    require_size(interior.size(), interior_size(), "interior vector", "block");
+    for_each_row([&](Eigen::Index flat, Eigen::Index row) {
+      if (add)
+        interior.segment(flat, local_[0]) += padded.segment(row, local_[0]);
+      else
+        interior.segment(flat, local_[0]) = padded.segment(row, local_[0]);
+    });
   }
 
   /// This rank's block of a global vector (no communication).
