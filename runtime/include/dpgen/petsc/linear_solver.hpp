@@ -25,7 +25,8 @@ namespace dpgen::petsc {
 
 /// Initializes PETSc for the lifetime of the object (after MPI_Init, before any solver) and
 /// finalizes it at the end; MPI itself stays initialized. PETSc reads its options from the
-/// PETSC_OPTIONS environment variable (e.g. PETSC_OPTIONS="-ksp_monitor").
+/// PETSC_OPTIONS environment variable (e.g. PETSC_OPTIONS="-ksp_monitor"). Every LinearSolver
+/// must be destroyed before the Session.
 class Session {
 public:
   Session() {
@@ -168,7 +169,7 @@ inline int probe_colours(int n, int r, bool periodic) {
 /// Solves A x = b (and A^T lambda = x_bar) for an operator given as a kernel on the padded
 /// blocks of a decomposition, with PETSc. Vectors in and out are interior vectors (this rank's
 /// own cells, Decomposition::interior_size()). Every method is collective over the
-/// decomposition's communicator.
+/// decomposition's communicator, and the decomposition must outlive the solver.
 ///
 /// A is a MatShell: its mult copies x into a padded array, exchanges the halos, runs `apply`,
 /// and takes the interior of the result; its transpose mult runs `apply_transpose` and the
