@@ -1,6 +1,8 @@
 // Index analysis: polynomials, index pieces, box domains (see affine.hpp).
 #include "affine.hpp"
 
+#include <tuple>
+
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -153,6 +155,17 @@ std::string Poly::code() const {
       out += (c < 0 ? " - " : " + ") + term;
   }
   return out;
+}
+
+bool smaller_coefficient(const Poly& a, const Poly& b) {
+  auto key = [](const Poly& p) {
+    int d = p.degree();
+    long long top = 0, rest = 0;
+    for (const auto& [m, c] : p.terms())
+      (int(m.size()) == d ? top : rest) += c < 0 ? -c : c;
+    return std::make_tuple(d, top, rest, p.str());
+  };
+  return key(a) < key(b);
 }
 
 std::optional<Poly> to_poly(const ExprP& e) {

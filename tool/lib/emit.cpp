@@ -567,9 +567,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   if (!unit_1d) {
     auto order = g0.layout;
     std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      if (a.second.degree() != b.second.degree())
-        return a.second.degree() < b.second.degree();
-      return std::llabs(a.second.constant_term()) < std::llabs(b.second.constant_term());
+      return smaller_coefficient(a.second, b.second);
     });
     std::vector<std::string> reach;
     for (size_t i = 0; i < order.size(); ++i) {

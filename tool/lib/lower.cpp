@@ -1645,13 +1645,8 @@ private:
   // hold); otherwise checked at run time.
   void check_one_to_one(const Nest& nest, const Store& s,
                         std::vector<std::pair<Poly, Poly>> dims) {
-    auto size_key = [](const Poly& c) { return std::make_pair(c.degree(), c.str()); };
-    std::sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
-      if (a.first.degree() != b.first.degree())
-        return a.first.degree() < b.first.degree();
-      if (a.first.is_constant() && b.first.is_constant())
-        return std::llabs(a.first.constant_term()) < std::llabs(b.first.constant_term());
-      return size_key(a.first) < size_key(b.first);
+    std::stable_sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
+      return smaller_coefficient(a.first, b.first);
     });
     Facts facts;
     for (const auto& l : nest.loops)

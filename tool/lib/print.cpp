@@ -134,7 +134,11 @@ std::string print(const ExprP& e) {
     // min/max by value (see kMinMaxHelpers): std::min returns a reference,
     // which keeps GCC from vectorizing the loop around it.
     bool by_value = e->name == "min" || e->name == "max";
-    return fmt::format("{}{}({})", by_value ? "dpgen_" : "std::", e->name, fmt::join(args, ", "));
+    // Integer arguments may differ in width (a widened local and an int
+    // parameter): name the type, as std::min's deduction would fail too.
+    std::string targs = by_value && e->type == Type::Int ? "<std::ptrdiff_t>" : "";
+    return fmt::format("{}{}{}({})", by_value ? "dpgen_" : "std::", e->name, targs,
+                       fmt::join(args, ", "));
   }
   case Op::Cast: // text: the integer type of a widening cast ("long")
     return fmt::format("static_cast<{}>({})", e->text.empty() ? type_spelling(e->type) : e->text,
