@@ -25,6 +25,9 @@ TEST_CASE("flow_advect_marker adjoint") {
       flow_advect_marker_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], in[3], adj[3],
                                  seed[0], nx, ny, kDtH);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_advect_marker_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], in[2], in_n[2], adj[2], in_n[2], in[3], in_n[3], adj[3], in_n[3], seed[0], out_n[0], nx, ny, kDtH);
+    };
     dpgen_test::check_adjoint(p);
   }
 }
@@ -40,11 +43,17 @@ TEST_CASE("flow_advect_u and flow_advect_v adjoints") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_advect_u_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_advect_u_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH);
+    };
     dpgen_test::check_adjoint(p);
     p.out_sizes = {size_t(nx * (ny + 1))};
     p.forward = [&](auto in, auto out) { flow_advect_v(in[0], in[1], out[0], nx, ny, kDtH); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_advect_v_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_advect_v_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH);
     };
     dpgen_test::check_adjoint(p);
   }
@@ -63,12 +72,18 @@ TEST_CASE("flow_buoyancy, flow_divergence, flow_subtract_gradient_u/v adjoints (
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_buoyancy_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.7);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_buoyancy_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.7);
+    };
     dpgen_test::check_adjoint(p);
     p.in_sizes = {uf, vf};
     p.out_sizes = {cells};
     p.forward = [&](auto in, auto out) { flow_divergence(in[0], in[1], out[0], nx, ny, 0.5); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_divergence_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_divergence_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5);
     };
     dpgen_test::check_adjoint(p);
     p.in_sizes = {uf, cells};
@@ -79,6 +94,9 @@ TEST_CASE("flow_buoyancy, flow_divergence, flow_subtract_gradient_u/v adjoints (
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_subtract_gradient_u_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_subtract_gradient_u_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5);
+    };
     dpgen_test::check_adjoint(p);
     p.in_sizes = {vf, cells};
     p.out_sizes = {vf};
@@ -87,6 +105,9 @@ TEST_CASE("flow_buoyancy, flow_divergence, flow_subtract_gradient_u/v adjoints (
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_subtract_gradient_v_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_subtract_gradient_v_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5);
     };
     dpgen_test::check_adjoint(p);
   }
@@ -106,6 +127,9 @@ TEST_CASE("flow_pressure_operator adjoint; -div grad is the operator") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_pressure_operator_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_pressure_operator_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5);
     };
     dpgen_test::check_adjoint(p);
     // With k = 1: A p = -div(grad p), grad p from the projection kernels on zero velocities.
@@ -136,6 +160,9 @@ TEST_CASE("flow_maccormack_marker adjoint") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       flow_maccormack_marker_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], in[3], adj[3],
                                      in[4], adj[4], in[5], adj[5], seed[0], nx, ny, kDtH);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      flow_maccormack_marker_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], in[2], in_n[2], adj[2], in_n[2], in[3], in_n[3], adj[3], in_n[3], in[4], in_n[4], adj[4], in_n[4], in[5], in_n[5], adj[5], in_n[5], seed[0], out_n[0], nx, ny, kDtH);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -25,6 +25,9 @@ TEST_CASE("gradient2d adjoint") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       gradient2d_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny, 0.5);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      gradient2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], nx, ny, 0.5);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       gradient2d_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], nx, ny, 0.5);
     };

@@ -17,6 +17,9 @@ TEST_CASE("heat_c adjoint (a C kernel)") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat_c_adjoint(n, in[0], adj[0], in[1], adj[1], seed[0], 0.2);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat_c_adjoint_checked(n, in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], 0.2);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       heat_c_tangent(n, in[0], dir[0], in[1], dir[1], out[0], outd[0], 0.2);
     };

@@ -16,6 +16,9 @@ TEST_CASE("clamped_neighbour adjoint") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       clamped_neighbour_adjoint(in[0], adj[0], seed[0], n);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      clamped_neighbour_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       clamped_neighbour_tangent(in[0], dir[0], out[0], outd[0], n);
     };
@@ -34,6 +37,9 @@ TEST_CASE("prolong_rows adjoint") {
     p.forward = [&](auto in, auto out) { prolong_rows(in[0], out[0], nx, ncy); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       prolong_rows_adjoint(in[0], adj[0], seed[0], nx, ncy);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      prolong_rows_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ncy);
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       prolong_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ncy);

@@ -31,6 +31,9 @@ TEST_CASE("mg_prolong_x adjoint") {
         p.adjoint = [&](auto in, auto adj, auto seed) {
           mg_prolong_x_adjoint(in[0], adj[0], seed[0], nxc, ny, lo_self, lo_wrap, hi_self, hi_wrap);
         };
+        p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+          mg_prolong_x_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nxc, ny, lo_self, lo_wrap, hi_self, hi_wrap);
+        };
         dpgen_test::check_adjoint(p);
       }
 }
@@ -52,6 +55,9 @@ TEST_CASE("mg_prolong_y adjoint") {
           mg_prolong_y_adjoint(in[0], adj[0], seed[0], nxc, nyc, lo_self, lo_wrap, hi_self,
                                hi_wrap);
         };
+        p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+          mg_prolong_y_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nxc, nyc, lo_self, lo_wrap, hi_self, hi_wrap);
+        };
         dpgen_test::check_adjoint(p);
       }
 }
@@ -65,6 +71,9 @@ TEST_CASE("mg_average_2x2 adjoint") {
     p.forward = [&](auto in, auto out) { mg_average_2x2(in[0], out[0], nxc, nyc); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       mg_average_2x2_adjoint(in[0], adj[0], seed[0], nxc, nyc);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      mg_average_2x2_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nxc, nyc);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -22,6 +22,9 @@ TEST_CASE("neg_div_k_grad_1d adjoint") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       neg_div_k_grad_1d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.5);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      neg_div_k_grad_1d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, 0.5);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       neg_div_k_grad_1d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.5);
     };
@@ -43,6 +46,9 @@ TEST_CASE("neg_div_k_grad_periodic2d adjoint") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       neg_div_k_grad_periodic2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      neg_div_k_grad_periodic2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5);
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       neg_div_k_grad_periodic2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, 0.5);
@@ -70,6 +76,9 @@ TEST_CASE("neg_div_k_grad_walls2d adjoint") {
       p.adjoint = [&](auto in, auto adj, auto seed) {
         neg_div_k_grad_walls2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.5, walls[0],
                                        walls[1], walls[2], walls[3]);
+      };
+      p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+        neg_div_k_grad_walls2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.5, walls[0], walls[1], walls[2], walls[3]);
       };
       dpgen_test::check_adjoint(p);
     }

@@ -19,6 +19,9 @@ TEST_CASE("styles: burgers_private_temps") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       burgers_private_temps_adjoint(in[0], adj[0], seed[0], n, 0.01, 0.1, 0.05);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      burgers_private_temps_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n, 0.01, 0.1, 0.05);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       burgers_private_temps_tangent(in[0], dir[0], out[0], outd[0], n, 0.01, 0.1, 0.05);
     };

@@ -19,6 +19,9 @@ TEST_CASE("styles: burgers_rk2_workarray") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       burgers_rk2_workarray_adjoint(in[0], adj[0], seed[0], seed[1], n, 0.2);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      burgers_rk2_workarray_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], n, 0.2);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       burgers_rk2_workarray_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n, 0.2);
     };

@@ -18,6 +18,9 @@ TEST_CASE("styles: heat1d_c89") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat1d_c89_adjoint(in[0], adj[0], seed[0], n, 0.3);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat1d_c89_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n, 0.3);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       heat1d_c89_tangent(in[0], dir[0], out[0], outd[0], n, 0.3);
     };

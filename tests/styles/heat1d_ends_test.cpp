@@ -20,6 +20,9 @@ TEST_CASE("styles: heat1d_ends") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat1d_ends_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.25);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat1d_ends_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, 0.25);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       heat1d_ends_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.25);
     };

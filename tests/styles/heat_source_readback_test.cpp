@@ -19,6 +19,9 @@ TEST_CASE("styles: heat_source_readback") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat_source_readback_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.2, 0.5);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat_source_readback_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, 0.2, 0.5);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       heat_source_readback_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.2, 0.5);
     };

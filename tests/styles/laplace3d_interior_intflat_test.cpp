@@ -23,6 +23,9 @@ TEST_CASE("styles: laplace3d_interior_intflat") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       laplace3d_interior_intflat_adjoint(in[0], adj[0], seed[0], nx, ny, nz, 4.0);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      laplace3d_interior_intflat_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ny, nz, 4.0);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       laplace3d_interior_intflat_tangent(in[0], dir[0], out[0], outd[0], nx, ny, nz, 4.0);
     };

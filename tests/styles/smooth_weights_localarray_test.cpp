@@ -20,6 +20,9 @@ TEST_CASE("styles: smooth_weights_localarray") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       smooth_weights_localarray_adjoint(in[0], adj[0], seed[0], n);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      smooth_weights_localarray_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       smooth_weights_localarray_tangent(in[0], dir[0], out[0], outd[0], n);
     };

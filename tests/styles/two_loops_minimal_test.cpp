@@ -21,6 +21,9 @@ TEST_CASE("styles: two_loops_minimal") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       two_loops_minimal_adjoint(in[0], adj[0], seed[0], seed[1], n);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      two_loops_minimal_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], n);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       two_loops_minimal_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n);
     };

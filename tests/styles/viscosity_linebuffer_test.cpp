@@ -19,6 +19,9 @@ TEST_CASE("styles: viscosity_linebuffer") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       viscosity_linebuffer_adjoint(in[0], adj[0], seed[0], n, 0.3);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      viscosity_linebuffer_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n, 0.3);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       viscosity_linebuffer_tangent(in[0], dir[0], out[0], outd[0], n, 0.3);
     };

@@ -20,6 +20,9 @@ TEST_CASE("styles: wave1d_boundary_stores") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       wave1d_boundary_stores_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.36);
     };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      wave1d_boundary_stores_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, 0.36);
+    };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       wave1d_boundary_stores_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.36);
     };

@@ -33,6 +33,12 @@ template <typename T> struct Problem {
   Forward forward;
   Adjoint adjoint; // (inputs, input adjoints (+=), output seeds)
   Tangent tangent; // optional: (inputs, directions, outputs, output tangents)
+  /// optional: the checked entry point, called like `adjoint` with the
+  /// arrays' sizes (in_sizes, out_sizes) passed along.
+  std::function<void(const std::vector<const T*>&, const std::vector<T*>&,
+                     const std::vector<const T*>&, const std::vector<size_t>&,
+                     const std::vector<size_t>&)>
+      checked;
   bool linear = false;
 };
 
@@ -83,6 +89,29 @@ public:
     accumulate_test();
     if (p_.tangent)
       tangent_test();
+    if (p_.checked)
+      checked_test();
+  }
+
+  // The checked entry point with the arrays' true sizes: no exception, and
+  // exactly the raw adjoint's result.
+  void checked_test() {
+    Arrays w = random_like(p_.out_sizes);
+    Arrays raw = adjoint(x_, w, zeros(p_.in_sizes));
+    Arrays got = zeros(p_.in_sizes);
+    try {
+      p_.checked(cptrs(x_), ptrs(got), cptrs(w), p_.in_sizes, p_.out_sizes);
+    } catch (const std::exception& e) {
+      FAIL("the checked adjoint rejected the true sizes: " << e.what());
+    }
+    for (const auto& arr : got)
+      REQUIRE_MESSAGE(arr.guards_intact(), "checked adjoint wrote outside an input adjoint");
+    int bad = 0;
+    for (size_t a = 0; a < raw.size(); ++a)
+      for (size_t i = 0; i < raw[a].size(); ++i)
+        if (std::memcmp(&raw[a][i], &got[a][i], sizeof(T)) != 0)
+          ++bad;
+    CHECK_MESSAGE(bad == 0, bad << " cells of the checked adjoint differ from the raw one");
   }
 
 private:

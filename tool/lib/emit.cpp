@@ -2,6 +2,7 @@
 // scatter loops, and the file around them.
 #include "emit.hpp"
 
+#include "emit_checked.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
 
@@ -1002,7 +1003,8 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// f(in..., out..., constants...), f_adjoint takes the same parameters in order,\n"
         "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
         "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
-        "#pragma once\n\n");
+        "#pragma once\n\n"
+        "#include <stddef.h> // size_t, for the checked entry points (C and C++)\n\n");
   bool vectors = false;
   for (const auto& p : plans)
     vectors = vectors || has_vectors(*p.kernel);
@@ -1015,6 +1017,11 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
     if (p.kernel->c_linkage) // a C kernel: callable from C
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
     h.raw(adjoint_signature(*p.kernel) + ";\n");
+    if (has_checked_entry(*p.kernel))
+      h.raw(fmt::format("/// The same, each array followed by its number of elements: sizes too small\n"
+                        "/// for the elements the kernel touches throw std::invalid_argument.\n"
+                        "{};\n",
+                        checked_signature(*p.kernel)));
     if (p.kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
     close_namespaces(h, *p.kernel);
@@ -1034,8 +1041,7 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   bool checks = false;
   for (const auto& p : plans)
     checks = checks || !p.kernel->size_checks.empty() || has_vectors(*p.kernel);
-  if (checks)
-    c.raw("#include <stdexcept>\n#include <string>\n");
+  c.raw("#include <stdexcept>\n#include <string>\n"); // the checked entry points
   bool staged = false;
   for (const auto& p : plans)
     staged = staged || !p.kernel->intermediates.empty();
@@ -1056,6 +1062,10 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   for (const auto& p : plans) {
     emit_kernel(c, p);
     c.raw("\n");
+    if (has_checked_entry(*p.kernel)) {
+      emit_checked_entry(c, *p.kernel);
+      c.raw("\n");
+    }
   }
   out.source = formatted(c.str(), stem + "_adjoint.cpp");
   return out;

@@ -34,6 +34,8 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT: #include <cmath>
 // CPP-NEXT: #include <cstddef>
 // CPP-NEXT: #include <limits>
+// CPP-NEXT: #include <stdexcept>
+// CPP-NEXT: #include <string>
 // CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__) && !defined(__clang__)
 // CPP-NEXT: // Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see
@@ -153,4 +155,11 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // c89_private_adjoint with the size of every array, checked against the elements the kernel touches
+// CPP-NEXT: // (not checkable: u, v, read at data-dependent indices or under data-dependent conditions).
+// CPP-NEXT: void c89_private_adjoint_checked(const double* u, size_t u_size, double* u_adj, size_t u_adj_size,
+// CPP-NEXT:                                  const double* v_adj, size_t v_adj_size, int n) {
+// CPP-NEXT:   c89_private_adjoint(u, u_adj, v_adj, n);
 // CPP-NEXT: }
