@@ -706,7 +706,7 @@ std::string param_list(const Kernel& k, bool shaped = true) {
     return fmt::format("{}{}* {}", c, p.elem_name, name);
   };
   for (const auto& p : k.params) {
-    if (shaped && p.synthetic)
+    if (shaped && (p.synthetic || !p.twin_of.empty()))
       continue;
     switch (p.kind) {
     case ParamKind::In:
@@ -760,7 +760,8 @@ std::string flat_arguments(const Kernel& k) {
       as.push_back(array(p, false, p.name + "_adj"));
       break;
     case ParamKind::Out:
-      as.push_back(array(p, true, p.name + "_adj"));
+      as.push_back(p.twin_of.empty() ? array(p, true, p.name + "_adj")
+                                     : p.twin_of + "_seed.data()");
       break;
     case ParamKind::ConstArray:
       as.push_back(array(p, true, p.name));
@@ -956,10 +957,64 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   code.close();
 }
 
+// An in-place array u: on entry u_adj holds the seed of its new values, on
+// return the adjoint of its old ones. The flat adjoint sees u as an input and
+// its new values as the output u_new: so u_adj starts as 0 where the kernel
+// writes u (the old value reaches the new one only through the kernel) and
+// as the seed elsewhere (an element the kernel leaves is passed through).
+void emit_inout_prologue(Code& code, const Kernel& k) {
+  if (!has_inout(k))
+    return;
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  for (const auto& p : k.params) {
+    if (!p.inout)
+      continue;
+    const std::string twin = p.name + "_new";
+    code.line("// '{}' is updated in place: {}_adj holds the seed of its new values on entry",
+              p.name, p.name);
+    code.line("// and the adjoint of its old values on return.");
+    code.line("const std::ptrdiff_t {}_n = {};", p.name, k.extent.at(twin));
+    code.line("std::vector<{}> {}_seed({}_adj, {}_adj + {}_n);", p.elem_name, p.name, p.name, p.name,
+              p.name);
+    for (const auto& nest : k.nests) {
+      bool writes = false;
+      for (const auto& s : nest.stores)
+        writes = writes || s.array == twin;
+      if (!writes)
+        continue;
+      code.open("");
+      int opened = 1;
+      for (const auto& l : nest.loops) {
+        code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, print(l.lo),
+                              l.var, print(l.hi), l.var));
+        ++opened;
+      }
+      std::set<int> done;
+      std::set<std::string> vars;
+      for (const auto& s : nest.stores) {
+        if (s.array != twin)
+          continue;
+        std::map<int, LocalP> locals;
+        for (const auto& pc : s.path)
+          collect(pc.cond, locals, vars);
+        collect(s.index, locals, vars);
+        define_locals(code, locals, done);
+        if (s.path.empty())
+          code.line("{}_adj[{}] = 0;", p.name, print(s.index));
+        else
+          code.line("if ({}) {}_adj[{}] = 0;", conjunction(s.path), p.name, print(s.index));
+      }
+      for (int i = 0; i < opened; ++i)
+        code.close();
+    }
+  }
+}
+
 void emit_kernel(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   open_namespaces(code, k);
-  bool rows = has_rows(k);
+  bool rows = has_rows(k) || has_inout(k);
   std::string name = k.name + (rows ? "_adjoint_flat" : "_adjoint");
   if (rows)
     code.raw("namespace {\n");
@@ -981,6 +1036,7 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
     code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
     code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
     emit_vector_checks(code, k);
+    emit_inout_prologue(code, k);
     code.line("{}_adjoint_flat({});", k.name, flat_arguments(k));
     code.close();
   }
@@ -1045,6 +1101,8 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   bool staged = false;
   for (const auto& p : plans)
     staged = staged || !p.kernel->intermediates.empty();
+  for (const auto& p : plans)
+    staged = staged || has_inout(*p.kernel);
   if (staged)
     c.raw("#include <vector>\n");
   c.raw("\n");

@@ -161,7 +161,7 @@ std::string checked_params(const Kernel& k) {
 
 } // namespace
 
-bool has_checked_entry(const Kernel& k) { return !has_rows(k); }
+bool has_checked_entry(const Kernel& k) { return !has_rows(k) && !has_inout(k); }
 
 std::string checked_signature(const Kernel& k) {
   return fmt::format("void {}_adjoint_checked({})", k.name, checked_params(k));

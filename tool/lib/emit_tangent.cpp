@@ -79,12 +79,12 @@ std::string tangent_params(const Kernel& k, bool shaped) {
     return fmt::format("{}{}* {}", c, p.elem_name, name);
   };
   for (const auto& p : k.params) {
-    if (shaped && p.synthetic)
-      continue;
+    if ((shaped && p.synthetic) || !p.twin_of.empty())
+      continue; // an in-place array's new values go to the array itself
     switch (p.kind) {
     case ParamKind::In:
-      ps.push_back(array(p, true, p.name));
-      ps.push_back(array(p, true, p.name + "_dot"));
+      ps.push_back(array(p, !p.inout, p.name));
+      ps.push_back(array(p, !p.inout, p.name + "_dot"));
       break;
     case ParamKind::Out:
       ps.push_back(array(p, false, p.name));
@@ -112,10 +112,12 @@ std::string flat_tangent_arguments(const Kernel& k) {
     return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
   };
   for (const auto& p : k.params) {
+    if (!p.twin_of.empty())
+      continue;
     switch (p.kind) {
     case ParamKind::In:
-      as.push_back(array(p, true, p.name));
-      as.push_back(array(p, true, p.name + "_dot"));
+      as.push_back(array(p, !p.inout, p.name));
+      as.push_back(array(p, !p.inout, p.name + "_dot"));
       break;
     case ParamKind::Out:
       as.push_back(array(p, false, p.name));
@@ -194,9 +196,19 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
     std::string idx = print(s.index);
-    code.line("{}[{}] {} {};", s.array, idx, op, print(s.value));
-    code.line("{}_dot[{}] {} {};", s.array, idx, op,
-              dot ? print(dot) : type_spelling(s.value->type) == "float" ? "0.0f" : "0.0");
+    std::string dot_text = dot ? print(dot) : type_spelling(s.value->type) == "float" ? "0.0f" : "0.0";
+    const Param* twin = tp.k->find_param(s.array);
+    if (twin && !twin->twin_of.empty()) {
+      // In place: both values from the old element first, then the stores.
+      const std::string& u = twin->twin_of;
+      code.line("const {} {}_new_value = {};", type_spelling(s.value->type), u, print(s.value));
+      code.line("const {} {}_new_dot = {};", type_spelling(s.value->type), u, dot_text);
+      code.line("{}[{}] = {}_new_value;", u, idx, u);
+      code.line("{}_dot[{}] = {}_new_dot;", u, idx, u);
+    } else {
+      code.line("{}[{}] {} {};", s.array, idx, op, print(s.value));
+      code.line("{}_dot[{}] {} {};", s.array, idx, op, dot_text);
+    }
     if (guarded)
       code.close();
   }

@@ -101,6 +101,10 @@ bool has_rows(const Kernel& k) {
   });
 }
 
+bool has_inout(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.inout; });
+}
+
 bool has_vectors(const Kernel& k) {
   return std::any_of(k.params.begin(), k.params.end(),
                      [](const Param& p) { return !p.container.empty(); });

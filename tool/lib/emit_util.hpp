@@ -71,6 +71,8 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name);
 /// calls a flat twin.
 bool has_rows(const Kernel& k);
 bool has_vectors(const Kernel& k);
+/// Arrays updated in place (DPGEN_INOUT).
+bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);
 void close_namespaces(Code& c, const Kernel& k);
 /// clang-format (LLVM style, 100 columns) over generated text.

@@ -129,6 +129,11 @@ struct Param {
   std::string container;
   /// Not in the user's signature: the size dpgen passes for a vector.
   bool synthetic = false;
+  /// DPGEN_INOUT: an array updated in place, element by element. In the IR
+  /// it is an input (its values before the call, `inout` set) and an output
+  /// twin `<name>_new` (`twin_of` names the input) that receives the stores.
+  bool inout = false;
+  std::string twin_of;
 };
 
 struct Loop {

@@ -91,6 +91,7 @@ public:
       if (failed_)
         return false; // every statement's error is reported; the checks need them all
       check_intermediates();
+      check_inout();
       check_outputs();
       output_extents();
     } catch (const Rejected&) {
@@ -240,6 +241,7 @@ private:
       std::string ann = annotation(p);
       QualType q = p->getType();
       std::optional<Param> size_param;
+      std::optional<Param> inout_twin;
       if (q->isReferenceType()) {
         QualType elem = vector_element(q.getNonReferenceType());
         if (elem.isNull())
@@ -319,6 +321,22 @@ private:
                                                out.name, elem.getAsString()));
           out.kind = ParamKind::In;
           any_in = true;
+        } else if (ann == "dpgen.inout") {
+          if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
+            fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                               "to non-const float or double",
+                                               out.name));
+          out.kind = ParamKind::In;
+          out.inout = true;
+          any_in = any_out = true;
+          Param twin;
+          twin.name = out.name + "_new";
+          twin.kind = ParamKind::Out;
+          twin.elem = *et;
+          twin.elem_name = out.elem_name;
+          twin.twin_of = out.name;
+          twin.declaration = twin.spelling = fmt::format("{}* {}", out.elem_name, twin.name);
+          inout_twin = twin;
         } else if (ann == "dpgen.out") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
@@ -356,6 +374,15 @@ private:
         out.declaration = os.str();
       }
       k_.params.push_back(out);
+      if (inout_twin) {
+        for (const auto& other : k_.params)
+          if (other.name == inout_twin->name)
+            fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
+                                               "for the new values of in-place array '{}'",
+                                               other.name, out.name));
+        k_.params.push_back(*inout_twin);
+        inout_twin.reset();
+      }
       if (size_param) {
         for (const auto& other : k_.params)
           if (other.name == size_param->name)
@@ -374,7 +401,7 @@ private:
     // Bind parameters (after the vector is complete, so pointers stay valid).
     for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
       const Param& p = k_.params[i];
-      if (p.synthetic)
+      if (p.synthetic || !p.twin_of.empty())
         continue;
       Binding b;
       b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
@@ -1121,6 +1148,24 @@ private:
     }
     if (auto acc = element(lhs)) {
       const Param* p = acc->param;
+      if (p->inout) {
+        // u[k] = v / u[k] += v on an in-place array: a store of the new value
+        // into its twin; `+=` adds to the value u[k] has here (the old one, or
+        // what this iteration stored).
+        const Param* twin = k_.find_param(p->name + "_new");
+        ExprP value = expr(rhs ? rhs : lhs);
+        if (op != BO_Assign) {
+          if (op != BO_AddAssign && op != BO_SubAssign && op != BO_MulAssign)
+            fail(loc, "this compound assignment is outside the kernel subset");
+          ExprP old = inout_value(p, acc->index, lhs->getBeginLoc(), lhs);
+          ExprP r = rhs ? expr(rhs) : int_const(1);
+          value = binary(op == BO_AddAssign ? Op::Add : op == BO_SubAssign ? Op::Sub : Op::Mul, old, r);
+        }
+        add_store(twin->name, acc->index, cast(value, p->elem), false, pos(lhs->getBeginLoc()),
+                  lhs->getBeginLoc());
+        inout_stores_.push_back({p->name, loop_ids_, next_store_seq_ - 1, acc->index});
+        return;
+      }
       if (!frames_.empty())
         fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
                                              "values; store them in the kernel",
@@ -1292,6 +1337,56 @@ private:
     store_locs_[{p.line, p.col}] = loc;
   }
   int next_store_seq_ = 0;
+
+  // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
+
+  struct InoutAccess {
+    std::string array;
+    std::vector<int> nest_key;
+    int seq;     // stores numbered below this one came before the access
+    ExprP index;
+    SourceLocation loc = {};
+  };
+  std::vector<InoutAccess> inout_stores_, inout_reads_;
+
+  // The value u[k] of an in-place array has here: what this iteration stored
+  // at k, or the value before the call (a read of the input).
+  ExprP inout_value(const Param* p, const ExprP& idx, SourceLocation loc, const clang::Expr* e) {
+    auto nit = nest_index_.find(loop_ids_);
+    if (nit != nest_index_.end())
+      if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
+        return st->value;
+    inout_reads_.push_back({p->name, loop_ids_, next_store_seq_, idx, loc});
+    ExprP r = read(p->name, idx, p->elem, pos(loc));
+    std::const_pointer_cast<Expr>(r)->text = text(e);
+    return r;
+  }
+
+  // An in-place array is read, where it is also written, only at the element
+  // its iteration writes (anything else reads a value another iteration may
+  // have updated: Gauss-Seidel), and never after a loop that wrote it.
+  void check_inout() {
+    for (const auto& r : inout_reads_)
+      for (const auto& s : inout_stores_) {
+        if (s.array != r.array)
+          continue;
+        size_t shared = 0;
+        while (shared < s.nest_key.size() && shared < r.nest_key.size() &&
+               s.nest_key[shared] == r.nest_key[shared])
+          ++shared;
+        bool same_nest = s.nest_key == r.nest_key;
+        auto ps = to_poly(s.index), pr = to_poly(r.index);
+        bool same_cell = ps && pr && *ps == *pr;
+        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq)))
+          fail(r.loc, fmt::format("in-place array '{}' is read here at an element another "
+                                  "iteration or loop may already have updated: a value carried "
+                                  "through the array (Gauss-Seidel, an in-place stencil) is "
+                                  "outside the kernel subset; read only the element each "
+                                  "iteration writes, or write the new values to a separate "
+                                  "DPGEN_OUT array",
+                                  r.array));
+      }
+  }
 
   // Reads of intermediates: which array, in which nest, after which store.
   struct IntermediateRead {
@@ -1613,10 +1708,18 @@ private:
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
-    if (k_.intermediates.empty())
+    bool inout = std::any_of(k_.params.begin(), k_.params.end(),
+                             [](const Param& p) { return p.inout; });
+    if (k_.intermediates.empty() && !inout)
       return;
     for (const auto& p : k_.params)
-      if (!p.container.empty())
+      if (!k_.intermediates.empty() && p.inout)
+        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
+                                             "kernel with in-place array '{}': write the new "
+                                             "values of '{}' to a DPGEN_OUT array",
+                                             *k_.intermediates.begin(), p.name, p.name));
+    for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && !p.container.empty())
         fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
                                              "kernel with std::vector parameter '{}': pass the "
                                              "arrays as pointers",
@@ -1627,8 +1730,9 @@ private:
         auto r = index_range(st, n);
         if (!r)
           fail_at(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
-                                      "adjoint must recompute because a later loop reads '{}'",
-                                      st.array, *k_.intermediates.begin()));
+                                      "adjoint needs buffers for (a work array or an in-place "
+                                      "array)",
+                                      st.array));
         ends[st.array].push_back(
             fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
       }
@@ -1957,6 +2061,8 @@ private:
                            p->name, st ? " after '+=' (its previous contents)" : ""));
         return st->value;
       }
+      if (p->inout)
+        return inout_value(p, acc->index, e->getBeginLoc(), e);
       ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
       std::const_pointer_cast<Expr>(r)->text = text(e); // as written, for remarks
       return r;
