@@ -3,7 +3,8 @@
 # Builds a static library <target> from the given annotated kernel files (the
 # forward kernels, compiled as they are) and their adjoints, which dpgen
 # generates at build time into ${CMAKE_CURRENT_BINARY_DIR}/<target>_generated/
-# as <stem>_adjoint.{hpp,cpp}. Link <target> and include "<stem>_adjoint.hpp".
+# as <stem>_adjoint.{hpp,cpp}, and <stem>_kernels.hpp declaring the forward
+# kernels. Link <target> and include "<stem>_adjoint.hpp".
 # With TANGENTS, also the forward-mode kernels <stem>_tangent.{hpp,cpp}
 # (<kernel>_tangent: Jacobian-vector products).
 # Editing a kernel or rebuilding dpgen regenerates; an unchanged output is not
@@ -66,7 +67,7 @@ function(dpgen_add_adjoints target)
     # dpgen/annotate.hpp itself.
     add_custom_command(
       OUTPUT ${stamp}
-      BYPRODUCTS ${hpp} ${cpp} ${tangent_files}
+      BYPRODUCTS ${hpp} ${cpp} ${gen_dir}/${stem}_kernels.hpp ${tangent_files}
       COMMAND $<TARGET_FILE:${tool}> ${abs} --out-dir ${gen_dir} --stamp ${stamp} ${tangent_flag}
               -- -std=c++17 -I${kdir} ${ARG_COMPILE_ARGS}
       DEPENDS ${tool_dependency} ${abs}

@@ -5,7 +5,7 @@
 #include "heat_c_adjoint.hpp"
 #include "heat_c_tangent.hpp"
 
-extern "C" void heat_c(int n, const double* u, const double* kappa, double* un, double r);
+#include "heat_c_kernels.hpp" // the generated declaration of the C kernel
 
 TEST_CASE("heat_c adjoint (a C kernel)") {
   for (int n : {0, 1, 2, 3, 6}) {

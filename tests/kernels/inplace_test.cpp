@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include "inplace_adjoint.hpp"
+#include "inplace_kernels.hpp"
 #include "inplace_tangent.hpp"
 #include "test_kernels.hpp"
 

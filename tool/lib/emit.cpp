@@ -1085,6 +1085,46 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   }
   out.header = formatted(h.str(), stem + "_adjoint.hpp");
 
+  // The forward kernels' declarations, so a caller includes them instead of
+  // writing them by hand.
+  Code d;
+  d.raw(fmt::format(kBanner, source_name));
+  d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
+        "#pragma once\n\n");
+  bool vec = false;
+  for (const auto& p : plans)
+    vec = vec || has_vectors(*p.kernel);
+  if (vec)
+    d.raw("#include <vector>\n\n");
+  for (const auto& p : plans) {
+    const Kernel& k = *p.kernel;
+    open_namespaces(d, k);
+    d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
+    std::vector<std::string> ps, flat;
+    for (const auto& prm : k.params) {
+      if (prm.synthetic || !prm.twin_of.empty())
+        continue;
+      ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
+      bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
+      flat.push_back(prm.kind == ParamKind::Scalar
+                         ? fmt::format("{} {}", prm.spelling, prm.name)
+                         : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name,
+                                       prm.name));
+    }
+    if (k.c_linkage) {
+      // C's variable-length rows and restrict are not C++: from C++ the same
+      // function is declared with flat pointers (the same ABI).
+      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" void {}({});\n#else\n", k.name,
+                        fmt::join(flat, ", ")));
+      d.raw(fmt::format("void {}({});\n#endif\n", k.name, fmt::join(ps, ", ")));
+    } else {
+      d.raw(fmt::format("void {}({});\n", k.name, fmt::join(ps, ", ")));
+    }
+    close_namespaces(d, k);
+    d.raw("\n");
+  }
+  out.kernels = formatted(d.str(), stem + "_kernels.hpp");
+
   Code c;
   c.raw(fmt::format(kBanner, source_name));
   c.raw("//\n"

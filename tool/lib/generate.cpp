@@ -51,6 +51,9 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
     llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
     pending.push_back({std::string(hpp), f.header});
     pending.push_back({std::string(cpp), f.source});
+    llvm::SmallString<256> khpp(opts.out_dir);
+    llvm::sys::path::append(khpp, stem + "_kernels.hpp");
+    pending.push_back({std::string(khpp), f.kernels});
     if (opts.tangent) {
       std::vector<const Kernel*> ks;
       for (const auto& k : kernels)
