@@ -33,7 +33,7 @@ VectorXd f_small(const VectorXd& x) {
 
 MatrixXd jacobian_small(const VectorXd& x) {
   MatrixXd j(4, 3);
-  j << x[1], x[0], std::cos(x[2]),                    //
+  j << x[1], x[0], std::cos(x[2]),                      //
       std::exp(x[0]), -2.0 * x[1] * x[2], -x[1] * x[1], //
       0.0, 0.0, 3.0 * x[2] * x[2],                      //
       1.0, 2.0, 0.0;

@@ -80,8 +80,7 @@ struct LinearResidual {
   LinearResidual(Eigen::Index m, const VectorXd& sigma, unsigned seed) {
     const Eigen::Index n = sigma.size();
     const auto random_matrix = [](Eigen::Index rows, Eigen::Index cols, unsigned s) {
-      return Eigen::MatrixXd(
-          dpgen_test::random_vector(rows * cols, s).reshaped(rows, cols));
+      return Eigen::MatrixXd(dpgen_test::random_vector(rows * cols, s).reshaped(rows, cols));
     };
     const Eigen::MatrixXd q =
         Eigen::HouseholderQR<Eigen::MatrixXd>(random_matrix(m, n, seed)).householderQ() *
@@ -277,8 +276,7 @@ TEST_CASE("HIG with kappa = +1 is a gradient-descent step with the same learning
   // V Sigma U^T r = J^T r: the SVD's rounding, eps sigma_max |r| per entry.
   CHECK((x0 + u.step - x).norm() <= 1e-14 * (1.0 + x0.norm()));
   CHECK(u.rank == 5);
-  CHECK((u.singular_values - (VectorXd(5) << 4.0, 2.0, 1.0, 0.5, 0.25).finished()).norm() <=
-        1e-14);
+  CHECK((u.singular_values - (VectorXd(5) << 4.0, 2.0, 1.0, 0.5, 0.25).finished()).norm() <= 1e-14);
 }
 
 TEST_CASE("HIG truncation drops the direction of a tiny singular value") {
@@ -410,11 +408,11 @@ TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad optio
     return z;
   };
   VectorXd z = VectorXd::Ones(2);
-  CHECK_THROWS_WITH_AS(dpgen::hig_minimize(inf_jac, z), "hig: Jacobian is Inf at (1, 0) in iteration 0",
-                       dpgen::OptimizationError);
-  CHECK_THROWS_WITH_AS(dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2),
-                                         VectorXd::Constant(2, std::nan(""))),
-                       "hig: residual is NaN at index 0", dpgen::OptimizationError);
+  CHECK_THROWS_WITH_AS(dpgen::hig_minimize(inf_jac, z),
+                       "hig: Jacobian is Inf at (1, 0) in iteration 0", dpgen::OptimizationError);
+  CHECK_THROWS_WITH_AS(
+      dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Constant(2, std::nan(""))),
+      "hig: residual is NaN at index 0", dpgen::OptimizationError);
 
   // Sizes and options.
   const dpgen::ResidualJacobian wrong = [](const VectorXd&, Eigen::MatrixXd& jac) {

@@ -40,11 +40,10 @@ inline JacobianMode cheaper_jacobian_mode(Eigen::Index inputs, Eigen::Index outp
 
 namespace detail {
 
-inline void require_jacobian_sizes(Eigen::Index inputs, Eigen::Index outputs,
-                                   const char* where) {
+inline void require_jacobian_sizes(Eigen::Index inputs, Eigen::Index outputs, const char* where) {
   if (inputs < 0 || outputs < 0)
-    throw std::invalid_argument(message(where, ": sizes must be >= 0 (got ", inputs,
-                                        " inputs, ", outputs, " outputs)"));
+    throw std::invalid_argument(
+        message(where, ": sizes must be >= 0 (got ", inputs, " inputs, ", outputs, " outputs)"));
 }
 
 } // namespace detail

@@ -229,9 +229,9 @@ namespace detail {
 inline void check_hig_options(const HigOptions& o) {
   if (!(o.learning_rate > 0.0) || !std::isfinite(o.learning_rate) || !std::isfinite(o.exponent) ||
       !(o.truncation >= 0.0 && o.truncation < 1.0))
-    throw std::invalid_argument(message(
-        "hig: need learning_rate > 0, a finite exponent and 0 <= truncation < 1 (got ",
-        o.learning_rate, ", ", o.exponent, ", ", o.truncation, ")"));
+    throw std::invalid_argument(
+        message("hig: need learning_rate > 0, a finite exponent and 0 <= truncation < 1 (got ",
+                o.learning_rate, ", ", o.exponent, ", ", o.truncation, ")"));
   if (o.max_iterations < 0)
     throw std::invalid_argument(
         message("hig: max_iterations must be >= 0 (got ", o.max_iterations, ")"));
@@ -243,14 +243,13 @@ inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& 
                                const std::string& when) {
   const Eigen::Index i = first_non_finite(r);
   if (i >= 0)
-    throw OptimizationError(message("hig: residual is ", std::isnan(r[i]) ? "NaN" : "Inf",
-                                    " at index ", i, when));
+    throw OptimizationError(
+        message("hig: residual is ", std::isnan(r[i]) ? "NaN" : "Inf", " at index ", i, when));
   const Eigen::Map<const Eigen::VectorXd> entries(jac.data(), jac.size());
   const Eigen::Index k = first_non_finite(entries);
   if (k >= 0)
     throw OptimizationError(message("hig: Jacobian is ", std::isnan(entries[k]) ? "NaN" : "Inf",
-                                    " at (", k % jac.rows(), ", ", k / jac.rows(),
-                                    ")", when));
+                                    " at (", k % jac.rows(), ", ", k / jac.rows(), ")", when));
 }
 
 } // namespace detail
@@ -278,7 +277,7 @@ inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r
   update.singular_values = svd.singularValues();
   const Eigen::VectorXd& sigma = update.singular_values;
   const double cutoff = options.truncation * sigma[0]; // sigma is sorted, sigma_0 = sigma_max
-  Eigen::VectorXd c = svd.matrixU().transpose() * r; // c = U^T r, one entry per direction
+  Eigen::VectorXd c = svd.matrixU().transpose() * r;   // c = U^T r, one entry per direction
   for (Eigen::Index i = 0; i < c.size(); ++i) {
     if (sigma[i] > cutoff && sigma[i] > 0.0) {
       c[i] *= std::pow(sigma[i], options.exponent); // c_i <- sigma_i^kappa c_i
