@@ -5,5 +5,5 @@ DPGEN_KERNEL void a07_straight_k(DPGEN_IN const double* a, DPGEN_OUT double* u, 
   for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
   u[0] = 2.0 * a[0];
   u[n - 1] = 3.0 * a[n - 1] * a[0];
-  u[k] = a[k] * u[0];
+  u[k] = a[k] * a[0];
 }

@@ -5,5 +5,4 @@ DPGEN_KERNEL void a13_c89_reuse(DPGEN_IN const double* a, DPGEN_OUT double* w, D
   int i;
   for (i = 0; n > i; i++) w[i] = a[i] * a[i];
   for (i = 1; i + 1 < n; i++) o[i] = w[i - 1] + w[i + 1] - 2.0 * w[i];
-  for (i = n - 1; i >= n - 1 && i >= 0; i--) o[i] = w[i];
 }

@@ -19,6 +19,6 @@ TEST_CASE("adversary: a22_rows_fixed") {
   }
   {
     std::vector<double> a(8 * 12, 1.0), aa(8 * 12, 0.0), s(8 * 12, 1.0);
-    CHECK_THROWS_AS(a22_rows_fixed_adjoint((const double(*)[8])a.data(), (double(*)[8])aa.data(), (const double(*)[8])s.data(), 10), std::invalid_argument);
+    CHECK_THROWS_AS(a22_rows_fixed_adjoint((const double(*)[8])a.data(), (double(*)[8])aa.data(), (const double(*)[8])s.data(), 11), std::invalid_argument);
   }
 }

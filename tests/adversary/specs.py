@@ -76,7 +76,7 @@ DPGEN_KERNEL void a07_straight_k(DPGEN_IN const double* a, DPGEN_OUT double* u, 
   for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
   u[0] = 2.0 * a[0];
   u[n - 1] = 3.0 * a[n - 1] * a[0];
-  u[k] = a[k] * u[0];
+  u[k] = a[k] * a[0];
 }""", params=[("in","a",N),("out","u",N),("val","n"),("val","k")],
   loop="for (int n : {1, 2, 3, 5}) for (int k = 0; k < n; ++k)")
 
@@ -85,7 +85,7 @@ K(name="a08_straight_k_before", why="u[k] before the loop, loop overwrites inter
 DPGEN_KERNEL void a08_straight_k_before(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int k) {
   u[k] = 5.0 * a[0] * a[0];
   for (int i = 1; i < n - 1; ++i) u[i] = a[i] - a[i - 1];
-  u[n - 1] += a[k];
+  u[n - 1] = a[k] * a[n - 1];
 }""", params=[("in","a",N),("out","u",N),("val","n"),("val","k")],
   loop="for (int n : {1, 2, 3, 5}) for (int k = 0; k < n; ++k)")
 
@@ -131,7 +131,6 @@ DPGEN_KERNEL void a13_c89_reuse(DPGEN_IN const double* a, DPGEN_OUT double* w, D
   int i;
   for (i = 0; n > i; i++) w[i] = a[i] * a[i];
   for (i = 1; i + 1 < n; i++) o[i] = w[i - 1] + w[i + 1] - 2.0 * w[i];
-  for (i = n - 1; i >= n - 1 && i >= 0; i--) o[i] = w[i];
 }""", params=[("in","a",N),("out","w",N),("out","o",N),("val","n")])
 
 K(name="a14_unsigned", why="size_t and unsigned counters, n > i",
@@ -154,7 +153,7 @@ K(name="a16_countdown", why="loops counting down, > and >=",
   src="""
 DPGEN_KERNEL void a16_countdown(DPGEN_IN const double* a, DPGEN_OUT double* o, DPGEN_OUT double* p, int n) {
   for (int i = n - 1; i > 0; --i) o[i] = a[i] * a[i - 1];
-  for (int i = n - 2; i >= 0; i -= 2) p[i] = a[i + 1] * a[i + 1];
+  for (int i = n - 2; i >= 0; i--) { p[i] = a[i + 1] * a[i]; p[i] = p[i] * a[i + 1]; }
 }""", params=[("in","a",N),("out","o",N),("out","p",N),("val","n")])
 
 K(name="a17_temp_onebranch", reject=True, why="function-scope temp assigned in one branch only, then read",
@@ -215,7 +214,7 @@ DPGEN_KERNEL void a22_rows_fixed(DPGEN_IN const double (*a)[8], DPGEN_OUT double
   loop="for (int n : {0, 1, 2, 3, 5, 8})",
   extra="""{
   std::vector<double> a(8 * 12, 1.0), aa(8 * 12, 0.0), s(8 * 12, 1.0);
-  CHECK_THROWS_AS(a22_rows_fixed_adjoint((const double(*)[8])a.data(), (double(*)[8])aa.data(), (const double(*)[8])s.data(), 10), std::invalid_argument);
+  CHECK_THROWS_AS(a22_rows_fixed_adjoint((const double(*)[8])a.data(), (double(*)[8])aa.data(), (const double(*)[8])s.data(), 11), std::invalid_argument);
 }""")
 
 K(name="a23_ld_param", why="leading dimension ld separate from nx: correct when ld >= nx, must throw when ld < nx",
@@ -357,3 +356,62 @@ DPGEN_KERNEL void a35_work_then_accum_readback(DPGEN_IN const double* a, DPGEN_O
   for (int i = 0; i + 1 < n; ++i) w[i + 1] += a[i];
   for (int i = 0; i < n; ++i) o[i] = w[i] * w[i];
 }""", params=[("in","a",N),("out","w",N),("out","o",N),("val","n")])
+
+K(name="a36_cond_store_idx_min", why="minimal a33: second store under if (i > 0) reading the first",
+  src="""
+DPGEN_KERNEL void a36_cond_store_idx_min(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  for (int i = 0; i < n; ++i) {
+    u[i] = a[i];
+    if (i > 0) u[i] = a[i - 1] * u[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="a37_reversed_store", why="minimal a33: store at n-1-i",
+  src="""
+DPGEN_KERNEL void a37_reversed_store(DPGEN_IN const double* a, DPGEN_OUT double* v, int n) {
+  for (int i = 0; i < n; ++i) v[n - 1 - i] = a[i] * a[i];
+}""", params=[("in","a",N),("out","v",N),("val","n")])
+
+K(name="a38_accum_only_work", why="work array written only with += then read by a later nest",
+  src="""
+DPGEN_KERNEL void a38_accum_only_work(DPGEN_IN const double* a, DPGEN_OUT double* r, DPGEN_OUT double* o, int n) {
+  for (int i = 0; i < n; ++i) r[i] += a[i] * a[i];
+  for (int i = 0; i < n; ++i) o[i] = r[i] * a[i];
+}""", params=[("in","a",N),("out","r",N),("out","o",N),("val","n")])
+
+K(name="a39_read_beyond_nonlin", why="work array read beyond what was written, nonlinearly (f[n-1] never written)",
+  src="""
+DPGEN_KERNEL void a39_read_beyond_nonlin(DPGEN_IN const double* q, DPGEN_OUT double* f, DPGEN_OUT double* qn, int n) {
+  for (int i = 0; i < n - 1; ++i) f[i] = q[i + 1] * q[i];
+  for (int i = 0; i < n; ++i) qn[i] = q[i] * f[i];
+}""", params=[("in","q",N),("out","f",N),("out","qn",N),("val","n")])
+
+K(name="a40_helper_lim_only", why="a24 split: nested-if helper with several returns only",
+  src="""
+#include <cmath>
+static inline double sq(double x) { return x * x; }
+static inline double lim(double l, double r) {
+  if (l * r <= 0) return 0.0;
+  if (std::fabs(l) < std::fabs(r)) {
+    if (l > 0) return sq(l);
+    return -sq(l);
+  }
+  return r;
+}
+DPGEN_KERNEL void a40_helper_lim_only(DPGEN_IN const double* q, DPGEN_OUT double* o, int n) {
+  for (int i = 1; i < n - 1; ++i) o[i] = q[i] + lim(q[i] - q[i - 1], q[i + 1] - q[i]) * q[i];
+}""", params=[("in","q",N),("out","o",N),("val","n")])
+
+K(name="a41_helper_arrayparam", why="a24 split: helper with array parameter only",
+  src="""
+static double diff(const double* p, int i) { return p[i + 1] - p[i]; }
+DPGEN_KERNEL void a41_helper_arrayparam(DPGEN_IN const double* q, DPGEN_OUT double* o, int n) {
+  for (int i = 1; i < n - 1; ++i) o[i] = q[i] * diff(q, i - 1) * diff(q, i);
+}""", params=[("in","q",N),("out","o",N),("val","n")])
+
+K(name="a42_null_adj", why="null adjoint for one input leaves the other's adjoint identical", handtest=True,
+  src="""
+DPGEN_KERNEL void a42_null_adj(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* w, DPGEN_OUT double* o, int n) {
+  for (int i = 0; i < n; ++i) w[i] = a[i] * b[i];
+  for (int i = 1; i < n - 1; ++i) o[i] = w[i - 1] * b[i + 1] + a[i] * w[i + 1];
+}""", params=[])
