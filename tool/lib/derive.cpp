@@ -198,8 +198,23 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
     }
     return;
   }
-  if (e->op == Op::Read && seen.insert(e.get()).second)
-    out.push_back({e.get(), conds});
+  if (e->op == Op::Read) {
+    if (seen.insert(e.get()).second) {
+      out.push_back({e.get(), conds});
+    } else {
+      // Read again under other conditions (one node in both arms of a
+      // select): it happens where any occurrence's conditions hold; keep the
+      // conditions all occurrences share.
+      for (auto& site : out)
+        if (site.read == e.get()) {
+          size_t k = 0;
+          while (k < site.conds.size() && k < conds.size() &&
+                 site.conds[k].cond == conds[k].cond && site.conds[k].positive == conds[k].positive)
+            ++k;
+          site.conds.resize(k);
+        }
+    }
+  }
   if (e->op == Op::Select) {
     collect_reads(e->ops[0], conds, out, seen, seen_locals);
     for (bool arm : {true, false}) {

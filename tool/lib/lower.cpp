@@ -481,10 +481,12 @@ private:
     if (const auto* r = dyn_cast<ReturnStmt>(s)) {
       if (!frames_.empty() && loops_.size() == frames_.back().loop_depth) {
         // `return v;` in a helper being inlined: v where this path holds.
-        InlineFrame& fr = frames_.back();
         if (!r->getRetValue())
           fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
-        ExprP v = cast(expr(r->getRetValue()), fr.ret);
+        // The value first: it may inline further helpers, which grows frames_.
+        ExprP v = expr(r->getRetValue());
+        InlineFrame& fr = frames_.back();
+        v = cast(v, fr.ret);
         fr.returns.push_back(
             {std::vector<PathCond>(path_.begin() + long(fr.path_depth), path_.end()), v});
         return Escape::Always;
@@ -1394,6 +1396,8 @@ private:
     std::vector<int> nest_key;
     int seq; // stores numbered below this one came before the read
     SourceLocation loc;
+    ExprP index = nullptr;
+    std::vector<PathCond> path = {};
   };
   std::vector<IntermediateRead> intermediate_reads_;
 
@@ -1421,6 +1425,20 @@ private:
   bool path_reads_ok_ = false;
 
   void check_intermediates() {
+    // A work array's first store must set it: starting from '+=' adds to the
+    // caller's contents, which the adjoint cannot recompute.
+    for (const auto& w : k_.intermediates) {
+      const Store* first = nullptr;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores)
+          if (st.array == w && (!first || st.seq < first->seq))
+            first = &st;
+      if (first && first->accumulate)
+        fail_at(first->pos, fmt::format("work array '{}' (read by a later loop) is first written "
+                                        "with '+=': it adds to the caller's contents, which the "
+                                        "adjoint cannot recompute; set it with '=' first",
+                                        w));
+    }
     // A work array read outside every loop into a local would be needed by
     // every nest's adjoint; only stores outside loops may read it directly.
     for (const auto& [array, loc] : kernel_level_work_reads_)
@@ -1736,6 +1754,44 @@ private:
         ends[st.array].push_back(
             fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
       }
+    // A later loop may read a work array beyond what was written (the
+    // buffer holds NaN there): the buffer covers the reads too.
+    for (const auto& r : intermediate_reads_) {
+      auto it = nest_index_.find(r.nest_key);
+      if (it == nest_index_.end())
+        continue;
+      Store probe{r.array, r.index, r.index, r.path, {}};
+      auto range = to_poly(r.index) ? index_range(probe, k_.nests[it->second]) : std::nullopt;
+      if (!range)
+        fail(r.loc, fmt::format("cannot bound this read of work array '{}', which the adjoint "
+                                "recomputes into a buffer",
+                                r.array));
+      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
+                                          (range->second + Poly::constant(1)).code()));
+      // Provably outside every earlier store's range: an element no loop
+      // writes, whose value is the caller's (the adjoint's buffer has NaN).
+      bool outside_all = true, any_store = false;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != r.array)
+            continue;
+          any_store = true;
+          auto w = index_range(st, n);
+          Facts facts;
+          for (const Nest* m : {&n, static_cast<const Nest*>(&k_.nests[it->second])})
+            for (const auto& l : m->loops)
+              add_nonempty(l, facts);
+          Poly one = Poly::constant(1);
+          bool outside = w && (prove_nonneg(range->second - w->second - one, facts) ||
+                               prove_nonneg(w->first - range->first - one, facts));
+          outside_all = outside_all && outside;
+        }
+      if (any_store && outside_all)
+        fail(r.loc, fmt::format("reads work array '{}' at elements no earlier loop writes (their "
+                                "values are the caller's, which the adjoint cannot recompute); "
+                                "write every element a later loop reads",
+                                r.array));
+    }
     for (const auto& [array, e] : ends)
       k_.extent[array] = e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
                                        : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})",
@@ -2050,7 +2106,8 @@ private:
           ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
           std::const_pointer_cast<Expr>(r)->text = text(e);
           k_.intermediates.insert(p->name);
-          intermediate_reads_.push_back({p->name, loop_ids_, next_store_seq_, e->getBeginLoc()});
+          intermediate_reads_.push_back(
+              {p->name, loop_ids_, next_store_seq_, e->getBeginLoc(), acc->index, path_});
           return r;
         }
         if (!st || st->accumulate)
