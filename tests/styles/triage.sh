@@ -53,8 +53,9 @@ triage_one() {
     printf '%-30s %-9s %-14s %s\n' "$stem" CRASH "" "exit 0 but no ${stem}_adjoint.cpp"
     return
   fi
-  local test=$here/${stem}_test.cpp
-  if ! $CXX -std=c++17 -O1 -fopenmp -I"$root/runtime/include" -I"$root/tests" -I"$here" \
+  local srcdir; srcdir=$(cd "$(dirname "$src")" && pwd)
+  local test=$srcdir/${stem}_test.cpp
+  if ! $CXX -std=c++17 -O1 -fopenmp -I"$root/runtime/include" -I"$root/tests" -I"$srcdir" \
       -I"$out/gen" "$src" "$out/gen/${stem}_adjoint.cpp" $(ls "$out/gen/${stem}_tangent.cpp" 2>/dev/null) "$test" "$work/main.o" \
       -o "$out/t" >"$out/cxx.log" 2>&1; then
     line=$(grep -m1 'error' "$out/cxx.log")

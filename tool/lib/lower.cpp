@@ -140,6 +140,32 @@ private:
   // when they reuse counter names (or a freed Loop's address).
   std::vector<int> loop_ids_;
   int next_loop_id_ = 0;
+  // Straight-line code after a loop that stored an output, and that reads or
+  // rewrites what the loop stored, runs after the loop: it opens a new
+  // segment, a nest of its own at the same depth (negative numbers, one per
+  // depth, the last entry of a nest's key).
+  std::vector<int> segments_{-1};
+  int next_segment_ = -1;
+  std::vector<int> cur_key() const {
+    std::vector<int> k = loop_ids_;
+    k.push_back(segments_.back());
+    return k;
+  }
+  // A statement that reads `array` (an output) or updates an element of it
+  // that this nest stored goes after every nest created since this one that
+  // stores `array` (a loop that accumulated into it, or wrote it): a new
+  // segment. Otherwise it would be folded into the earlier statements.
+  void order_after_later_stores(const std::string& array) {
+    auto it = nest_index_.find(cur_key());
+    if (it == nest_index_.end())
+      return;
+    for (size_t i = it->second + 1; i < k_.nests.size(); ++i)
+      for (const auto& st : k_.nests[i].stores)
+        if (st.array == array) {
+          segments_.back() = --next_segment_;
+          return;
+        }
+  }
   std::map<std::vector<int>, size_t> nest_index_;
   std::set<std::string> local_names_;
   std::set<std::string> loop_names_; // every counter name the generated code uses
@@ -945,10 +971,12 @@ private:
     }
     loops_.push_back(loop);
     loop_ids_.push_back(next_loop_id_++);
+    segments_.push_back(--next_segment_);
     Escape e = lower_recovering(f->getBody());
     (void)e; // a body ending in continue is fine
     loops_.pop_back();
     loop_ids_.pop_back();
+    segments_.pop_back();
     path_.resize(depth);
     env_ = env_before;
     why_unset_ = why_before;
@@ -1165,7 +1193,7 @@ private:
         }
         add_store(twin->name, acc->index, cast(value, p->elem), false, pos(lhs->getBeginLoc()),
                   lhs->getBeginLoc());
-        inout_stores_.push_back({p->name, loop_ids_, next_store_seq_ - 1, acc->index});
+        inout_stores_.push_back({p->name, cur_key(), next_store_seq_ - 1, acc->index});
         return;
       }
       if (!frames_.empty())
@@ -1250,13 +1278,13 @@ private:
   }
 
   Nest& current_nest() {
-    auto it = nest_index_.find(loop_ids_);
+    auto it = nest_index_.find(cur_key());
     if (it == nest_index_.end()) {
       Nest n;
       for (const auto& l : loops_)
         n.loops.push_back(*l);
       k_.nests.push_back(n);
-      it = nest_index_.emplace(loop_ids_, k_.nests.size() - 1).first;
+      it = nest_index_.emplace(cur_key(), k_.nests.size() - 1).first;
     }
     return k_.nests[it->second];
   }
@@ -1288,6 +1316,11 @@ private:
 
   void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
                  SourceLocation loc) {
+    // Updating an element this nest stored, after a later nest stored the
+    // array too: the update goes after that nest.
+    if (auto it = nest_index_.find(cur_key()); it != nest_index_.end())
+      if (visible_store(k_.nests[it->second], array, idx))
+        order_after_later_stores(array);
     Nest& nest = current_nest();
     // A second store to the same element in one iteration updates the first:
     // `x[k] = a; ... x[k] += b;` stores a + b, and a store under a further
@@ -1354,11 +1387,11 @@ private:
   // The value u[k] of an in-place array has here: what this iteration stored
   // at k, or the value before the call (a read of the input).
   ExprP inout_value(const Param* p, const ExprP& idx, SourceLocation loc, const clang::Expr* e) {
-    auto nit = nest_index_.find(loop_ids_);
+    auto nit = nest_index_.find(cur_key());
     if (nit != nest_index_.end())
       if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
         return st->value;
-    inout_reads_.push_back({p->name, loop_ids_, next_store_seq_, idx, loc});
+    inout_reads_.push_back({p->name, cur_key(), next_store_seq_, idx, loc});
     ExprP r = read(p->name, idx, p->elem, pos(loc));
     std::const_pointer_cast<Expr>(r)->text = text(e);
     return r;
@@ -1403,7 +1436,7 @@ private:
 
   bool written_by_other_nest(const std::string& array) const {
     for (const auto& [key, idx] : nest_index_)
-      if (key != loop_ids_)
+      if (key != cur_key())
         for (const auto& st : k_.nests[idx].stores)
           if (st.array == array)
             return true;
@@ -1467,6 +1500,23 @@ private:
           while (key && shared < key->size() && shared < r.nest_key.size() &&
                  (*key)[shared] == r.nest_key[shared])
             ++shared;
+          if (st.seq >= r.seq && *key == r.nest_key && r.index && same_index(r.index, st.index)) {
+            // Read after a loop wrote the array, then written again at the
+            // same element: an element holding two values in turn
+            // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
+            const Store* before = nullptr;
+            for (const auto& m : k_.nests)
+              for (const auto& e : m.stores)
+                if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
+                  before = &e;
+            if (before)
+              fail(r.loc, fmt::format("output '{}' is read here after line {} wrote it, and "
+                                      "written again on line {}: an output holds one value per "
+                                      "element, and the adjoint cannot tell the two apart; put "
+                                      "the first value in a DPGEN_OUT work array of its own "
+                                      "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
+                                      r.array, before->pos.line, st.pos.line, r.array));
+          }
           if (st.seq >= r.seq || *key == r.nest_key)
             fail(r.loc, fmt::format("output '{}' is read here and written on line {}, in the same "
                                     "loop or later: a value carried from one iteration to the "
@@ -2093,7 +2143,8 @@ private:
       const Param* p = acc->param;
       if (p->kind == ParamKind::Out) {
         // An output read back in the iteration that stored it: that value.
-        auto nit = nest_index_.find(loop_ids_);
+        order_after_later_stores(p->name);
+        auto nit = nest_index_.find(cur_key());
         Store* st = nit == nest_index_.end()
                         ? nullptr
                         : visible_store(k_.nests[nit->second], p->name, acc->index);
@@ -2107,7 +2158,7 @@ private:
           std::const_pointer_cast<Expr>(r)->text = text(e);
           k_.intermediates.insert(p->name);
           intermediate_reads_.push_back(
-              {p->name, loop_ids_, next_store_seq_, e->getBeginLoc(), acc->index, path_});
+              {p->name, cur_key(), next_store_seq_, e->getBeginLoc(), acc->index, path_});
           return r;
         }
         if (!st || st->accumulate)
