@@ -698,12 +698,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
 std::string param_list(const Kernel& k, bool shaped = true) {
   std::vector<std::string> ps;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    std::string c = is_const ? "const " : "";
-    if (shaped && !p.rows.empty())
-      return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
-    if (shaped && !p.container.empty())
-      return fmt::format("{}{}& {}", c, p.container, name);
-    return fmt::format("{}{}* {}", c, p.elem_name, name);
+    return array_declaration(p, is_const, name, shaped);
   };
   for (const auto& p : k.params) {
     if (shaped && (p.synthetic || !p.twin_of.empty()))
@@ -730,15 +725,8 @@ std::string param_list(const Kernel& k, bool shaped = true) {
 // The vector adjoint of an input has its input's size (it is accumulated
 // element by element).
 void emit_vector_checks(Code& code, const Kernel& k) {
-  for (const auto& p : k.params)
-    if (!p.container.empty() && p.kind == ParamKind::In) {
-      code.open(fmt::format("if ({}_adj.size() != {}.size())", p.name, p.name));
-      code.line("throw std::invalid_argument(\"{}_adjoint: {}_adj has \" + "
-                "std::to_string({}_adj.size()) + \" elements but {} has \" + "
-                "std::to_string({}.size()));",
-                k.name, p.name, p.name, p.name, p.name);
-      code.close();
-    }
+  emit_vector_size_checks(code, k, k.name + "_adjoint", "_adj",
+                          [](const Param& p) { return p.kind == ParamKind::In; });
 }
 
 // The call from the shaped entry point to the flat one: rows of a
@@ -746,13 +734,7 @@ void emit_vector_checks(Code& code, const Kernel& k) {
 // the flat array.
 std::string flat_arguments(const Kernel& k) {
   std::vector<std::string> as;
-  auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    if (!p.container.empty())
-      return name + ".data()";
-    if (p.rows.empty())
-      return name;
-    return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
-  };
+  auto array = flat_argument;
   for (const auto& p : k.params) {
     switch (p.kind) {
     case ParamKind::In:

@@ -66,21 +66,18 @@ TangentPlan plan_tangent(const Kernel& k) {
   return p;
 }
 
-// The tangent's parameters: each DPGEN_IN array followed by its read-only
-// `<name>_dot`, each DPGEN_OUT array followed by its `<name>_dot` result.
-std::string tangent_params(const Kernel& k, bool shaped) {
+// The tangent's parameters (`decl`) or the arguments from the shaped entry
+// point to the flat one: each DPGEN_IN array followed by its read-only
+// `<name>_dot`, each DPGEN_OUT array followed by its `<name>_dot` result. An
+// in-place array's new values go to the array itself.
+std::string tangent_list(const Kernel& k, bool shaped, bool decl) {
   std::vector<std::string> ps;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    std::string c = is_const ? "const " : "";
-    if (shaped && !p.rows.empty())
-      return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
-    if (shaped && !p.container.empty())
-      return fmt::format("{}{}& {}", c, p.container, name);
-    return fmt::format("{}{}* {}", c, p.elem_name, name);
+    return decl ? array_declaration(p, is_const, name, shaped) : flat_argument(p, is_const, name);
   };
   for (const auto& p : k.params) {
-    if ((shaped && p.synthetic) || !p.twin_of.empty())
-      continue; // an in-place array's new values go to the array itself
+    if ((decl && shaped && p.synthetic) || !p.twin_of.empty())
+      continue;
     switch (p.kind) {
     case ParamKind::In:
       ps.push_back(array(p, !p.inout, p.name));
@@ -94,57 +91,23 @@ std::string tangent_params(const Kernel& k, bool shaped) {
       ps.push_back(array(p, true, p.name));
       break;
     case ParamKind::Scalar:
-      ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+      if (decl)
+        ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+      else // a vector's size: the size() of the vector it follows
+        ps.push_back(p.synthetic ? p.name.substr(0, p.name.size() - 5) + ".size()" : p.name);
       break;
     }
   }
   return fmt::format("{}", fmt::join(ps, ", "));
 }
-
-// From the shaped entry point to the flat one.
-std::string flat_tangent_arguments(const Kernel& k) {
-  std::vector<std::string> as;
-  auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    if (!p.container.empty())
-      return name + ".data()";
-    if (p.rows.empty())
-      return name;
-    return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
-  };
-  for (const auto& p : k.params) {
-    if (!p.twin_of.empty())
-      continue;
-    switch (p.kind) {
-    case ParamKind::In:
-      as.push_back(array(p, !p.inout, p.name));
-      as.push_back(array(p, !p.inout, p.name + "_dot"));
-      break;
-    case ParamKind::Out:
-      as.push_back(array(p, false, p.name));
-      as.push_back(array(p, false, p.name + "_dot"));
-      break;
-    case ParamKind::ConstArray:
-      as.push_back(array(p, true, p.name));
-      break;
-    case ParamKind::Scalar:
-      as.push_back(p.synthetic ? p.name.substr(0, p.name.size() - 5) + ".size()" : p.name);
-      break;
-    }
-  }
-  return fmt::format("{}", fmt::join(as, ", "));
-}
+std::string tangent_params(const Kernel& k, bool shaped) { return tangent_list(k, shaped, true); }
+std::string flat_tangent_arguments(const Kernel& k) { return tangent_list(k, false, false); }
 
 // `std::vector` tangents have their arrays' sizes.
 void emit_vector_checks(Code& code, const Kernel& k) {
-  for (const auto& p : k.params)
-    if (!p.container.empty() && (p.kind == ParamKind::In || p.kind == ParamKind::Out)) {
-      code.open(fmt::format("if ({}_dot.size() != {}.size())", p.name, p.name));
-      code.line("throw std::invalid_argument(\"{}_tangent: {}_dot has \" + "
-                "std::to_string({}_dot.size()) + \" elements but {} has \" + "
-                "std::to_string({}.size()));",
-                k.name, p.name, p.name, p.name, p.name);
-      code.close();
-    }
+  emit_vector_size_checks(code, k, k.name + "_tangent", "_dot", [](const Param& p) {
+    return p.kind == ParamKind::In || p.kind == ParamKind::Out;
+  });
 }
 
 // A loop bound in the counters' type (a size_t size minus one stays signed).

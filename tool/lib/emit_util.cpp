@@ -139,4 +139,36 @@ std::string formatted(const std::string& code, const std::string& name) {
 
 
 
+std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped) {
+  std::string c = is_const ? "const " : "";
+  if (shaped && !p.rows.empty())
+    return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
+  if (shaped && !p.container.empty())
+    return fmt::format("{}{}& {}", c, p.container, name);
+  return fmt::format("{}{}* {}", c, p.elem_name, name);
+}
+
+// Rows of a multi-dimensional array are contiguous: the first element's
+// address is the flat array.
+std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
+  if (!p.container.empty())
+    return name + ".data()";
+  if (p.rows.empty())
+    return name;
+  return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
+}
+
+void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
+                             const std::string& suffix, bool (*wanted)(const Param&)) {
+  for (const auto& p : k.params)
+    if (!p.container.empty() && wanted(p)) {
+      code.open(fmt::format("if ({}{}.size() != {}.size())", p.name, suffix, p.name));
+      code.line("throw std::invalid_argument(\"{}: {}{} has \" + "
+                "std::to_string({}{}.size()) + \" elements but {} has \" + "
+                "std::to_string({}.size()));",
+                fn, p.name, suffix, p.name, suffix, p.name, p.name);
+      code.close();
+    }
+}
+
 } // namespace dpgen

@@ -70,6 +70,15 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name);
 /// Arrays of rows or std::vectors: the entry point takes them as declared and
 /// calls a flat twin.
 bool has_rows(const Kernel& k);
+/// An array parameter of a generated signature: `const double* a`, or with
+/// `shaped` the kernel's own shape (`const double (*a)[64]`, `std::vector<double>& a`).
+std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped);
+/// The argument that passes a shaped array on to the flat entry point.
+std::string flat_argument(const Param& p, bool is_const, const std::string& name);
+/// `if (<name><suffix>.size() != <name>.size()) throw ...` for each vector
+/// parameter `wanted` selects (the adjoint's `_adj`, the tangent's `_dot`).
+void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
+                             const std::string& suffix, bool (*wanted)(const Param&));
 bool has_vectors(const Kernel& k);
 /// Arrays updated in place (DPGEN_INOUT).
 bool has_inout(const Kernel& k);
