@@ -181,6 +181,8 @@ std::optional<Poly> to_poly(const ExprP& e) {
   case Op::Local: {
     if (e->type != Type::Int)
       return std::nullopt;
+    if (e->local->opaque)
+      return Poly::symbol(e->local->name);
     auto p = to_poly(e->local->def);
     // An integer local set once before every loop (`int x_min = *xmin;`,
     // `int half = n / 2;`) is fixed for the whole kernel: a symbol like a
@@ -564,6 +566,8 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
     return std::nullopt;
   switch (e->op) {
   case Op::Local:
+    if (e->local->opaque)
+      return Pieces{{Poly::symbol(e->local->name), universe()}};
     return index_pieces(e->local->def);
   case Op::Select: {
     auto where = condition_domain(e->ops[0]);

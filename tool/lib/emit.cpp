@@ -172,10 +172,10 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
-  std::string out_cell = fmt::format("{}[{}]", s.array, print(s.index));
-  code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj[{}]", out_cell, b.comment,
+  std::string out_cell = s.array + subscript(s.index);
+  code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array,
-            print(s.index));
+            subscript(s.index));
 
   std::vector<Box> boxes;
   if (cx.edge) {
@@ -373,7 +373,10 @@ std::string cell_index(const GatherGroup& g) {
 }
 
 std::string adj_cell(const GatherGroup& g) {
-  return fmt::format("{}_adj[{}]", g.array, cell_index(g));
+  Poly index = g.base;
+  for (const auto& [v, c] : g.layout)
+    index = index + c * Poly::symbol("c_" + v);
+  return g.array + "_adj" + subscript(index);
 }
 
 // One cell loop for one or more gather groups that share a layout and a cell
@@ -641,9 +644,9 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
 void emit_scatter(Code& code, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  code.line("// {}_adj: reads of {} in {}[{}] at indices that cannot be inverted; scatter form, "
+  code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
-            u.array, u.array, s.array, print(s.index));
+            u.array, u.array, s.array, subscript(s.index));
   code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
@@ -667,10 +670,11 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
   std::map<int, LocalP> seed_locals;
   collect(s.index, seed_locals, vars);
   define_locals(code, seed_locals, done);
-  code.line("const {} seed = {}_adj[{}];", type_spelling(s.value->type), s.array, print(s.index));
+  code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, subscript(s.index));
   for (const auto& r : u.reads) {
-    code.line("// {}[{}] = f(..., {}, ...): {}_adj[{}] += ∂f/∂{} · seed", s.array,
-              print(s.index), r.read->text, r.read->name, print(r.read->ops[0]), r.read->text);
+    code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
+              subscript(s.index), r.read->text, r.read->name, subscript(r.read->ops[0]),
+              r.read->text);
     bool guarded = !r.conds.empty();
     if (guarded) {
       std::map<int, LocalP> cond_locals;
@@ -684,7 +688,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     collect(r.read->ops[0], locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj[{}] += {};", r.read->name, print(r.read->ops[0]),
+    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0]),
               print(binary(Op::Mul, r.partial, param("seed", s.value->type))));
     if (guarded)
       code.close();
@@ -698,7 +702,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
 std::string param_list(const Kernel& k, bool shaped = true) {
   std::vector<std::string> ps;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    return array_declaration(p, is_const, name, shaped);
+    return array_declaration(p, is_const, name, shaped, k.c_linkage);
   };
   for (const auto& p : k.params) {
     if (shaped && (p.synthetic || !p.twin_of.empty()))
@@ -983,9 +987,9 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
         collect(s.index, locals, vars);
         define_locals(code, locals, done);
         if (s.path.empty())
-          code.line("{}_adj[{}] = 0;", p.name, print(s.index));
+          code.line("{}_adj{} = 0;", p.name, subscript(s.index));
         else
-          code.line("if ({}) {}_adj[{}] = 0;", conjunction(s.path), p.name, print(s.index));
+          code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name, subscript(s.index));
       }
       for (int i = 0; i < opened; ++i)
         code.close();

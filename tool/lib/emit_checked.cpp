@@ -161,7 +161,12 @@ std::string checked_params(const Kernel& k) {
 
 } // namespace
 
-bool has_checked_entry(const Kernel& k) { return !has_rows(k) && !has_inout(k); }
+bool has_checked_entry(const Kernel& k) {
+  // (rows through pointers have no one size to check)
+  bool row_pointers = std::any_of(k.params.begin(), k.params.end(),
+                                  [](const Param& p) { return p.row_pointers; });
+  return !has_rows(k) && !has_inout(k) && !row_pointers;
+}
 
 std::string checked_signature(const Kernel& k) {
   return fmt::format("void {}_adjoint_checked({})", k.name, checked_params(k));

@@ -73,7 +73,8 @@ TangentPlan plan_tangent(const Kernel& k) {
 std::string tangent_list(const Kernel& k, bool shaped, bool decl) {
   std::vector<std::string> ps;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    return decl ? array_declaration(p, is_const, name, shaped) : flat_argument(p, is_const, name);
+    return decl ? array_declaration(p, is_const, name, shaped, k.c_linkage)
+                : flat_argument(p, is_const, name);
   };
   for (const auto& p : k.params) {
     if ((decl && shaped && p.synthetic) || !p.twin_of.empty())
@@ -158,7 +159,7 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
-    std::string idx = print(s.index);
+    std::string idx = subscript(s.index);
     std::string dot_text = dot ? print(dot) : type_spelling(s.value->type) == "float" ? "0.0f" : "0.0";
     const Param* twin = tp.k->find_param(s.array);
     if (twin && !twin->twin_of.empty()) {
@@ -166,11 +167,11 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
       const std::string& u = twin->twin_of;
       code.line("const {} {}_new_value = {};", type_spelling(s.value->type), u, print(s.value));
       code.line("const {} {}_new_dot = {};", type_spelling(s.value->type), u, dot_text);
-      code.line("{}[{}] = {}_new_value;", u, idx, u);
-      code.line("{}_dot[{}] = {}_new_dot;", u, idx, u);
+      code.line("{}{} = {}_new_value;", u, idx, u);
+      code.line("{}_dot{} = {}_new_dot;", u, idx, u);
     } else {
-      code.line("{}[{}] {} {};", s.array, idx, op, print(s.value));
-      code.line("{}_dot[{}] {} {};", s.array, idx, op, dot_text);
+      code.line("{}{} {} {};", s.array, idx, op, print(s.value));
+      code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
     }
     if (guarded)
       code.close();

@@ -139,8 +139,11 @@ std::string formatted(const std::string& code, const std::string& name) {
 
 
 
-std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped) {
+std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
+                              bool c_language) {
   std::string c = is_const ? "const " : "";
+  if (p.row_pointers) // `double** a` passes as `const double* const* a` / `double* const* a_adj`
+    return fmt::format("{}{}* const* {}", c_language ? "" : c, p.elem_name, name);
   if (shaped && !p.rows.empty())
     return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
   if (shaped && !p.container.empty())

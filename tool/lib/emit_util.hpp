@@ -72,7 +72,10 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name);
 bool has_rows(const Kernel& k);
 /// An array parameter of a generated signature: `const double* a`, or with
 /// `shaped` the kernel's own shape (`const double (*a)[64]`, `std::vector<double>& a`).
-std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped);
+/// Row pointers are `const double* const*` for read-only arrays, but `double* const*`
+/// in the adjoint of a C kernel (`c_language`: C converts `double**` to that only).
+std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
+                              bool c_language = false);
 /// The argument that passes a shaped array on to the flat entry point.
 std::string flat_argument(const Param& p, bool is_const, const std::string& name);
 /// `if (<name><suffix>.size() != <name>.size()) throw ...` for each vector

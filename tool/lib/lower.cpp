@@ -167,6 +167,7 @@ private:
         }
   }
   std::map<std::vector<int>, size_t> nest_index_;
+  std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
   std::set<std::string> local_names_;
   std::set<std::string> loop_names_; // every counter name the generated code uses
   // Why a variable has no value here, where that is more than "not yet set".
@@ -326,13 +327,26 @@ private:
         }
         if (const_rows)
           elem.addConst();
-        if (elem->isPointerType())
-          fail(p->getLocation(),
-               fmt::format("parameter '{}' is an array of row pointers ('{}'): dpgen cannot "
-                           "prove that rows do not overlap, so it cannot prove a gather adjoint "
-                           "correct; pass contiguous rows as 'double (*{})[N]', a flat pointer "
-                           "indexed {}[j * nx + i], or a std::vector",
-                           out.name, q.getAsString(), out.name, out.name));
+        if (elem->isPointerType() && out.rows.empty()) {
+          // double** a, const double* const* a: rows through pointers, each
+          // row an array of its own (documented assumption).
+          elem = elem->getPointeeType();
+          if (elem->isPointerType() || ctx_.getAsArrayType(elem))
+            fail(p->getLocation(),
+                 fmt::format("parameter '{}' ('{}') has more than one level of row pointers: "
+                             "pass 'double** {}' (a[j][i]) or a flat pointer indexed "
+                             "{}[(k * ny + j) * nx + i]",
+                             out.name, q.getAsString(), out.name, out.name));
+          if (ann == "dpgen.inout")
+            fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
+                                               "pointer to non-const float or double",
+                                               out.name));
+          out.row_pointers = true;
+        } else if (elem->isPointerType()) {
+          fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
+                                             "row pointers, outside the kernel subset",
+                                             out.name, q.getAsString()));
+        }
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
@@ -424,6 +438,22 @@ private:
                                            k_.name));
     if (!any_out)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
+    // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
+    // that is larger than any column (a symbol; its value in the generated
+    // code, kRowSymbolValue, is only ever compared, never used as an address).
+    for (const auto& p : k_.params)
+      if (p.row_pointers) {
+        auto l = std::make_shared<LocalVar>();
+        l->name = row_symbol(p.name);
+        l->type_name = "std::ptrdiff_t";
+        l->def = int_const(kRowSymbolValue);
+        l->opaque = true;
+        l->id = next_local_id_++;
+        l->kernel_level = true;
+        local_names_.insert(l->name);
+        k_.kernel_locals.push_back(l);
+        row_lengths_[p.name] = local_ref(l);
+      }
     // Bind parameters (after the vector is complete, so pointers stay valid).
     for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
       const Param& p = k_.params[i];
@@ -1787,6 +1817,13 @@ private:
                                              "values of '{}' to a DPGEN_OUT array",
                                              *k_.intermediates.begin(), p.name, p.name));
     for (const auto& p : k_.params)
+      if (k_.intermediates.count(p.name) && p.row_pointers)
+        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) has "
+                                             "row pointers: the adjoint recomputes work arrays "
+                                             "into flat buffers; pass it as a flat pointer or "
+                                             "'double (*{})[N]'",
+                                             p.name, p.name));
+    for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
         fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
                                              "kernel with std::vector parameter '{}': pass the "
@@ -2036,8 +2073,14 @@ private:
     e = e->IgnoreParens();
     if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
       const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
-      if (isa<DeclRefExpr>(base))
-        return Access{array_base(base), int_const(0)};
+      if (isa<DeclRefExpr>(base)) {
+        const Param* p = array_base(base);
+        if (p->row_pointers)
+          fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
+                                                "its elements as {}[j][i]",
+                                                p->name, p->name, p->name));
+        return Access{p, int_const(0)};
+      }
       fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
                                 "parameter directly: a[i + 1]");
     }
@@ -2060,6 +2103,28 @@ private:
     if (idx->type != Type::Int)
       fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
     const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
+    if (const auto* row = dyn_cast<ArraySubscriptExpr>(base);
+        row && row->getType().getCanonicalType()->isPointerType()) {
+      // a[j][i] of row pointers `double** a`: the flat j * R + i (R the row
+      // symbol). Both indices must be affine: the printer writes them back
+      // as [j][i].
+      const clang::Expr* rb = row->getBase()->IgnoreParenImpCasts();
+      const Param* p = isa<DeclRefExpr>(rb) ? array_base(rb) : nullptr;
+      if (!p || !p->row_pointers)
+        fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
+                                  "'double**' kernel parameter: a[j][i]");
+      ExprP j = expr(row->getIdx());
+      if (j->type != Type::Int)
+        fail(row->getIdx()->getBeginLoc(), "array index must be an integer");
+      if (!to_poly(j) || !to_poly(idx))
+        fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
+                                             "data-dependent row or column; dpgen needs both "
+                                             "indices of a[j][i] affine in the loop counters "
+                                             "and sizes for row pointers (pass a flat array for "
+                                             "interpolation)",
+                                             p->name));
+      return Access{p, binary(Op::Add, binary(Op::Mul, j, row_lengths_.at(p->name)), idx)};
+    }
     if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
       // a[j][i]: row j of an array of rows, each `extent` elements long.
       QualType rt = row->getType().getCanonicalType();
@@ -2082,6 +2147,10 @@ private:
       return Access{inner->param, flat};
     }
     const Param* p = array_base(base);
+    if (p->row_pointers)
+      fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
+                                           "value; index its elements as {}[j][i]",
+                                           p->name, p->name, p->name));
     check_index_width(sub->getIdx(), idx, p->name);
     return Access{p, idx};
   }
