@@ -73,6 +73,9 @@ struct Binding {
   Type elem = Type::Double; // LocalArray: element type
   const Param* param = nullptr;
   bool kernel_level = false; // Value defined outside every loop
+  // Value: a helper's pointer parameter bound to a caller's local (`&f`),
+  // used only as `*p`; the binding holds the local's value.
+  bool deref_only = false;
 };
 
 // Thrown to abandon a kernel after its diagnostic has been reported.
@@ -537,6 +540,15 @@ private:
     if (const auto* r = dyn_cast<ReturnStmt>(s)) {
       if (!frames_.empty() && loops_.size() == frames_.back().loop_depth) {
         // `return v;` in a helper being inlined: v where this path holds.
+        if (frames_.back().is_void) {
+          // (an early return would have to undo the out-parameters' later
+          // assignments on its path)
+          if (path_.size() > frames_.back().path_depth)
+            fail(s->getBeginLoc(), fmt::format("'return' inside a branch of void helper '{}': "
+                                               "assign the out-parameters in if/else instead",
+                                               frames_.back().fn->getNameAsString()));
+          return Escape::Always;
+        }
         if (!r->getRetValue())
           fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
         // The value first: it may inline further helpers, which grows frames_.
@@ -1175,8 +1187,16 @@ private:
              u->getOperatorLoc());
       return;
     }
+    // `(void)x;` (silences an unused-variable warning): nothing to do.
+    if (const auto* c = dyn_cast<ExplicitCastExpr>(e);
+        c && c->getType()->isVoidType() && isa<DeclRefExpr>(c->getSubExpr()->IgnoreParenImpCasts()))
+      return;
     const auto* b = dyn_cast<BinaryOperator>(e);
     if (!b || !b->isAssignmentOp()) {
+      if (const auto* c = dyn_cast<CallExpr>(e); c && c->getType()->isVoidType()) {
+        (void)expr(e); // a void helper: its out-parameters and stores (or the unknown call)
+        return;
+      }
       if (isa<CallExpr>(e))
         (void)expr(e); // reports the unknown call
       fail(e->getExprLoc(), "expression statement has no effect on an output; only "
@@ -1185,9 +1205,25 @@ private:
     assign(b->getLHS(), b->getOpcode(), b->getRHS(), b->getOperatorLoc());
   }
 
+  // `*p` of a helper's pointer parameter bound to a caller's local (`&f`).
+  const VarDecl* deref_local(const clang::Expr* e) {
+    const auto* u = dyn_cast<UnaryOperator>(e->IgnoreParenImpCasts());
+    if (!u || u->getOpcode() != UO_Deref)
+      return nullptr;
+    const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? env_.find(v) : env_.end();
+    return it != env_.end() && it->second.kind == Binding::Value && it->second.deref_only ? v
+                                                                                           : nullptr;
+  }
+
   void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
               SourceLocation loc) {
     lhs = lhs->IgnoreParenImpCasts();
+    if (const VarDecl* v = deref_local(lhs)) {
+      assign_value(v, *scalar_type(v->getType()->getPointeeType()), lhs, op, rhs, loc);
+      return;
+    }
     if (auto le = local_element(lhs)) {
       Binding& b = env_[le->first];
       ExprP& slot = b.elems[le->second];
@@ -1226,7 +1262,7 @@ private:
         inout_stores_.push_back({p->name, cur_key(), next_store_seq_ - 1, acc->index});
         return;
       }
-      if (!frames_.empty())
+      if (!frames_.empty() && !frames_.back().is_void)
         fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
                                              "values; store them in the kernel",
                                              frames_.back().fn->getNameAsString(), p->name));
@@ -1272,12 +1308,22 @@ private:
       fail(lhs->getBeginLoc(), fmt::format("'{}' is outside the kernel subset",
                                            var->getNameAsString()));
     }
-    Binding& b = it->second;
-    if (b.kind != Binding::Value)
+    if (it->second.kind != Binding::Value)
       fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
                                            "read only",
                                            var->getNameAsString()));
-    Type t = *scalar_type(var->getType());
+    auto t = scalar_type(var->getType().getNonReferenceType());
+    if (!t)
+      fail(lhs->getBeginLoc(), fmt::format("'{}' has a type outside the kernel subset",
+                                           var->getNameAsString()));
+    assign_value(var, *t, lhs, op, rhs, loc);
+  }
+
+  // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
+  // stands for).
+  void assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
+                    const clang::Expr* rhs, SourceLocation loc) {
+    Binding& b = env_[var];
     ExprP value;
     if (op == BO_Assign) {
       value = expr(rhs);
@@ -1972,6 +2018,7 @@ private:
     size_t loop_depth;
     Type ret;
     std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
+    bool is_void = false; // results through out-parameters, or stores
   };
   std::vector<InlineFrame> frames_;
 
@@ -1988,20 +2035,63 @@ private:
       fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
                                          "free helper functions only",
                                          def->getNameAsString()));
-    auto rt = scalar_type(def->getReturnType());
+    const bool is_void = def->getReturnType()->isVoidType();
+    auto rt = is_void ? std::optional<Type>(Type::Double) : scalar_type(def->getReturnType());
     if (!rt || def->getReturnType()->isReferenceType())
       fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
-                                         "returns an int, float, double or bool value",
+                                         "returns an int, float, double or bool value (or "
+                                         "void, with its results in out-parameters)",
                                          def->getNameAsString(),
                                          def->getReturnType().getAsString()));
     if (c->getNumArgs() != def->getNumParams())
       fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
     // Bind the parameters (arguments are evaluated in the caller's scope).
     std::vector<std::pair<const VarDecl*, Binding>> binds;
+    // Out-parameters: `double& f` and `double* f` (called with `&x`) bound to
+    // a local x of the caller: copied in, and copied back after the body
+    // (the same as a reference while no two of them name one local).
+    std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
+    auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
+      const clang::Expr* a = arg->IgnoreParenImpCasts();
+      if (pointer) {
+        const auto* u = dyn_cast<UnaryOperator>(a);
+        a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
+      }
+      const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
+      const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+      auto it = v ? env_.find(v) : env_.end();
+      if (it == env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
+        fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
+                                             "be {}a local variable of the caller",
+                                             pd->getNameAsString(), def->getNameAsString(),
+                                             pointer ? "the address of " : ""));
+      for (const auto& [q, w] : outs)
+        if (w == v)
+          fail(arg->getBeginLoc(), fmt::format("local '{}' is passed to two out-parameters of "
+                                               "helper '{}'",
+                                               v->getNameAsString(), def->getNameAsString()));
+      if (!is_void)
+        fail(pd->getLocation(), fmt::format("helper '{}' returns a value and has out-parameter "
+                                            "'{}': return void and put every result in an "
+                                            "out-parameter, or return the one result",
+                                            def->getNameAsString(), pd->getNameAsString()));
+      Binding b = it->second;
+      b.deref_only = pointer;
+      binds.push_back({pd, b});
+      outs.push_back({pd, v});
+    };
     for (unsigned i = 0; i < def->getNumParams(); ++i) {
       const ParmVarDecl* pd = def->getParamDecl(i);
       const clang::Expr* arg = c->getArg(i);
       QualType pt = pd->getType();
+      if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
+          scalar_type(pt->getPointeeType()) && [&] {
+            const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
+            return u && u->getOpcode() == UO_AddrOf;
+          }()) {
+        out_param(pd, arg, true);
+        continue;
+      }
       if (pt->isPointerType()) {
         const clang::Expr* base = arg->IgnoreParenImpCasts();
         const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
@@ -2016,10 +2106,15 @@ private:
         binds.push_back({pd, b});
         continue;
       }
-      if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified())
-        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' is a non-const "
-                                            "reference: a helper returns its result by value",
-                                            pd->getNameAsString(), def->getNameAsString()));
+      if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) {
+        if (!scalar_type(pt.getNonReferenceType()))
+          fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', "
+                                              "outside the kernel subset",
+                                              pd->getNameAsString(), def->getNameAsString(),
+                                              pt.getAsString()));
+        out_param(pd, arg, false);
+        continue;
+      }
       auto t = scalar_type(pt.getNonReferenceType());
       if (!t)
         fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
@@ -2033,7 +2128,7 @@ private:
     }
     for (const auto& [pd, b] : binds)
       env_[pd] = b;
-    frames_.push_back({def, path_.size(), loops_.size(), *rt, {}});
+    frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
     Escape e;
     try {
       e = lower(def->getBody());
@@ -2045,6 +2140,11 @@ private:
     InlineFrame fr = frames_.back();
     frames_.pop_back();
     path_.resize(fr.path_depth);
+    if (is_void) {
+      for (const auto& [pd, v] : outs)
+        env_[v].value = env_[pd].value;
+      return nullptr;
+    }
     if (e != Escape::Always || fr.returns.empty())
       fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
                                                     "returning a value",
@@ -2202,6 +2302,12 @@ private:
       return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
     if (const auto* r = dyn_cast<DeclRefExpr>(e))
       return decl_ref(r);
+    if (const VarDecl* v = deref_local(e)) {
+      const Binding& b = env_[v];
+      if (!b.value)
+        fail(e->getBeginLoc(), unset_message(v, "may be used before it has a value"));
+      return b.value;
+    }
     if (auto le = local_element(e)) {
       const ExprP& v = env_[le->first].elems[le->second];
       if (!v)
@@ -2364,6 +2470,10 @@ private:
                                          "can be read",
                                          v->getNameAsString()));
     case Binding::Value:
+      if (b.deref_only)
+        fail(r->getLocation(), fmt::format("pointer '{}' to a local is used without '*': only "
+                                           "'*{}' is in the kernel subset",
+                                           v->getNameAsString(), v->getNameAsString()));
       if (!b.value)
         fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
       return b.value;
