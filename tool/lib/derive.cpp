@@ -81,9 +81,22 @@ public:
       return is_real(e->ops[0]->type) ? cast_or_null(d(e->ops[0]), e->type) : nullptr;
     case Op::Call:
       return call_rule(e, nullptr);
-    default:
-      return nullptr; // comparisons, logic, %: not real-valued
+    case Op::Local: // handled above
+    case Op::Rem:   // integer only
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Eq:
+    case Op::Ne:
+    case Op::And:
+    case Op::Or:
+    case Op::Not: // comparisons and logic are boolean: returned above
+      break;
     }
+    // A real-valued expression without a rule would silently get a zero
+    // derivative: never.
+    throw std::logic_error("derive: no rule for a real-valued expression of this kind");
   }
 
 private:

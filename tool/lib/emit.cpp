@@ -2,6 +2,8 @@
 // scatter loops, and the file around them.
 #include "emit.hpp"
 
+#include "ir_walk.hpp"
+
 #include "emit_checked.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
@@ -232,17 +234,14 @@ constexpr int kMinParallelCells = 8192;
 // ---- a gather group ------------------------------------------------------------
 
 void collect_selects(const ExprP& e, std::vector<ExprP>& conds, std::set<const LocalVar*>& seen) {
-  if (!e)
-    return;
-  if (e->op == Op::Local) {
-    if (!e->local->kernel_level && seen.insert(e->local.get()).second)
-      collect_selects(e->local->def, conds, seen);
-    return;
-  }
-  if (e->op == Op::Select)
-    conds.push_back(e->ops[0]);
-  for (const auto& o : e->ops)
-    collect_selects(o, conds, seen);
+  walk(
+      e,
+      [&](const ExprP& x) {
+        if (x->op == Op::Select)
+          conds.push_back(x->ops[0]);
+        return true;
+      },
+      [](const ExprP& l) { return !l->local->kernel_level; }, seen);
 }
 
 // Shrinks the interior so that the index conditions of its terms (a periodic
@@ -832,16 +831,8 @@ std::string forward_params(const Kernel& k) {
 }
 
 bool reads_array(const ExprP& e, const std::string& array, std::set<const LocalVar*>& seen) {
-  if (!e)
-    return false;
-  if (e->op == Op::Read && e->name == array)
-    return true;
-  if (e->op == Op::Local)
-    return seen.insert(e->local.get()).second && reads_array(e->local->def, array, seen);
-  for (const auto& o : e->ops)
-    if (reads_array(o, array, seen))
-      return true;
-  return false;
+  return any_node(
+      e, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }, seen);
 }
 
 bool nest_reads(const Nest& n, const std::string& array) {

@@ -5,6 +5,8 @@
 // kernel's own, and parallel where every element is written once.
 #include "emit_tangent.hpp"
 
+#include "ir_walk.hpp"
+
 #include "derive.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
@@ -28,17 +30,13 @@ struct TangentPlan {
 };
 
 void names_in(const ExprP& e, std::set<std::string>& out, std::set<const LocalVar*>& seen) {
-  if (!e)
-    return;
-  if (e->op == Op::Local) {
-    if (seen.insert(e->local.get()).second) {
-      out.insert(e->local->name);
-      names_in(e->local->def, out, seen);
-    }
-    return;
-  }
-  for (const auto& o : e->ops)
-    names_in(o, out, seen);
+  walk(
+      e, [](const ExprP&) { return true; },
+      [&](const ExprP& l) {
+        out.insert(l->local->name);
+        return true;
+      },
+      seen);
 }
 
 TangentPlan plan_tangent(const Kernel& k) {

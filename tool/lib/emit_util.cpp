@@ -1,6 +1,8 @@
 // Shared by the emitters: see emit_util.hpp.
 #include "emit_util.hpp"
 
+#include "ir_walk.hpp"
+
 #include "print.hpp"
 
 #include <clang/Format/Format.h>
@@ -13,19 +15,21 @@ namespace dpgen {
 
 
 void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string>& vars) {
-  if (!e)
-    return;
-  if (e->op == Op::LoopVar)
-    vars.insert(e->name);
-  if (e->op == Op::Local) {
-    if (e->local->kernel_level || locals.count(e->local->id))
-      return;
-    locals[e->local->id] = e->local;
-    collect(e->local->def, locals, vars);
-    return;
-  }
-  for (const auto& o : e->ops)
-    collect(o, locals, vars);
+  std::set<const LocalVar*> seen;
+  walk(
+      e,
+      [&](const ExprP& x) {
+        if (x->op == Op::LoopVar)
+          vars.insert(x->name);
+        return true;
+      },
+      [&](const ExprP& l) { // kernel-level locals are defined once, at the top
+        if (l->local->kernel_level || locals.count(l->local->id))
+          return false;
+        locals[l->local->id] = l->local;
+        return true;
+      },
+      seen);
 }
 
 

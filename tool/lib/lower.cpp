@@ -2,6 +2,7 @@
 // become kernel IR. Every construct outside the subset is reported at its
 // location and the kernel is dropped; nothing is guessed.
 #include "frontend.hpp"
+#include "ir_walk.hpp"
 
 #include "affine.hpp"
 #include "prove.hpp"
@@ -1552,16 +1553,7 @@ private:
     // every nest's adjoint; only stores outside loops may read it directly.
     for (const auto& [array, loc] : kernel_level_work_reads_)
       for (const auto& l : k_.kernel_locals) {
-        std::function<bool(const ExprP&)> reads = [&](const ExprP& e) {
-          if (!e)
-            return false;
-          if (e->op == Op::Read && e->name == array)
-            return true;
-          if (e->op == Op::Local)
-            return reads(e->local->def);
-          return std::any_of(e->ops.begin(), e->ops.end(), reads);
-        };
-        if (reads(l->def))
+        if (any_node(l->def, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }))
           fail(loc, fmt::format("a local outside every loop reads work array '{}'; use the "
                                 "element directly in the store, or read it inside a loop",
                                 array));
