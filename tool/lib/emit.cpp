@@ -149,8 +149,11 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
   }
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
-  if (factored && gs.empty() && invariant(partial))
-    code.line("{} += {};", factored->name_for(partial), print(seed));
+  if (factored && gs.empty() && invariant(partial)) {
+    std::string sum = factored->name_for(partial);
+    code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
+    code.line("{} += {};", sum, print(seed));
+  }
   else
     code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())

@@ -96,21 +96,25 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:       // rhs[i] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i]/∂q[i + 1] · rhs_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += rhs_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // rhs[i] reads q[i] at i = c_i: acc += ∂rhs[i]/∂q[i] · rhs_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += rhs_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // rhs[i + 1] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i + 1]/∂q[i + 1] · rhs_adj[i + 1]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += rhs_adj[i + 1];
 // CPP-NEXT:       }
 // CPP-NEXT:       // rhs[i + 1] reads q[i] at i = c_i: acc += ∂rhs[i + 1]/∂q[i] · rhs_adj[i + 1]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += rhs_adj[i + 1];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += 0.5 * acc_s0;

@@ -124,16 +124,19 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i + 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i + 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += v_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += v_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i - 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s2 below)
 // CPP-NEXT:         acc_s2 += v_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += w_0 * acc_s0;

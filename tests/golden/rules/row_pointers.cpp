@@ -125,6 +125,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += un_adj[j][i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // un[j][i] reads u[j][i + 1] at j = c_j, i = c_i - 1: acc += ∂un[j][i]/∂u[j][i + 1] ·
@@ -132,6 +133,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += un_adj[j][i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // un[j][i] reads u[j][i - 1] at j = c_j, i = c_i + 1: acc += ∂un[j][i]/∂u[j][i - 1] ·
@@ -139,6 +141,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i + 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += un_adj[j][i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // un[j][i] reads u[j + 1][i] at j = c_j - 1, i = c_i: acc += ∂un[j][i]/∂u[j + 1][i] ·
@@ -146,6 +149,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j - 1;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += un_adj[j][i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // un[j][i] reads u[j - 1][i] at j = c_j + 1, i = c_i: acc += ∂un[j][i]/∂u[j - 1][i] ·
@@ -153,6 +157,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j + 1;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += un_adj[j][i];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += (1.0 - r * 4.0) * acc_s0;

@@ -127,6 +127,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:       // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += q_new_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += acc_s0;
@@ -178,11 +179,13 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:       // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
 // CPP-NEXT:         acc_s0 += q_new_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += q_new_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += -(c * acc_s0);
