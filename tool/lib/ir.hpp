@@ -144,6 +144,9 @@ struct Param {
   /// row_symbol(a) standing for a row length larger than any column index;
   /// the printer turns such indices back into [j][i].
   bool row_pointers = false;
+  /// An unsigned integer scalar (`unsigned n`, `size_t n`): generated code
+  /// reads it through a signed copy, `<name>_signed`.
+  bool is_unsigned = false;
 };
 
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.

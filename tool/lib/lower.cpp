@@ -172,6 +172,11 @@ private:
   }
   std::map<std::vector<int>, size_t> nest_index_;
   std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
+  std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
+  ExprP scalar_param(const std::string& name, Type t) {
+    auto it = signed_views_.find(name);
+    return it != signed_views_.end() ? it->second : param(name, t);
+  }
   std::set<std::string> local_names_;
   std::set<std::string> loop_names_; // every counter name the generated code uses
   // Why a variable has no value here, where that is more than "not yet set".
@@ -312,6 +317,7 @@ private:
         sz.elem = Type::Int;
         sz.elem_name = sz.spelling = "unsigned long";
         sz.synthetic = true;
+        sz.is_unsigned = true;
         size_param = sz;
       } else if (q->isPointerType()) {
         QualType elem = q->getPointeeType();
@@ -407,6 +413,7 @@ private:
         out.kind = ParamKind::Scalar;
         out.elem = *t;
         out.elem_name = spelled(q);
+        out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
       }
       out.spelling = spelled(p->getType(), /*keep_const=*/true);
       {
@@ -457,6 +464,26 @@ private:
         local_names_.insert(l->name);
         k_.kernel_locals.push_back(l);
         row_lengths_[p.name] = local_ref(l);
+      }
+    // Unsigned integer parameters (`unsigned n`, `size_t n`, a vector's
+    // size) are read through a signed 64-bit copy defined first in every
+    // generated function (`const std::ptrdiff_t n_signed = n;`): index
+    // arithmetic in the adjoint goes below zero (`-n + 1`, `i = c_i + n - 1`),
+    // which unsigned arithmetic would wrap to huge values.
+    for (const auto& p : k_.params)
+      if (p.kind == ParamKind::Scalar && p.elem == Type::Int && p.is_unsigned) {
+        auto l = std::make_shared<LocalVar>();
+        l->name = p.name + "_signed";
+        for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
+          l->name = fmt::format("{}_signed_{}", p.name, n);
+        l->type_name = "std::ptrdiff_t";
+        l->def = param(p.name, Type::Int);
+        l->id = next_local_id_++;
+        l->kernel_level = true;
+        l->opaque = true;
+        local_names_.insert(l->name);
+        k_.kernel_locals.push_back(l);
+        signed_views_[p.name] = local_ref(l);
       }
     // Bind parameters (after the vector is complete, so pointers stay valid).
     for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
@@ -672,12 +699,12 @@ private:
     l->id = next_local_id_++;
     l->kernel_level = loops_.empty();
     if (def->type == Type::Int) {
-      // Signed integers narrower than 64 bits become std::ptrdiff_t in the
-      // generated code (see emit.cpp: index arithmetic that vectorizes and
-      // never wraps); other integer types keep their own.
-      QualType t = decl ? decl->getType().getUnqualifiedType() : ctx_.IntTy;
-      bool widen = !t->isIntegerType() ||
-                   (t->isSignedIntegerType() && ctx_.getTypeSize(t) < 64);
+      // Integers become std::ptrdiff_t in the generated code (see emit.cpp:
+      // index arithmetic that vectorizes and never wraps, also for unsigned
+      // locals such as `size_t k = n - 1 - i;` that later go negative in the
+      // adjoint's index algebra); wider types keep their own.
+      QualType t = decl ? decl->getType().getNonReferenceType().getUnqualifiedType() : ctx_.IntTy;
+      bool widen = !t->isIntegerType() || ctx_.getTypeSize(t) <= 64;
       l->type_name = widen ? "std::ptrdiff_t" : spelled(t);
     }
     else
@@ -859,14 +886,25 @@ private:
     // `n > i`: any comparison whose sides differ by +-i plus a bound.
     const auto* c = dyn_cast_or_null<BinaryOperator>(f->getCond());
     BinaryOperatorKind cond_op = c ? c->getOpcode() : BO_Comma;
-    ExprP bound = c && c->isRelationalOp() ? loop_bound(c, var, cond_op) : nullptr;
+    // `for (unsigned i = n; i-- > lo;)`, the way to count an unsigned counter
+    // down: the body sees i = n - 1, ..., lo.
+    bool post_decrement = false;
+    if (c && cond_op == BO_GT && !f->getInc())
+      if (const auto* u = dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts());
+          u && u->getOpcode() == UO_PostDec)
+        if (const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
+            r && r->getDecl() == var)
+          post_decrement = true;
+    ExprP bound = post_decrement                    ? expr(c->getRHS())
+                  : c && c->isRelationalOp() ? loop_bound(c, var, cond_op)
+                                             : nullptr;
     if (!bound)
       fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
            fmt::format("loop condition must compare the counter '{}' with a bound: "
                        "'{} < hi'",
                        var->getNameAsString(), var->getNameAsString()));
     // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
-    int step = loop_step(f->getInc(), var);
+    int step = post_decrement ? -1 : loop_step(f->getInc(), var);
     if (step == 0)
       fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
            "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
@@ -883,7 +921,10 @@ private:
       lo = init_value, hi = binary(Op::Add, bound, one);
       break;
     case BO_GT:
-      lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init_value, one);
+      if (post_decrement)
+        lo = bound, hi = init_value;
+      else
+        lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init_value, one);
       break;
     case BO_GE:
       lo = bound, hi = binary(Op::Add, init_value, one);
@@ -893,11 +934,11 @@ private:
     }
     if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
       fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition");
-    if (vt->isUnsignedIntegerType() && step < 0)
+    if (vt->isUnsignedIntegerType() && step < 0 && !post_decrement)
       fail(f->getInc()->getBeginLoc(),
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
-                       "count up, or use a signed counter",
-                       var->getNameAsString()));
+                       "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
+                       var->getNameAsString(), var->getNameAsString(), var->getNameAsString()));
     for (const auto& [what, e, loc] :
          {std::tuple{"lower", lo, init->getBeginLoc()},
           std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
@@ -2373,7 +2414,7 @@ private:
       if (it != env_.end() && it->second.kind == Binding::ArrayParam &&
           !it->second.param->container.empty() && md && md->getName() == "size" &&
           m->getNumArgs() == 0)
-        return param(it->second.param->name + "_size", Type::Int);
+        return scalar_param(it->second.param->name + "_size", Type::Int);
       fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
                             "parameter, the kernel may call size())");
     }
@@ -2450,7 +2491,7 @@ private:
     const Binding& b = it->second;
     switch (b.kind) {
     case Binding::ScalarParam:
-      return param(b.param->name, b.param->elem);
+      return scalar_param(b.param->name, b.param->elem);
     case Binding::ArrayParam:
       fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
                                          "read",
