@@ -1,5 +1,5 @@
 // Row pointers (`double** a`, a[j][i]) are accepted; a row used as a value,
-// a data-dependent row or column, and more than one level of row pointers
+// a data-dependent row or column, and more than two levels of row pointers
 // are not. Every error of the file is reported in one run.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
@@ -27,8 +27,8 @@ DPGEN_KERNEL void data_column(DPGEN_IN double** a, DPGEN_IN const double* x,
   }
 }
 
-DPGEN_KERNEL void three_levels(DPGEN_IN double*** a, DPGEN_OUT double* out, int n) {
-  // CHECK: row_pointers.cpp:[[@LINE-1]]:51: error: parameter 'a' ('double ***') has more than one level of row pointers
+DPGEN_KERNEL void four_levels(DPGEN_IN double**** a, DPGEN_OUT double* out, int n) {
+  // CHECK: row_pointers.cpp:[[@LINE-1]]:51: error: parameter 'a' ('double ****') has more than two levels of row pointers
   for (int j = 0; j < n; ++j)
-    out[j] = a[j][j][j];
+    out[j] = a[j][j][j][j];
 }

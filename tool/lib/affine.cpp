@@ -161,9 +161,17 @@ bool smaller_coefficient(const Poly& a, const Poly& b) {
   auto key = [](const Poly& p) {
     int d = p.degree();
     long long top = 0, rest = 0;
-    for (const auto& [m, c] : p.terms())
+    // Row-pointer symbols (ir.hpp) stand for lengths larger than any index:
+    // a plane's above a row's above everything else.
+    int rank = 0;
+    for (const auto& [m, c] : p.terms()) {
       (int(m.size()) == d ? top : rest) += c < 0 ? -c : c;
-    return std::make_tuple(d, top, rest, p.str());
+      for (const auto& sym : m)
+        rank = std::max(rank, sym.rfind("dpgen_planes_", 0) == 0 ? 2
+                              : sym.rfind("dpgen_rows_", 0) == 0 ? 1
+                                                                 : 0);
+    }
+    return std::make_tuple(rank, d, top, rest, p.str());
   };
   return key(a) < key(b);
 }

@@ -146,6 +146,9 @@ std::string formatted(const std::string& code, const std::string& name) {
 std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
                               bool c_language) {
   std::string c = is_const ? "const " : "";
+  if (p.plane_pointers) // `double*** a`: `const double* const* const* a` (C: `double** const* a`)
+    return c_language ? fmt::format("{}** const* {}", p.elem_name, name)
+                      : fmt::format("{}{}* const* const* {}", c, p.elem_name, name);
   if (p.row_pointers) // `double** a` passes as `const double* const* a` / `double* const* a_adj`
     return fmt::format("{}{}* const* {}", c_language ? "" : c, p.elem_name, name);
   if (shaped && !p.rows.empty())

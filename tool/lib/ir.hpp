@@ -144,6 +144,9 @@ struct Param {
   /// row_symbol(a) standing for a row length larger than any column index;
   /// the printer turns such indices back into [j][i].
   bool row_pointers = false;
+  /// `double*** a` (a[k][j][i]): planes of rows. k * P + j * R + i, with
+  /// P = plane_symbol(a) larger than any j * R + i.
+  bool plane_pointers = false;
   /// An unsigned integer scalar (`unsigned n`, `size_t n`): generated code
   /// reads it through a signed copy, `<name>_signed`.
   bool is_unsigned = false;
@@ -151,9 +154,13 @@ struct Param {
 
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
-/// The value it has in generated code: larger than any column index, small
-/// enough that no product with a row index overflows 64 bits.
+inline std::string plane_symbol(const std::string& array) { return "dpgen_planes_" + array; }
+/// The values they have in generated code: R larger than any column index, P
+/// larger than any row index times R, small enough that no product with an
+/// index overflows 64 bits. (With planes, columns stay below 2^30.)
 constexpr long long kRowSymbolValue = 1LL << 40;
+constexpr long long kPlaneRowSymbolValue = 1LL << 30;
+constexpr long long kPlaneSymbolValue = 1LL << 61;
 
 struct Loop {
   std::string var;

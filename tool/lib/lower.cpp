@@ -172,6 +172,7 @@ private:
   }
   std::map<std::vector<int>, size_t> nest_index_;
   std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
+  std::map<std::string, ExprP> plane_lengths_; // double*** array -> its plane symbol
   std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
   ExprP scalar_param(const std::string& name, Type t) {
     auto it = signed_views_.find(name);
@@ -341,12 +342,16 @@ private:
           // double** a, const double* const* a: rows through pointers, each
           // row an array of its own (documented assumption).
           elem = elem->getPointeeType();
+          if (elem->isPointerType()) { // double*** a: planes of rows
+            elem = elem->getPointeeType();
+            out.plane_pointers = true;
+          }
           if (elem->isPointerType() || ctx_.getAsArrayType(elem))
             fail(p->getLocation(),
-                 fmt::format("parameter '{}' ('{}') has more than one level of row pointers: "
-                             "pass 'double** {}' (a[j][i]) or a flat pointer indexed "
-                             "{}[(k * ny + j) * nx + i]",
-                             out.name, q.getAsString(), out.name, out.name));
+                 fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
+                             "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
+                             "flat pointer indexed {}[(k * ny + j) * nx + i]",
+                             out.name, q.getAsString(), out.name, out.name, out.name));
           if (ann == "dpgen.inout")
             fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
                                                "pointer to non-const float or double",
@@ -452,18 +457,24 @@ private:
     // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
     // that is larger than any column (a symbol; its value in the generated
     // code, kRowSymbolValue, is only ever compared, never used as an address).
+    auto opaque_symbol = [&](const std::string& name, long long value) {
+      auto l = std::make_shared<LocalVar>();
+      l->name = name;
+      l->type_name = "std::ptrdiff_t";
+      l->def = int_const(value);
+      l->opaque = true;
+      l->id = next_local_id_++;
+      l->kernel_level = true;
+      local_names_.insert(l->name);
+      k_.kernel_locals.push_back(l);
+      return local_ref(l);
+    };
     for (const auto& p : k_.params)
       if (p.row_pointers) {
-        auto l = std::make_shared<LocalVar>();
-        l->name = row_symbol(p.name);
-        l->type_name = "std::ptrdiff_t";
-        l->def = int_const(kRowSymbolValue);
-        l->opaque = true;
-        l->id = next_local_id_++;
-        l->kernel_level = true;
-        local_names_.insert(l->name);
-        k_.kernel_locals.push_back(l);
-        row_lengths_[p.name] = local_ref(l);
+        row_lengths_[p.name] = opaque_symbol(
+            row_symbol(p.name), p.plane_pointers ? kPlaneRowSymbolValue : kRowSymbolValue);
+        if (p.plane_pointers)
+          plane_lengths_[p.name] = opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
       }
     // Unsigned integer parameters (`unsigned n`, `size_t n`, a vector's
     // size) are read through a signed 64-bit copy defined first in every
@@ -2239,24 +2250,45 @@ private:
     if (const auto* row = dyn_cast<ArraySubscriptExpr>(base);
         row && row->getType().getCanonicalType()->isPointerType()) {
       // a[j][i] of row pointers `double** a`: the flat j * R + i (R the row
-      // symbol). Both indices must be affine: the printer writes them back
-      // as [j][i].
+      // symbol); a[k][j][i] of `double*** a`: k * P + j * R + i. The indices
+      // must be affine: the printer writes them back as [k][j][i].
+      std::vector<const clang::Expr*> outer = {row->getIdx()}; // j, then k
       const clang::Expr* rb = row->getBase()->IgnoreParenImpCasts();
+      if (const auto* plane = dyn_cast<ArraySubscriptExpr>(rb);
+          plane && plane->getType().getCanonicalType()->isPointerType()) {
+        outer.push_back(plane->getIdx());
+        rb = plane->getBase()->IgnoreParenImpCasts();
+      }
       const Param* p = isa<DeclRefExpr>(rb) ? array_base(rb) : nullptr;
       if (!p || !p->row_pointers)
         fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
-                                  "'double**' kernel parameter: a[j][i]");
-      ExprP j = expr(row->getIdx());
-      if (j->type != Type::Int)
-        fail(row->getIdx()->getBeginLoc(), "array index must be an integer");
-      if (!to_poly(j) || !to_poly(idx))
+                                  "'double**' or 'double***' kernel parameter: a[j][i], "
+                                  "a[k][j][i]");
+      if (outer.size() != (p->plane_pointers ? 2u : 1u))
+        fail(sub->getBeginLoc(), fmt::format("'{}' is indexed with {} subscripts; index its "
+                                             "elements as {}",
+                                             p->name, outer.size() + 1,
+                                             p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
+      ExprP flat = idx;
+      std::vector<ExprP> symbols = {row_lengths_.at(p->name)};
+      if (p->plane_pointers)
+        symbols.push_back(plane_lengths_.at(p->name));
+      bool affine = to_poly(idx).has_value();
+      for (size_t d = 0; d < outer.size(); ++d) {
+        ExprP x = expr(outer[d]);
+        if (x->type != Type::Int)
+          fail(outer[d]->getBeginLoc(), "array index must be an integer");
+        affine = affine && to_poly(x).has_value();
+        flat = binary(Op::Add, binary(Op::Mul, x, symbols[d]), flat);
+      }
+      if (!affine)
         fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
-                                             "data-dependent row or column; dpgen needs both "
-                                             "indices of a[j][i] affine in the loop counters "
+                                             "data-dependent row or column; dpgen needs every "
+                                             "index of a[j][i] affine in the loop counters "
                                              "and sizes for row pointers (pass a flat array for "
                                              "interpolation)",
                                              p->name));
-      return Access{p, binary(Op::Add, binary(Op::Mul, j, row_lengths_.at(p->name)), idx)};
+      return Access{p, flat};
     }
     if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
       // a[j][i]: row j of an array of rows, each `extent` elements long.

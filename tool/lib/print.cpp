@@ -110,25 +110,30 @@ std::string real_literal(double v, Type t) {
 }
 
 namespace {
-// The row symbol an index mentions, if any (ir.hpp: row_symbol).
-std::string row_symbol_in(const Poly& p) {
+// The row or plane symbol an index mentions, if any (ir.hpp: row_symbol,
+// plane_symbol).
+std::string symbol_in(const Poly& p, const char* prefix) {
   for (const auto& [m, c] : p.terms())
     for (const auto& sym : m)
-      if (sym.rfind("dpgen_rows_", 0) == 0)
+      if (sym.rfind(prefix, 0) == 0)
         return sym;
   return "";
 }
 } // namespace
 
 std::string subscript(const Poly& index) {
-  std::string r = row_symbol_in(index);
-  if (r.empty())
+  std::string planes = symbol_in(index, "dpgen_planes_");
+  if (!planes.empty())
+    return "[" + index.coefficient(planes).code() + "]" + subscript(index.without(planes));
+  std::string rows = symbol_in(index, "dpgen_rows_");
+  if (rows.empty())
     return "[" + index.code() + "]";
-  return "[" + index.coefficient(r).code() + "][" + index.without(r).code() + "]";
+  return "[" + index.coefficient(rows).code() + "][" + index.without(rows).code() + "]";
 }
 
 std::string subscript(const ExprP& index) {
-  if (auto p = to_poly(index); p && !row_symbol_in(*p).empty())
+  if (auto p = to_poly(index);
+      p && (!symbol_in(*p, "dpgen_rows_").empty() || !symbol_in(*p, "dpgen_planes_").empty()))
     return subscript(*p);
   return "[" + print(index) + "]";
 }
