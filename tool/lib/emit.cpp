@@ -1041,11 +1041,12 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
         "#pragma once\n\n"
         "#include <stddef.h> // size_t, for the checked entry points (C and C++)\n\n");
-  bool vectors = false;
-  for (const auto& p : plans)
-    vectors = vectors || has_vectors(*p.kernel);
-  if (vectors)
-    h.raw("#include <vector>\n\n");
+  bool vectors = false, spans = false;
+  for (const auto& p : plans) {
+    vectors = vectors || has_std_vectors(*p.kernel);
+    spans = spans || has_spans(*p.kernel);
+  }
+  h.raw(container_includes(vectors, spans));
   for (const auto& p : plans) {
     open_namespaces(h, *p.kernel);
     h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, base_name(p.kernel->file),
@@ -1071,11 +1072,7 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   d.raw(fmt::format(kBanner, source_name));
   d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
         "#pragma once\n\n");
-  bool vec = false;
-  for (const auto& p : plans)
-    vec = vec || has_vectors(*p.kernel);
-  if (vec)
-    d.raw("#include <vector>\n\n");
+  d.raw(container_includes(vectors, spans));
   for (const auto& p : plans) {
     const Kernel& k = *p.kernel;
     open_namespaces(d, k);

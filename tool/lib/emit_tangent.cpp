@@ -244,8 +244,12 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
         "// DPGEN_OUT array followed by <name>_dot, which receives the derivative of that\n"
         "// output along the directions. The outputs themselves are computed too.\n"
         "#pragma once\n\n");
-  if (vectors)
-    h.raw("#include <vector>\n\n");
+  bool spans = false, std_vectors = false;
+  for (const auto* k : kernels) {
+    spans = spans || has_spans(*k);
+    std_vectors = std_vectors || has_std_vectors(*k);
+  }
+  h.raw(container_includes(std_vectors, spans));
   for (const auto* k : kernels) {
     open_namespaces(h, *k);
     h.raw(fmt::format("/// Tangent of {} ({}:{}).\n", k->name, base_name(k->file), k->pos.line));

@@ -114,6 +114,20 @@ bool has_vectors(const Kernel& k) {
                      [](const Param& p) { return !p.container.empty(); });
 }
 
+std::string container_includes(bool vectors, bool spans) {
+  return std::string(vectors ? "#include <vector>\n" : "") + (spans ? "#include <span>\n" : "") +
+         (vectors || spans ? "\n" : "");
+}
+
+bool has_std_vectors(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(),
+                     [](const Param& p) { return !p.container.empty() && !p.span; });
+}
+
+bool has_spans(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.span; });
+}
+
 
 void open_namespaces(Code& c, const Kernel& k) {
   for (const auto& ns : k.namespaces)
@@ -153,6 +167,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
     return fmt::format("{}{}* const* {}", c_language ? "" : c, p.elem_name, name);
   if (shaped && !p.rows.empty())
     return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
+  if (shaped && p.span)
+    return fmt::format("std::span<{}{}> {}", c, p.elem_name, name);
   if (shaped && !p.container.empty())
     return fmt::format("{}{}& {}", c, p.container, name);
   return fmt::format("{}{}* {}", c, p.elem_name, name);

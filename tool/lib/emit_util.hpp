@@ -82,7 +82,11 @@ std::string flat_argument(const Param& p, bool is_const, const std::string& name
 /// parameter `wanted` selects (the adjoint's `_adj`, the tangent's `_dot`).
 void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
                              const std::string& suffix, bool (*wanted)(const Param&));
-bool has_vectors(const Kernel& k);
+bool has_vectors(const Kernel& k); // std::vector or std::span parameters
+bool has_spans(const Kernel& k);
+bool has_std_vectors(const Kernel& k);
+/// `#include <vector>` / `#include <span>` lines for a header that declares them.
+std::string container_includes(bool vectors, bool spans);
 /// Arrays updated in place (DPGEN_INOUT).
 bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);

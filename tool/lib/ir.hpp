@@ -130,6 +130,9 @@ struct Param {
   /// A std::vector<T>& parameter: its type ("std::vector<double>"). The
   /// kernel's size() of it is the synthetic parameter `<name>_size` after it.
   std::string container;
+  /// The container is a std::span<T> taken by value (`container` names it
+  /// without the constness, which goes on the element: std::span<const T>).
+  bool span = false;
   /// Not in the user's signature: the size dpgen passes for a vector.
   bool synthetic = false;
   /// DPGEN_INOUT: an array updated in place, element by element. In the IR

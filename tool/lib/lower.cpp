@@ -209,10 +209,10 @@ private:
   // ---- types ---------------------------------------------------------------
 
   // T of a std::vector<T> (any allocator); null for any other type.
-  QualType vector_element(QualType q) const {
+  QualType vector_element(QualType q, const char* which = "vector") const {
     const auto* rd = q.getCanonicalType()->getAsCXXRecordDecl();
     const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(rd);
-    if (!spec || spec->getName() != "vector" || !spec->isInStdNamespace() ||
+    if (!spec || spec->getName() != which || !spec->isInStdNamespace() ||
         spec->getTemplateArgs().size() < 1)
       return QualType();
     return spec->getTemplateArgs()[0].getAsType();
@@ -279,15 +279,22 @@ private:
       QualType q = p->getType();
       std::optional<Param> size_param;
       std::optional<Param> inout_twin;
-      if (q->isReferenceType()) {
-        QualType elem = vector_element(q.getNonReferenceType());
+      // std::span<T> u (by value; C++20), with the element's constness.
+      QualType span_elem = q->isReferenceType() ? QualType() : vector_element(q, "span");
+      if (q->isReferenceType() || !span_elem.isNull()) {
+        QualType elem = !span_elem.isNull() ? span_elem : vector_element(q.getNonReferenceType());
         if (elem.isNull())
           fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
-                                             "and arrays as pointers or std::vector<T>&",
+                                             "and arrays as pointers, std::vector<T>& or "
+                                             "std::span<T>",
                                              out.name));
-        // std::vector<T>& u: elements u[i], size u.size(); the generated
-        // entry point takes the vectors, its flat twin u.data() and u.size().
-        bool is_const = q.getNonReferenceType().isConstQualified();
+        // std::vector<T>& u (or std::span<T> u): elements u[i], size u.size();
+        // the generated entry point takes the vectors (spans), its flat twin
+        // u.data() and u.size().
+        bool is_const = !span_elem.isNull() ? elem.isConstQualified()
+                                            : q.getNonReferenceType().isConstQualified();
+        elem = elem.getUnqualifiedType();
+        out.span = !span_elem.isNull();
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
@@ -295,7 +302,7 @@ private:
                                              out.name, elem.getAsString()));
         out.elem = *et;
         out.elem_name = spelled(elem);
-        out.container = fmt::format("std::vector<{}>", out.elem_name);
+        out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
         if (ann == "dpgen.in" || ann == "dpgen.out") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
