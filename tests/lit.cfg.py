@@ -6,7 +6,7 @@ config.name = "dpgen"
 config.test_format = lit.formats.ShTest(execute_external=False)
 config.suffixes = [".cpp", ".test"]
 config.test_source_root = os.path.dirname(__file__)
-config.excludes = ["kernels", "styles", "consumer", "mpi", "adversary", "support", "runtime", "fuzz", "CMakeLists.txt",
+config.excludes = ["kernels", "kernels20", "styles", "consumer", "mpi", "adversary", "support", "runtime", "fuzz", "CMakeLists.txt",
                    "lit.cfg.py"]
 
 tools = config.llvm_tools_dir
