@@ -303,6 +303,10 @@ private:
         out.elem = *et;
         out.elem_name = spelled(elem);
         out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
+        if (ann == "dpgen.inout")
+          fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                             "to non-const float or double (pass {}.data())",
+                                             out.name, out.name));
         if (ann == "dpgen.in" || ann == "dpgen.out") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
@@ -899,6 +903,11 @@ private:
     if (!vt->isIntegerType() || vt->isBooleanType())
       fail(var->getLocation(), fmt::format("loop counter '{}' must have an integer type",
                                            var->getNameAsString()));
+    in_loop_bounds_ = true; // (reset below, also when lowering them fails)
+    struct Reset {
+      bool& flag;
+      ~Reset() { flag = false; }
+    } reset{in_loop_bounds_};
     ExprP init_value = expr(init);
     // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`; also `i + 1 < n` or
     // `n > i`: any comparison whose sides differ by +-i plus a bound.
@@ -916,6 +925,7 @@ private:
     ExprP bound = post_decrement                    ? expr(c->getRHS())
                   : c && c->isRelationalOp() ? loop_bound(c, var, cond_op)
                                              : nullptr;
+    in_loop_bounds_ = false;
     if (!bound)
       fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
            fmt::format("loop condition must compare the counter '{}' with a bound: "
@@ -952,11 +962,34 @@ private:
     }
     if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
       fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition");
-    if (vt->isUnsignedIntegerType() && step < 0 && !post_decrement)
+    // Counting an unsigned counter down is safe when the counter stays above
+    // zero: `i > b` (b >= 0), or `i >= b` with b >= 1; `i >= 0` wraps.
+    bool stays_positive = cond_op == BO_GT ||
+                          (cond_op == BO_GE && provably_nonneg(binary(Op::Sub, bound, int_const(1))));
+    if (vt->isUnsignedIntegerType() && step < 0 && !post_decrement && !stays_positive)
       fail(f->getInc()->getBeginLoc(),
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()));
+    // A bound that is not a polynomial but depends on the sizes only
+    // (`i < n / 2`, `i < (n + 1) / 2`) is fixed for the whole kernel: a
+    // symbol, like `int half = n / 2;` set before the loops.
+    for (ExprP* b : {&lo, &hi})
+      if (!to_poly(*b) && !any_node(*b, [](const ExprP& x) {
+            return x->op == Op::LoopVar || x->op == Op::Read || is_real(x->type);
+          })) {
+        auto l = std::make_shared<LocalVar>();
+        l->name = var->getNameAsString() + (b == &lo ? "_lo" : "_hi");
+        for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
+          l->name = fmt::format("{}_{}_{}", var->getNameAsString(), b == &lo ? "lo" : "hi", n);
+        local_names_.insert(l->name);
+        l->type_name = "std::ptrdiff_t";
+        l->def = *b;
+        l->id = next_local_id_++;
+        l->kernel_level = true;
+        k_.kernel_locals.push_back(l);
+        *b = local_ref(l);
+      }
     for (const auto& [what, e, loc] :
          {std::tuple{"lower", lo, init->getBeginLoc()},
           std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
@@ -1409,6 +1442,10 @@ private:
         fail(loc, "this compound assignment is outside the kernel subset");
       }
       value = binary(bop, b.value, r);
+      if (bop == Op::Sub && var->getType().getNonReferenceType()->isUnsignedIntegerType())
+        check_unsigned_result(value, loc,
+                              fmt::format("unsigned '{}' after '-='", var->getNameAsString()),
+                              lhs);
     }
     b.value = make_local(var->getNameAsString(), var, cast(value, t));
   }
@@ -1658,6 +1695,123 @@ private:
                                     "local array",
                                     r.array, st.pos.line));
         }
+  }
+
+  // `e >= 0` wherever this statement runs: its loops run, the counters are
+  // in range, the conditions on its path hold, unsigned sizes are >= 0.
+  bool provably_nonneg(const ExprP& e, const std::vector<PathCond>& more = {}) const {
+    auto p = to_poly(e);
+    if (!p)
+      return false;
+    Facts f;
+    for (const auto& pc : more)
+      add_facts_with_counters(pc, f);
+    for (const auto& l : loops_) {
+      add_nonempty(*l, f);
+      add_counter_range(*l, f);
+    }
+    for (const auto& pc : path_)
+      add_facts_with_counters(pc, f);
+    for (const auto& [name, v] : signed_views_)
+      f.push_back(*to_poly(v));
+    // `a != b` (`i == 0 ? ... : i - 1` in its else arm) is a case split:
+    // a - b >= 1 or b - a >= 1; the goal must hold in both.
+    std::vector<Poly> ne;
+    auto collect_ne = [&](const PathCond& pc) {
+      const ExprP& c = pc.cond;
+      bool is_ne = (c->op == Op::Ne && pc.positive) || (c->op == Op::Eq && !pc.positive);
+      if (is_ne && c->ops.size() == 2 && c->ops[0]->type == Type::Int)
+        if (auto pa = to_poly(c->ops[0]), pb = to_poly(c->ops[1]); pa && pb)
+          ne.push_back(*pa - *pb);
+    };
+    for (const auto& pc : more)
+      collect_ne(pc);
+    for (const auto& pc : path_)
+      collect_ne(pc);
+    if (ne.size() > 3)
+      ne.resize(3);
+    std::function<bool(size_t, Facts&)> split = [&](size_t k, Facts& facts) {
+      if (k == ne.size())
+        return prove_nonneg(*p, facts);
+      for (const Poly& side : {ne[k] - Poly::constant(1), -ne[k] - Poly::constant(1)}) {
+        facts.push_back(side);
+        bool ok = split(k + 1, facts);
+        facts.pop_back();
+        if (!ok)
+          return false;
+      }
+      return true;
+    };
+    return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
+  }
+
+  // Integer arithmetic in the generated code is signed and 64 bits wide; the
+  // kernel's own may wrap (unsigned below zero, a negative value converted to
+  // unsigned) or truncate (to short or char). Where the two could differ the
+  // kernel is rejected, unless the value provably stays in range. Loop bounds
+  // are exempt: where they differ the forward loop itself runs ~2^64 times.
+  bool in_loop_bounds_ = false;
+  // The value of `e` only goes into an array index (through + - * and
+  // conversions): if it wraps, the kernel itself reads out of bounds.
+  bool feeds_index_only(const clang::Expr* e) {
+    const clang::Stmt* child = e;
+    for (int depth = 0; depth < 32; ++depth) {
+      auto parents = ctx_.getParents(*child);
+      if (parents.size() != 1)
+        return false;
+      const clang::Stmt* up = parents[0].get<clang::Stmt>();
+      if (!up)
+        return false;
+      if (const auto* sub = dyn_cast<ArraySubscriptExpr>(up))
+        return sub->getIdx()->IgnoreParenImpCasts() == child ||
+               sub->getIdx() == child;
+      if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(up))
+        return oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2 &&
+               oc->getArg(1)->IgnoreParenImpCasts() == static_cast<const clang::Expr*>(child)->IgnoreParens();
+      if (const auto* b = dyn_cast<BinaryOperator>(up)) {
+        if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub && b->getOpcode() != BO_Mul)
+          return false;
+      } else if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
+        // an arm (`i == 0 ? n - 1 : i - 1`): taken only where it is the index
+        if (c->getCond() == child || c->getCond()->IgnoreParenImpCasts() == child)
+          return false;
+      } else if (!isa<ParenExpr>(up) && !isa<ImplicitCastExpr>(up)) {
+        return false;
+      }
+      child = up;
+    }
+    return false;
+  }
+  // The conditions of the ternaries `e` is an arm of (`i == 0 ? n - 1 : i - 1`).
+  std::vector<PathCond> arm_conditions(const clang::Expr* e) {
+    std::vector<PathCond> out;
+    const clang::Stmt* child = e;
+    for (int depth = 0; depth < 32; ++depth) {
+      auto parents = ctx_.getParents(*child);
+      if (parents.size() != 1)
+        break;
+      const clang::Stmt* up = parents[0].get<clang::Stmt>();
+      if (!up || !isa<clang::Expr>(up))
+        break;
+      if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
+        bool in_true = c->getTrueExpr() == child, in_false = c->getFalseExpr() == child;
+        if (in_true || in_false)
+          out.push_back({cond(c->getCond()), in_true});
+      }
+      child = up;
+    }
+    return out;
+  }
+  void check_unsigned_result(const ExprP& value, SourceLocation loc, const std::string& what,
+                             const clang::Expr* node) {
+    if (in_loop_bounds_ || feeds_index_only(node) || provably_nonneg(value) ||
+        provably_nonneg(value, arm_conditions(node)))
+      return;
+    fail(loc, fmt::format("{} may go below zero here, where the kernel's unsigned arithmetic "
+                          "wraps around but dpgen's index arithmetic (signed, 64 bits) does not: "
+                          "compute it in a signed type, or guard it so that it stays >= 0 (dpgen "
+                          "proves that from the loop bounds and the conditions around it)",
+                          what));
   }
 
   // Facts about the parameters on the current path.
@@ -2000,7 +2154,11 @@ private:
     Poly reach;
     for (size_t i = 0; i < dims.size(); ++i) {
       Poly c = dims[i].first;
-      if (c.is_constant() && c.constant_term() < 0)
+      // The step's magnitude: a mirrored index (`(ny - 1 - j) * ld`) steps by -ld.
+      bool negative = !c.terms().empty();
+      for (const auto& [m, coef] : c.terms())
+        negative = negative && coef < 0;
+      if (negative)
         c = -c;
       if (i > 0) {
         Poly slack = c - reach - Poly::constant(1); // must be >= 0
@@ -2424,8 +2582,13 @@ private:
     }
     if (const auto* u = dyn_cast<UnaryOperator>(e)) {
       switch (u->getOpcode()) {
-      case UO_Minus:
-        return unary(Op::Neg, expr(u->getSubExpr()));
+      case UO_Minus: {
+        ExprP x = expr(u->getSubExpr());
+        if (u->getType()->isUnsignedIntegerType())
+          check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
+                                fmt::format("unsigned negation '{}'", text(u)), u);
+        return unary(Op::Neg, x);
+      }
       case UO_Plus:
         return expr(u->getSubExpr());
       case UO_LNot:
@@ -2473,6 +2636,21 @@ private:
       // stays as wide in the adjoint as in the kernel; implicit promotions
       // happen again by themselves around it.
       ExprP inner = expr(sub);
+      QualType to = c->getType().getCanonicalType(), from = sub->getType().getCanonicalType();
+      if (to->isUnsignedIntegerType() && from->isSignedIntegerType())
+        check_unsigned_result(inner, c->getExprLoc(),
+                              fmt::format("'{}', converted to unsigned '{}',", text(sub),
+                                          to.getAsString()),
+                              c);
+      if (!to->isBooleanType() && ctx_.getTypeSize(to) < 32 &&
+          ctx_.getTypeSize(to) < ctx_.getTypeSize(from) && !in_loop_bounds_) {
+        auto pv = to_poly(inner);
+        if (!pv || !pv->is_constant())
+          fail(c->getExprLoc(), fmt::format("conversion of '{}' to '{}' may truncate it; dpgen "
+                                            "computes integers in 64 bits: use int or a wider "
+                                            "type",
+                                            text(sub), to.getAsString()));
+      }
       const auto* implicit = dyn_cast<ImplicitCastExpr>(c);
       bool explicit_cast = isa<ExplicitCastExpr>(c) || (implicit && implicit->isPartOfExplicitCast());
       if (!explicit_cast || ctx_.getTypeSize(c->getType()) < 64 ||
@@ -2566,6 +2744,9 @@ private:
     case BO_Add:
       return binary(Op::Add, l, r);
     case BO_Sub:
+      if (b->getType()->isUnsignedIntegerType())
+        check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
+                              fmt::format("unsigned difference '{}'", text(b)), b);
       return binary(Op::Sub, l, r);
     case BO_Mul:
       return binary(Op::Mul, l, r);

@@ -27,12 +27,12 @@ std::optional<Poly> difference(const ExprP& a, const ExprP& b) {
 
 // Facts for `c` (positive) or `!c`. True when the facts say exactly what
 // the condition says (a conjunction of comparisons), not just part of it.
-bool facts_of(const ExprP& c, bool positive, Facts& out) {
+bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) {
   if (c->op == Op::Not)
-    return facts_of(c->ops[0], !positive, out);
+    return facts_of(c->ops[0], !positive, out, counters);
   if ((c->op == Op::And && positive) || (c->op == Op::Or && !positive)) {
-    bool a = facts_of(c->ops[0], positive, out);
-    bool b = facts_of(c->ops[1], positive, out);
+    bool a = facts_of(c->ops[0], positive, out, counters);
+    bool b = facts_of(c->ops[1], positive, out, counters);
     return a && b;
   }
   Op op = c->op;
@@ -52,7 +52,7 @@ bool facts_of(const ExprP& c, bool positive, Facts& out) {
   if (c->ops.size() != 2 || c->ops[0]->type != Type::Int || c->ops[1]->type != Type::Int)
     return false;
   auto d = difference(c->ops[1], c->ops[0]); // b - a
-  if (!d || mentions_counter(*d))
+  if (!d || (!counters && mentions_counter(*d)))
     return false;
   Poly one = Poly::constant(1);
   switch (op) {
@@ -94,6 +94,19 @@ constexpr size_t kMaxRows = 600;
 } // namespace
 
 void add_facts(const PathCond& pc, Facts& out) { facts_of(pc.cond, pc.positive, out); }
+
+void add_facts_with_counters(const PathCond& pc, Facts& out) {
+  facts_of(pc.cond, pc.positive, out, true);
+}
+
+void add_counter_range(const Loop& l, Facts& out) {
+  auto lo = to_poly(l.lo), hi = to_poly(l.hi);
+  Poly v = Poly::symbol("@" + l.var);
+  if (lo)
+    out.push_back(v - *lo);
+  if (hi)
+    out.push_back(*hi - Poly::constant(1) - v);
+}
 
 bool implied(const PathCond& pc, const Facts& facts) {
   Facts f;

@@ -29,6 +29,11 @@ bool implied(const PathCond& pc, const Facts& facts);
 /// The loop runs at least once: hi - lo - 1 >= 0.
 void add_nonempty(const Loop& l, Facts& out);
 
+/// Inside the loop: lo <= counter <= hi - 1 (facts that mention the counter).
+void add_counter_range(const Loop& l, Facts& out);
+/// add_facts, comparisons with loop counters included (`if (i > 0)`).
+void add_facts_with_counters(const PathCond& pc, Facts& out);
+
 /// True when `goal >= 0` follows from `facts` for all integers (sound, not
 /// complete): Fourier-Motzkin elimination shows that `goal <= -1` together
 /// with the facts has no rational solution. Products of two symbols are

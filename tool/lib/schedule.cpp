@@ -69,10 +69,35 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
     return out.layout[a].second.degree() > out.layout[b].second.degree();
   });
+  // Row-pointer symbols (ir.hpp): a term with one belongs to the row (or
+  // plane) dimension, never to a unit-coefficient column.
+  auto row_symbol_of = [](const Poly& p) -> std::string {
+    for (const auto& [m, coef] : p.terms())
+      for (const auto& s : m)
+        if (s.rfind("dpgen_rows_", 0) == 0 || s.rfind("dpgen_planes_", 0) == 0)
+          return s;
+    return "";
+  };
   for (size_t idx : order) {
     const auto& [var, c] = out.layout[idx];
     Poly delta;
-    if (c.is_constant()) {
+    std::string row = row_symbol_of(c);
+    if (!row.empty() && c.terms().size() == 1 && c.terms().begin()->first.size() == 1) {
+      // c = ±R: the row shift is every multiple of R (`u[ny - 1 - j][i]`:
+      // rest R*ny - R, shift -ny + 1).
+      long long cc = c.terms().begin()->second;
+      Poly multiples = rest.coefficient(row);
+      bool divisible = true;
+      for (const auto& [m, coef] : multiples.terms())
+        divisible = divisible && coef % cc == 0 && row_symbol_of(Poly::symbol(m.empty() ? "" : m[0])).empty();
+      if (divisible)
+        for (const auto& [m, coef] : multiples.terms()) {
+          Poly t = Poly::constant(coef / cc);
+          for (const auto& s : m)
+            t = t * Poly::symbol(s);
+          delta = delta + t;
+        }
+    } else if (c.is_constant()) {
       long long cc = c.constant_term();
       bool divisible = true;
       for (const auto& [m, coef] : rest.terms())
@@ -82,7 +107,8 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
           Poly t = Poly::constant(coef / cc);
           for (const auto& s : m)
             t = t * Poly::symbol(s);
-          delta = delta + t;
+          if (row_symbol_of(t).empty())
+            delta = delta + t;
         }
       }
     } else {
