@@ -1,0 +1,21 @@
+// r3_u32_mirror (tests/adversary/): see r3_u32_mirror.cpp; sizes n in {0,1,2,3,6}.
+#include "adv.hpp"
+#include <cstdint>
+#include "r3_u32_mirror_adjoint.hpp"
+#include "r3_u32_mirror_tangent.hpp"
+void r3_u32_mirror(const double*, double*, std::uint32_t n);
+TEST_CASE("adversary: r3_u32_mirror") {
+  for (std::uint32_t n : {0,1,2,3,6}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { r3_u32_mirror(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { r3_u32_mirror_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { r3_u32_mirror_tangent(in[0], dir[0], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      r3_u32_mirror_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

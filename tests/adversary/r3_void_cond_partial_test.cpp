@@ -1,0 +1,20 @@
+// r3_void_cond_partial (tests/adversary/): see r3_void_cond_partial.cpp; sizes n in {0,1,2,3,6}.
+#include "adv.hpp"
+#include "r3_void_cond_partial_adjoint.hpp"
+#include "r3_void_cond_partial_tangent.hpp"
+void r3_void_cond_partial(const double*, double*, int n);
+TEST_CASE("adversary: r3_void_cond_partial") {
+  for (int n : {0,1,2,3,6}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { r3_void_cond_partial(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { r3_void_cond_partial_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { r3_void_cond_partial_tangent(in[0], dir[0], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      r3_void_cond_partial_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
