@@ -23,6 +23,10 @@ static cl::opt<std::string> stamp("stamp",
                                   cl::desc("after success, touch <file> and write <file>.d (a "
                                            "make-style list of every file read)"),
                                   cl::value_desc("file"), cl::cat(category));
+static cl::opt<bool> torch("torch",
+                           cl::desc("write <stem>_torch.{hpp,cpp} (PyTorch autograd ops calling the "
+                                    "kernels and their adjoints) instead of the adjoint files"),
+                           cl::cat(category));
 static cl::opt<bool> verbose("v",
                              cl::desc("report written and unchanged files, and where "
                                       "dpgen/annotate.hpp is found"),
@@ -86,5 +90,6 @@ int main(int argc, const char** argv) {
   opts.out_dir = out_dir;
   opts.verbose = verbose;
   opts.stamp = stamp;
+  opts.torch = torch;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);
 }

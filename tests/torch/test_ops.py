@@ -1,0 +1,154 @@
+"""The PyTorch ops (ctest torch.ops): torch.autograd.gradcheck in double precision for the op
+of every kernel in kernels/ and torch/kernels/, and for the whole-solver ops; the argument
+checks; checkpointed and full-tape rollouts agree; the solve's gradient is the implicit one."""
+import glob
+import os
+import re
+import sys
+import unittest
+
+import torch
+
+import dpgen_torch  # loads libdpgen_torch.so
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+torch.manual_seed(0)
+D = torch.float64
+
+
+def rand(*shape):
+    return torch.rand(*shape, dtype=D, requires_grad=True)
+
+
+# For each kernel op: the inputs of a small but non-trivial call.
+def cases():
+    n, nx, ny = 9, 6, 5
+    return {
+        # u of both signs: both upwind branches
+        "upwind_step": ((rand(n), (torch.rand(n, dtype=D) - 0.5).requires_grad_(), n, 0.3, 1.0), {}),
+        "divergence2d": ((rand(ny, nx), rand(ny, nx), nx, ny, 0.5), {}),
+        "laplacian2d": ((rand(ny, nx), nx, ny, 0.5), {}),
+        # k has n + 1 face values: the output takes p's shape, k's size is checked
+        "neg_div_k_grad_1d": ((rand(n), rand(n + 1), n, 0.5), {}),
+    }
+
+
+def shipped_kernels():
+    names = []
+    for f in glob.glob(os.path.join(ROOT, "kernels", "*.cpp")) + glob.glob(
+            os.path.join(ROOT, "torch", "kernels", "*.cpp")):
+        names += re.findall(r"DPGEN_KERNEL\s+void\s+(\w+)\s*\(", open(f).read())
+    return sorted(set(names))
+
+
+class KernelOps(unittest.TestCase):
+    def test_every_shipped_kernel_has_a_case(self):
+        self.assertEqual(sorted(cases()), shipped_kernels())
+
+    def test_gradcheck(self):
+        for name, (args, kwargs) in cases().items():
+            with self.subTest(op=name):
+                op = getattr(torch.ops.dpgen, name)
+                self.assertTrue(torch.autograd.gradcheck(
+                    lambda *a: op(*a, **kwargs), args, eps=1e-6, atol=1e-7, rtol=1e-5))
+
+    def test_forward_matches_torch(self):
+        # laplacian2d against slicing: the op computes what the kernel says
+        nx, ny, h = 7, 5, 0.5
+        a = torch.rand(ny, nx, dtype=D)
+        out = torch.ops.dpgen.laplacian2d(a, nx, ny, h)
+        ref = torch.zeros_like(a)
+        ref[1:-1, 1:-1] = (a[1:-1, :-2] + a[1:-1, 2:] + a[:-2, 1:-1] + a[2:, 1:-1]
+                           - 4 * a[1:-1, 1:-1]) / h**2
+        torch.testing.assert_close(out, ref)
+        self.assertEqual(out.shape, a.shape)
+
+    def test_output_shape_argument(self):
+        a = torch.rand(30, dtype=D)
+        out = torch.ops.dpgen.laplacian2d(a, 6, 5, 1.0, out_shape=[5, 6])
+        self.assertEqual(tuple(out.shape), (5, 6))
+
+    def errors(self, fn, *patterns):
+        with self.assertRaises(RuntimeError) as cm:
+            fn()
+        for p in patterns:
+            self.assertIn(p, str(cm.exception))
+
+    def test_bad_arguments(self):
+        n = 8
+        d, u = torch.rand(n, dtype=D), torch.rand(n, dtype=D)
+        up = torch.ops.dpgen.upwind_step
+        self.errors(lambda: up(d.float(), u, n, 0.1, 1.0), "dpgen::upwind_step", "argument 'd'",
+                    "Float", "double")
+        self.errors(lambda: up(d, torch.rand(2 * n, dtype=D)[::2], n, 0.1, 1.0),
+                    "argument 'u'", "not contiguous")
+        self.errors(lambda: up(d, torch.empty(n, dtype=D, device="meta"), n, 0.1, 1.0),
+                    "argument 'u'", "meta", "CPU")
+        self.errors(lambda: up(d, u[:5], n, 0.1, 1.0), "argument 'u' has 5 elements",
+                    "reaches element 7", "n = 8")
+        self.errors(lambda: up(d, u, n, 0.1, 1.0, d_next_shape=[4]), "output 'd_next' has 4")
+        self.errors(lambda: up(d, u, 2**40, 0.1, 1.0), "argument 'u'")
+        k = torch.rand(n, dtype=D)  # needs n + 1 face values
+        self.errors(lambda: torch.ops.dpgen.neg_div_k_grad_1d(d, k, n, 1.0),
+                    "argument 'k' has 8 elements", "reaches element 8")
+        # interior-only reads of laplacian2d: a grid of exactly nx*ny passes, one less fails
+        self.errors(lambda: torch.ops.dpgen.laplacian2d(torch.rand(29, dtype=D), 6, 5, 1.0),
+                    "argument 'a' has 29", "reaches element 28")
+
+    def test_no_double_backward(self):
+        n = 6
+        d = rand(n)
+        out = torch.ops.dpgen.upwind_step(d, torch.rand(n, dtype=D), n, 0.1, 1.0)
+        self.errors(lambda: torch.autograd.grad(out.square().sum(), d, create_graph=True),
+                    "second derivatives")
+
+
+class SolverOps(unittest.TestCase):
+    def test_rollout_gradcheck(self):
+        n = 10
+        d0, u = rand(n), (torch.rand(n, dtype=D) - 0.5).requires_grad_()
+        for cp in (0, 3):
+            with self.subTest(checkpoints=cp):
+                self.assertTrue(torch.autograd.gradcheck(
+                    lambda a, b: dpgen_torch.upwind_rollout(a, b, 12, 0.2, 1.0, cp), (d0, u)))
+
+    def test_rollout_matches_steps_and_checkpoints_are_identical(self):
+        n, steps = 16, 40
+        d0 = torch.rand(n, dtype=D)
+        u = torch.rand(n, dtype=D) - 0.5
+        x = d0
+        for _ in range(steps):
+            x = torch.ops.dpgen.upwind_step(x, u, n, 0.1, 1.0)
+        torch.testing.assert_close(dpgen_torch.upwind_rollout(d0, u, steps, 0.1, 1.0), x,
+                                   rtol=0, atol=0)
+        grads = []
+        for cp in (0, 1, 5, 100):
+            a, b = d0.clone().requires_grad_(), u.clone().requires_grad_()
+            (dpgen_torch.upwind_rollout(a, b, steps, 0.1, 1.0, cp) ** 2).sum().backward()
+            grads.append((a.grad, b.grad))
+        for g in grads[1:]:  # bit-identical (checkpoint.hpp)
+            self.assertTrue(torch.equal(g[0], grads[0][0]) and torch.equal(g[1], grads[0][1]))
+
+    def test_solve_gradcheck(self):
+        n = 12
+        b = rand(n)
+        k = (torch.rand(n + 1, dtype=D) + 0.5).requires_grad_()
+        self.assertTrue(torch.autograd.gradcheck(
+            lambda bb, kk: dpgen_torch.diffusion_solve(bb, kk, 0.5, 1e-13), (b, k)))
+
+    def test_solve_residual_and_errors(self):
+        n = 20
+        b = torch.rand(n, dtype=D)
+        k = torch.rand(n + 1, dtype=D) + 0.5
+        x = dpgen_torch.diffusion_solve(b, k, 0.1)
+        torch.testing.assert_close(torch.ops.dpgen.neg_div_k_grad_1d(x, k, n, 0.1), b)
+        with self.assertRaises(RuntimeError) as cm:
+            dpgen_torch.diffusion_solve(b, k[:n], 0.1)
+        self.assertIn("needs 21 elements", str(cm.exception))
+        with self.assertRaises(RuntimeError) as cm:
+            dpgen_torch.diffusion_solve(b, k, 0.1, 1e-14, 2)
+        self.assertIn("diffusion_solve forward", str(cm.exception))
+
+
+if __name__ == "__main__":
+    sys.exit(0 if unittest.main(exit=False, verbosity=2).result.wasSuccessful() else 1)
