@@ -37,7 +37,8 @@ def shipped_kernels():
     names = []
     for f in glob.glob(os.path.join(ROOT, "kernels", "*.cpp")) + glob.glob(
             os.path.join(ROOT, "torch", "kernels", "*.cpp")):
-        names += re.findall(r"DPGEN_KERNEL\s+void\s+(\w+)\s*\(", open(f).read())
+        with open(f) as src:
+            names += re.findall(r"DPGEN_KERNEL\s+void\s+(\w+)\s*\(", src.read())
     return sorted(set(names))
 
 
@@ -87,7 +88,7 @@ class KernelOps(unittest.TestCase):
         self.errors(lambda: up(d, u[:5], n, 0.1, 1.0), "argument 'u' has 5 elements",
                     "reaches element 7", "n = 8")
         self.errors(lambda: up(d, u, n, 0.1, 1.0, d_next_shape=[4]), "output 'd_next' has 4")
-        self.errors(lambda: up(d, u, 2**40, 0.1, 1.0), "argument 'u'")
+        self.errors(lambda: up(d, u, 2**40, 0.1, 1.0), "argument 'd' has 8 elements")
         k = torch.rand(n, dtype=D)  # needs n + 1 face values
         self.errors(lambda: torch.ops.dpgen.neg_div_k_grad_1d(d, k, n, 1.0),
                     "argument 'k' has 8 elements", "reaches element 8")
