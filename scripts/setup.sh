@@ -7,6 +7,7 @@ packages=(
   clang-19 libclang-19-dev libclang-cpp19-dev llvm-19-dev llvm-19-tools libclang-rt-19-dev
   libomp-19-dev
   libeigen3-dev libfmt-dev doctest-dev liblbfgspp-dev libbenchmark-dev
+  python3-torch libtorch-dev pybind11-dev # the PyTorch ops (DPGEN_WITH_TORCH)
 )
 missing=()
 for p in "${packages[@]}"; do
