@@ -92,9 +92,14 @@ class KernelOps(unittest.TestCase):
         k = torch.rand(n, dtype=D)  # needs n + 1 face values
         self.errors(lambda: torch.ops.dpgen.neg_div_k_grad_1d(d, k, n, 1.0),
                     "argument 'k' has 8 elements", "reaches element 8")
-        # interior-only reads of laplacian2d: a grid of exactly nx*ny passes, one less fails
-        self.errors(lambda: torch.ops.dpgen.laplacian2d(torch.rand(29, dtype=D), 6, 5, 1.0),
-                    "argument 'a' has 29", "reaches element 28")
+        # laplacian2d writes all nx*ny = 30 cells of out (default shape: a's) but reads a only
+        # up to element (ny-2)*nx + nx-2 + nx = 28: the checks are exact, not nx*ny for all
+        lap = torch.ops.dpgen.laplacian2d
+        self.errors(lambda: lap(torch.rand(29, dtype=D), 6, 5, 1.0),
+                    "output 'out' has 29 elements", "reaches element 29")
+        lap(torch.rand(29, dtype=D), 6, 5, 1.0, out_shape=[5, 6])  # enough
+        self.errors(lambda: lap(torch.rand(28, dtype=D), 6, 5, 1.0, out_shape=[5, 6]),
+                    "argument 'a' has 28 elements", "reaches element 28")
 
     def test_no_double_backward(self):
         n = 6
