@@ -35,7 +35,7 @@ def parse():
     p.add_argument("--test", type=int, default=16, help="held-out initial conditions")
     p.add_argument("--horizon", type=int, default=32, help="steps of training trajectories")
     p.add_argument("--unroll", type=int, default=16, help="solver steps unrolled in DP training")
-    p.add_argument("--iters", type=int, default=1000, help="Adam iterations of each training")
+    p.add_argument("--iters", type=int, default=1500, help="Adam iterations of each training")
     p.add_argument("--lr", type=float, default=3e-3,
                    help="Adam learning rate")
     p.add_argument("--channels", type=int, default=16, help="channels of the ResNet")
