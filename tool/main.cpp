@@ -23,6 +23,10 @@ static cl::opt<std::string> stamp("stamp",
                                   cl::desc("after success, touch <file> and write <file>.d (a "
                                            "make-style list of every file read)"),
                                   cl::value_desc("file"), cl::cat(category));
+static cl::opt<bool> tangent("tangent",
+                             cl::desc("also write <stem>_tangent.{hpp,cpp}: forward-mode "
+                                      "(Jacobian-vector product) kernels"),
+                             cl::cat(category));
 static cl::opt<bool> torch("torch",
                            cl::desc("write <stem>_torch.{hpp,cpp} (PyTorch autograd ops calling the "
                                     "kernels and their adjoints) instead of the adjoint files"),
@@ -89,6 +93,7 @@ int main(int argc, const char** argv) {
   opts.frontend.driver = DPGEN_CLANG_DRIVER;
   opts.out_dir = out_dir;
   opts.verbose = verbose;
+  opts.tangent = tangent;
   opts.stamp = stamp;
   opts.torch = torch;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);

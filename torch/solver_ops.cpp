@@ -8,7 +8,9 @@
 //     is the transposed solve of implicit_solve.hpp (A^T lambda = x_bar, b_bar = lambda,
 //     k_bar = -(d(A(k) x)/dk)^T lambda by the generated adjoint), never the unrolled iteration.
 #include "neg_div_k_grad_1d_adjoint.hpp"
+#include "neg_div_k_grad_1d_kernels.hpp"
 #include "upwind_step_adjoint.hpp"
+#include "upwind_step_kernels.hpp"
 
 #include "dpgen/checkpoint.hpp"
 #include "dpgen/implicit_solve.hpp"
@@ -21,8 +23,6 @@
 #include <cstdint>
 #include <utility>
 
-void upwind_step(const double* d, const double* u, double* d_next, int n, double dt, double dx);
-void neg_div_k_grad_1d(const double* p, const double* k, double* out, int n, double h);
 
 namespace {
 

@@ -30,6 +30,27 @@ def cases():
         "laplacian2d": ((rand(ny, nx), nx, ny, 0.5), {}),
         # k has n + 1 face values: the output takes p's shape, k's size is checked
         "neg_div_k_grad_1d": ((rand(n), rand(n + 1), n, 0.5), {}),
+        # the multigrid transfers: outputs of another shape than the first argument
+        "mg_prolong_x": ((rand(ny, nx), nx, ny, 1.0, 0.0, -1.0, 0.5), {"f_shape": [ny, 2 * nx]}),
+        "mg_prolong_y": ((rand(ny, 2 * nx), nx, ny, 0.0, 1.0, 0.5, -1.0),
+                         {"f_shape": [2 * ny, 2 * nx]}),
+        "mg_average_2x2": ((rand(2 * ny, 2 * nx), nx, ny), {"c_shape": [ny, nx]}),
+        # the flow solver's MAC-grid kernels (u: ny x (nx+1) faces, v: (ny+1) x nx faces);
+        # the semi-Lagrangian ones read at data-dependent indices, small steps keep the
+        # departure points away from cell edges for the finite differences
+        "flow_advect_marker": ((rand(ny, nx), rand(ny, nx + 1), rand(ny + 1, nx), rand(ny, nx),
+                                nx, ny, 0.3), {}),
+        "flow_maccormack_marker": ((rand(ny, nx), rand(ny, nx), rand(ny, nx), rand(ny, nx + 1),
+                                    rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.3), {}),
+        "flow_advect_u": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3), {}),
+        "flow_advect_v": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3),
+                          {"v_out_shape": [ny + 1, nx]}),
+        "flow_divergence": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.5),
+                            {"div_shape": [ny, nx]}),
+        "flow_subtract_gradient_u": ((rand(ny, nx + 1), rand(ny, nx), nx, ny, 0.5), {}),
+        "flow_subtract_gradient_v": ((rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.5), {}),
+        "flow_buoyancy": ((rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.2), {}),
+        "flow_pressure_operator": ((rand(ny, nx), rand(ny, nx), nx, ny, 0.5), {}),
     }
 
 
@@ -52,6 +73,28 @@ class KernelOps(unittest.TestCase):
                 op = getattr(torch.ops.dpgen, name)
                 self.assertTrue(torch.autograd.gradcheck(
                     lambda *a: op(*a, **kwargs), args, eps=1e-6, atol=1e-7, rtol=1e-5))
+
+    def test_inactive_inputs(self):
+        # An input that needs no gradient gets a null adjoint (the generated adjoint skips its
+        # loops); the others' gradients are the same, bit for bit.
+        for name, (args, kwargs) in cases().items():
+            op = getattr(torch.ops.dpgen, name)
+            tensors = [i for i, a in enumerate(args) if torch.is_tensor(a)]
+            if len(tensors) < 2:
+                continue
+            fresh = lambda: [a.detach().clone() if torch.is_tensor(a) else a for a in args]
+            full = fresh()
+            for i in tensors:
+                full[i].requires_grad_()
+            out = op(*full, **kwargs)
+            (out[0] if isinstance(out, tuple) else out).sum().backward()
+            for i in tensors:
+                with self.subTest(op=name, active=i):
+                    one = fresh()
+                    one[i].requires_grad_()
+                    out = op(*one, **kwargs)
+                    (out[0] if isinstance(out, tuple) else out).sum().backward()
+                    self.assertTrue(torch.equal(one[i].grad, full[i].grad))
 
     def test_forward_matches_torch(self):
         # laplacian2d against slicing: the op computes what the kernel says
@@ -107,6 +150,36 @@ class KernelOps(unittest.TestCase):
         out = torch.ops.dpgen.upwind_step(d, torch.rand(n, dtype=D), n, 0.1, 1.0)
         self.errors(lambda: torch.autograd.grad(out.square().sum(), d, create_graph=True),
                     "second derivatives")
+
+
+class OtherShapes(unittest.TestCase):
+    """Ops of the test library libdpgen_torch_test.so (loaded when built)."""
+
+    def setUp(self):
+        if not hasattr(torch.ops.dpgen, "riemann_outparams"):
+            self.skipTest("libdpgen_torch_test.so not loaded")
+
+    def test_rows_of_fixed_length(self):
+        # double (*u)[6]: the tensors are passed as rows of NX = 6
+        ny = 5
+        k = (torch.rand(ny, 6, dtype=D) + 0.5).requires_grad_()
+        self.assertTrue(torch.autograd.gradcheck(
+            lambda kk, uu: torch.ops.dpgen.varcoef_laplace2d_rowarray(kk, uu, ny, 2.0),
+            (k, rand(ny, 6))))
+        self.assertRaisesRegex(RuntimeError, "argument 'u' has 24 elements",
+                               lambda: torch.ops.dpgen.varcoef_laplace2d_rowarray(
+                                   k.detach(), torch.rand(24, dtype=D), ny, 2.0,
+                                   lu_shape=[ny, 6]))
+
+    def test_c_kernel_with_four_outputs_and_work_arrays(self):
+        # fh, fq are written by the first loop and read by the second (work arrays)
+        n = 9
+        h = (torch.rand(n, dtype=D) + 1.0).requires_grad_()
+        q = (torch.rand(n, dtype=D) - 0.5).requires_grad_()
+        out = torch.ops.dpgen.riemann_outparams(h, q, n, 9.81, 0.1)
+        self.assertEqual(len(out), 4)
+        self.assertTrue(torch.autograd.gradcheck(
+            lambda a, b: torch.ops.dpgen.riemann_outparams(a, b, n, 9.81, 0.1), (h, q)))
 
 
 class SolverOps(unittest.TestCase):

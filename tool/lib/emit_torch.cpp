@@ -9,12 +9,12 @@
 #include "emit_torch.hpp"
 
 #include "affine.hpp"
+#include "emit_util.hpp"
 #include "print.hpp"
 
-#include <clang/Format/Format.h>
+#include <llvm/ADT/SmallString.h>
 #include <llvm/Support/Path.h>
 #include <llvm/Support/raw_ostream.h>
-#include <clang/Tooling/Core/Replacement.h>
 
 #include <fmt/format.h>
 
@@ -26,11 +26,6 @@
 namespace dpgen {
 
 namespace {
-
-std::string base_name(const std::string& path) {
-  auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 bool is_array(const Param& p) { return p.kind != ParamKind::Scalar; }
 
@@ -199,32 +194,6 @@ bool params_only(const ExprP& e) {
 
 // ---- the code -------------------------------------------------------------------------------
 
-class Code {
-public:
-  template <typename... A> void line(fmt::format_string<A...> f, A&&... a) {
-    out_ += fmt::format(f, std::forward<A>(a)...) + "\n";
-  }
-  void raw(const std::string& s) { out_ += s; }
-  const std::string& str() const { return out_; }
-
-private:
-  std::string out_;
-};
-
-std::string formatted(const std::string& code, const std::string& name) {
-  clang::format::FormatStyle style = clang::format::getLLVMStyle();
-  style.ColumnLimit = 100;
-  style.SortIncludes = clang::format::FormatStyle::SI_Never;
-  style.PointerAlignment = clang::format::FormatStyle::PAS_Left;
-  auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
-  auto out = clang::tooling::applyAllReplacements(code, repl);
-  if (!out) {
-    llvm::consumeError(out.takeError());
-    return code;
-  }
-  return *out;
-}
-
 std::string qualified(const Kernel& k, const std::string& name) {
   std::string q = "::";
   for (const auto& ns : k.namespaces)
@@ -232,13 +201,21 @@ std::string qualified(const Kernel& k, const std::string& name) {
   return q + name;
 }
 
-// `elem*` pointer expression of tensor `t` for parameter p, cast to the kernel's shape.
+// `elem*` pointer expression of tensor `t` for parameter p, cast to the kernel's shape (the
+// type array_declaration gives the kernel's and the adjoint's parameter).
 std::string pointer(const Param& p, const std::string& t, bool is_const) {
   std::string ptr = fmt::format("{}.data_ptr<{}>()", t, p.elem_name);
   if (p.rows.empty())
     return ptr;
-  return fmt::format("reinterpret_cast<{}{} (*){}>({})", is_const ? "const " : "", p.elem_name,
-                     p.rows, ptr);
+  std::string decl = array_declaration(p, is_const, "", true);
+  // "const double (*)[64]" from "const double (*)[64]" with the name left out
+  return fmt::format("reinterpret_cast<{}>({})", decl, ptr);
+}
+
+// The adjoint argument of input p in backward: its adjoint tensor, or nullptr where autograd
+// needs no gradient for it (the generated adjoint skips an inactive input's loops).
+std::string adjoint_pointer(const Param& p, const std::string& t) {
+  return fmt::format("{}.defined() ? {} : nullptr", t, pointer(p, t, false));
 }
 
 // The value the kernel gets for a scalar op argument.
@@ -419,9 +396,18 @@ void emit_kernel(Code& c, const Kernel& k) {
     c.line("const torch::Tensor {}_adj = dpgen::torch_ops::seed(grads[{}], "
            "ctx->saved_data[\"{}_shape\"].toIntVector(), {}.options());",
            outs[i]->name, i, outs[i]->name, first->name);
-  for (const Param* p : args)
-    if (p->kind == ParamKind::In)
-      c.line("torch::Tensor {}_adj = torch::zeros_like({});", p->name, p->name);
+  {
+    size_t edge = 0; // the index among the tensor arguments: autograd's input edges
+    for (const Param* p : args) {
+      if (!is_array(*p))
+        continue;
+      if (p->kind == ParamKind::In)
+        c.line("const torch::Tensor {}_adj = ctx->needs_input_grad({}) ? torch::zeros_like({}) : "
+               "torch::Tensor();",
+               p->name, edge, p->name);
+      ++edge;
+    }
+  }
   std::vector<std::string> acall;
   for (const auto& p : k.params) {
     if (p.synthetic)
@@ -429,7 +415,7 @@ void emit_kernel(Code& c, const Kernel& k) {
     switch (p.kind) {
     case ParamKind::In:
       acall.push_back(pointer(p, p.name, true));
-      acall.push_back(pointer(p, p.name + "_adj", false));
+      acall.push_back(adjoint_pointer(p, p.name + "_adj"));
       break;
     case ParamKind::Out:
       acall.push_back(pointer(p, p.name + "_adj", true));
@@ -476,25 +462,12 @@ void emit_entry(Code& c, const Kernel& k) {
   c.raw("\n");
 }
 
-// The forward kernel's declaration, in its namespaces.
-void emit_forward_declaration(Code& c, const Kernel& k) {
-  for (const auto& ns : k.namespaces)
-    c.raw(fmt::format("namespace {} {{\n", ns));
-  std::vector<std::string> ps;
-  for (const auto& p : k.params)
-    if (!p.synthetic)
-      ps.push_back(p.declaration);
-  c.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, fmt::join(ps, ", "));
-  for (auto it = k.namespaces.rbegin(); it != k.namespaces.rend(); ++it)
-    c.raw(fmt::format("}} // namespace {}\n", *it));
-}
-
 std::string error_at(const Kernel& k, const std::string& what) {
   return fmt::format("{}:{}:{}: error: {}", k.pos.file, k.pos.line, k.pos.col, what);
 }
 
-const char* kBanner = "// Generated by dpgen --torch from {} -- do not edit; edit the kernel and "
-                      "rebuild.\n";
+const char* kTorchBanner = "// Generated by dpgen --torch from {} -- do not edit; edit the kernel "
+                           "and rebuild.\n";
 
 } // namespace
 
@@ -517,12 +490,32 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
   std::set<std::string> names;
   for (const auto& plan : plans) {
     const Kernel& k = *plan.kernel;
-    for (const auto& p : k.params)
+    for (const auto& p : k.params) {
+      if (p.synthetic || !p.twin_of.empty())
+        continue;
       if (!p.container.empty())
         out.errors.push_back(error_at(
             k, fmt::format("kernel '{}': std::vector parameter '{}' cannot be a torch op "
                            "argument without a copy; declare it as a pointer ({}*) for --torch",
                            k.name, p.name, p.elem_name)));
+      else if (p.inout)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': DPGEN_INOUT array '{}' is updated in place, which a "
+                           "torch op cannot do to a tensor autograd tracks; for --torch write "
+                           "the new values into a separate DPGEN_OUT array",
+                           k.name, p.name)));
+      else if (p.row_pointers)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': row-pointer array '{}' ({}**) is not one tensor; for "
+                           "--torch declare it as a flat pointer or as rows of a fixed length "
+                           "({} (*{})[N])",
+                           k.name, p.name, p.elem_name, p.elem_name, p.name)));
+      else if (k.c_linkage && !p.rows.empty())
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': C array of rows '{}' is not supported by --torch; "
+                           "declare it as a flat pointer",
+                           k.name, p.name)));
+    }
     if (!names.insert(k.name).second)
       out.errors.push_back(error_at(
           k, fmt::format("two kernels named '{}' in different namespaces would be the same op "
@@ -533,7 +526,7 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
     return out;
 
   Code h;
-  h.raw(fmt::format(kBanner, source_name));
+  h.raw(fmt::format(kTorchBanner, source_name));
   h.raw("//\n"
         "// The kernels of " +
         source_name +
@@ -555,7 +548,7 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
   out.header = formatted(h.str(), stem + "_torch.hpp");
 
   Code c;
-  c.raw(fmt::format(kBanner, source_name));
+  c.raw(fmt::format(kTorchBanner, source_name));
   c.raw("//\n"
         "// One torch::autograd::Function per kernel: forward checks the arguments (CPU, the\n"
         "// kernel's dtype, contiguous, large enough for the largest index the loops reach),\n"
@@ -563,12 +556,10 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
         "// generated adjoint with zero-filled input adjoints. Registered with\n"
         "// TORCH_LIBRARY_FRAGMENT(dpgen, m), so several generated files share the namespace.\n");
   c.raw(fmt::format("#include \"{}_torch.hpp\"\n\n#include \"{}_adjoint.hpp\"\n#include "
-                    "\"dpgen/torch.hpp\"\n\n#include <torch/library.h>\n\n#include "
-                    "<algorithm>\n#include <cstdint>\n#include <vector>\n\n",
-                    stem, stem));
-  c.line("// The forward kernels, compiled from {}.", source_name);
-  for (const auto& plan : plans)
-    emit_forward_declaration(c, *plan.kernel);
+                    "\"{}_kernels.hpp\"\n#include \"dpgen/torch.hpp\"\n\n#include "
+                    "<torch/library.h>\n\n#include <algorithm>\n#include <cstdint>\n#include "
+                    "<vector>\n",
+                    stem, stem, stem));
   c.raw("\nnamespace {\n\n");
   for (const auto& plan : plans)
     emit_kernel(c, *plan.kernel);

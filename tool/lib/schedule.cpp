@@ -2,6 +2,8 @@
 // scatter units (see schedule.hpp for the worked example).
 #include "schedule.hpp"
 
+#include "ir_walk.hpp"
+
 #include "derive.hpp"
 #include "print.hpp"
 #include "prove.hpp"
@@ -132,25 +134,13 @@ bool is_bulk(const Block& b, const GatherGroup& g) {
 
 // The index reads data (an array, or a real value converted to int).
 bool data_dependent(const ExprP& e) {
-  if (e->op == Op::Read || (e->op == Op::Cast && is_real(e->ops[0]->type)))
-    return true;
-  if (e->op == Op::Local)
-    return data_dependent(e->local->def);
-  for (const auto& o : e->ops)
-    if (data_dependent(o))
-      return true;
-  return false;
+  return any_node(e, [](const ExprP& x) {
+    return x->op == Op::Read || (x->op == Op::Cast && is_real(x->ops[0]->type));
+  });
 }
 
 bool uses_rem(const ExprP& e) {
-  if (e->op == Op::Rem)
-    return true;
-  if (e->op == Op::Local)
-    return uses_rem(e->local->def);
-  for (const auto& o : e->ops)
-    if (uses_rem(o))
-      return true;
-  return false;
+  return any_node(e, [](const ExprP& x) { return x->op == Op::Rem; });
 }
 
 std::string describe_read(const Expr* r) {
