@@ -10,6 +10,7 @@
 
 #include "affine.hpp"
 #include "emit_util.hpp"
+#include "ir_walk.hpp"
 #include "print.hpp"
 
 #include <llvm/ADT/SmallString.h>
@@ -351,6 +352,10 @@ void emit_kernel(Code& c, const Kernel& k) {
     if (p->elem_name != first->elem_name)
       c.line("{} = {}.to(dpgen::torch_ops::dtype_of<{}>());", p->name, p->name, p->elem_name);
   }
+  // Kernel-level locals (sizes derived from the size arguments: `const int m = n - 1;`), which
+  // the extents below may mention; none reads an array (emit_torch_file rejects that).
+  for (const auto& l : k.kernel_locals)
+    c.line("[[maybe_unused]] const {} {} = {};", l->type_name, l->name, print(l->def));
   for (const auto& p : k.params)
     if (is_array(p))
       emit_extent_check(c, k, p, m, guard);
@@ -515,6 +520,19 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
             k, fmt::format("kernel '{}': C array of rows '{}' is not supported by --torch; "
                            "declare it as a flat pointer",
                            k.name, p.name)));
+    }
+    for (const auto& l : k.kernel_locals) {
+      std::string array;
+      if (any_node(l->def, [&](const ExprP& x) {
+            if (x->op == Op::Read)
+              array = x->name;
+            return x->op == Op::Read;
+          }))
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': '{}' is read from array '{}' before the loops (a size "
+                           "passed by pointer?); a torch op checks its tensors' sizes against "
+                           "numbers: for --torch pass it by value",
+                           k.name, l->name, array)));
     }
     if (!names.insert(k.name).second)
       out.errors.push_back(error_at(
