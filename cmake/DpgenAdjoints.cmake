@@ -81,3 +81,64 @@ function(dpgen_add_adjoints target)
   target_include_directories(${target} PUBLIC ${gen_dir})
   target_link_libraries(${target} PUBLIC dpgen::runtime)
 endfunction()
+
+# dpgen_add_torch_ops(<target> KERNELS <file>... [SOURCES <file>...] [COMPILE_ARGS <flag>...])
+#
+# Builds a shared library <target> of PyTorch ops: for each kernel of the given files, the op
+# torch.ops.dpgen.<kernel> (a torch::autograd::Function: forward = the kernel, backward = its
+# generated adjoint), which `dpgen --torch` generates at build time into
+# ${CMAKE_CURRENT_BINARY_DIR}/<target>_generated/<stem>_torch.{hpp,cpp}. The kernels and their
+# adjoints are the static library <target>_adjoints (dpgen_add_adjoints, position-independent).
+# Load it from Python with torch.ops.load_library("<path of lib<target>.so>"), or link it from
+# C++ (libtorch) and call dpgen::ops::<kernel>(...) from "<stem>_torch.hpp". SOURCES adds
+# hand-written op sources (e.g. time loops or solves built on the same kernels). Needs Torch
+# (find_package(Torch) is called here if the parent has not).
+function(dpgen_add_torch_ops target)
+  cmake_parse_arguments(ARG "" "" "KERNELS;SOURCES;COMPILE_ARGS" ${ARGN})
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "dpgen_add_torch_ops(${target}): unexpected arguments "
+                        "'${ARG_UNPARSED_ARGUMENTS}' (expected KERNELS <file>... "
+                        "[SOURCES <file>...] [COMPILE_ARGS <flag>...])")
+  endif()
+  if(NOT ARG_KERNELS)
+    message(FATAL_ERROR "dpgen_add_torch_ops(${target}): no KERNELS given")
+  endif()
+  if(NOT TORCH_LIBRARIES)
+    find_package(Torch REQUIRED)
+  endif()
+  dpgen_add_adjoints(${target}_adjoints KERNELS ${ARG_KERNELS} COMPILE_ARGS ${ARG_COMPILE_ARGS})
+  set_target_properties(${target}_adjoints PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  get_target_property(tool dpgen::dpgen ALIASED_TARGET)
+  if(tool)
+    set(tool_dependency ${tool})
+  else()
+    set(tool dpgen::dpgen)
+    set(tool_dependency $<TARGET_FILE:dpgen::dpgen>)
+  endif()
+  set(gen_dir ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
+  file(MAKE_DIRECTORY ${gen_dir})
+  set(generated)
+  foreach(kernel IN LISTS ARG_KERNELS)
+    get_filename_component(abs ${kernel} ABSOLUTE)
+    get_filename_component(stem ${kernel} NAME_WE)
+    get_filename_component(kdir ${abs} DIRECTORY)
+    set(hpp ${gen_dir}/${stem}_torch.hpp)
+    set(cpp ${gen_dir}/${stem}_torch.cpp)
+    set(stamp ${gen_dir}/${stem}_torch.stamp)
+    add_custom_command(
+      OUTPUT ${stamp}
+      BYPRODUCTS ${hpp} ${cpp}
+      COMMAND $<TARGET_FILE:${tool}> --torch ${abs} --out-dir ${gen_dir} --stamp ${stamp}
+              -- -std=c++17 -I${kdir} ${ARG_COMPILE_ARGS}
+      DEPENDS ${tool_dependency} ${abs}
+      DEPFILE ${stamp}.d
+      COMMENT "dpgen: PyTorch ops of ${kernel}"
+      VERBATIM)
+    list(APPEND generated ${stamp} ${cpp} ${hpp})
+  endforeach()
+  add_library(${target} SHARED ${generated} ${ARG_SOURCES})
+  target_include_directories(${target} PUBLIC ${gen_dir})
+  target_link_libraries(${target} PUBLIC ${target}_adjoints ${TORCH_LIBRARIES})
+  # torch's headers bring their own warnings; the generated code is checked by its tests.
+  set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET default)
+endfunction()

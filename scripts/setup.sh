@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libfmt-dev doctest-dev liblbfgspp-dev libbenchmark-dev
   # distributed runs (DPGEN_WITH_MPI, DPGEN_WITH_PETSC): OpenMPI 4.1, PETSc 3.18 (with hypre)
   openmpi-bin libopenmpi-dev libpetsc-real-dev pkg-config
+  python3-torch libtorch-dev pybind11-dev # the PyTorch ops (DPGEN_WITH_TORCH)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,10 +5,15 @@
 #      diagnostic tests, runtime, examples, a consumer project built against
 #      dpgen installed, as add_subdirectory and via FetchContent, and the
 #      distributed runtime and examples (DPGEN_WITH_MPI, DPGEN_WITH_PETSC:
-#      under mpirun with 1, 2 and 4 ranks, oversubscribed on 2 cores);
+#      under mpirun with 1, 2 and 4 ranks, oversubscribed on 2 cores), and the
+#      PyTorch ops (DPGEN_WITH_TORCH: gradcheck of every op, the PyTorch
+#      solver-in-the-loop examples) with Debian's own Python (/usr/bin/python3);
 #   2. the same suite built with AddressSanitizer and UBSan (build-asan/),
 #      MPI tests included, with ASAN_OPTIONS=detect_leaks=0 for them only
-#      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay);
+#      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay),
+#      but without the PyTorch parts: Debian's libtorch and Python are not
+#      built with ASan, and loading an ASan-instrumented library into them
+#      does not work;
 #   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
@@ -42,7 +47,8 @@ run_ctest() {
 
 # 1. The normal build.
 mpi=(-DDPGEN_WITH_MPI=ON -DDPGEN_WITH_PETSC=ON)
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${mpi[@]}"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${mpi[@]}" \
+  -DDPGEN_WITH_TORCH=ON -DPython3_EXECUTABLE=/usr/bin/python3
 cmake --build "$build" -j2
 run_ctest "$build" release
 
@@ -51,7 +57,8 @@ run_ctest "$build" release
 #    exactly as in 1.).
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${mpi[@]}" \
-  -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF
+  -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF \
+  -DDPGEN_WITH_TORCH=OFF
 cmake --build "$root/build-asan" -j2
 run_ctest "$root/build-asan" sanitizers
 

@@ -27,6 +27,10 @@ static cl::opt<bool> tangent("tangent",
                              cl::desc("also write <stem>_tangent.{hpp,cpp}: forward-mode "
                                       "(Jacobian-vector product) kernels"),
                              cl::cat(category));
+static cl::opt<bool> torch("torch",
+                           cl::desc("write <stem>_torch.{hpp,cpp} (PyTorch autograd ops calling the "
+                                    "kernels and their adjoints) instead of the adjoint files"),
+                           cl::cat(category));
 static cl::opt<bool> verbose("v",
                              cl::desc("report written and unchanged files, and where "
                                       "dpgen/annotate.hpp is found"),
@@ -91,5 +95,6 @@ int main(int argc, const char** argv) {
   opts.verbose = verbose;
   opts.tangent = tangent;
   opts.stamp = stamp;
+  opts.torch = torch;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);
 }

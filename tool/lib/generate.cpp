@@ -2,6 +2,7 @@
 #include "generate.hpp"
 
 #include "emit.hpp"
+#include "emit_torch.hpp"
 #include "emit_tangent.hpp"
 #include "output.hpp"
 #include "schedule.hpp"
@@ -43,6 +44,10 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       llvm::errs() << input << ": error: another input has the same name '" << stem
                    << "'; generated files would collide\n";
       ok = false;
+      continue;
+    }
+    if (opts.torch) { // PyTorch ops instead of the adjoints (emit_torch.hpp)
+      ok = add_torch_files(plans, input, opts.out_dir, pending) && ok;
       continue;
     }
     EmittedFile f = emit_file(plans, llvm::sys::path::filename(input).str(), stem);

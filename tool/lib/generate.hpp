@@ -17,6 +17,7 @@ struct GenerateOptions {
   /// If set: after a successful run, touch this file and write `<stamp>.d`,
   /// a make-style dependency file listing every file the kernels include.
   std::string stamp;
+  bool torch = false; // write <stem>_torch.{hpp,cpp} (PyTorch ops) instead of the adjoints
 };
 
 /// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} (and, with `tangent`,
