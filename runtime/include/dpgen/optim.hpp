@@ -1,8 +1,10 @@
 // Optimizers over one flat parameter vector, all driven by the same loss+gradient callable:
-// gradient descent, Adam, and L-BFGS (LBFGS++, stepwise and as a whole minimisation).
+// gradient descent, Adam, and L-BFGS (LBFGS++, stepwise and as a whole minimisation); and,
+// from the outputs' Jacobian instead, half-inverse gradients (hig.hpp).
 #pragma once
 
 #include "dpgen/error.hpp"
+#include "dpgen/hig.hpp"
 
 #include <Eigen/Core>
 #include <LBFGS.h>
