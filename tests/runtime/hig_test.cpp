@@ -82,10 +82,10 @@ TEST_CASE("exponent -1/2 matches V S^-1/2 U^T g from a Jacobi SVD; exponent 1 is
 }
 
 TEST_CASE("truncation drops singular values at or below truncation * S_max, and only those") {
-  // J = U diag(1, 1e-3, 1e-12) V^T with orthonormal U (5x3), V (4x3).
-  const Eigen::HouseholderQR<MatrixXd> qu(random_matrix(5, 3, 8)), qv(random_matrix(4, 3, 9));
+  // J = U diag(1, 1e-3, 1e-12) V^T with orthonormal U (5x3) and orthogonal V (3x3).
+  const Eigen::HouseholderQR<MatrixXd> qu(random_matrix(5, 3, 8)), qv(random_matrix(3, 3, 9));
   const MatrixXd u = qu.householderQ() * MatrixXd::Identity(5, 3);
-  const MatrixXd v = qv.householderQ() * MatrixXd::Identity(4, 3);
+  const MatrixXd v = qv.householderQ() * MatrixXd::Identity(3, 3);
   const MatrixXd j = u * VectorXd((VectorXd(3) << 1.0, 1e-3, 1e-12).finished()).asDiagonal() *
                      v.transpose();
   const VectorXd g = random_vector(5, 10);
