@@ -167,9 +167,13 @@ int main(int argc, char** argv) try {
       "--check-gradient", 0, "1: check gradients and Jacobians against central differences, exit", 0, 1);
   const double require = args.get_double(
       "--require-reduction", 0, "exit 1 unless every method run cut the loss at least this much", 0);
+  const int threads = args.get_int(
+      "--threads", 1, "Eigen's threads for the SVDs (0: OpenMP's default)", 0, 1024);
   const std::string out = args.get_string("--out", "hig_oscillators_out", "output folder");
   if (args.finish())
     return 0;
+  if (threads > 0)
+    Eigen::setNbThreads(threads);
 
   Problem p;
   std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
