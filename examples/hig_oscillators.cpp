@@ -14,6 +14,7 @@
 #include "dpgen/optim.hpp"
 #include "dpgen/physgrad.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -222,14 +223,16 @@ int main(int argc, char** argv) try {
   const auto evaluate = [&](const VectorXd& th) { return p.loss(th, 0, samples, samples, nullptr); };
   std::vector<History> histories;
   const std::string dir = dpgen_examples::output_dir(out);
-  std::size_t pos = 0;
-  while (pos <= methods.size()) {
-    const std::size_t comma = methods.find(',', pos);
-    const std::string method = methods.substr(pos, comma == std::string::npos ? comma : comma - pos);
-    pos = comma == std::string::npos ? methods.size() + 1 : comma + 1;
+  std::vector<std::string> method_list; // checked before anything runs
+  for (std::size_t pos = 0; pos <= methods.size();) {
+    const std::size_t comma = std::min(methods.find(',', pos), methods.size());
+    const std::string method = methods.substr(pos, comma - pos);
     if (method != "gd" && method != "sip" && method != "hig")
       args.fail("--methods takes gd, sip and hig, not '" + method + "'");
-
+    method_list.push_back(method);
+    pos = comma + 1;
+  }
+  for (const std::string& method : method_list) {
     // The notebook's settings per method.
     const int batch = method == "hig" ? 32 : 256;
     const int batches = samples / batch;
