@@ -1,9 +1,12 @@
-// Solvers and time loops: CG forward solve against its implicit backward pass
-// (one more solve plus the generated operator adjoint), heap memory of the
-// implicit rule against differentiating through the unrolled CG iterations,
-// and an unrolled upwind time loop with a full tape against Revolve.
+// Solvers and time loops: Jacobi-preconditioned and multigrid-preconditioned CG,
+// forward solve against its implicit backward pass (one more solve plus the
+// generated operator adjoint), heap memory of the implicit rule against
+// differentiating through the unrolled CG iterations, and an unrolled upwind
+// time loop with a full tape against Revolve. The solver benchmarks run on one
+// thread (the generated kernels would otherwise use OpenMP, the rest not).
 #include "dpgen/checkpoint.hpp"
 #include "dpgen/implicit_solve.hpp"
+#include "dpgen/multigrid.hpp"
 #include "kernels.hpp"
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
 #include "operators.hpp"
@@ -11,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -48,14 +52,30 @@ struct Poisson {
     o.remove_null_space_mean = true;
     return o;
   }
+  const dpgen::Boundaries periodic = dpgen::Boundaries::all(dpgen::Boundary::periodic);
+  // Jacobi-preconditioned CG: M = diag(A), found once (not timed) by probing the operator.
+  dpgen::CgOptions jacobi_options() const {
+    dpgen::CgOptions o = options();
+    o.jacobi_diagonal = dpgen::operator_diagonal(neg_div_k_grad_periodic2d, k, nx, nx, h, periodic);
+    return o;
+  }
+  // theta_bar -= (d(A(k) x)/dk)^T lambda: the generated adjoint w.r.t. k.
+  void adjoint_k(const VectorXd& xs, const VectorXd& lambda, VectorXd& g) const {
+    VectorXd p_adj = VectorXd::Zero(xs.size());
+    neg_div_k_grad_periodic2d_adjoint(xs.data(), p_adj.data(), k.data(), g.data(), lambda.data(),
+                                      nx, nx, h);
+  }
 };
 
+// Jacobi-preconditioned CG, the yardstick of the multigrid-preconditioned one.
 void BM_cg_forward(benchmark::State& state) {
+  omp_set_num_threads(1);
   Poisson pr(static_cast<int>(state.range(0)));
+  const dpgen::CgOptions options = pr.jacobi_options();
   int iterations = 0;
   for (auto _ : state) {
     auto r = dpgen::solve_forward([&](const VectorXd& x, VectorXd& y) { pr.apply(x, y); }, pr.b,
-                                  pr.options());
+                                  options);
     iterations = r.summary.iterations;
     benchmark::DoNotOptimize(r.solution.data());
   }
@@ -63,23 +83,86 @@ void BM_cg_forward(benchmark::State& state) {
 }
 
 void BM_cg_backward_implicit(benchmark::State& state) {
+  omp_set_num_threads(1);
   Poisson pr(static_cast<int>(state.range(0)));
+  const dpgen::CgOptions options = pr.jacobi_options();
   auto apply = [&](const VectorXd& x, VectorXd& y) { pr.apply(x, y); };
-  const VectorXd x = dpgen::solve_forward(apply, pr.b, pr.options()).solution;
+  const VectorXd x = dpgen::solve_forward(apply, pr.b, options).solution;
   // A loss gradient as smooth as the forward right-hand side, so both solves
   // face the same conditioning: the difference is the implicit rule's own cost.
   const VectorXd x_bar = pr.b;
-  // theta_bar -= (d(A(k) x)/dk)^T lambda: the generated adjoint w.r.t. k.
-  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& lambda, VectorXd& g) {
-    VectorXd p_adj = VectorXd::Zero(xs.size());
-    neg_div_k_grad_periodic2d_adjoint(xs.data(), p_adj.data(), pr.k.data(), g.data(),
-                                      lambda.data(), pr.nx, pr.nx, pr.h);
+  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(xs, l, g);
   };
   int iterations = 0;
   for (auto _ : state) {
     VectorXd b_bar, k_bar = VectorXd::Zero(pr.k.size());
-    auto r = dpgen::implicit_solve_backward(apply, op_adjoint, x, x_bar, b_bar, k_bar,
-                                            pr.options());
+    auto r = dpgen::implicit_solve_backward(apply, op_adjoint, x, x_bar, b_bar, k_bar, options);
+    iterations = r.summary.iterations;
+    benchmark::DoNotOptimize(k_bar.data());
+  }
+  state.counters["cg_iterations"] = iterations;
+}
+
+// One application of the operator kernel: the unit in which the solves' costs are
+// compared across sizes (its time per cell grows once the fields leave the caches).
+void BM_operator(benchmark::State& state) {
+  Poisson pr(static_cast<int>(state.range(0)));
+  VectorXd y(pr.b.size());
+  for (auto _ : state) {
+    pr.apply(pr.b, y);
+    benchmark::DoNotOptimize(y.data());
+  }
+}
+
+// The multigrid setup alone: coefficients averaged level by level, diagonals probed
+// (9 operator applications per level), the coarsest grid factored.
+void BM_mg_setup(benchmark::State& state) {
+  omp_set_num_threads(1);
+  Poisson pr(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    dpgen::Multigrid mg(pr.nx, pr.nx, pr.h, pr.periodic, neg_div_k_grad_periodic2d, pr.k);
+    benchmark::DoNotOptimize(&mg);
+  }
+}
+
+// A forward solve with a coefficient seen for the first time: multigrid setup plus
+// MG-preconditioned CG.
+void BM_mgpcg_forward(benchmark::State& state) {
+  omp_set_num_threads(1);
+  Poisson pr(static_cast<int>(state.range(0)));
+  int iterations = 0, levels = 0;
+  for (auto _ : state) {
+    dpgen::Multigrid mg(pr.nx, pr.nx, pr.h, pr.periodic, neg_div_k_grad_periodic2d, pr.k);
+    dpgen::CgOptions options = pr.options();
+    options.preconditioner = mg.preconditioner();
+    auto r = dpgen::solve_forward(mg.fine_operator(), pr.b, options);
+    iterations = r.summary.iterations;
+    levels = mg.levels();
+    benchmark::DoNotOptimize(r.solution.data());
+  }
+  state.counters["cg_iterations"] = iterations;
+  state.counters["mg_levels"] = levels;
+}
+
+// The implicit backward pass of that solve: A^T lambda = x_bar preconditioned by the
+// forward pass's multigrid (A^T = A, no second setup), then the generated adjoint w.r.t. k.
+void BM_mgpcg_backward_implicit(benchmark::State& state) {
+  omp_set_num_threads(1);
+  Poisson pr(static_cast<int>(state.range(0)));
+  dpgen::Multigrid mg(pr.nx, pr.nx, pr.h, pr.periodic, neg_div_k_grad_periodic2d, pr.k);
+  dpgen::CgOptions options = pr.options();
+  options.preconditioner = mg.preconditioner();
+  const VectorXd x = dpgen::solve_forward(mg.fine_operator(), pr.b, options).solution;
+  const VectorXd x_bar = pr.b;
+  auto op_adjoint = [&](const VectorXd& xs, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(xs, l, g);
+  };
+  int iterations = 0;
+  for (auto _ : state) {
+    VectorXd b_bar, k_bar = VectorXd::Zero(pr.k.size());
+    auto r = dpgen::implicit_solve_backward(mg.fine_operator(), op_adjoint, x, x_bar, b_bar, k_bar,
+                                            options);
     iterations = r.summary.iterations;
     benchmark::DoNotOptimize(k_bar.data());
   }
@@ -197,12 +280,19 @@ void BM_timeloop_gradient(benchmark::State& state) {
 
 } // namespace
 
-BENCHMARK(BM_cg_forward)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_cg_forward)->RangeMultiplier(2)->Range(64, 1024)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_cg_backward_implicit)
     ->Arg(64)
     ->Arg(128)
     ->Arg(256)
     ->Arg(512)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_operator)->RangeMultiplier(2)->Range(64, 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_mg_setup)->RangeMultiplier(2)->Range(64, 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_mgpcg_forward)->RangeMultiplier(2)->Range(64, 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_mgpcg_backward_implicit)
+    ->RangeMultiplier(2)
+    ->Range(64, 1024)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_cg_gradient_memory)
     ->ArgsProduct({{0, 1}, {25, 100, 400}})

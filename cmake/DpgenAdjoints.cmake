@@ -1,9 +1,12 @@
-# dpgen_add_adjoints(<target> KERNELS <file>... [COMPILE_ARGS <flag>...])
+# dpgen_add_adjoints(<target> KERNELS <file>... [TANGENTS] [COMPILE_ARGS <flag>...])
 #
 # Builds a static library <target> from the given annotated kernel files (the
 # forward kernels, compiled as they are) and their adjoints, which dpgen
 # generates at build time into ${CMAKE_CURRENT_BINARY_DIR}/<target>_generated/
-# as <stem>_adjoint.{hpp,cpp}. Link <target> and include "<stem>_adjoint.hpp".
+# as <stem>_adjoint.{hpp,cpp}, and <stem>_kernels.hpp declaring the forward
+# kernels. Link <target> and include "<stem>_adjoint.hpp".
+# With TANGENTS, also the forward-mode kernels <stem>_tangent.{hpp,cpp}
+# (<kernel>_tangent: Jacobian-vector products).
 # Editing a kernel or rebuilding dpgen regenerates; an unchanged output is not
 # rewritten, so nothing downstream rebuilds.
 #
@@ -15,11 +18,11 @@
 include_guard(GLOBAL)
 
 function(dpgen_add_adjoints target)
-  cmake_parse_arguments(ARG "" "" "KERNELS;COMPILE_ARGS" ${ARGN})
+  cmake_parse_arguments(ARG "TANGENTS" "" "KERNELS;COMPILE_ARGS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "dpgen_add_adjoints(${target}): unexpected arguments "
                         "'${ARG_UNPARSED_ARGUMENTS}' (expected KERNELS <file>... "
-                        "[COMPILE_ARGS <flag>...])")
+                        "[TANGENTS] [COMPILE_ARGS <flag>...])")
   endif()
   if(NOT ARG_KERNELS)
     message(FATAL_ERROR "dpgen_add_adjoints(${target}): no KERNELS given")
@@ -51,6 +54,12 @@ function(dpgen_add_adjoints target)
     set(hpp ${gen_dir}/${stem}_adjoint.hpp)
     set(cpp ${gen_dir}/${stem}_adjoint.cpp)
     set(stamp ${gen_dir}/${stem}_adjoint.stamp)
+    set(tangent_files)
+    set(tangent_flag)
+    if(ARG_TANGENTS)
+      set(tangent_files ${gen_dir}/${stem}_tangent.hpp ${gen_dir}/${stem}_tangent.cpp)
+      set(tangent_flag --tangent)
+    endif()
     # The stamp is the rule's output; the generated files are byproducts that
     # keep their timestamps when their content does not change.
     # dpgen writes ${stamp}.d listing every header the kernel includes, so
@@ -58,14 +67,14 @@ function(dpgen_add_adjoints target)
     # dpgen/annotate.hpp itself.
     add_custom_command(
       OUTPUT ${stamp}
-      BYPRODUCTS ${hpp} ${cpp}
-      COMMAND $<TARGET_FILE:${tool}> ${abs} --out-dir ${gen_dir} --stamp ${stamp}
+      BYPRODUCTS ${hpp} ${cpp} ${gen_dir}/${stem}_kernels.hpp ${tangent_files}
+      COMMAND $<TARGET_FILE:${tool}> ${abs} --out-dir ${gen_dir} --stamp ${stamp} ${tangent_flag}
               -- -std=c++17 -I${kdir} ${ARG_COMPILE_ARGS}
       DEPENDS ${tool_dependency} ${abs}
       DEPFILE ${stamp}.d
       COMMENT "dpgen: adjoint of ${kernel}"
       VERBATIM)
-    list(APPEND generated ${stamp} ${cpp} ${hpp})
+    list(APPEND generated ${stamp} ${cpp} ${hpp} ${tangent_files})
     list(APPEND kernel_sources ${abs})
   endforeach()
   add_library(${target} STATIC ${kernel_sources} ${generated})

@@ -102,10 +102,11 @@ struct Oscillators {
     return rollout(VectorXd::Zero(kState), v);
   }
   // d s_T / d u (4 x 24): by 4 VJPs (rows), fewer than the 24 JVPs columns would take.
+  // The rollout is linear in u: the products are the same at every u.
   MatrixXd control_jacobian() const {
-    return dpgen::jacobian(
-        kState, kSteps, [&](const VectorXd& v) { return rollout_jvp_control(v); },
-        [&](const VectorXd& w) { return rollout_vjp_control(w); });
+    return dpgen::jacobian([&](const VectorXd&, const VectorXd& v) { return rollout_jvp_control(v); },
+                           [&](const VectorXd&, const VectorXd& w) { return rollout_vjp_control(w); },
+                           VectorXd::Zero(kSteps), kState);
   }
 };
 
@@ -190,9 +191,9 @@ int main(int argc, char** argv) try {
     const VectorXd s0 = p.data.col(0), u = VectorXd::LinSpaced(kSteps, -0.3, 0.4);
     const MatrixXd j_fd = dpgen::jacobian_central_difference(
         [&](const VectorXd& v) { return p.physics.rollout(s0, v); }, u);
-    const MatrixXd j_columns = dpgen::jacobian(
-        kState, kSteps, [&](const VectorXd& v) { return p.physics.rollout_jvp_control(v); },
-        nullptr);
+    const MatrixXd j_columns = dpgen::jacobian_by_columns(
+        [&](const VectorXd&, const VectorXd& v) { return p.physics.rollout_jvp_control(v); }, u,
+        kState);
     const double e_modes = (p.control_jacobian - j_columns).cwiseAbs().maxCoeff();
     const double e_fd = (p.control_jacobian - j_fd).cwiseAbs().maxCoeff();
     std::printf("physics Jacobian: rows vs columns %.2e, rows vs central differences %.2e\n",
@@ -240,8 +241,8 @@ int main(int argc, char** argv) try {
     History h{method == "gd" ? "Adam (GD)" : method == "sip" ? "SIP (PG)" : "HIG",
               method == "gd" ? "#1f77b4" : method == "sip" ? "#ff7f0e" : "#2ca02c", {}, {}, {}};
     dpgen::Adam adam(dpgen::AdamOptions{1e-3});
-    dpgen::HigOptions hig_options; // lr 1, exponent -1/2, truncation 1e-10
-    dpgen::HalfInverseGradient hig(hig_options);
+    dpgen::HigOptions hig_options; // the notebook's lr 1, exponent -1/2, truncation 1e-10
+    hig_options.truncation = 1e-10;
     // SIP's local inverse: u' = u - J^+ (y - y'), truncating below 1e-5 S_max (its rcond).
     dpgen::HigOptions pinv;
     pinv.exponent = -1.0;
@@ -269,7 +270,8 @@ int main(int argc, char** argv) try {
         dpgen::PhysicalGradientProblem pg;
         pg.forward = [&](const VectorXd& v) { return p.physics.rollout(target, v); };
         pg.inverse = [&](const VectorXd& y_new, const VectorXd& v) -> VectorXd {
-          return v + dpgen::hig_update(p.control_jacobian, p.physics.rollout(target, v) - y_new, pinv);
+          return v + dpgen::hig_update(p.control_jacobian, p.physics.rollout(target, v) - y_new, pinv)
+                         .step;
         };
         pg.loss = dpgen::l2_loss_newton(target);
         dpgen::PgOptions o;
@@ -284,8 +286,10 @@ int main(int argc, char** argv) try {
     };
     // HIG: the batch's stacked outputs (4 per sample), dL/dy of loss / batch, and the joint
     // Jacobian d s_T / d theta by rows: each row one backward pass of the network seeded
-    // with a row of d s_T / d u (4 VJPs per sample, fewer than 1444 JVPs).
-    const dpgen::LossOutputsJacobian hig_batch = [&](const VectorXd& th, VectorXd& g, MatrixXd& j) {
+    // with a row of d s_T / d u (4 VJPs per sample, fewer than 1444 JVPs). Returns the loss.
+    VectorXd hig_g;
+    MatrixXd hig_j;
+    const auto hig_batch = [&](const VectorXd& th, VectorXd& g, MatrixXd& j) {
       const int b = next_batch++ % batches;
       g.resize(kState * batch);
       j.resize(kState * batch, th.size());
@@ -328,7 +332,8 @@ int main(int argc, char** argv) try {
       next_batch = 0;
       for (int b = 0; b < batches; ++b) {
         if (method == "hig") {
-          hig.step(theta, hig_batch);
+          hig_batch(theta, hig_g, hig_j); // g = dL/dy in place of hig_update's residual
+          theta += dpgen::hig_update(hig_j, hig_g, hig_options).step;
         } else {
           const dpgen::LossGradient& f = method == "gd" ? gd_loss : sip_loss;
           if (b == 0)

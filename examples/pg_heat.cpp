@@ -103,10 +103,11 @@ int main(int argc, char** argv) try {
 
   if (check) {
     const VectorXd at = hot_boxes(n, 99);
-    const auto jvp = [&](const VectorXd& v) { return heat.forward(v); }; // P is linear
-    const auto vjp = [&](const VectorXd& w) { return heat.adjoint(w); };
-    const Eigen::MatrixXd rows = dpgen::jacobian(n, n, jvp, vjp, dpgen::JacobianMode::rows);
-    const Eigen::MatrixXd columns = dpgen::jacobian(n, n, jvp, vjp, dpgen::JacobianMode::columns);
+    // P is linear: its JVP is P v and its VJP P^T w, at any x.
+    const auto jvp = [&](const VectorXd&, const VectorXd& v) { return heat.forward(v); };
+    const auto vjp = [&](const VectorXd&, const VectorXd& w) { return heat.adjoint(w); };
+    const Eigen::MatrixXd rows = dpgen::jacobian_by_rows(vjp, at, n);
+    const Eigen::MatrixXd columns = dpgen::jacobian_by_columns(jvp, at, n);
     const double e_modes = (rows - columns).cwiseAbs().maxCoeff();
     const double e_fd = (rows - dpgen::jacobian_central_difference(
                                     [&](const VectorXd& x) { return heat.forward(x); }, at))

@@ -32,10 +32,10 @@ VectorXd physics_jvp(const VectorXd& x, const VectorXd& v) {
 VectorXd physics_vjp(const VectorXd& x, const VectorXd& w) {
   return VectorXd((VectorXd(2) << w[0], 2.0 * x[1] * w[1]).finished());
 }
+// dy/dx from the JVP columns and VJP rows (jacobian() takes columns when both are given and
+// the Jacobian is square).
 MatrixXd physics_jacobian(const VectorXd& x) {
-  return dpgen::jacobian(
-      2, 2, [&](const VectorXd& v) { return physics_jvp(x, v); },
-      [&](const VectorXd& w) { return physics_vjp(x, w); });
+  return dpgen::jacobian(physics_jvp, physics_vjp, x, 2);
 }
 double loss_of_y(const VectorXd& y) { return y.squaredNorm(); }
 
@@ -139,17 +139,13 @@ int main(int argc, char** argv) try {
     double l = loss_and_gradient(x, g);
     adam.step(x, l, g, loss_and_gradient);
   });
-  // HIG: the Jacobian of y w.r.t. x, its singular values to the power -1/2.
+  // HIG: the Jacobian of y w.r.t. x, its singular values to the power -1/2, applied to
+  // dL/dy = 2 y (hig_update's r: any loss's gradient in y, not only a residual's).
   dpgen::HigOptions hig_options;
   hig_options.learning_rate = lr_hig;
-  dpgen::HalfInverseGradient hig(hig_options);
-  const dpgen::LossOutputsJacobian hig_batch = [](const VectorXd& x, VectorXd& g, MatrixXd& j) {
-    const VectorXd y = physics(x);
-    g = 2.0 * y; // dL/dy
-    j = physics_jacobian(x);
-    return loss_of_y(y);
-  };
-  timed({"HIG", "#9467bd", lr_hig, {}}, [&](VectorXd& x) { hig.step(x, hig_batch); });
+  hig_options.truncation = 1e-10;
+  timed({"HIG", "#9467bd", lr_hig, {}},
+        [&](VectorXd& x) { x += dpgen::hig_update(physics_jacobian(x), 2.0 * physics(x), hig_options).step; });
 
   const std::string dir = dpgen_examples::output_dir(out);
   std::ofstream csv(dir + "iterates.csv");

@@ -13,3 +13,40 @@ DPGEN_KERNEL void divergence2d(DPGEN_IN const double* u, DPGEN_IN const double* 
 
 DPGEN_KERNEL void laplacian2d(DPGEN_IN const double* a, DPGEN_OUT double* out,
                               int nx, int ny, double h);
+
+// Multigrid transfers (multigrid_transfer.cpp), used by dpgen/multigrid.hpp.
+// Bilinear prolongation along x: coarse nxc-by-ny -> fine 2nxc-by-ny. Ghost
+// weights per wall: periodic (self 0, wrap 1), Neumann (1, 0), Dirichlet (-1, 0).
+DPGEN_KERNEL void mg_prolong_x(DPGEN_IN const double* c, DPGEN_OUT double* f, int nxc, int ny,
+                               double west_self, double west_wrap, double east_self,
+                               double east_wrap);
+// Bilinear prolongation along y: 2nxc-by-nyc -> 2nxc-by-2nyc.
+DPGEN_KERNEL void mg_prolong_y(DPGEN_IN const double* c, DPGEN_OUT double* f, int nxc, int nyc,
+                               double south_self, double south_wrap, double north_self,
+                               double north_wrap);
+// Coefficient coarsening: mean of the 2x2 fine cells of each coarse cell.
+DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc, int nyc);
+
+// The 2D flow solver's kernels (flow2d.cpp, used by dpgen/flow2d.hpp): closed MAC
+// grid, marker s (nx*ny), u ((nx+1)*ny), v (nx*(ny+1)); dt_h = dt / h.
+DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const double* u,
+                                     DPGEN_IN const double* v, DPGEN_IN const double* inflow,
+                                     DPGEN_OUT double* s_out, int nx, int ny, double dt_h);
+DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                DPGEN_OUT double* u_out, int nx, int ny, double dt_h);
+DPGEN_KERNEL void flow_advect_v(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                DPGEN_OUT double* v_out, int nx, int ny, double dt_h);
+DPGEN_KERNEL void flow_buoyancy(DPGEN_IN const double* v, DPGEN_IN const double* s,
+                                DPGEN_OUT double* v_out, int nx, int ny, double dt_b);
+DPGEN_KERNEL void flow_divergence(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                  DPGEN_OUT double* div, int nx, int ny, double h);
+DPGEN_KERNEL void flow_pressure_operator(DPGEN_IN const double* p, DPGEN_IN const double* k,
+                                         DPGEN_OUT double* out, int nx, int ny, double h);
+DPGEN_KERNEL void flow_subtract_gradient_u(DPGEN_IN const double* u, DPGEN_IN const double* p,
+                                           DPGEN_OUT double* u_out, int nx, int ny, double h);
+DPGEN_KERNEL void flow_subtract_gradient_v(DPGEN_IN const double* v, DPGEN_IN const double* p,
+                                           DPGEN_OUT double* v_out, int nx, int ny, double h);
+DPGEN_KERNEL void flow_maccormack_marker(DPGEN_IN const double* s, DPGEN_IN const double* s_sl,
+                                         DPGEN_IN const double* s_rev, DPGEN_IN const double* u,
+                                         DPGEN_IN const double* v, DPGEN_IN const double* inflow,
+                                         DPGEN_OUT double* s_out, int nx, int ny, double dt_h);

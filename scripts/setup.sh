@@ -7,6 +7,8 @@ packages=(
   clang-19 libclang-19-dev libclang-cpp19-dev llvm-19-dev llvm-19-tools libclang-rt-19-dev
   libomp-19-dev
   libeigen3-dev libfmt-dev doctest-dev liblbfgspp-dev libbenchmark-dev
+  # distributed runs (DPGEN_WITH_MPI, DPGEN_WITH_PETSC): OpenMPI 4.1, PETSc 3.18 (with hypre)
+  openmpi-bin libopenmpi-dev libpetsc-real-dev pkg-config
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -3,8 +3,12 @@
 # -j2 and runs every test, three times over:
 #   1. the normal build (build/): kernel adjoints, generator golden and
 #      diagnostic tests, runtime, examples, a consumer project built against
-#      dpgen installed, as add_subdirectory and via FetchContent;
-#   2. the same suite built with AddressSanitizer and UBSan (build-asan/);
+#      dpgen installed, as add_subdirectory and via FetchContent, and the
+#      distributed runtime and examples (DPGEN_WITH_MPI, DPGEN_WITH_PETSC:
+#      under mpirun with 1, 2 and 4 ranks, oversubscribed on 2 cores);
+#   2. the same suite built with AddressSanitizer and UBSan (build-asan/),
+#      MPI tests included, with ASAN_OPTIONS=detect_leaks=0 for them only
+#      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay);
 #   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
@@ -37,7 +41,8 @@ run_ctest() {
 }
 
 # 1. The normal build.
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+mpi=(-DDPGEN_WITH_MPI=ON -DDPGEN_WITH_PETSC=ON)
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${mpi[@]}"
 cmake --build "$build" -j2
 run_ctest "$build" release
 
@@ -45,7 +50,7 @@ run_ctest "$build" release
 #    (but the consumer.* tests: their projects build without the sanitizers,
 #    exactly as in 1.).
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${mpi[@]}" \
   -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF
 cmake --build "$root/build-asan" -j2
 run_ctest "$root/build-asan" sanitizers

@@ -53,12 +53,15 @@ marker="// ---- generated code (scripts/update-golden.sh writes what follows) --
 for input in "$root"/tests/golden/rules/*.cpp; do
   [ -e "$input" ] || continue
   stem=$(basename "$input" .cpp)
-  "$dpgen" "$input" --out-dir "$tmp" -- -I"$root/runtime/include" 2>/dev/null
+  # A rule file whose RUN line asks for --tangent shows the tangent kernel.
+  kind=adjoint flag=
+  if grep -q -- "--tangent" "$input"; then kind=tangent flag=--tangent; fi
+  "$dpgen" "$input" $flag --out-dir "$tmp" -- -I"$root/runtime/include" 2>/dev/null
   head=$(sed "/^\/\/ ---- generated code/,\$d" "$input")
   {
     printf '%s\n' "$head"
     echo "$marker"
-    checks CPP "$tmp/${stem}_adjoint.cpp"
+    checks CPP "$tmp/${stem}_${kind}.cpp"
   } > "$input.new"
   mv "$input.new" "$input"
   echo "wrote $input"

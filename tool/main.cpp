@@ -23,6 +23,10 @@ static cl::opt<std::string> stamp("stamp",
                                   cl::desc("after success, touch <file> and write <file>.d (a "
                                            "make-style list of every file read)"),
                                   cl::value_desc("file"), cl::cat(category));
+static cl::opt<bool> tangent("tangent",
+                             cl::desc("also write <stem>_tangent.{hpp,cpp}: forward-mode "
+                                      "(Jacobian-vector product) kernels"),
+                             cl::cat(category));
 static cl::opt<bool> verbose("v",
                              cl::desc("report written and unchanged files, and where "
                                       "dpgen/annotate.hpp is found"),
@@ -85,6 +89,7 @@ int main(int argc, const char** argv) {
   opts.frontend.driver = DPGEN_CLANG_DRIVER;
   opts.out_dir = out_dir;
   opts.verbose = verbose;
+  opts.tangent = tangent;
   opts.stamp = stamp;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);
 }

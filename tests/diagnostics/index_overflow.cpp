@@ -3,7 +3,7 @@
 // (once per kernel), and the adjoint is written.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
-// RUN: ls %t | %count 2
+// RUN: ls %t | %count 3
 #include "dpgen/annotate.hpp"
 
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny, int nz) {

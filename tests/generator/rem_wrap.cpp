@@ -2,7 +2,7 @@
 // how to get the gather form. The adjoint still compiles and is written.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
-// RUN: ls %t | %count 2
+// RUN: ls %t | %count 3
 #include "dpgen/annotate.hpp"
 
 DPGEN_KERNEL void forward_difference(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {

@@ -3,6 +3,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "clipped_sample_adjoint.hpp"
+#include "clipped_sample_tangent.hpp"
 #include "test_kernels.hpp"
 
 TEST_CASE("clipped_sample adjoint") {
@@ -19,6 +20,9 @@ TEST_CASE("clipped_sample adjoint") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       clipped_sample_adjoint(in[0], adj[0], in[1], adj[1], mask.data(), seed[0], seed[1], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      clipped_sample_tangent(in[0], dir[0], in[1], dir[1], mask.data(), out[0], outd[0], out[1], outd[1], n);
     };
     dpgen_test::check_adjoint(p);
   }

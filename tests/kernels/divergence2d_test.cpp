@@ -2,6 +2,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "divergence2d_adjoint.hpp"
+#include "divergence2d_tangent.hpp"
 #include "kernels.hpp"
 
 #include <type_traits>
@@ -23,6 +24,12 @@ TEST_CASE("divergence2d adjoint") {
     p.forward = [&](auto in, auto out) { divergence2d(in[0], in[1], out[0], nx, ny, h); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       divergence2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, h);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      divergence2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, h);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      divergence2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, h);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -2,6 +2,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "gradient2d_adjoint.hpp"
+#include "gradient2d_tangent.hpp"
 #include "test_kernels.hpp"
 
 #include <type_traits>
@@ -23,6 +24,12 @@ TEST_CASE("gradient2d adjoint") {
     p.forward = [&](auto in, auto out) { gradient2d(in[0], out[0], out[1], nx, ny, 0.5); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       gradient2d_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      gradient2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], nx, ny, 0.5);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      gradient2d_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], nx, ny, 0.5);
     };
     dpgen_test::check_adjoint(p);
   }

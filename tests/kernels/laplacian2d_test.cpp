@@ -3,6 +3,7 @@
 
 #include "kernels.hpp"
 #include "laplacian2d_adjoint.hpp"
+#include "laplacian2d_tangent.hpp"
 
 #include <type_traits>
 
@@ -22,6 +23,12 @@ TEST_CASE("laplacian2d adjoint") {
     p.forward = [&](auto in, auto out) { laplacian2d(in[0], out[0], nx, ny, h); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       laplacian2d_adjoint(in[0], adj[0], seed[0], nx, ny, h);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      laplacian2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ny, h);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      laplacian2d_tangent(in[0], dir[0], out[0], outd[0], nx, ny, h);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -2,6 +2,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "laplacian3d_adjoint.hpp"
+#include "laplacian3d_tangent.hpp"
 #include "test_kernels.hpp"
 
 TEST_CASE("laplacian3d adjoint") {
@@ -17,6 +18,12 @@ TEST_CASE("laplacian3d adjoint") {
     p.forward = [&](auto in, auto out) { laplacian3d(in[0], out[0], nx, ny, nz, 0.5); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       laplacian3d_adjoint(in[0], adj[0], seed[0], nx, ny, nz, 0.5);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      laplacian3d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ny, nz, 0.5);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      laplacian3d_tangent(in[0], dir[0], out[0], outd[0], nx, ny, nz, 0.5);
     };
     dpgen_test::check_adjoint(p);
   }

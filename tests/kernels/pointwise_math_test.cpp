@@ -2,6 +2,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "pointwise_math_adjoint.hpp"
+#include "pointwise_math_tangent.hpp"
 #include "test_kernels.hpp"
 
 TEST_CASE("pointwise_math adjoint") {
@@ -14,6 +15,12 @@ TEST_CASE("pointwise_math adjoint") {
     p.forward = [&](auto in, auto out) { pointwise_math(in[0], in[1], out[0], n); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       pointwise_math_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      pointwise_math_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      pointwise_math_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n);
     };
     dpgen_test::check_adjoint(p);
   }

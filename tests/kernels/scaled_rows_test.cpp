@@ -3,6 +3,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "scaled_rows_adjoint.hpp"
+#include "scaled_rows_tangent.hpp"
 #include "test_kernels.hpp"
 
 #include <type_traits>
@@ -30,6 +31,9 @@ TEST_CASE("scaled_rows adjoint") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       scaled_rows_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], mask.data(), seed[0], nx,
                           ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      scaled_rows_tangent(in[0], dir[0], in[1], dir[1], in[2], dir[2], mask.data(), out[0], outd[0], nx, ny);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -4,6 +4,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "size_checks_adjoint.hpp"
+#include "size_checks_tangent.hpp"
 #include "test_kernels.hpp"
 
 #include <stdexcept>
@@ -19,6 +20,9 @@ TEST_CASE("leading_dim adjoint: valid leading dimensions") {
     p.forward = [&](auto in, auto out) { leading_dim(in[0], out[0], &x_min, &x_max, ny, ld); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       leading_dim_adjoint(in[0], adj[0], seed[0], &x_min, &x_max, ny, ld);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      leading_dim_tangent(in[0], dir[0], out[0], outd[0], &x_min, &x_max, ny, ld);
     };
     dpgen_test::check_adjoint(p);
   }
@@ -56,6 +60,9 @@ TEST_CASE("fixed_rows adjoint: n <= 8 is checked") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       fixed_rows_adjoint(reinterpret_cast<CRows>(in[0]), reinterpret_cast<Rows>(adj[0]),
                          reinterpret_cast<CRows>(seed[0]), n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      fixed_rows_tangent(reinterpret_cast<CRows>(in[0]), reinterpret_cast<CRows>(dir[0]), reinterpret_cast<Rows>(out[0]), reinterpret_cast<Rows>(outd[0]), n);
     };
     dpgen_test::check_adjoint(p);
   }

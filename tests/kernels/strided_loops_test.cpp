@@ -2,6 +2,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "strided_loops_adjoint.hpp"
+#include "strided_loops_tangent.hpp"
 #include "test_kernels.hpp"
 
 TEST_CASE("restrict_full_weighting adjoint") {
@@ -14,6 +15,12 @@ TEST_CASE("restrict_full_weighting adjoint") {
     p.forward = [&](auto in, auto out) { restrict_full_weighting(in[0], out[0], nf); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       restrict_full_weighting_adjoint(in[0], adj[0], seed[0], nf);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      restrict_full_weighting_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nf);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      restrict_full_weighting_tangent(in[0], dir[0], out[0], outd[0], nf);
     };
     dpgen_test::check_adjoint(p);
   }
@@ -29,6 +36,12 @@ TEST_CASE("every_third adjoint") {
     p.forward = [&](auto in, auto out) { every_third(in[0], out[0], n, first); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       every_third_adjoint(in[0], adj[0], seed[0], n, first);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      every_third_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n, first);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      every_third_tangent(in[0], dir[0], out[0], outd[0], n, first);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -36,3 +36,9 @@ DPGEN_KERNEL void fixed_rows(DPGEN_IN const double (*a)[8], DPGEN_OUT double b[]
 DPGEN_KERNEL void restrict_full_weighting(DPGEN_IN const double* fine, DPGEN_OUT double* coarse,
                                           int nf);
 DPGEN_KERNEL void every_third(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int first);
+DPGEN_KERNEL void clamped_neighbour(DPGEN_IN const double* a, DPGEN_OUT double* out, int n);
+DPGEN_KERNEL void prolong_rows(DPGEN_IN const double* c, DPGEN_OUT double* f, int nx, int ncy);
+DPGEN_KERNEL void react_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* rate, int n,
+                                double dt);
+DPGEN_KERNEL void relax_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* target, int n,
+                                double w);

@@ -3,6 +3,7 @@
 
 #include "kernels.hpp"
 #include "upwind_step_adjoint.hpp"
+#include "upwind_step_tangent.hpp"
 
 #include <type_traits>
 
@@ -23,6 +24,12 @@ TEST_CASE("upwind_step adjoint") {
     p.forward = [&](auto in, auto out) { upwind_step(in[0], in[1], out[0], n, dt, dx); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       upwind_step_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, dt, dx);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      upwind_step_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, dt, dx);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      upwind_step_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, dt, dx);
     };
     dpgen_test::check_adjoint(p);
   }

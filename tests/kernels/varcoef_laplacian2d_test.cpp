@@ -3,6 +3,7 @@
 
 #include "test_kernels.hpp"
 #include "varcoef_laplacian2d_adjoint.hpp"
+#include "varcoef_laplacian2d_tangent.hpp"
 
 TEST_CASE("varcoef_laplacian2d adjoint") {
   for (auto [nx, ny] : {std::pair{2, 2}, {3, 3}, {4, 6}, {12, 9}}) {
@@ -16,6 +17,12 @@ TEST_CASE("varcoef_laplacian2d adjoint") {
     p.forward = [&](auto in, auto out) { varcoef_laplacian2d(in[0], in[1], out[0], nx, ny, 0.3); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       varcoef_laplacian2d_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.3);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      varcoef_laplacian2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.3);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      varcoef_laplacian2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, 0.3);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -1,6 +1,11 @@
 // Tests of dpgen/optim.hpp: gradient descent and Adam against their update formulas and on a
-// quadratic; L-BFGS (stepwise and LBFGSSolver-driven) on a quadratic and on Rosenbrock.
+// quadratic; L-BFGS (stepwise and LBFGSSolver-driven) on a quadratic and on Rosenbrock;
+// half-inverse gradients against Gauss-Newton and GD, truncation, and on an ill-conditioned
+// least-squares problem.
 #include "dpgen/optim.hpp"
+
+#include "dpgen/jacobian.hpp"
+#include "test_support.hpp"
 
 #include <doctest/doctest.h>
 
@@ -8,6 +13,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace {
@@ -64,6 +70,47 @@ VectorXd run(dpgen::Optimizer& optimizer, const dpgen::LossGradient& f, VectorXd
   for (int k = 0; k < iterations; ++k)
     optimizer.step(x, loss, grad, f);
   return x;
+}
+
+// r(x) = A x - b with A = Q diag(sigma) W^T (Q, W orthonormal from QR of random matrices):
+// a least-squares problem with prescribed singular values.
+struct LinearResidual {
+  Eigen::MatrixXd a;
+  VectorXd b;
+  LinearResidual(Eigen::Index m, const VectorXd& sigma, unsigned seed) {
+    const Eigen::Index n = sigma.size();
+    const auto random_matrix = [](Eigen::Index rows, Eigen::Index cols, unsigned s) {
+      return Eigen::MatrixXd(dpgen_test::random_vector(rows * cols, s).reshaped(rows, cols));
+    };
+    const Eigen::MatrixXd q =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(random_matrix(m, n, seed)).householderQ() *
+        Eigen::MatrixXd::Identity(m, n);
+    const Eigen::MatrixXd w =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(random_matrix(n, n, seed + 1)).householderQ();
+    a = q * sigma.asDiagonal() * w.transpose();
+    b = dpgen_test::random_vector(m, seed + 2);
+  }
+  VectorXd operator()(const VectorXd& x, Eigen::MatrixXd& jac) const {
+    jac = a;
+    return a * x - b;
+  }
+  // L = 1/2 |A x - b|^2, grad = A^T (A x - b).
+  double loss(const VectorXd& x, VectorXd& grad) const {
+    const VectorXd r = a * x - b;
+    grad = a.transpose() * r;
+    return 0.5 * r.squaredNorm();
+  }
+  VectorXd minimizer() const { return a.colPivHouseholderQr().solve(b); }
+};
+
+dpgen::HigOptions hig_options(double learning_rate, double exponent, double truncation,
+                              int max_iterations) {
+  dpgen::HigOptions o;
+  o.learning_rate = learning_rate;
+  o.exponent = exponent;
+  o.truncation = truncation;
+  o.max_iterations = max_iterations;
+  return o;
 }
 
 } // namespace
@@ -195,4 +242,216 @@ TEST_CASE("optimizer errors") {
   CHECK_THROWS_WITH_AS(dpgen::lbfgs_minimize(wrong_sign, y),
                        "lbfgs: the line search routine reached the maximum number of iterations",
                        dpgen::OptimizationError);
+}
+
+TEST_CASE("HIG with kappa = -1 is Gauss-Newton: one unit step solves linear least squares") {
+  const LinearResidual p(8, VectorXd::LinSpaced(4, 3.0, 0.1), 21);
+  const VectorXd x0 = dpgen_test::random_vector(4, 5);
+  VectorXd x = x0;
+  const dpgen::HigSummary s = dpgen::hig_minimize(p, x, hig_options(1.0, -1.0, 1e-12, 1));
+  const VectorXd x_star = p.minimizer();
+  CHECK(s.iterations == 1);
+  CHECK(s.rank == 4);
+  CHECK(s.termination == dpgen::HigTermination::max_iterations);
+  // x1 = x0 - J^+ (A x0 - b) = A^+ b: cond(A) = 30, so ~30 eps relative error.
+  CHECK((x - x_star).norm() <= 1e-13 * x_star.norm());
+  CHECK(s.final_loss < s.initial_loss);
+  VectorXd grad;
+  CHECK(s.final_loss == doctest::Approx(p.loss(x_star, grad)).epsilon(1e-12));
+  CHECK(grad.norm() <= 1e-12 * p.a.norm() * p.b.norm()); // the normal equations hold
+}
+
+TEST_CASE("HIG with kappa = +1 is a gradient-descent step with the same learning rate") {
+  const LinearResidual p(6, (VectorXd(5) << 4.0, 2.0, 1.0, 0.5, 0.25).finished(), 31);
+  const VectorXd x0 = dpgen_test::random_vector(5, 6);
+  Eigen::MatrixXd jac;
+  const VectorXd r = p(x0, jac);
+  const dpgen::HigUpdate u = dpgen::hig_update(jac, r, hig_options(0.05, 1.0, 0.0, 1));
+
+  const dpgen::LossGradient f = [&](const VectorXd& x, VectorXd& grad) { return p.loss(x, grad); };
+  dpgen::GradientDescent gd(0.05);
+  VectorXd x = x0, grad;
+  double loss = f(x, grad);
+  gd.step(x, loss, grad, f);
+  // V Sigma U^T r = J^T r: the SVD's rounding, eps sigma_max |r| per entry.
+  CHECK((x0 + u.step - x).norm() <= 1e-14 * (1.0 + x0.norm()));
+  CHECK(u.rank == 5);
+  CHECK((u.singular_values - (VectorXd(5) << 4.0, 2.0, 1.0, 0.5, 0.25).finished()).norm() <= 1e-14);
+}
+
+TEST_CASE("HIG truncation drops the direction of a tiny singular value") {
+  const VectorXd sigma = (VectorXd(3) << 1.0, 1e-2, 1e-9).finished();
+  const LinearResidual p(5, sigma, 41);
+  const VectorXd x0 = VectorXd::Zero(3);
+  Eigen::MatrixXd jac;
+  const VectorXd r = p(x0, jac);
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::MatrixXd v = svd.matrixV();
+  const VectorXd c = svd.matrixU().transpose() * r;
+
+  // truncation 1e-6: sigma_2 = 1e-9 < 1e-6 sigma_max is dropped, no step along v_2.
+  const dpgen::HigUpdate kept = dpgen::hig_update(jac, r, hig_options(1.0, -0.5, 1e-6, 1));
+  CHECK(kept.rank == 2);
+  CHECK(std::abs(v.col(2).dot(kept.step)) <= 1e-14 * kept.step.norm());
+  for (Eigen::Index i = 0; i < 2; ++i) // along v_i: -sigma_i^(-1/2) (u_i . r)
+    CHECK(v.col(i).dot(kept.step) ==
+          doctest::Approx(-c[i] / std::sqrt(svd.singularValues()[i])).epsilon(1e-10));
+
+  // truncation 0: that direction takes a step sigma_2^(-1/2) ~ 3e4 times its component.
+  const dpgen::HigUpdate all = dpgen::hig_update(jac, r, hig_options(1.0, -0.5, 0.0, 1));
+  CHECK(all.rank == 3);
+  CHECK(v.col(2).dot(all.step) ==
+        doctest::Approx(-c[2] / std::sqrt(svd.singularValues()[2])).epsilon(1e-6));
+  CHECK(std::abs(v.col(2).dot(all.step)) > 1e3 * std::abs(c[2]));
+}
+
+TEST_CASE("HIG on a wide Jacobian (fewer outputs than parameters, as a batch's) and r = dL/dy") {
+  // y = A x with A 3x7; hig_update takes any gradient g = dL/dy in place of a residual.
+  const Eigen::MatrixXd a =
+      Eigen::Map<const Eigen::MatrixXd>(dpgen_test::random_vector(21, 61).data(), 3, 7);
+  const VectorXd b = dpgen_test::random_vector(3, 62);
+  // kappa = -1 from x = 0 with g = A x - b = -b: the minimum-norm step that fits y = b exactly.
+  const dpgen::HigUpdate gn = dpgen::hig_update(a, -b, hig_options(1.0, -1.0, 0.0, 1));
+  CHECK(gn.rank == 3);
+  CHECK(gn.singular_values.size() == 3);
+  CHECK((a * gn.step - b).norm() <= 1e-12 * b.norm());
+  const VectorXd min_norm = a.completeOrthogonalDecomposition().pseudoInverse() * b;
+  CHECK((gn.step - min_norm).norm() <= 1e-12 * min_norm.norm());
+  // kappa = -1/2 with g = 2 (y - y*) / 4 (a mean squared error over 4 samples' worth), against
+  // an independent SVD (Jacobi): dx = -eta V Sigma^(-1/2) U^T g.
+  const VectorXd g = 0.5 * (a * dpgen_test::random_vector(7, 63) - b);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const VectorXd expected = -0.7 * svd.matrixV() *
+                            svd.singularValues().array().rsqrt().matrix().asDiagonal() *
+                            svd.matrixU().transpose() * g;
+  const dpgen::HigUpdate half = dpgen::hig_update(a, g, hig_options(0.7, -0.5, 1e-10, 1));
+  CHECK((half.step - expected).norm() <= 1e-12 * expected.norm());
+  CHECK((half.singular_values - svd.singularValues()).norm() <= 1e-12 * svd.singularValues()[0]);
+}
+
+TEST_CASE("HIG beats GD on an ill-conditioned least-squares problem in the same iterations") {
+  // Singular values 1 .. 1e-3 (cond(J) = 1e3, cond(J^T J) = 1e6).
+  VectorXd sigma(10);
+  for (Eigen::Index i = 0; i < sigma.size(); ++i)
+    sigma[i] = std::pow(10.0, -3.0 * double(i) / 9.0);
+  const LinearResidual p(12, sigma, 51);
+  const VectorXd x0 = VectorXd::Zero(10);
+  const int iterations = 50;
+  VectorXd grad;
+  const double optimum = p.loss(p.minimizer(), grad);
+
+  // GD at its best fixed rate 1 / sigma_max^2: direction i contracts by 1 - sigma_i^2 per step.
+  dpgen::GradientDescent gd(1.0 / (sigma[0] * sigma[0]));
+  const dpgen::LossGradient f = [&](const VectorXd& x, VectorXd& g) { return p.loss(x, g); };
+  const double gd_loss = p.loss(run(gd, f, x0, iterations), grad);
+
+  // HIG (kappa = -1/2) at rate 1 / sigma_max^(1/2): direction i contracts by 1 - sigma_i^(1/2).
+  VectorXd x = x0;
+  const dpgen::HigSummary s =
+      dpgen::hig_minimize(p, x, hig_options(1.0 / std::sqrt(sigma[0]), -0.5, 1e-6, iterations));
+  CHECK(s.iterations == iterations);
+  CHECK(s.termination == dpgen::HigTermination::max_iterations);
+  CHECK(s.final_loss == doctest::Approx(p.loss(x, grad)).epsilon(1e-14));
+  // Excess losses over the optimum: HIG's slowest factor (1 - 0.0316)^(2*50) ~ 0.04 against
+  // GD's (1 - 1e-6)^(2*50) ~ 1 on the smallest direction.
+  CAPTURE(gd_loss - optimum);
+  CAPTURE(s.final_loss - optimum);
+  CHECK(s.final_loss - optimum < 0.1 * (gd_loss - optimum));
+}
+
+TEST_CASE("HIG on a nonlinear residual, with the Jacobian assembled from tangents") {
+  // Rosenbrock as residuals: r = (1 - x0, 10 (x1 - x0^2)), minimum 0 at (1, 1).
+  const auto residual = [](const VectorXd& x) {
+    return VectorXd((VectorXd(2) << 1.0 - x[0], 10.0 * (x[1] - x[0] * x[0])).finished());
+  };
+  const dpgen::JacobianVectorProduct jvp = [](const VectorXd& x, const VectorXd& v) {
+    return VectorXd((VectorXd(2) << -v[0], 10.0 * (v[1] - 2.0 * x[0] * v[0])).finished());
+  };
+  const dpgen::ResidualJacobian f = [&](const VectorXd& x, Eigen::MatrixXd& jac) {
+    jac = dpgen::jacobian(jvp, nullptr, x, 2);
+    return residual(x);
+  };
+  dpgen::HigOptions o = hig_options(1.0, -1.0, 1e-12, 50);
+  o.loss_tolerance = 1e-24;
+  VectorXd x = (VectorXd(2) << -1.2, 1.0).finished();
+  const dpgen::HigSummary gn = dpgen::hig_minimize(f, x, o);
+  CHECK(gn.termination == dpgen::HigTermination::loss_tolerance);
+  CHECK(gn.iterations <= 5); // Gauss-Newton on a zero-residual problem: quadratic convergence
+  CHECK((x - VectorXd::Ones(2)).norm() < 1e-10);
+  CHECK(gn.message.rfind("hig: converged after ", 0) == 0);
+
+  // The half-inverse update converges too: near (1, 1) direction i contracts by
+  // 1 - eta sigma_i^(1/2), sigma = (22.4, 0.45), so eta = 0.2 < 2 / sqrt(22.4) is stable.
+  o.exponent = -0.5;
+  o.learning_rate = 0.2;
+  o.max_iterations = 200;
+  x = (VectorXd(2) << -1.2, 1.0).finished();
+  const dpgen::HigSummary half = dpgen::hig_minimize(f, x, o);
+  CHECK(half.final_loss < 1e-6 * half.initial_loss);
+}
+
+TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad options") {
+  // A zero Jacobian: no direction survives, the update is zero.
+  const dpgen::ResidualJacobian flat = [](const VectorXd& x, Eigen::MatrixXd& jac) {
+    jac.setZero(2, x.size());
+    return VectorXd(VectorXd::Ones(2));
+  };
+  VectorXd x = VectorXd::Ones(3);
+  const dpgen::HigSummary s = dpgen::hig_minimize(flat, x);
+  CHECK(s.termination == dpgen::HigTermination::step_tolerance);
+  CHECK(s.iterations == 1);
+  CHECK(s.rank == 0);
+  CHECK(x == VectorXd::Ones(3));
+  CHECK(s.message == "hig: stopped after 1 iterations, update norm <= tolerance 0, loss 1");
+  CHECK(std::string(dpgen::to_string(s.termination)) == "step_tolerance");
+
+  // Already at the tolerance: no update, no second evaluation.
+  const LinearResidual p(4, VectorXd::Ones(2), 61);
+  VectorXd at = p.minimizer();
+  dpgen::HigOptions loose;
+  loose.loss_tolerance = 10.0;
+  const dpgen::HigSummary none = dpgen::hig_minimize(p, at, loose);
+  CHECK(none.iterations == 0);
+  CHECK(none.termination == dpgen::HigTermination::loss_tolerance);
+
+  // The residual turns NaN at the second iterate; the Jacobian Inf at the first.
+  int calls = 0;
+  const dpgen::ResidualJacobian nan_later = [&](const VectorXd& y, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Identity(2, 2);
+    VectorXd r = y;
+    if (++calls == 3)
+      r[1] = std::numeric_limits<double>::quiet_NaN();
+    return r;
+  };
+  VectorXd y = VectorXd::Ones(2);
+  CHECK_THROWS_WITH_AS(dpgen::hig_minimize(nan_later, y, hig_options(0.5, -0.5, 1e-6, 10)),
+                       "hig: residual is NaN at index 1 in iteration 2", dpgen::OptimizationError);
+  const dpgen::ResidualJacobian inf_jac = [](const VectorXd& z, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Identity(2, 2);
+    jac(1, 0) = std::numeric_limits<double>::infinity();
+    return z;
+  };
+  VectorXd z = VectorXd::Ones(2);
+  CHECK_THROWS_WITH_AS(dpgen::hig_minimize(inf_jac, z),
+                       "hig: Jacobian is Inf at (1, 0) in iteration 0", dpgen::OptimizationError);
+  CHECK_THROWS_WITH_AS(
+      dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Constant(2, std::nan(""))),
+      "hig: residual is NaN at index 0", dpgen::OptimizationError);
+
+  // Sizes and options.
+  const dpgen::ResidualJacobian wrong = [](const VectorXd&, Eigen::MatrixXd& jac) {
+    jac.setZero(2, 2);
+    return VectorXd(VectorXd::Ones(2));
+  };
+  VectorXd w = VectorXd::Ones(3);
+  CHECK_THROWS_WITH_AS(dpgen::hig_minimize(wrong, w), "hig: Jacobian is 2x2, expected 2x3",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Ones(3)),
+                       "hig: residual has size 3, expected 2", std::invalid_argument);
+  CHECK_THROWS_AS(dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Ones(2),
+                                    hig_options(0.0, -0.5, 1e-6, 1)),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Ones(2),
+                                    hig_options(1.0, -0.5, 1.0, 1)),
+                  std::invalid_argument);
 }

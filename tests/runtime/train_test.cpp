@@ -138,6 +138,33 @@ TEST_CASE("training stops on the gradient or the loss tolerance") {
   CHECK(dpgen::train(bowl, gd, at_minimum, options).iterations == 0);
 }
 
+TEST_CASE("training: a custom gradient norm (as distributed runs reduce it over ranks)") {
+  // A norm twice the Euclidean one, standing in for a norm summed over other ranks' blocks:
+  // it is what the rows report and what the gradient tolerance is checked against.
+  dpgen::TrainOptions options;
+  options.max_iterations = 5;
+  options.norm = [](const VectorXd& g) { return 2.0 * g.norm(); };
+  std::vector<double> reported;
+  options.callback = [&](const dpgen::TrainProgress& p) { reported.push_back(p.grad_norm); };
+  dpgen::GradientDescent gd(0.1);
+  VectorXd x = VectorXd::Zero(3), g;
+  bowl(x, g);
+  const double first = 2.0 * g.norm();
+  dpgen::train(bowl, gd, x, options);
+  REQUIRE(reported.size() == 6);
+  CHECK(reported[0] == first);
+  // stops on the custom norm: tolerance between the Euclidean norm and twice it
+  options.gradient_tolerance = 0.75 * first;
+  VectorXd y = VectorXd::Zero(3);
+  reported.clear();
+  CHECK(dpgen::train(bowl, gd, y, options).iterations > 0);
+  // a norm that is NaN (another rank's gradient is) stops every rank alike
+  options.norm = [](const VectorXd&) { return std::numeric_limits<double>::quiet_NaN(); };
+  VectorXd z = VectorXd::Zero(3);
+  CHECK_THROWS_WITH_AS(dpgen::train(bowl, gd, z, options),
+                       "training: gradient norm is NaN at iteration 0", dpgen::TrainingError);
+}
+
 TEST_CASE("training: NaN or Inf stops with an error naming the iteration") {
   const fs::path dir = scratch_dir("nan");
   const fs::path csv = dir / "log.csv";

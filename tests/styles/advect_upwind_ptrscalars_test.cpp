@@ -3,6 +3,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "advect_upwind_ptrscalars_adjoint.hpp"
+#include "advect_upwind_ptrscalars_tangent.hpp"
 #include "dpgen/annotate.hpp"
 
 DPGEN_KERNEL void advect_upwind_ptrscalars(const int* n, const double* dt, const double* dx,
@@ -21,6 +22,9 @@ TEST_CASE("styles: advect_upwind_ptrscalars") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       advect_upwind_ptrscalars_adjoint(&n, &dt, &dx, in[0], adj[0], in[1], adj[1], seed[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      advect_upwind_ptrscalars_tangent(&n, &dt, &dx, in[0], dir[0], in[1], dir[1], out[0], outd[0]);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -3,6 +3,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "diffusion2d_bounds_params_adjoint.hpp"
+#include "diffusion2d_bounds_params_tangent.hpp"
 #include "dpgen/annotate.hpp"
 
 #include <tuple>
@@ -31,6 +32,12 @@ TEST_CASE("styles: diffusion2d_bounds_params") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       diffusion2d_bounds_params_adjoint(in[0], adj[0], seed[0], x0, x1, y0, y1, ld, 0.2);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      diffusion2d_bounds_params_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], x0, x1, y0, y1, ld, 0.2);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      diffusion2d_bounds_params_tangent(in[0], dir[0], out[0], outd[0], x0, x1, y0, y1, ld, 0.2);
     };
     dpgen_test::check_adjoint(p);
   }

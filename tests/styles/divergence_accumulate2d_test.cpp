@@ -3,6 +3,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "divergence_accumulate2d_adjoint.hpp"
+#include "divergence_accumulate2d_tangent.hpp"
 #include "dpgen/annotate.hpp"
 
 #include <tuple>
@@ -25,6 +26,12 @@ TEST_CASE("styles: divergence_accumulate2d") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       divergence_accumulate2d_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], seed[0], nx,
                                       ny, 2.0);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      divergence_accumulate2d_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], in[2], in_n[2], adj[2], in_n[2], seed[0], out_n[0], nx, ny, 2.0);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      divergence_accumulate2d_tangent(in[0], dir[0], in[1], dir[1], in[2], dir[2], out[0], outd[0], nx, ny, 2.0);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -3,6 +3,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "heat2d_c89_adjoint.hpp"
+#include "heat2d_c89_tangent.hpp"
 
 #include <tuple>
 
@@ -20,6 +21,12 @@ TEST_CASE("styles: heat2d_c89") {
     p.forward = [&](auto in, auto out) { heat2d_c89(in[0], out[0], nx, ny, 0.2, 0.15); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat2d_c89_adjoint(in[0], adj[0], seed[0], nx, ny, 0.2, 0.15);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat2d_c89_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ny, 0.2, 0.15);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      heat2d_c89_tangent(in[0], dir[0], out[0], outd[0], nx, ny, 0.2, 0.15);
     };
     dpgen_test::check_adjoint(p);
   }

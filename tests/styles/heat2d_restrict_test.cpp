@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "heat2d_restrict_adjoint.hpp"
+#include "heat2d_restrict_tangent.hpp"
 
 #include <tuple>
 
@@ -24,6 +25,12 @@ TEST_CASE("styles: heat2d_restrict") {
     p.forward = [&](auto in, auto out) { heat2d_restrict(in[0], in[1], out[0], nx, ny, 0.1); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       heat2d_restrict_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.1);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      heat2d_restrict_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.1);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      heat2d_restrict_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, 0.1);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "hydro_flux_xminmax_adjoint.hpp"
+#include "hydro_flux_xminmax_tangent.hpp"
 
 #include <tuple>
 
@@ -30,6 +31,9 @@ TEST_CASE("styles: hydro_flux_xminmax") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       hydro_flux_xminmax_adjoint(&x_min, &x_max, &y_min, &y_max, &dt, in[0], adj[0], in[1],
                                  adj[1], in[2], adj[2], seed[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      hydro_flux_xminmax_tangent(&x_min, &x_max, &y_min, &y_max, &dt, in[0], dir[0], in[1], dir[1], in[2], dir[2], out[0], outd[0]);
     };
     dpgen_test::check_adjoint(p);
   }

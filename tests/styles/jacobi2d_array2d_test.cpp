@@ -7,6 +7,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "jacobi2d_array2d_adjoint.hpp"
+#include "jacobi2d_array2d_tangent.hpp"
 
 constexpr int kJN = 8;
 DPGEN_KERNEL void jacobi2d_array2d(DPGEN_IN const double a[][kJN], DPGEN_IN const double f[][kJN],
@@ -31,6 +32,10 @@ TEST_CASE("styles: jacobi2d_array2d") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       jacobi2d_array2d_adjoint(cr(in[0]), mr(adj[0]), cr(in[1]), mr(adj[1]), cr(seed[0]), ny,
+                               0.05);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      jacobi2d_array2d_tangent(cr(in[0]), cr(dir[0]), cr(in[1]), cr(dir[1]), mr(out[0]), mr(outd[0]), ny,
                                0.05);
     };
     dpgen_test::check_adjoint(p);

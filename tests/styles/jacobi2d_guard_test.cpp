@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "jacobi2d_guard_adjoint.hpp"
+#include "jacobi2d_guard_tangent.hpp"
 
 #include <tuple>
 
@@ -23,6 +24,12 @@ TEST_CASE("styles: jacobi2d_guard") {
     p.forward = [&](auto in, auto out) { jacobi2d_guard(in[0], in[1], out[0], nx, ny, 0.01, 0.8); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       jacobi2d_guard_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, 0.01, 0.8);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      jacobi2d_guard_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, 0.01, 0.8);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      jacobi2d_guard_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, 0.01, 0.8);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -3,6 +3,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "laplace3d_interior_intflat_adjoint.hpp"
+#include "laplace3d_interior_intflat_tangent.hpp"
 
 #include <tuple>
 
@@ -21,6 +22,12 @@ TEST_CASE("styles: laplace3d_interior_intflat") {
     p.forward = [&](auto in, auto out) { laplace3d_interior_intflat(in[0], out[0], nx, ny, nz, 4.0); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       laplace3d_interior_intflat_adjoint(in[0], adj[0], seed[0], nx, ny, nz, 4.0);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      laplace3d_interior_intflat_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nx, ny, nz, 4.0);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      laplace3d_interior_intflat_tangent(in[0], dir[0], out[0], outd[0], nx, ny, nz, 4.0);
     };
     dpgen_test::check_adjoint(p);
   }

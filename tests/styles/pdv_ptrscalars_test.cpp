@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "pdv_ptrscalars_adjoint.hpp"
+#include "pdv_ptrscalars_tangent.hpp"
 
 #include <tuple>
 
@@ -28,6 +29,9 @@ TEST_CASE("styles: pdv_ptrscalars") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       pdv_ptrscalars_adjoint(&x_min, &x_max, &dt, in[0], adj[0], in[1], adj[1], in[2], adj[2],
                              in[3], adj[3], seed[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      pdv_ptrscalars_tangent(&x_min, &x_max, &dt, in[0], dir[0], in[1], dir[1], in[2], dir[2], in[3], dir[3], out[0], outd[0]);
     };
     dpgen_test::check_adjoint(p);
   }

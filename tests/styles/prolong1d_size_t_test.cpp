@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "prolong1d_size_t_adjoint.hpp"
+#include "prolong1d_size_t_tangent.hpp"
 
 #include <cstddef>
 
@@ -20,6 +21,12 @@ TEST_CASE("styles: prolong1d_size_t") {
     p.forward = [&](auto in, auto out) { prolong1d_size_t(in[0], out[0], nc); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       prolong1d_size_t_adjoint(in[0], adj[0], seed[0], nc);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      prolong1d_size_t_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], nc);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      prolong1d_size_t_tangent(in[0], dir[0], out[0], outd[0], nc);
     };
     dpgen_test::check_adjoint(p);
   }

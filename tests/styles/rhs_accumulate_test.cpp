@@ -6,6 +6,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "rhs_accumulate_adjoint.hpp"
+#include "rhs_accumulate_tangent.hpp"
 
 DPGEN_KERNEL void rhs_accumulate(DPGEN_IN const double* u, DPGEN_IN const double* f,
                                  DPGEN_OUT double* rhs, int n, double inv_h2);
@@ -20,6 +21,12 @@ TEST_CASE("styles: rhs_accumulate") {
     p.forward = [&](auto in, auto out) { rhs_accumulate(in[0], in[1], out[0], n, 3.0); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       rhs_accumulate_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 3.0);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      rhs_accumulate_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n, 3.0);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      rhs_accumulate_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 3.0);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "shallow_water_lf_adjoint.hpp"
+#include "shallow_water_lf_tangent.hpp"
 
 DPGEN_KERNEL void shallow_water_lf(DPGEN_IN const double* h, DPGEN_IN const double* hu,
                                    DPGEN_OUT double* h_new, DPGEN_OUT double* hu_new, int n,
@@ -21,6 +22,12 @@ TEST_CASE("styles: shallow_water_lf") {
     };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       shallow_water_lf_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], n, 0.1, 9.81);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      shallow_water_lf_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], seed[1], out_n[1], n, 0.1, 9.81);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      shallow_water_lf_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], out[1], outd[1], n, 0.1, 9.81);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -35,7 +35,7 @@ triage_one() {
   stem=$(basename "$src" .cpp)
   out=$work/$stem
   mkdir -p "$out/gen"
-  timeout 120 "$dpgen" "$src" --out-dir "$out/gen" -- -std=c++17 -I"$root/runtime/include" \
+  timeout 120 "$dpgen" "$src" --tangent --out-dir "$out/gen" -- -std=c++17 -I"$root/runtime/include" \
     -I"$(dirname "$src")" >"$out/dpgen.log" 2>&1
   rc=$?
   if [ $rc -ge 124 ] || grep -qiE 'Stack dump|Assertion|Segmentation|terminate called|PLEASE submit' "$out/dpgen.log"; then
@@ -53,9 +53,10 @@ triage_one() {
     printf '%-30s %-9s %-14s %s\n' "$stem" CRASH "" "exit 0 but no ${stem}_adjoint.cpp"
     return
   fi
-  local test=$here/${stem}_test.cpp
-  if ! $CXX -std=c++17 -O1 -fopenmp -I"$root/runtime/include" -I"$root/tests" -I"$here" \
-      -I"$out/gen" "$src" "$out/gen/${stem}_adjoint.cpp" "$test" "$work/main.o" \
+  local srcdir; srcdir=$(cd "$(dirname "$src")" && pwd)
+  local test=$srcdir/${stem}_test.cpp
+  if ! $CXX -std=c++17 -O1 -fopenmp -I"$root/runtime/include" -I"$root/tests" -I"$srcdir" \
+      -I"$out/gen" "$src" "$out/gen/${stem}_adjoint.cpp" $(ls "$out/gen/${stem}_tangent.cpp" 2>/dev/null) "$test" "$work/main.o" \
       -o "$out/t" >"$out/cxx.log" 2>&1; then
     line=$(grep -m1 'error' "$out/cxx.log")
     line=${line#"$work"/}

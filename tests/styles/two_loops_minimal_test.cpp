@@ -5,6 +5,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "two_loops_minimal_adjoint.hpp"
+#include "two_loops_minimal_tangent.hpp"
 
 DPGEN_KERNEL void two_loops_minimal(DPGEN_IN const double* a, DPGEN_OUT double* x,
                                     DPGEN_OUT double* y, int n);
@@ -19,6 +20,12 @@ TEST_CASE("styles: two_loops_minimal") {
     p.forward = [&](auto in, auto out) { two_loops_minimal(in[0], out[0], out[1], n); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       two_loops_minimal_adjoint(in[0], adj[0], seed[0], seed[1], n);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      two_loops_minimal_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      two_loops_minimal_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "two_nests_renamed_adjoint.hpp"
+#include "two_nests_renamed_tangent.hpp"
 
 #include <tuple>
 
@@ -20,6 +21,12 @@ TEST_CASE("styles: two_nests_renamed") {
     p.forward = [&](auto in, auto out) { two_nests_renamed(in[0], in[1], out[0], out[1], m, n); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       two_nests_renamed_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], m, n);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      two_nests_renamed_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], seed[1], out_n[1], m, n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      two_nests_renamed_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], out[1], outd[1], m, n);
     };
     dpgen_test::check_adjoint(p);
   }

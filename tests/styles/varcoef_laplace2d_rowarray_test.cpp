@@ -6,6 +6,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "varcoef_laplace2d_rowarray_adjoint.hpp"
+#include "varcoef_laplace2d_rowarray_tangent.hpp"
 
 constexpr int kNX = 6;
 DPGEN_KERNEL void varcoef_laplace2d_rowarray(DPGEN_IN const double (*k)[kNX],
@@ -32,6 +33,10 @@ TEST_CASE("styles: varcoef_laplace2d_rowarray") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       varcoef_laplace2d_rowarray_adjoint(cr(in[0]), mr(adj[0]), cr(in[1]), mr(adj[1]),
                                          cr(seed[0]), ny, 2.0);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      varcoef_laplace2d_rowarray_tangent(cr(in[0]), cr(dir[0]), cr(in[1]), cr(dir[1]), mr(out[0]),
+                                         mr(outd[0]), ny, 2.0);
     };
     dpgen_test::check_adjoint(p);
   }

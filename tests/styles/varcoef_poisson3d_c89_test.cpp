@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "varcoef_poisson3d_c89_adjoint.hpp"
+#include "varcoef_poisson3d_c89_tangent.hpp"
 
 #include <tuple>
 
@@ -23,6 +24,12 @@ TEST_CASE("styles: varcoef_poisson3d_c89") {
     p.forward = [&](auto in, auto out) { varcoef_poisson3d_c89(in[0], in[1], out[0], nx, ny, nz); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       varcoef_poisson3d_c89_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, nz);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      varcoef_poisson3d_c89_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, nz);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      varcoef_poisson3d_c89_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny, nz);
     };
     dpgen_test::check_adjoint(p);
   }

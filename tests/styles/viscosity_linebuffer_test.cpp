@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "viscosity_linebuffer_adjoint.hpp"
+#include "viscosity_linebuffer_tangent.hpp"
 
 DPGEN_KERNEL void viscosity_linebuffer(DPGEN_IN const double* q, DPGEN_OUT double* out, int n,
                                        double eps);
@@ -17,6 +18,12 @@ TEST_CASE("styles: viscosity_linebuffer") {
     p.forward = [&](auto in, auto out) { viscosity_linebuffer(in[0], out[0], n, 0.3); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
       viscosity_linebuffer_adjoint(in[0], adj[0], seed[0], n, 0.3);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      viscosity_linebuffer_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n, 0.3);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      viscosity_linebuffer_tangent(in[0], dir[0], out[0], outd[0], n, 0.3);
     };
     dpgen_test::check_adjoint(p);
   }

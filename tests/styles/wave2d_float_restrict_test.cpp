@@ -4,6 +4,7 @@
 
 #include "dpgen/annotate.hpp"
 #include "wave2d_float_restrict_adjoint.hpp"
+#include "wave2d_float_restrict_tangent.hpp"
 
 #include <tuple>
 
@@ -28,6 +29,12 @@ TEST_CASE("styles: wave2d_float_restrict") {
     p.adjoint = [&](auto in, auto adj, auto seed) {
       wave2d_float_restrict_adjoint(in[0], adj[0], in[1], adj[1], in[2], adj[2], seed[0], nx, ny,
                                     0.2f);
+    };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      wave2d_float_restrict_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], in[2], in_n[2], adj[2], in_n[2], seed[0], out_n[0], nx, ny, 0.2f);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      wave2d_float_restrict_tangent(in[0], dir[0], in[1], dir[1], in[2], dir[2], out[0], outd[0], nx, ny, 0.2f);
     };
     dpgen_test::check_adjoint(p);
   }

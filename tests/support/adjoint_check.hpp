@@ -28,8 +28,17 @@ template <typename T> struct Problem {
                                      const std::vector<const T*>&)>;
   std::vector<size_t> in_sizes, out_sizes;
   std::vector<std::pair<double, double>> in_ranges; // default [-1, 1]
+  using Tangent = std::function<void(const std::vector<const T*>&, const std::vector<const T*>&,
+                                     const std::vector<T*>&, const std::vector<T*>&)>;
   Forward forward;
   Adjoint adjoint; // (inputs, input adjoints (+=), output seeds)
+  Tangent tangent; // optional: (inputs, directions, outputs, output tangents)
+  /// optional: the checked entry point, called like `adjoint` with the
+  /// arrays' sizes (in_sizes, out_sizes) passed along.
+  std::function<void(const std::vector<const T*>&, const std::vector<T*>&,
+                     const std::vector<const T*>&, const std::vector<size_t>&,
+                     const std::vector<size_t>&)>
+      checked;
   bool linear = false;
 };
 
@@ -78,6 +87,31 @@ public:
     dot_product_test();
     gradient_test();
     accumulate_test();
+    if (p_.tangent)
+      tangent_test();
+    if (p_.checked)
+      checked_test();
+  }
+
+  // The checked entry point with the arrays' true sizes: no exception, and
+  // exactly the raw adjoint's result.
+  void checked_test() {
+    Arrays w = random_like(p_.out_sizes);
+    Arrays raw = adjoint(x_, w, zeros(p_.in_sizes));
+    Arrays got = zeros(p_.in_sizes);
+    try {
+      p_.checked(cptrs(x_), ptrs(got), cptrs(w), p_.in_sizes, p_.out_sizes);
+    } catch (const std::exception& e) {
+      FAIL("the checked adjoint rejected the true sizes: " << e.what());
+    }
+    for (const auto& arr : got)
+      REQUIRE_MESSAGE(arr.guards_intact(), "checked adjoint wrote outside an input adjoint");
+    int bad = 0;
+    for (size_t a = 0; a < raw.size(); ++a)
+      for (size_t i = 0; i < raw[a].size(); ++i)
+        if (std::memcmp(&raw[a][i], &got[a][i], sizeof(T)) != 0)
+          ++bad;
+    CHECK_MESSAGE(bad == 0, bad << " cells of the checked adjoint differ from the raw one");
   }
 
 private:
@@ -230,6 +264,51 @@ private:
                            << ad << ", allowed error " << allowed);
       }
     CHECK_MESSAGE(bad == 0, bad << " gradient components disagree with finite differences");
+  }
+
+  // The tangent kernel: its outputs are the forward kernel's, its output
+  // tangents J v agree with central differences, and <w, J v> from it equals
+  // <v, J^T w> from the adjoint (both exact: to rounding).
+  void tangent_test() {
+    auto tol = tolerances<T>(p_.linear);
+    for (int trial = 0; trial < 2; ++trial) {
+      Arrays v = random_like(p_.in_sizes), w = random_like(p_.out_sizes);
+      // Output cells the kernel does not write stay 0, as in forward().
+      Arrays y = zeros(p_.out_sizes), ydot = zeros(p_.out_sizes);
+      p_.tangent(cptrs(x_), cptrs(v), ptrs(y), ptrs(ydot));
+      for (const auto& arr : y)
+        REQUIRE_MESSAGE(arr.guards_intact(), "tangent wrote outside an output");
+      for (const auto& arr : ydot)
+        REQUIRE_MESSAGE(arr.guards_intact(), "tangent wrote outside an output tangent");
+      Arrays f = forward(x_);
+      const double same = sizeof(T) == 4 ? 1e-6 : 1e-13;
+      int bad = 0;
+      for (size_t k = 0; k < f.size(); ++k)
+        for (size_t i = 0; i < f[k].size(); ++i)
+          if (std::fabs(double(f[k][i]) - double(y[k][i])) >
+              same * std::max(1.0, std::fabs(double(f[k][i]))))
+            ++bad;
+      CHECK_MESSAGE(bad == 0, bad << " outputs of the tangent kernel differ from the forward's");
+      Arrays fp = forward(shifted(x_, v, tol.fd_step)), fm = forward(shifted(x_, v, -tol.fd_step));
+      bad = 0;
+      for (size_t k = 0; k < fp.size(); ++k)
+        for (size_t i = 0; i < fp[k].size(); ++i) {
+          double jv = (double(fp[k][i]) - double(fm[k][i])) / (2 * tol.fd_step);
+          double d = double(ydot[k][i]);
+          if (std::fabs(jv - d) > 10 * tol.dot_rel * std::max(1.0, std::fabs(jv)) && bad++ < 5)
+            MESSAGE("output " << k << " cell " << i << ": finite difference " << jv
+                              << ", tangent " << d);
+        }
+      CHECK_MESSAGE(bad == 0, bad << " tangent components disagree with finite differences");
+      Arrays jtw = adjoint(x_, w, zeros(p_.in_sizes));
+      double lhs = dot(w, ydot), rhs = dot(v, jtw), scale = 0;
+      for (size_t k = 0; k < w.size(); ++k)
+        for (size_t i = 0; i < w[k].size(); ++i)
+          scale += std::fabs(double(w[k][i]) * double(ydot[k][i]));
+      const double exact = sizeof(T) == 4 ? 1e-4 : 1e-12;
+      INFO("<w, J v> (tangent) = " << lhs << ", <v, J^T w> (adjoint) = " << rhs);
+      CHECK(std::fabs(lhs - rhs) <= exact * std::max(1.0, scale));
+    }
   }
 
   // adjoint(start = r) == r + adjoint(start = 0)

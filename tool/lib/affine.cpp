@@ -1,6 +1,8 @@
 // Index analysis: polynomials, index pieces, box domains (see affine.hpp).
 #include "affine.hpp"
 
+#include <tuple>
+
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -155,6 +157,17 @@ std::string Poly::code() const {
   return out;
 }
 
+bool smaller_coefficient(const Poly& a, const Poly& b) {
+  auto key = [](const Poly& p) {
+    int d = p.degree();
+    long long top = 0, rest = 0;
+    for (const auto& [m, c] : p.terms())
+      (int(m.size()) == d ? top : rest) += c < 0 ? -c : c;
+    return std::make_tuple(d, top, rest, p.str());
+  };
+  return key(a) < key(b);
+}
+
 std::optional<Poly> to_poly(const ExprP& e) {
   switch (e->op) {
   case Op::IntConst:
@@ -168,6 +181,8 @@ std::optional<Poly> to_poly(const ExprP& e) {
   case Op::Local: {
     if (e->type != Type::Int)
       return std::nullopt;
+    if (e->local->opaque)
+      return Poly::symbol(e->local->name);
     auto p = to_poly(e->local->def);
     // An integer local set once before every loop (`int x_min = *xmin;`,
     // `int half = n / 2;`) is fixed for the whole kernel: a symbol like a
@@ -551,6 +566,8 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
     return std::nullopt;
   switch (e->op) {
   case Op::Local:
+    if (e->local->opaque)
+      return Pieces{{Poly::symbol(e->local->name), universe()}};
     return index_pieces(e->local->def);
   case Op::Select: {
     auto where = condition_domain(e->ops[0]);

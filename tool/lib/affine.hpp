@@ -57,6 +57,12 @@ private:
   std::map<Monomial, long long> terms_; // no zero coefficients
 };
 
+/// An order of index coefficients by likely size, for mixed-radix tests: by
+/// degree, then the magnitude of the highest-degree terms (nx before 2 * nx),
+/// then the rest. Only a heuristic: a wrong order makes a test fail, never
+/// pass wrongly.
+bool smaller_coefficient(const Poly& a, const Poly& b);
+
 /// The integer expression as a polynomial, seeing through integer Locals;
 /// nullopt when it is not a polynomial (a division, a conditional, a cast).
 std::optional<Poly> to_poly(const ExprP& e);

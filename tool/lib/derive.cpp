@@ -14,18 +14,25 @@ namespace {
 class Deriver {
 public:
   Deriver(const std::set<const Expr*>& reads, DeriveNames& names) : reads_(reads), names_(names) {}
+  // Forward mode: a read of an active array `a[k]` has the derivative
+  // `a_dot[k]`, and each local's derivative is a local of its own.
+  Deriver(const std::set<std::string>& active, DeriveNames& names, TangentLocals& tangents)
+      : reads_(no_reads_), names_(names), active_(&active), tangents_(&tangents) {}
 
   ExprP d(const ExprP& e) {
     if (!is_real(e->type))
       return nullptr; // integers and booleans are not differentiable values
     if (e->op == Op::Local) {
-      auto it = local_memo_.find(e->local.get());
-      if (it != local_memo_.end())
+      auto& memo = tangents_ ? tangents_->memo : local_memo_;
+      auto it = memo.find(e->local.get());
+      if (it != memo.end())
         return it->second;
       const ExprP& def = e->local->def;
       // A call's rule reuses its value (d exp(a) = exp(a)·da): use the local.
       ExprP r = def->op == Op::Call ? call_rule(def, e) : d(def);
-      local_memo_[e->local.get()] = r;
+      if (r && tangents_ && r->op != Op::Read && r->op != Op::RealConst)
+        r = tangent_local(*e->local, r);
+      memo[e->local.get()] = r;
       return r;
     }
     switch (e->op) {
@@ -35,6 +42,9 @@ public:
     case Op::LoopVar:
       return nullptr;
     case Op::Read:
+      if (active_) // forward mode: d a[k] = a_dot[k]
+        return active_->count(e->name) ? read(e->name + "_dot", e->ops[0], e->type, e->pos)
+                                       : nullptr;
       // d a[k] / d a[k] = 1 for the occurrences we differentiate by
       return reads_.count(e.get()) ? one(e) : nullptr;
     case Op::Neg:
@@ -77,8 +87,26 @@ public:
   }
 
 private:
+  static inline const std::set<const Expr*> no_reads_{};
   const std::set<const Expr*>& reads_;
   DeriveNames& names_;
+  const std::set<std::string>* active_ = nullptr;
+  TangentLocals* tangents_ = nullptr;
+
+  // `<local>_dot`, defined after every primal and derivative-rule local.
+  ExprP tangent_local(const LocalVar& primal, const ExprP& def) {
+    auto l = std::make_shared<LocalVar>();
+    l->name = primal.name + "_dot";
+    while (tangents_->taken.count(l->name))
+      l->name += "_";
+    tangents_->taken.insert(l->name);
+    l->type_name = type_spelling(def->type);
+    l->def = def;
+    l->id = 2000000 + int(tangents_->locals.size());
+    l->kernel_level = primal.kernel_level;
+    tangents_->locals.push_back(l);
+    return local_ref(l);
+  }
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
@@ -170,8 +198,23 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
     }
     return;
   }
-  if (e->op == Op::Read && seen.insert(e.get()).second)
-    out.push_back({e.get(), conds});
+  if (e->op == Op::Read) {
+    if (seen.insert(e.get()).second) {
+      out.push_back({e.get(), conds});
+    } else {
+      // Read again under other conditions (one node in both arms of a
+      // select): it happens where any occurrence's conditions hold; keep the
+      // conditions all occurrences share.
+      for (auto& site : out)
+        if (site.read == e.get()) {
+          size_t k = 0;
+          while (k < site.conds.size() && k < conds.size() &&
+                 site.conds[k].cond == conds[k].cond && site.conds[k].positive == conds[k].positive)
+            ++k;
+          site.conds.resize(k);
+        }
+    }
+  }
   if (e->op == Op::Select) {
     collect_reads(e->ops[0], conds, out, seen, seen_locals);
     for (bool arm : {true, false}) {
@@ -189,6 +232,11 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
 
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names) {
   return Deriver(reads, names).d(value);
+}
+
+ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,
+              TangentLocals& tangents) {
+  return Deriver(active, names, tangents).d(value);
 }
 
 std::vector<ReadSite> reads_in(const ExprP& e) {

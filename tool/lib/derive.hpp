@@ -8,6 +8,8 @@
 
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace dpgen {
 
@@ -23,6 +25,22 @@ struct DeriveNames {
 /// `reads` (occurrences that all read the same cell), as an expression over
 /// the primal values. nullptr stands for an exact zero.
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names);
+
+/// The locals a tangent introduces: `<local>_dot` for each local whose
+/// derivative is not trivial (numbered after every other local), and the
+/// names in use (parameters and their `_dot`s, so none is shadowed).
+struct TangentLocals {
+  std::vector<LocalP> locals;
+  std::set<std::string> taken;
+  std::map<const LocalVar*, ExprP> memo; // a local's tangent, once per kernel
+};
+
+/// Forward mode: the directional derivative of `value` when each array in
+/// `active` moves along `<array>_dot` (a read a[k] contributes a_dot[k]).
+/// nullptr stands for an exact zero. One `DeriveNames` and `TangentLocals`
+/// per kernel, so a local shared by several stores gets one tangent.
+ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,
+              TangentLocals& tangents);
 
 /// A Read node and the conditions of the conditional expressions whose arm it
 /// sits in (`i > 0 ? p[i - 1] : 0.0` reads p[i - 1] only where i > 0).

@@ -2,6 +2,8 @@
 // scatter loops, and the file around them.
 #include "emit.hpp"
 
+#include "emit_checked.hpp"
+#include "emit_util.hpp"
 #include "print.hpp"
 
 #include <clang/Format/Format.h>
@@ -61,79 +63,12 @@ private:
   std::map<const LocalVar*, ExprP> memo_;
 };
 
-void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string>& vars) {
-  if (!e)
-    return;
-  if (e->op == Op::LoopVar)
-    vars.insert(e->name);
-  if (e->op == Op::Local) {
-    if (e->local->kernel_level || locals.count(e->local->id))
-      return;
-    locals[e->local->id] = e->local;
-    collect(e->local->def, locals, vars);
-    return;
-  }
-  for (const auto& o : e->ops)
-    collect(o, locals, vars);
-}
-
-std::string cond_text(const PathCond& pc) {
-  return pc.positive ? print(pc.cond) : "!(" + print(pc.cond) + ")";
-}
-
-// ---- the code buffer ---------------------------------------------------------
-
-class Code {
-public:
-  explicit Code(int depth = 0) : depth_(depth) {}
-  int depth() const { return depth_; }
-  template <typename... A> void line(fmt::format_string<A...> f, A&&... a) {
-    out_ += std::string(2 * depth_, ' ') + fmt::format(f, std::forward<A>(a)...) + "\n";
-  }
-  void raw(const std::string& s) { out_ += s; }
-  void open(const std::string& s) {
-    out_ += std::string(2 * depth_, ' ') + s + (s.empty() ? "{\n" : " {\n");
-    ++depth_;
-  }
-  void close(const std::string& tail = "") {
-    --depth_;
-    out_ += std::string(2 * depth_, ' ') + "}" + tail + "\n";
-  }
-  const std::string& str() const { return out_; }
-
-private:
-  std::string out_;
-  int depth_ = 0;
-};
-
 std::string elem_of(const Kernel& k, const std::string& array) {
   const Param* p = k.find_param(array);
   return p ? p->elem_name : "double";
 }
 
-// Integers of the gather loops (cell coordinates, ranges, the counters of an
-// iteration) are 64-bit: no index arithmetic on them wraps in 32 bits, and
-// GCC sees the affine accesses it needs to vectorize (a counter truncated to
-// int is opaque to it). Signed int locals are widened the same way by the
-// lowering; values are those of the kernel wherever the kernel's own
-// arithmetic does not overflow.
-constexpr const char* kCellType = "std::ptrdiff_t";
-
 std::string loop_type(const Nest&, const std::string&) { return kCellType; }
-
-// Emits `const T name = def;` for each local in `locals` not yet in `done`.
-void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int>& done) {
-  for (const auto& [id, l] : locals)
-    if (done.insert(id).second)
-      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-}
-
-std::string conjunction(const std::vector<PathCond>& conds) {
-  std::vector<std::string> parts;
-  for (const auto& pc : conds)
-    parts.push_back(cond_text(pc));
-  return fmt::format("{}", fmt::join(parts, " && "));
-}
 
 // ---- one block: the terms of one (store, shift, piece) at one iteration -------
 
@@ -237,10 +172,10 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
-  std::string out_cell = fmt::format("{}[{}]", s.array, print(s.index));
-  code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj[{}]", out_cell, b.comment,
+  std::string out_cell = s.array + subscript(s.index);
+  code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array,
-            print(s.index));
+            subscript(s.index));
 
   std::vector<Box> boxes;
   if (cx.edge) {
@@ -438,7 +373,10 @@ std::string cell_index(const GatherGroup& g) {
 }
 
 std::string adj_cell(const GatherGroup& g) {
-  return fmt::format("{}_adj[{}]", g.array, cell_index(g));
+  Poly index = g.base;
+  for (const auto& [v, c] : g.layout)
+    index = index + c * Poly::symbol("c_" + v);
+  return g.array + "_adj" + subscript(index);
 }
 
 // One cell loop for one or more gather groups that share a layout and a cell
@@ -466,7 +404,15 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
               fmt::join(cells, ", "), fmt::join(arrays, ", "), layout_desc,
               g0.reduced.empty() ? ""
                                  : fmt::format(", summed over {}", fmt::join(g0.reduced, ", ")));
-  code.open("");
+  // A null adjoint marks an inactive input: its loop is skipped (a fused
+  // loop runs only when all its inputs are active; see emit_body).
+  if (fused)
+    code.open("");
+  else
+    code.open(fmt::format("if ({}_adj != nullptr)", g0.array));
+  auto store_if = [&](const GatherGroup&, const std::string& cond) {
+    return cond.empty() ? std::string() : fmt::format("if ({})", cond);
+  };
 
   auto edge_body = [&]() {
     for (const auto* g : gs) {
@@ -474,7 +420,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.line("bool {} = false;", hit_name(*g));
       for (const auto& b : g->blocks)
         emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
-      code.line("if ({})", hit_name(*g));
+      code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(*g), acc_name(*g));
     }
   };
@@ -553,9 +499,10 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       code.raw(blocks.str());
       for (const auto& [name, p] : factored.sums)
         code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
-      if (guarded)
-        code.line("if ({})", hit_name(*g));
-      code.line("{}{} += {};", guarded ? "  " : "", adj_cell(*g), acc_name(*g));
+      std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
+      if (!cond.empty())
+        code.line("{}", cond);
+      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(*g), acc_name(*g));
     }
     code.close(";");
   }
@@ -624,9 +571,7 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   if (!unit_1d) {
     auto order = g0.layout;
     std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      if (a.second.degree() != b.second.degree())
-        return a.second.degree() < b.second.degree();
-      return std::llabs(a.second.constant_term()) < std::llabs(b.second.constant_term());
+      return smaller_coefficient(a.second, b.second);
     });
     std::vector<std::string> reach;
     for (size_t i = 0; i < order.size(); ++i) {
@@ -699,10 +644,10 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
 void emit_scatter(Code& code, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  code.line("// {}_adj: reads of {} in {}[{}] at indices that cannot be inverted; scatter form, "
+  code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
-            u.array, u.array, s.array, print(s.index));
-  code.open("");
+            u.array, u.array, s.array, subscript(s.index));
+  code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
     code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", l.type_name, l.var, print(l.lo),
@@ -725,10 +670,11 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
   std::map<int, LocalP> seed_locals;
   collect(s.index, seed_locals, vars);
   define_locals(code, seed_locals, done);
-  code.line("const {} seed = {}_adj[{}];", type_spelling(s.value->type), s.array, print(s.index));
+  code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, subscript(s.index));
   for (const auto& r : u.reads) {
-    code.line("// {}[{}] = f(..., {}, ...): {}_adj[{}] += ∂f/∂{} · seed", s.array,
-              print(s.index), r.read->text, r.read->name, print(r.read->ops[0]), r.read->text);
+    code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
+              subscript(s.index), r.read->text, r.read->name, subscript(r.read->ops[0]),
+              r.read->text);
     bool guarded = !r.conds.empty();
     if (guarded) {
       std::map<int, LocalP> cond_locals;
@@ -742,7 +688,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     collect(r.read->ops[0], locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj[{}] += {};", r.read->name, print(r.read->ops[0]),
+    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0]),
               print(binary(Op::Mul, r.partial, param("seed", s.value->type))));
     if (guarded)
       code.close();
@@ -751,61 +697,15 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     code.close();
 }
 
-// Comments name the kernel file without its directory, so generated files do
-// not depend on where the tree was checked out.
-std::string base_name(const std::string& path) {
-  auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-// A C++ string literal holding `s`.
-std::string literal(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-// The write-once rules dpgen could not prove for all sizes, checked on entry:
-// sizes that break one would make the adjoint wrong, so they stop it with a
-// message naming the rule, the kernel line and the sizes.
-void emit_size_checks(Code& code, const Kernel& k) {
-  std::vector<std::string> shown;
-  for (const auto& p : k.params)
-    if (p.kind == ParamKind::Scalar && p.elem == Type::Int)
-      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
-  std::string sizes = shown.empty() ? "\"\""
-                                    : fmt::format("{}", fmt::join(shown, " + \", \" + "));
-  for (const auto& c : k.size_checks) {
-    code.line("// Run-time check (not provable from the kernel alone): {}.", c.what);
-    std::vector<std::string> parts = c.premises;
-    parts.push_back(fmt::format("!({})", c.must_hold));
-    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
-    std::string msg = fmt::format("{}:{}: {}_adjoint: these sizes break the rule that {}, so the "
-                                  "adjoint would be wrong (",
-                                  base_name(c.pos.file), c.pos.line, k.name, c.what);
-    code.line("throw std::invalid_argument(std::string({}) + {} + \")\");", literal(msg), sizes);
-    code.close();
-  }
-}
-
 // The adjoint's parameters. `shaped`: arrays of rows as the kernel declares
 // them (`const double (*a)[64]`); otherwise every array is a flat pointer.
 std::string param_list(const Kernel& k, bool shaped = true) {
   std::vector<std::string> ps;
   auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    std::string c = is_const ? "const " : "";
-    if (shaped && !p.rows.empty())
-      return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
-    if (shaped && !p.container.empty())
-      return fmt::format("{}{}& {}", c, p.container, name);
-    return fmt::format("{}{}* {}", c, p.elem_name, name);
+    return array_declaration(p, is_const, name, shaped, k.c_linkage);
   };
   for (const auto& p : k.params) {
-    if (shaped && p.synthetic)
+    if (shaped && (p.synthetic || !p.twin_of.empty()))
       continue;
     switch (p.kind) {
     case ParamKind::In:
@@ -826,31 +726,11 @@ std::string param_list(const Kernel& k, bool shaped = true) {
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
-// Arrays of rows or std::vectors: the user-facing entry point takes them as
-// declared and calls a flat twin.
-bool has_rows(const Kernel& k) {
-  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
-    return p.kind != ParamKind::Scalar && (!p.rows.empty() || !p.container.empty());
-  });
-}
-
-bool has_vectors(const Kernel& k) {
-  return std::any_of(k.params.begin(), k.params.end(),
-                     [](const Param& p) { return !p.container.empty(); });
-}
-
 // The vector adjoint of an input has its input's size (it is accumulated
 // element by element).
 void emit_vector_checks(Code& code, const Kernel& k) {
-  for (const auto& p : k.params)
-    if (!p.container.empty() && p.kind == ParamKind::In) {
-      code.open(fmt::format("if ({}_adj.size() != {}.size())", p.name, p.name));
-      code.line("throw std::invalid_argument(\"{}_adjoint: {}_adj has \" + "
-                "std::to_string({}_adj.size()) + \" elements but {} has \" + "
-                "std::to_string({}.size()));",
-                k.name, p.name, p.name, p.name, p.name);
-      code.close();
-    }
+  emit_vector_size_checks(code, k, k.name + "_adjoint", "_adj",
+                          [](const Param& p) { return p.kind == ParamKind::In; });
 }
 
 // The call from the shaped entry point to the flat one: rows of a
@@ -858,13 +738,7 @@ void emit_vector_checks(Code& code, const Kernel& k) {
 // the flat array.
 std::string flat_arguments(const Kernel& k) {
   std::vector<std::string> as;
-  auto array = [&](const Param& p, bool is_const, const std::string& name) {
-    if (!p.container.empty())
-      return name + ".data()";
-    if (p.rows.empty())
-      return name;
-    return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
-  };
+  auto array = flat_argument;
   for (const auto& p : k.params) {
     switch (p.kind) {
     case ParamKind::In:
@@ -872,7 +746,8 @@ std::string flat_arguments(const Kernel& k) {
       as.push_back(array(p, false, p.name + "_adj"));
       break;
     case ParamKind::Out:
-      as.push_back(array(p, true, p.name + "_adj"));
+      as.push_back(p.twin_of.empty() ? array(p, true, p.name + "_adj")
+                                     : p.twin_of + "_seed.data()");
       break;
     case ParamKind::ConstArray:
       as.push_back(array(p, true, p.name));
@@ -892,15 +767,6 @@ std::string flat_arguments(const Kernel& k) {
   return fmt::format("{}", fmt::join(as, ", "));
 }
 
-void open_namespaces(Code& c, const Kernel& k) {
-  for (const auto& ns : k.namespaces)
-    c.raw(fmt::format("namespace {} {{\n", ns));
-}
-void close_namespaces(Code& c, const Kernel& k) {
-  for (auto it = k.namespaces.rbegin(); it != k.namespaces.rend(); ++it)
-    c.raw(fmt::format("}} // namespace {}\n", *it));
-}
-
 // The statements of an adjoint function: kernel-level locals, size checks,
 // the gather loops (fused where they share a nest, layout and cell box) and
 // the scatter loops.
@@ -908,7 +774,7 @@ void emit_body(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  emit_size_checks(code, k);
+  emit_size_checks(code, k, k.name + "_adjoint");
   // Gather groups of different inputs that share a loop nest, a layout and a
   // cell box run in one fused loop.
   std::set<const GatherGroup*> done;
@@ -933,7 +799,22 @@ void emit_body(Code& code, const AdjointPlan& plan) {
           fused.push_back(&h);
       for (const auto* f : fused)
         done.insert(f);
+      if (fused.size() == 1) {
+        emit_gather(code, k, fused);
+        continue;
+      }
+      // Fused when every input is active; one loop each when some adjoint
+      // is null (an inactive input).
+      std::vector<std::string> all;
+      for (const auto* f : fused)
+        all.push_back(f->array + "_adj != nullptr");
+      code.open(fmt::format("if ({})", fmt::join(all, " && ")));
       emit_gather(code, k, fused);
+      code.close();
+      code.open("else");
+      for (const auto* f : fused)
+        emit_gather(code, k, {f});
+      code.close();
     }
     for (const auto& u : plan.scatters)
       if (u.array == p.name)
@@ -1015,7 +896,7 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   code.open(fmt::format("void {}({})", fn_name, param_list(k, false)));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  emit_size_checks(code, k);
+  emit_size_checks(code, k, k.name + "_adjoint");
   std::vector<std::string> fwd;
   for (const auto& p : k.params) {
     if (p.kind == ParamKind::Out) {
@@ -1062,10 +943,64 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   code.close();
 }
 
+// An in-place array u: on entry u_adj holds the seed of its new values, on
+// return the adjoint of its old ones. The flat adjoint sees u as an input and
+// its new values as the output u_new: so u_adj starts as 0 where the kernel
+// writes u (the old value reaches the new one only through the kernel) and
+// as the seed elsewhere (an element the kernel leaves is passed through).
+void emit_inout_prologue(Code& code, const Kernel& k) {
+  if (!has_inout(k))
+    return;
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  for (const auto& p : k.params) {
+    if (!p.inout)
+      continue;
+    const std::string twin = p.name + "_new";
+    code.line("// '{}' is updated in place: {}_adj holds the seed of its new values on entry",
+              p.name, p.name);
+    code.line("// and the adjoint of its old values on return.");
+    code.line("const std::ptrdiff_t {}_n = {};", p.name, k.extent.at(twin));
+    code.line("std::vector<{}> {}_seed({}_adj, {}_adj + {}_n);", p.elem_name, p.name, p.name, p.name,
+              p.name);
+    for (const auto& nest : k.nests) {
+      bool writes = false;
+      for (const auto& s : nest.stores)
+        writes = writes || s.array == twin;
+      if (!writes)
+        continue;
+      code.open("");
+      int opened = 1;
+      for (const auto& l : nest.loops) {
+        code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, print(l.lo),
+                              l.var, print(l.hi), l.var));
+        ++opened;
+      }
+      std::set<int> done;
+      std::set<std::string> vars;
+      for (const auto& s : nest.stores) {
+        if (s.array != twin)
+          continue;
+        std::map<int, LocalP> locals;
+        for (const auto& pc : s.path)
+          collect(pc.cond, locals, vars);
+        collect(s.index, locals, vars);
+        define_locals(code, locals, done);
+        if (s.path.empty())
+          code.line("{}_adj{} = 0;", p.name, subscript(s.index));
+        else
+          code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name, subscript(s.index));
+      }
+      for (int i = 0; i < opened; ++i)
+        code.close();
+    }
+  }
+}
+
 void emit_kernel(Code& code, const AdjointPlan& plan) {
   const Kernel& k = *plan.kernel;
   open_namespaces(code, k);
-  bool rows = has_rows(k);
+  bool rows = has_rows(k) || has_inout(k);
   std::string name = k.name + (rows ? "_adjoint_flat" : "_adjoint");
   if (rows)
     code.raw("namespace {\n");
@@ -1087,29 +1022,12 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
     code.line("// Adjoint of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
     code.open(fmt::format("void {}_adjoint({})", k.name, param_list(k)));
     emit_vector_checks(code, k);
+    emit_inout_prologue(code, k);
     code.line("{}_adjoint_flat({});", k.name, flat_arguments(k));
     code.close();
   }
   close_namespaces(code, k);
 }
-
-// clang-format (LLVM style, 100 columns) over the generated text, so long
-// expressions wrap the way a person would wrap them.
-std::string formatted(const std::string& code, const std::string& name) {
-  clang::format::FormatStyle style = clang::format::getLLVMStyle();
-  style.ColumnLimit = 100;
-  style.SortIncludes = clang::format::FormatStyle::SI_Never;
-  style.PointerAlignment = clang::format::FormatStyle::PAS_Left;
-  auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
-  auto out = clang::tooling::applyAllReplacements(code, repl);
-  if (!out) {
-    llvm::consumeError(out.takeError());
-    return code;
-  }
-  return *out;
-}
-
-const char* kBanner = "// Generated by dpgen from {} -- do not edit; edit the kernel and rebuild.\n";
 
 } // namespace
 
@@ -1127,7 +1045,8 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
         "// f(in..., out..., constants...), f_adjoint takes the same parameters in order,\n"
         "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
         "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
-        "#pragma once\n\n");
+        "#pragma once\n\n"
+        "#include <stddef.h> // size_t, for the checked entry points (C and C++)\n\n");
   bool vectors = false;
   for (const auto& p : plans)
     vectors = vectors || has_vectors(*p.kernel);
@@ -1140,12 +1059,57 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
     if (p.kernel->c_linkage) // a C kernel: callable from C
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
     h.raw(adjoint_signature(*p.kernel) + ";\n");
+    if (has_checked_entry(*p.kernel))
+      h.raw(fmt::format("/// The same, each array followed by its number of elements: sizes too small\n"
+                        "/// for the elements the kernel touches throw std::invalid_argument.\n"
+                        "{};\n",
+                        checked_signature(*p.kernel)));
     if (p.kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
     close_namespaces(h, *p.kernel);
     h.raw("\n");
   }
   out.header = formatted(h.str(), stem + "_adjoint.hpp");
+
+  // The forward kernels' declarations, so a caller includes them instead of
+  // writing them by hand.
+  Code d;
+  d.raw(fmt::format(kBanner, source_name));
+  d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
+        "#pragma once\n\n");
+  bool vec = false;
+  for (const auto& p : plans)
+    vec = vec || has_vectors(*p.kernel);
+  if (vec)
+    d.raw("#include <vector>\n\n");
+  for (const auto& p : plans) {
+    const Kernel& k = *p.kernel;
+    open_namespaces(d, k);
+    d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
+    std::vector<std::string> ps, flat;
+    for (const auto& prm : k.params) {
+      if (prm.synthetic || !prm.twin_of.empty())
+        continue;
+      ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
+      bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
+      flat.push_back(prm.kind == ParamKind::Scalar
+                         ? fmt::format("{} {}", prm.spelling, prm.name)
+                         : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name,
+                                       prm.name));
+    }
+    if (k.c_linkage) {
+      // C's variable-length rows and restrict are not C++: from C++ the same
+      // function is declared with flat pointers (the same ABI).
+      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" void {}({});\n#else\n", k.name,
+                        fmt::join(flat, ", ")));
+      d.raw(fmt::format("void {}({});\n#endif\n", k.name, fmt::join(ps, ", ")));
+    } else {
+      d.raw(fmt::format("void {}({});\n", k.name, fmt::join(ps, ", ")));
+    }
+    close_namespaces(d, k);
+    d.raw("\n");
+  }
+  out.kernels = formatted(d.str(), stem + "_kernels.hpp");
 
   Code c;
   c.raw(fmt::format(kBanner, source_name));
@@ -1159,11 +1123,12 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   bool checks = false;
   for (const auto& p : plans)
     checks = checks || !p.kernel->size_checks.empty() || has_vectors(*p.kernel);
-  if (checks)
-    c.raw("#include <stdexcept>\n#include <string>\n");
+  c.raw("#include <stdexcept>\n#include <string>\n"); // the checked entry points
   bool staged = false;
   for (const auto& p : plans)
     staged = staged || !p.kernel->intermediates.empty();
+  for (const auto& p : plans)
+    staged = staged || has_inout(*p.kernel);
   if (staged)
     c.raw("#include <vector>\n");
   c.raw("\n");
@@ -1181,6 +1146,10 @@ EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& 
   for (const auto& p : plans) {
     emit_kernel(c, p);
     c.raw("\n");
+    if (has_checked_entry(*p.kernel)) {
+      emit_checked_entry(c, *p.kernel);
+      c.raw("\n");
+    }
   }
   out.source = formatted(c.str(), stem + "_adjoint.cpp");
   return out;

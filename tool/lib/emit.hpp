@@ -11,6 +11,7 @@ namespace dpgen {
 struct EmittedFile {
   std::string header; // <stem>_adjoint.hpp
   std::string source; // <stem>_adjoint.cpp
+  std::string kernels; // <stem>_kernels.hpp: declarations of the forward kernels
 };
 
 /// The adjoint's declaration, e.g.

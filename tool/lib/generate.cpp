@@ -2,6 +2,7 @@
 #include "generate.hpp"
 
 #include "emit.hpp"
+#include "emit_tangent.hpp"
 #include "output.hpp"
 #include "schedule.hpp"
 
@@ -50,6 +51,20 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
     llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
     pending.push_back({std::string(hpp), f.header});
     pending.push_back({std::string(cpp), f.source});
+    llvm::SmallString<256> khpp(opts.out_dir);
+    llvm::sys::path::append(khpp, stem + "_kernels.hpp");
+    pending.push_back({std::string(khpp), f.kernels});
+    if (opts.tangent) {
+      std::vector<const Kernel*> ks;
+      for (const auto& k : kernels)
+        ks.push_back(&k);
+      EmittedFile t = emit_tangent_file(ks, llvm::sys::path::filename(input).str(), stem);
+      llvm::SmallString<256> thpp(opts.out_dir), tcpp(opts.out_dir);
+      llvm::sys::path::append(thpp, stem + "_tangent.hpp");
+      llvm::sys::path::append(tcpp, stem + "_tangent.cpp");
+      pending.push_back({std::string(thpp), t.header});
+      pending.push_back({std::string(tcpp), t.source});
+    }
   }
   if (!ok) {
     llvm::errs() << "dpgen: errors found; no file written\n";

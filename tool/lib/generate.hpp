@@ -13,12 +13,14 @@ struct GenerateOptions {
   FrontendOptions frontend;
   std::string out_dir;
   bool verbose = false; // report which files were written / unchanged
+  bool tangent = false; // also <stem>_tangent.{hpp,cpp} (forward mode)
   /// If set: after a successful run, touch this file and write `<stamp>.d`,
   /// a make-style dependency file listing every file the kernels include.
   std::string stamp;
 };
 
-/// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} for each input. If any input
+/// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} (and, with `tangent`,
+/// <stem>_tangent.{hpp,cpp}) for each input. If any input
 /// has an error, nothing is written at all. Diagnostics go to stderr.
 /// Returns the process exit code (0 on success).
 int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts);

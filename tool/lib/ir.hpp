@@ -61,6 +61,9 @@ struct LocalVar {
   ExprP def;
   int id = 0;               // creation order; definitions only use lower ids
   bool kernel_level = false; // defined outside every loop (depends on params only)
+  /// A symbol in index algebra whatever its definition (a row-pointer
+  /// array's row length, ir.hpp: row_symbol).
+  bool opaque = false;
 };
 using LocalP = std::shared_ptr<const LocalVar>;
 
@@ -129,7 +132,25 @@ struct Param {
   std::string container;
   /// Not in the user's signature: the size dpgen passes for a vector.
   bool synthetic = false;
+  /// DPGEN_INOUT: an array updated in place, element by element. In the IR
+  /// it is an input (its values before the call, `inout` set) and an output
+  /// twin `<name>_new` (`twin_of` names the input) that receives the stores.
+  bool inout = false;
+  std::string twin_of;
+  /// Rows reached through pointers (`double** a`, a[j][i]). Assumed: every
+  /// row is an array of its own (rows do not overlap one another, nor any
+  /// other array's rows), holding the columns the kernel touches. In the IR
+  /// a[j][i] is the flat element j * R + i with the symbol R =
+  /// row_symbol(a) standing for a row length larger than any column index;
+  /// the printer turns such indices back into [j][i].
+  bool row_pointers = false;
 };
+
+/// The symbol standing for the (unbounded) row length of row-pointer array `a`.
+inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
+/// The value it has in generated code: larger than any column index, small
+/// enough that no product with a row index overflows 64 bits.
+constexpr long long kRowSymbolValue = 1LL << 40;
 
 struct Loop {
   std::string var;

@@ -73,6 +73,9 @@ struct Binding {
   Type elem = Type::Double; // LocalArray: element type
   const Param* param = nullptr;
   bool kernel_level = false; // Value defined outside every loop
+  // Value: a helper's pointer parameter bound to a caller's local (`&f`),
+  // used only as `*p`; the binding holds the local's value.
+  bool deref_only = false;
 };
 
 // Thrown to abandon a kernel after its diagnostic has been reported.
@@ -91,6 +94,7 @@ public:
       if (failed_)
         return false; // every statement's error is reported; the checks need them all
       check_intermediates();
+      check_inout();
       check_outputs();
       output_extents();
     } catch (const Rejected&) {
@@ -139,7 +143,34 @@ private:
   // when they reuse counter names (or a freed Loop's address).
   std::vector<int> loop_ids_;
   int next_loop_id_ = 0;
+  // Straight-line code after a loop that stored an output, and that reads or
+  // rewrites what the loop stored, runs after the loop: it opens a new
+  // segment, a nest of its own at the same depth (negative numbers, one per
+  // depth, the last entry of a nest's key).
+  std::vector<int> segments_{-1};
+  int next_segment_ = -1;
+  std::vector<int> cur_key() const {
+    std::vector<int> k = loop_ids_;
+    k.push_back(segments_.back());
+    return k;
+  }
+  // A statement that reads `array` (an output) or updates an element of it
+  // that this nest stored goes after every nest created since this one that
+  // stores `array` (a loop that accumulated into it, or wrote it): a new
+  // segment. Otherwise it would be folded into the earlier statements.
+  void order_after_later_stores(const std::string& array) {
+    auto it = nest_index_.find(cur_key());
+    if (it == nest_index_.end())
+      return;
+    for (size_t i = it->second + 1; i < k_.nests.size(); ++i)
+      for (const auto& st : k_.nests[i].stores)
+        if (st.array == array) {
+          segments_.back() = --next_segment_;
+          return;
+        }
+  }
   std::map<std::vector<int>, size_t> nest_index_;
+  std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
   std::set<std::string> local_names_;
   std::set<std::string> loop_names_; // every counter name the generated code uses
   // Why a variable has no value here, where that is more than "not yet set".
@@ -240,6 +271,7 @@ private:
       std::string ann = annotation(p);
       QualType q = p->getType();
       std::optional<Param> size_param;
+      std::optional<Param> inout_twin;
       if (q->isReferenceType()) {
         QualType elem = vector_element(q.getNonReferenceType());
         if (elem.isNull())
@@ -298,13 +330,26 @@ private:
         }
         if (const_rows)
           elem.addConst();
-        if (elem->isPointerType())
-          fail(p->getLocation(),
-               fmt::format("parameter '{}' is an array of row pointers ('{}'): dpgen cannot "
-                           "prove that rows do not overlap, so it cannot prove a gather adjoint "
-                           "correct; pass contiguous rows as 'double (*{})[N]', a flat pointer "
-                           "indexed {}[j * nx + i], or a std::vector",
-                           out.name, q.getAsString(), out.name, out.name));
+        if (elem->isPointerType() && out.rows.empty()) {
+          // double** a, const double* const* a: rows through pointers, each
+          // row an array of its own (documented assumption).
+          elem = elem->getPointeeType();
+          if (elem->isPointerType() || ctx_.getAsArrayType(elem))
+            fail(p->getLocation(),
+                 fmt::format("parameter '{}' ('{}') has more than one level of row pointers: "
+                             "pass 'double** {}' (a[j][i]) or a flat pointer indexed "
+                             "{}[(k * ny + j) * nx + i]",
+                             out.name, q.getAsString(), out.name, out.name));
+          if (ann == "dpgen.inout")
+            fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
+                                               "pointer to non-const float or double",
+                                               out.name));
+          out.row_pointers = true;
+        } else if (elem->isPointerType()) {
+          fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
+                                             "row pointers, outside the kernel subset",
+                                             out.name, q.getAsString()));
+        }
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
@@ -319,6 +364,22 @@ private:
                                                out.name, elem.getAsString()));
           out.kind = ParamKind::In;
           any_in = true;
+        } else if (ann == "dpgen.inout") {
+          if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
+            fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                               "to non-const float or double",
+                                               out.name));
+          out.kind = ParamKind::In;
+          out.inout = true;
+          any_in = any_out = true;
+          Param twin;
+          twin.name = out.name + "_new";
+          twin.kind = ParamKind::Out;
+          twin.elem = *et;
+          twin.elem_name = out.elem_name;
+          twin.twin_of = out.name;
+          twin.declaration = twin.spelling = fmt::format("{}* {}", out.elem_name, twin.name);
+          inout_twin = twin;
         } else if (ann == "dpgen.out") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
@@ -337,7 +398,7 @@ private:
           fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
                                              "subset",
                                              out.name, q.getAsString()));
-        if (!ann.empty())
+        if (!ann.empty() && ann != "dpgen.const")
           fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
                                              "parameters (pass a one-element array to "
                                              "differentiate a scalar)",
@@ -356,6 +417,15 @@ private:
         out.declaration = os.str();
       }
       k_.params.push_back(out);
+      if (inout_twin) {
+        for (const auto& other : k_.params)
+          if (other.name == inout_twin->name)
+            fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
+                                               "for the new values of in-place array '{}'",
+                                               other.name, out.name));
+        k_.params.push_back(*inout_twin);
+        inout_twin.reset();
+      }
       if (size_param) {
         for (const auto& other : k_.params)
           if (other.name == size_param->name)
@@ -371,10 +441,26 @@ private:
                                            k_.name));
     if (!any_out)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
+    // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
+    // that is larger than any column (a symbol; its value in the generated
+    // code, kRowSymbolValue, is only ever compared, never used as an address).
+    for (const auto& p : k_.params)
+      if (p.row_pointers) {
+        auto l = std::make_shared<LocalVar>();
+        l->name = row_symbol(p.name);
+        l->type_name = "std::ptrdiff_t";
+        l->def = int_const(kRowSymbolValue);
+        l->opaque = true;
+        l->id = next_local_id_++;
+        l->kernel_level = true;
+        local_names_.insert(l->name);
+        k_.kernel_locals.push_back(l);
+        row_lengths_[p.name] = local_ref(l);
+      }
     // Bind parameters (after the vector is complete, so pointers stay valid).
     for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
       const Param& p = k_.params[i];
-      if (p.synthetic)
+      if (p.synthetic || !p.twin_of.empty())
         continue;
       Binding b;
       b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
@@ -454,10 +540,21 @@ private:
     if (const auto* r = dyn_cast<ReturnStmt>(s)) {
       if (!frames_.empty() && loops_.size() == frames_.back().loop_depth) {
         // `return v;` in a helper being inlined: v where this path holds.
-        InlineFrame& fr = frames_.back();
+        if (frames_.back().is_void) {
+          // (an early return would have to undo the out-parameters' later
+          // assignments on its path)
+          if (path_.size() > frames_.back().path_depth)
+            fail(s->getBeginLoc(), fmt::format("'return' inside a branch of void helper '{}': "
+                                               "assign the out-parameters in if/else instead",
+                                               frames_.back().fn->getNameAsString()));
+          return Escape::Always;
+        }
         if (!r->getRetValue())
           fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
-        ExprP v = cast(expr(r->getRetValue()), fr.ret);
+        // The value first: it may inline further helpers, which grows frames_.
+        ExprP v = expr(r->getRetValue());
+        InlineFrame& fr = frames_.back();
+        v = cast(v, fr.ret);
         fr.returns.push_back(
             {std::vector<PathCond>(path_.begin() + long(fr.path_depth), path_.end()), v});
         return Escape::Always;
@@ -916,10 +1013,12 @@ private:
     }
     loops_.push_back(loop);
     loop_ids_.push_back(next_loop_id_++);
+    segments_.push_back(--next_segment_);
     Escape e = lower_recovering(f->getBody());
     (void)e; // a body ending in continue is fine
     loops_.pop_back();
     loop_ids_.pop_back();
+    segments_.pop_back();
     path_.resize(depth);
     env_ = env_before;
     why_unset_ = why_before;
@@ -1088,8 +1187,16 @@ private:
              u->getOperatorLoc());
       return;
     }
+    // `(void)x;` (silences an unused-variable warning): nothing to do.
+    if (const auto* c = dyn_cast<ExplicitCastExpr>(e);
+        c && c->getType()->isVoidType() && isa<DeclRefExpr>(c->getSubExpr()->IgnoreParenImpCasts()))
+      return;
     const auto* b = dyn_cast<BinaryOperator>(e);
     if (!b || !b->isAssignmentOp()) {
+      if (const auto* c = dyn_cast<CallExpr>(e); c && c->getType()->isVoidType()) {
+        (void)expr(e); // a void helper: its out-parameters and stores (or the unknown call)
+        return;
+      }
       if (isa<CallExpr>(e))
         (void)expr(e); // reports the unknown call
       fail(e->getExprLoc(), "expression statement has no effect on an output; only "
@@ -1098,9 +1205,25 @@ private:
     assign(b->getLHS(), b->getOpcode(), b->getRHS(), b->getOperatorLoc());
   }
 
+  // `*p` of a helper's pointer parameter bound to a caller's local (`&f`).
+  const VarDecl* deref_local(const clang::Expr* e) {
+    const auto* u = dyn_cast<UnaryOperator>(e->IgnoreParenImpCasts());
+    if (!u || u->getOpcode() != UO_Deref)
+      return nullptr;
+    const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? env_.find(v) : env_.end();
+    return it != env_.end() && it->second.kind == Binding::Value && it->second.deref_only ? v
+                                                                                           : nullptr;
+  }
+
   void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
               SourceLocation loc) {
     lhs = lhs->IgnoreParenImpCasts();
+    if (const VarDecl* v = deref_local(lhs)) {
+      assign_value(v, *scalar_type(v->getType()->getPointeeType()), lhs, op, rhs, loc);
+      return;
+    }
     if (auto le = local_element(lhs)) {
       Binding& b = env_[le->first];
       ExprP& slot = b.elems[le->second];
@@ -1121,7 +1244,25 @@ private:
     }
     if (auto acc = element(lhs)) {
       const Param* p = acc->param;
-      if (!frames_.empty())
+      if (p->inout) {
+        // u[k] = v / u[k] += v on an in-place array: a store of the new value
+        // into its twin; `+=` adds to the value u[k] has here (the old one, or
+        // what this iteration stored).
+        const Param* twin = k_.find_param(p->name + "_new");
+        ExprP value = expr(rhs ? rhs : lhs);
+        if (op != BO_Assign) {
+          if (op != BO_AddAssign && op != BO_SubAssign && op != BO_MulAssign)
+            fail(loc, "this compound assignment is outside the kernel subset");
+          ExprP old = inout_value(p, acc->index, lhs->getBeginLoc(), lhs);
+          ExprP r = rhs ? expr(rhs) : int_const(1);
+          value = binary(op == BO_AddAssign ? Op::Add : op == BO_SubAssign ? Op::Sub : Op::Mul, old, r);
+        }
+        add_store(twin->name, acc->index, cast(value, p->elem), false, pos(lhs->getBeginLoc()),
+                  lhs->getBeginLoc());
+        inout_stores_.push_back({p->name, cur_key(), next_store_seq_ - 1, acc->index});
+        return;
+      }
+      if (!frames_.empty() && !frames_.back().is_void)
         fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
                                              "values; store them in the kernel",
                                              frames_.back().fn->getNameAsString(), p->name));
@@ -1167,12 +1308,22 @@ private:
       fail(lhs->getBeginLoc(), fmt::format("'{}' is outside the kernel subset",
                                            var->getNameAsString()));
     }
-    Binding& b = it->second;
-    if (b.kind != Binding::Value)
+    if (it->second.kind != Binding::Value)
       fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
                                            "read only",
                                            var->getNameAsString()));
-    Type t = *scalar_type(var->getType());
+    auto t = scalar_type(var->getType().getNonReferenceType());
+    if (!t)
+      fail(lhs->getBeginLoc(), fmt::format("'{}' has a type outside the kernel subset",
+                                           var->getNameAsString()));
+    assign_value(var, *t, lhs, op, rhs, loc);
+  }
+
+  // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
+  // stands for).
+  void assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
+                    const clang::Expr* rhs, SourceLocation loc) {
+    Binding& b = env_[var];
     ExprP value;
     if (op == BO_Assign) {
       value = expr(rhs);
@@ -1203,13 +1354,13 @@ private:
   }
 
   Nest& current_nest() {
-    auto it = nest_index_.find(loop_ids_);
+    auto it = nest_index_.find(cur_key());
     if (it == nest_index_.end()) {
       Nest n;
       for (const auto& l : loops_)
         n.loops.push_back(*l);
       k_.nests.push_back(n);
-      it = nest_index_.emplace(loop_ids_, k_.nests.size() - 1).first;
+      it = nest_index_.emplace(cur_key(), k_.nests.size() - 1).first;
     }
     return k_.nests[it->second];
   }
@@ -1241,6 +1392,11 @@ private:
 
   void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
                  SourceLocation loc) {
+    // Updating an element this nest stored, after a later nest stored the
+    // array too: the update goes after that nest.
+    if (auto it = nest_index_.find(cur_key()); it != nest_index_.end())
+      if (visible_store(k_.nests[it->second], array, idx))
+        order_after_later_stores(array);
     Nest& nest = current_nest();
     // A second store to the same element in one iteration updates the first:
     // `x[k] = a; ... x[k] += b;` stores a + b, and a store under a further
@@ -1293,18 +1449,70 @@ private:
   }
   int next_store_seq_ = 0;
 
+  // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
+
+  struct InoutAccess {
+    std::string array;
+    std::vector<int> nest_key;
+    int seq;     // stores numbered below this one came before the access
+    ExprP index;
+    SourceLocation loc = {};
+  };
+  std::vector<InoutAccess> inout_stores_, inout_reads_;
+
+  // The value u[k] of an in-place array has here: what this iteration stored
+  // at k, or the value before the call (a read of the input).
+  ExprP inout_value(const Param* p, const ExprP& idx, SourceLocation loc, const clang::Expr* e) {
+    auto nit = nest_index_.find(cur_key());
+    if (nit != nest_index_.end())
+      if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
+        return st->value;
+    inout_reads_.push_back({p->name, cur_key(), next_store_seq_, idx, loc});
+    ExprP r = read(p->name, idx, p->elem, pos(loc));
+    std::const_pointer_cast<Expr>(r)->text = text(e);
+    return r;
+  }
+
+  // An in-place array is read, where it is also written, only at the element
+  // its iteration writes (anything else reads a value another iteration may
+  // have updated: Gauss-Seidel), and never after a loop that wrote it.
+  void check_inout() {
+    for (const auto& r : inout_reads_)
+      for (const auto& s : inout_stores_) {
+        if (s.array != r.array)
+          continue;
+        size_t shared = 0;
+        while (shared < s.nest_key.size() && shared < r.nest_key.size() &&
+               s.nest_key[shared] == r.nest_key[shared])
+          ++shared;
+        bool same_nest = s.nest_key == r.nest_key;
+        auto ps = to_poly(s.index), pr = to_poly(r.index);
+        bool same_cell = ps && pr && *ps == *pr;
+        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq)))
+          fail(r.loc, fmt::format("in-place array '{}' is read here at an element another "
+                                  "iteration or loop may already have updated: a value carried "
+                                  "through the array (Gauss-Seidel, an in-place stencil) is "
+                                  "outside the kernel subset; read only the element each "
+                                  "iteration writes, or write the new values to a separate "
+                                  "DPGEN_OUT array",
+                                  r.array));
+      }
+  }
+
   // Reads of intermediates: which array, in which nest, after which store.
   struct IntermediateRead {
     std::string array;
     std::vector<int> nest_key;
     int seq; // stores numbered below this one came before the read
     SourceLocation loc;
+    ExprP index = nullptr;
+    std::vector<PathCond> path = {};
   };
   std::vector<IntermediateRead> intermediate_reads_;
 
   bool written_by_other_nest(const std::string& array) const {
     for (const auto& [key, idx] : nest_index_)
-      if (key != loop_ids_)
+      if (key != cur_key())
         for (const auto& st : k_.nests[idx].stores)
           if (st.array == array)
             return true;
@@ -1326,6 +1534,20 @@ private:
   bool path_reads_ok_ = false;
 
   void check_intermediates() {
+    // A work array's first store must set it: starting from '+=' adds to the
+    // caller's contents, which the adjoint cannot recompute.
+    for (const auto& w : k_.intermediates) {
+      const Store* first = nullptr;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores)
+          if (st.array == w && (!first || st.seq < first->seq))
+            first = &st;
+      if (first && first->accumulate)
+        fail_at(first->pos, fmt::format("work array '{}' (read by a later loop) is first written "
+                                        "with '+=': it adds to the caller's contents, which the "
+                                        "adjoint cannot recompute; set it with '=' first",
+                                        w));
+    }
     // A work array read outside every loop into a local would be needed by
     // every nest's adjoint; only stores outside loops may read it directly.
     for (const auto& [array, loc] : kernel_level_work_reads_)
@@ -1354,6 +1576,23 @@ private:
           while (key && shared < key->size() && shared < r.nest_key.size() &&
                  (*key)[shared] == r.nest_key[shared])
             ++shared;
+          if (st.seq >= r.seq && *key == r.nest_key && r.index && same_index(r.index, st.index)) {
+            // Read after a loop wrote the array, then written again at the
+            // same element: an element holding two values in turn
+            // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
+            const Store* before = nullptr;
+            for (const auto& m : k_.nests)
+              for (const auto& e : m.stores)
+                if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
+                  before = &e;
+            if (before)
+              fail(r.loc, fmt::format("output '{}' is read here after line {} wrote it, and "
+                                      "written again on line {}: an output holds one value per "
+                                      "element, and the adjoint cannot tell the two apart; put "
+                                      "the first value in a DPGEN_OUT work array of its own "
+                                      "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
+                                      r.array, before->pos.line, st.pos.line, r.array));
+          }
           if (st.seq >= r.seq || *key == r.nest_key)
             fail(r.loc, fmt::format("output '{}' is read here and written on line {}, in the same "
                                     "loop or later: a value carried from one iteration to the "
@@ -1613,10 +1852,25 @@ private:
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
-    if (k_.intermediates.empty())
+    bool inout = std::any_of(k_.params.begin(), k_.params.end(),
+                             [](const Param& p) { return p.inout; });
+    if (k_.intermediates.empty() && !inout)
       return;
     for (const auto& p : k_.params)
-      if (!p.container.empty())
+      if (!k_.intermediates.empty() && p.inout)
+        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
+                                             "kernel with in-place array '{}': write the new "
+                                             "values of '{}' to a DPGEN_OUT array",
+                                             *k_.intermediates.begin(), p.name, p.name));
+    for (const auto& p : k_.params)
+      if (k_.intermediates.count(p.name) && p.row_pointers)
+        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) has "
+                                             "row pointers: the adjoint recomputes work arrays "
+                                             "into flat buffers; pass it as a flat pointer or "
+                                             "'double (*{})[N]'",
+                                             p.name, p.name));
+    for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && !p.container.empty())
         fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
                                              "kernel with std::vector parameter '{}': pass the "
                                              "arrays as pointers",
@@ -1627,11 +1881,50 @@ private:
         auto r = index_range(st, n);
         if (!r)
           fail_at(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
-                                      "adjoint must recompute because a later loop reads '{}'",
-                                      st.array, *k_.intermediates.begin()));
+                                      "adjoint needs buffers for (a work array or an in-place "
+                                      "array)",
+                                      st.array));
         ends[st.array].push_back(
             fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
       }
+    // A later loop may read a work array beyond what was written (the
+    // buffer holds NaN there): the buffer covers the reads too.
+    for (const auto& r : intermediate_reads_) {
+      auto it = nest_index_.find(r.nest_key);
+      if (it == nest_index_.end())
+        continue;
+      Store probe{r.array, r.index, r.index, r.path, {}};
+      auto range = to_poly(r.index) ? index_range(probe, k_.nests[it->second]) : std::nullopt;
+      if (!range)
+        fail(r.loc, fmt::format("cannot bound this read of work array '{}', which the adjoint "
+                                "recomputes into a buffer",
+                                r.array));
+      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
+                                          (range->second + Poly::constant(1)).code()));
+      // Provably outside every earlier store's range: an element no loop
+      // writes, whose value is the caller's (the adjoint's buffer has NaN).
+      bool outside_all = true, any_store = false;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != r.array)
+            continue;
+          any_store = true;
+          auto w = index_range(st, n);
+          Facts facts;
+          for (const Nest* m : {&n, static_cast<const Nest*>(&k_.nests[it->second])})
+            for (const auto& l : m->loops)
+              add_nonempty(l, facts);
+          Poly one = Poly::constant(1);
+          bool outside = w && (prove_nonneg(range->second - w->second - one, facts) ||
+                               prove_nonneg(w->first - range->first - one, facts));
+          outside_all = outside_all && outside;
+        }
+      if (any_store && outside_all)
+        fail(r.loc, fmt::format("reads work array '{}' at elements no earlier loop writes (their "
+                                "values are the caller's, which the adjoint cannot recompute); "
+                                "write every element a later loop reads",
+                                r.array));
+    }
     for (const auto& [array, e] : ends)
       k_.extent[array] = e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
                                        : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})",
@@ -1645,13 +1938,8 @@ private:
   // hold); otherwise checked at run time.
   void check_one_to_one(const Nest& nest, const Store& s,
                         std::vector<std::pair<Poly, Poly>> dims) {
-    auto size_key = [](const Poly& c) { return std::make_pair(c.degree(), c.str()); };
-    std::sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
-      if (a.first.degree() != b.first.degree())
-        return a.first.degree() < b.first.degree();
-      if (a.first.is_constant() && b.first.is_constant())
-        return std::llabs(a.first.constant_term()) < std::llabs(b.first.constant_term());
-      return size_key(a.first) < size_key(b.first);
+    std::stable_sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
+      return smaller_coefficient(a.first, b.first);
     });
     Facts facts;
     for (const auto& l : nest.loops)
@@ -1730,6 +2018,7 @@ private:
     size_t loop_depth;
     Type ret;
     std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
+    bool is_void = false; // results through out-parameters, or stores
   };
   std::vector<InlineFrame> frames_;
 
@@ -1746,20 +2035,63 @@ private:
       fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
                                          "free helper functions only",
                                          def->getNameAsString()));
-    auto rt = scalar_type(def->getReturnType());
+    const bool is_void = def->getReturnType()->isVoidType();
+    auto rt = is_void ? std::optional<Type>(Type::Double) : scalar_type(def->getReturnType());
     if (!rt || def->getReturnType()->isReferenceType())
       fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
-                                         "returns an int, float, double or bool value",
+                                         "returns an int, float, double or bool value (or "
+                                         "void, with its results in out-parameters)",
                                          def->getNameAsString(),
                                          def->getReturnType().getAsString()));
     if (c->getNumArgs() != def->getNumParams())
       fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
     // Bind the parameters (arguments are evaluated in the caller's scope).
     std::vector<std::pair<const VarDecl*, Binding>> binds;
+    // Out-parameters: `double& f` and `double* f` (called with `&x`) bound to
+    // a local x of the caller: copied in, and copied back after the body
+    // (the same as a reference while no two of them name one local).
+    std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
+    auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
+      const clang::Expr* a = arg->IgnoreParenImpCasts();
+      if (pointer) {
+        const auto* u = dyn_cast<UnaryOperator>(a);
+        a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
+      }
+      const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
+      const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+      auto it = v ? env_.find(v) : env_.end();
+      if (it == env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
+        fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
+                                             "be {}a local variable of the caller",
+                                             pd->getNameAsString(), def->getNameAsString(),
+                                             pointer ? "the address of " : ""));
+      for (const auto& [q, w] : outs)
+        if (w == v)
+          fail(arg->getBeginLoc(), fmt::format("local '{}' is passed to two out-parameters of "
+                                               "helper '{}'",
+                                               v->getNameAsString(), def->getNameAsString()));
+      if (!is_void)
+        fail(pd->getLocation(), fmt::format("helper '{}' returns a value and has out-parameter "
+                                            "'{}': return void and put every result in an "
+                                            "out-parameter, or return the one result",
+                                            def->getNameAsString(), pd->getNameAsString()));
+      Binding b = it->second;
+      b.deref_only = pointer;
+      binds.push_back({pd, b});
+      outs.push_back({pd, v});
+    };
     for (unsigned i = 0; i < def->getNumParams(); ++i) {
       const ParmVarDecl* pd = def->getParamDecl(i);
       const clang::Expr* arg = c->getArg(i);
       QualType pt = pd->getType();
+      if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
+          scalar_type(pt->getPointeeType()) && [&] {
+            const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
+            return u && u->getOpcode() == UO_AddrOf;
+          }()) {
+        out_param(pd, arg, true);
+        continue;
+      }
       if (pt->isPointerType()) {
         const clang::Expr* base = arg->IgnoreParenImpCasts();
         const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
@@ -1774,10 +2106,15 @@ private:
         binds.push_back({pd, b});
         continue;
       }
-      if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified())
-        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' is a non-const "
-                                            "reference: a helper returns its result by value",
-                                            pd->getNameAsString(), def->getNameAsString()));
+      if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) {
+        if (!scalar_type(pt.getNonReferenceType()))
+          fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', "
+                                              "outside the kernel subset",
+                                              pd->getNameAsString(), def->getNameAsString(),
+                                              pt.getAsString()));
+        out_param(pd, arg, false);
+        continue;
+      }
       auto t = scalar_type(pt.getNonReferenceType());
       if (!t)
         fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
@@ -1791,7 +2128,7 @@ private:
     }
     for (const auto& [pd, b] : binds)
       env_[pd] = b;
-    frames_.push_back({def, path_.size(), loops_.size(), *rt, {}});
+    frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
     Escape e;
     try {
       e = lower(def->getBody());
@@ -1803,6 +2140,11 @@ private:
     InlineFrame fr = frames_.back();
     frames_.pop_back();
     path_.resize(fr.path_depth);
+    if (is_void) {
+      for (const auto& [pd, v] : outs)
+        env_[v].value = env_[pd].value;
+      return nullptr;
+    }
     if (e != Escape::Always || fr.returns.empty())
       fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
                                                     "returning a value",
@@ -1831,8 +2173,14 @@ private:
     e = e->IgnoreParens();
     if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
       const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
-      if (isa<DeclRefExpr>(base))
-        return Access{array_base(base), int_const(0)};
+      if (isa<DeclRefExpr>(base)) {
+        const Param* p = array_base(base);
+        if (p->row_pointers)
+          fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
+                                                "its elements as {}[j][i]",
+                                                p->name, p->name, p->name));
+        return Access{p, int_const(0)};
+      }
       fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
                                 "parameter directly: a[i + 1]");
     }
@@ -1855,6 +2203,28 @@ private:
     if (idx->type != Type::Int)
       fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
     const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
+    if (const auto* row = dyn_cast<ArraySubscriptExpr>(base);
+        row && row->getType().getCanonicalType()->isPointerType()) {
+      // a[j][i] of row pointers `double** a`: the flat j * R + i (R the row
+      // symbol). Both indices must be affine: the printer writes them back
+      // as [j][i].
+      const clang::Expr* rb = row->getBase()->IgnoreParenImpCasts();
+      const Param* p = isa<DeclRefExpr>(rb) ? array_base(rb) : nullptr;
+      if (!p || !p->row_pointers)
+        fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
+                                  "'double**' kernel parameter: a[j][i]");
+      ExprP j = expr(row->getIdx());
+      if (j->type != Type::Int)
+        fail(row->getIdx()->getBeginLoc(), "array index must be an integer");
+      if (!to_poly(j) || !to_poly(idx))
+        fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
+                                             "data-dependent row or column; dpgen needs both "
+                                             "indices of a[j][i] affine in the loop counters "
+                                             "and sizes for row pointers (pass a flat array for "
+                                             "interpolation)",
+                                             p->name));
+      return Access{p, binary(Op::Add, binary(Op::Mul, j, row_lengths_.at(p->name)), idx)};
+    }
     if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
       // a[j][i]: row j of an array of rows, each `extent` elements long.
       QualType rt = row->getType().getCanonicalType();
@@ -1877,6 +2247,10 @@ private:
       return Access{inner->param, flat};
     }
     const Param* p = array_base(base);
+    if (p->row_pointers)
+      fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
+                                           "value; index its elements as {}[j][i]",
+                                           p->name, p->name, p->name));
     check_index_width(sub->getIdx(), idx, p->name);
     return Access{p, idx};
   }
@@ -1928,6 +2302,12 @@ private:
       return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
     if (const auto* r = dyn_cast<DeclRefExpr>(e))
       return decl_ref(r);
+    if (const VarDecl* v = deref_local(e)) {
+      const Binding& b = env_[v];
+      if (!b.value)
+        fail(e->getBeginLoc(), unset_message(v, "may be used before it has a value"));
+      return b.value;
+    }
     if (auto le = local_element(e)) {
       const ExprP& v = env_[le->first].elems[le->second];
       if (!v)
@@ -1938,7 +2318,8 @@ private:
       const Param* p = acc->param;
       if (p->kind == ParamKind::Out) {
         // An output read back in the iteration that stored it: that value.
-        auto nit = nest_index_.find(loop_ids_);
+        order_after_later_stores(p->name);
+        auto nit = nest_index_.find(cur_key());
         Store* st = nit == nest_index_.end()
                         ? nullptr
                         : visible_store(k_.nests[nit->second], p->name, acc->index);
@@ -1951,7 +2332,8 @@ private:
           ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
           std::const_pointer_cast<Expr>(r)->text = text(e);
           k_.intermediates.insert(p->name);
-          intermediate_reads_.push_back({p->name, loop_ids_, next_store_seq_, e->getBeginLoc()});
+          intermediate_reads_.push_back(
+              {p->name, cur_key(), next_store_seq_, e->getBeginLoc(), acc->index, path_});
           return r;
         }
         if (!st || st->accumulate)
@@ -1962,6 +2344,8 @@ private:
                            p->name, st ? " after '+=' (its previous contents)" : ""));
         return st->value;
       }
+      if (p->inout)
+        return inout_value(p, acc->index, e->getBeginLoc(), e);
       ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
       std::const_pointer_cast<Expr>(r)->text = text(e); // as written, for remarks
       return r;
@@ -2086,6 +2470,10 @@ private:
                                          "can be read",
                                          v->getNameAsString()));
     case Binding::Value:
+      if (b.deref_only)
+        fail(r->getLocation(), fmt::format("pointer '{}' to a local is used without '*': only "
+                                           "'*{}' is in the kernel subset",
+                                           v->getNameAsString(), v->getNameAsString()));
       if (!b.value)
         fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
       return b.value;

@@ -109,6 +109,30 @@ std::string real_literal(double v, Type t) {
   return t == Type::Float ? s + "f" : s;
 }
 
+namespace {
+// The row symbol an index mentions, if any (ir.hpp: row_symbol).
+std::string row_symbol_in(const Poly& p) {
+  for (const auto& [m, c] : p.terms())
+    for (const auto& sym : m)
+      if (sym.rfind("dpgen_rows_", 0) == 0)
+        return sym;
+  return "";
+}
+} // namespace
+
+std::string subscript(const Poly& index) {
+  std::string r = row_symbol_in(index);
+  if (r.empty())
+    return "[" + index.code() + "]";
+  return "[" + index.coefficient(r).code() + "][" + index.without(r).code() + "]";
+}
+
+std::string subscript(const ExprP& index) {
+  if (auto p = to_poly(index); p && !row_symbol_in(*p).empty())
+    return subscript(*p);
+  return "[" + print(index) + "]";
+}
+
 std::string print(const ExprP& e) {
   switch (e->op) {
   case Op::IntConst:
@@ -120,7 +144,7 @@ std::string print(const ExprP& e) {
   case Op::Local:
     return e->name;
   case Op::Read:
-    return fmt::format("{}[{}]", e->name, print(e->ops[0]));
+    return e->name + subscript(e->ops[0]);
   case Op::Neg:
     return "-" + wrap(e->ops[0], 9);
   case Op::Not:
@@ -134,7 +158,11 @@ std::string print(const ExprP& e) {
     // min/max by value (see kMinMaxHelpers): std::min returns a reference,
     // which keeps GCC from vectorizing the loop around it.
     bool by_value = e->name == "min" || e->name == "max";
-    return fmt::format("{}{}({})", by_value ? "dpgen_" : "std::", e->name, fmt::join(args, ", "));
+    // Integer arguments may differ in width (a widened local and an int
+    // parameter): name the type, as std::min's deduction would fail too.
+    std::string targs = by_value && e->type == Type::Int ? "<std::ptrdiff_t>" : "";
+    return fmt::format("{}{}{}({})", by_value ? "dpgen_" : "std::", e->name, targs,
+                       fmt::join(args, ", "));
   }
   case Op::Cast: // text: the integer type of a widening cast ("long")
     return fmt::format("static_cast<{}>({})", e->text.empty() ? type_spelling(e->type) : e->text,

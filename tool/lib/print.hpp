@@ -10,6 +10,11 @@
 namespace dpgen {
 
 std::string print(const ExprP& e);
+/// The subscript of an array element with this flat index: "[i + 1]", or for
+/// a row-pointer array (the index mentions its row symbol R: j * R + i)
+/// "[j][i]".
+std::string subscript(const ExprP& index);
+std::string subscript(const Poly& index);
 /// max(lo...) / min(hi...) of a bound set, as C++ ("std::max<int>({a, b})").
 std::string print_max(const std::vector<Poly>& set, const std::string& int_type);
 std::string print_min(const std::vector<Poly>& set, const std::string& int_type);

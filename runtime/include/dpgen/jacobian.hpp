@@ -1,13 +1,13 @@
-// Dense Jacobians of small functions and rollouts from their Jacobian-vector products (JVPs,
-// tangents, one column each) or vector-Jacobian products (VJPs, adjoints, one row each),
-// whichever needs fewer calls; and a central-difference Jacobian to check them against.
+// Dense Jacobians of a function R^n -> R^m from its products: column by column from
+// Jacobian-vector products (tangents, n calls) or row by row from vector-Jacobian products
+// (adjoints, m calls), a helper that takes whichever needs fewer calls, and central
+// differences to check them against.
 #pragma once
 
 #include "dpgen/error.hpp"
 
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -15,130 +15,133 @@
 
 namespace dpgen {
 
-/// A Jacobian-vector product: returns J v (size `outputs`) for a tangent v (size `inputs`).
-using JacobianVectorProduct = std::function<Eigen::VectorXd(const Eigen::VectorXd& v)>;
-/// A vector-Jacobian product: returns J^T w (size `inputs`) for a seed w (size `outputs`).
-using VectorJacobianProduct = std::function<Eigen::VectorXd(const Eigen::VectorXd& w)>;
+/// A Jacobian-vector product (tangent): returns J(x) v, of size m, for v of size n.
+using JacobianVectorProduct =
+    std::function<Eigen::VectorXd(const Eigen::VectorXd& x, const Eigen::VectorXd& v)>;
 
-/// How jacobian() builds J.
+/// A vector-Jacobian product (adjoint): returns J(x)^T w, of size n, for w of size m.
+using VectorJacobianProduct =
+    std::function<Eigen::VectorXd(const Eigen::VectorXd& x, const Eigen::VectorXd& w)>;
+
+/// How a Jacobian is assembled.
 enum class JacobianMode {
-  automatic, ///< columns when inputs <= outputs (and a JVP is given), rows otherwise
-  columns,   ///< one JVP per input: J e_j is column j
-  rows,      ///< one VJP per output: J^T e_i is row i
+  tangent, ///< by columns: J e_j for j < n (n Jacobian-vector products)
+  adjoint, ///< by rows: J^T e_i for i < m (m vector-Jacobian products)
 };
 
-/// What jacobian() did.
-struct JacobianSummary {
-  JacobianMode mode = JacobianMode::automatic; ///< columns or rows, as used
-  Eigen::Index products = 0;                   ///< JVPs or VJPs evaluated
-};
+/// The enumerator's name, for messages and logs.
+inline const char* to_string(JacobianMode mode) {
+  return mode == JacobianMode::tangent ? "tangent" : "adjoint";
+}
+
+/// The mode needing fewer products for an m-by-n Jacobian: tangent when n <= m (a tangent
+/// needs no reverse sweep, so it wins ties), adjoint otherwise.
+inline JacobianMode cheaper_jacobian_mode(Eigen::Index inputs, Eigen::Index outputs) {
+  return inputs <= outputs ? JacobianMode::tangent : JacobianMode::adjoint;
+}
 
 namespace detail {
 
-inline const char* mode_name(JacobianMode mode) {
-  switch (mode) {
-  case JacobianMode::automatic:
-    return "automatic";
-  case JacobianMode::columns:
-    return "columns";
-  case JacobianMode::rows:
-    return "rows";
-  }
-  return "?";
+inline void require_jacobian_sizes(Eigen::Index inputs, Eigen::Index outputs, const char* where) {
+  if (inputs < 0 || outputs < 0)
+    throw std::invalid_argument(
+        message(where, ": sizes must be >= 0 (got ", inputs, " inputs, ", outputs, " outputs)"));
 }
 
 } // namespace detail
 
-/// The mode jacobian() picks for `mode` with the products it is given: `automatic` takes the
-/// one needing fewer products (columns on a tie: a JVP carries the primal along), or the only
-/// one given. Throws std::invalid_argument when the requested product is missing.
-inline JacobianMode resolve_jacobian_mode(Eigen::Index outputs, Eigen::Index inputs,
-                                          bool have_jvp, bool have_vjp,
-                                          JacobianMode mode = JacobianMode::automatic) {
-  if (!have_jvp && !have_vjp)
-    throw std::invalid_argument("jacobian: neither a JVP nor a VJP was given");
-  if (mode == JacobianMode::automatic) {
-    if (!have_vjp)
-      return JacobianMode::columns;
-    if (!have_jvp)
-      return JacobianMode::rows;
-    return inputs <= outputs ? JacobianMode::columns : JacobianMode::rows;
+/// The m-by-n Jacobian of f at x (n = x.size(), m = `outputs`) by columns:
+/// column j = jvp(x, e_j). Throws std::invalid_argument when jvp is empty or returns a vector
+/// whose size is not m.
+inline Eigen::MatrixXd jacobian_by_columns(const JacobianVectorProduct& jvp,
+                                           const Eigen::VectorXd& x, Eigen::Index outputs) {
+  const char* where = "jacobian (tangent)";
+  if (!jvp)
+    throw std::invalid_argument(detail::message(where, ": no Jacobian-vector product given"));
+  detail::require_jacobian_sizes(x.size(), outputs, where);
+  Eigen::MatrixXd jac(outputs, x.size());
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(x.size());
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    e[j] = 1.0;
+    const Eigen::VectorXd column = jvp(x, e); // J e_j = column j
+    e[j] = 0.0;
+    detail::require_size(column.size(), outputs, where,
+                         detail::message("Jacobian-vector product for input ", j));
+    jac.col(j) = column;
   }
-  if (mode == JacobianMode::columns && !have_jvp)
-    throw std::invalid_argument("jacobian: mode 'columns' needs a JVP, none was given");
-  if (mode == JacobianMode::rows && !have_vjp)
-    throw std::invalid_argument("jacobian: mode 'rows' needs a VJP, none was given");
-  return mode;
+  return jac;
 }
 
-/// The dense outputs-by-inputs Jacobian J from `jvp` (J v) and/or `vjp` (J^T w); either may be
-/// empty. Each product is called with a unit vector and must return a finite vector of the
-/// right size, or std::invalid_argument names the product, its index and what was wrong.
-inline Eigen::MatrixXd jacobian(Eigen::Index outputs, Eigen::Index inputs,
-                                const JacobianVectorProduct& jvp,
-                                const VectorJacobianProduct& vjp,
-                                JacobianMode mode = JacobianMode::automatic,
-                                JacobianSummary* summary = nullptr) {
-  if (outputs < 1 || inputs < 1)
-    throw std::invalid_argument(detail::message(
-        "jacobian: sizes must be positive (got ", outputs, " outputs, ", inputs, " inputs)"));
-  const JacobianMode used = resolve_jacobian_mode(outputs, inputs, bool(jvp), bool(vjp), mode);
-  Eigen::MatrixXd j(outputs, inputs);
-  if (used == JacobianMode::columns) {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(inputs);
-    for (Eigen::Index c = 0; c < inputs; ++c) {
-      e[c] = 1.0;
-      const Eigen::VectorXd column = jvp(e); // J e_c
-      e[c] = 0.0;
-      const std::string what = detail::message("JVP of input ", c);
-      detail::require_size(column.size(), outputs, "jacobian", what);
-      detail::require_finite(column, "jacobian", what);
-      j.col(c) = column;
-    }
-  } else {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(outputs);
-    for (Eigen::Index r = 0; r < outputs; ++r) {
-      e[r] = 1.0;
-      const Eigen::VectorXd row = vjp(e); // J^T e_r
-      e[r] = 0.0;
-      const std::string what = detail::message("VJP of output ", r);
-      detail::require_size(row.size(), inputs, "jacobian", what);
-      detail::require_finite(row, "jacobian", what);
-      j.row(r) = row.transpose();
-    }
+/// The m-by-n Jacobian of f at x (n = x.size(), m = `outputs`) by rows:
+/// row i = vjp(x, e_i)^T. Throws std::invalid_argument when vjp is empty or returns a vector
+/// whose size is not n.
+inline Eigen::MatrixXd jacobian_by_rows(const VectorJacobianProduct& vjp, const Eigen::VectorXd& x,
+                                        Eigen::Index outputs) {
+  const char* where = "jacobian (adjoint)";
+  if (!vjp)
+    throw std::invalid_argument(detail::message(where, ": no vector-Jacobian product given"));
+  detail::require_jacobian_sizes(x.size(), outputs, where);
+  Eigen::MatrixXd jac(outputs, x.size());
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(outputs);
+  for (Eigen::Index i = 0; i < outputs; ++i) {
+    e[i] = 1.0;
+    const Eigen::VectorXd row = vjp(x, e); // J^T e_i = (row i)^T
+    e[i] = 0.0;
+    detail::require_size(row.size(), x.size(), where,
+                         detail::message("vector-Jacobian product for output ", i));
+    jac.row(i) = row.transpose();
   }
-  if (summary) {
-    summary->mode = used;
-    summary->products = used == JacobianMode::columns ? inputs : outputs;
-  }
-  return j;
+  return jac;
 }
 
-/// The Jacobian of f at x by central differences, column j = (f(x + h e_j) - f(x - h e_j)) / 2h,
-/// with h = step * max(1, |x_j|). Its error is O(h^2 |f'''|) + O(eps |f| / h): for smooth f of
-/// unit scale, step 1e-6 gives about 1e-9 absolute. For checking the other two, not for use.
+/// The m-by-n Jacobian of f at x with the products given: both given, the cheaper mode
+/// (cheaper_jacobian_mode); one given, that one. `mode_used`, when not null, receives the
+/// mode taken. Throws std::invalid_argument when neither is given.
+inline Eigen::MatrixXd jacobian(const JacobianVectorProduct& jvp, const VectorJacobianProduct& vjp,
+                                const Eigen::VectorXd& x, Eigen::Index outputs,
+                                JacobianMode* mode_used = nullptr) {
+  if (!jvp && !vjp)
+    throw std::invalid_argument(
+        "jacobian: neither a Jacobian-vector nor a vector-Jacobian product given");
+  detail::require_jacobian_sizes(x.size(), outputs, "jacobian");
+  JacobianMode mode = cheaper_jacobian_mode(x.size(), outputs);
+  if (!vjp)
+    mode = JacobianMode::tangent;
+  else if (!jvp)
+    mode = JacobianMode::adjoint;
+  if (mode_used)
+    *mode_used = mode;
+  return mode == JacobianMode::tangent ? jacobian_by_columns(jvp, x, outputs)
+                                       : jacobian_by_rows(vjp, x, outputs);
+}
+
+/// The Jacobian of f at x by central differences, for checking the other two (not for use):
+/// column j = (f(x + h e_j) - f(x - h e_j)) / 2h with h = step (1 + |x_j|). Its error is about
+/// h^2 |f'''| / 6 + eps |f| / h: for smooth f of unit scale, the default step gives ~1e-10.
+/// Throws std::invalid_argument when step is not positive or f changes its output size.
 inline Eigen::MatrixXd
 jacobian_central_difference(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
-                            const Eigen::VectorXd& x, double step = 1e-6) {
-  if (!(step > 0.0))
-    throw std::invalid_argument(
-        detail::message("jacobian_central_difference: step must be positive (got ", step, ")"));
-  detail::require_finite(x, "jacobian_central_difference", "x");
+                            const Eigen::VectorXd& x, double step = 1e-5) {
+  const char* where = "jacobian (central differences)";
+  if (!(step > 0.0) || !std::isfinite(step))
+    throw std::invalid_argument(detail::message(where, ": step must be positive (got ", step, ")"));
+  if (!f)
+    throw std::invalid_argument(detail::message(where, ": no function given"));
   const Eigen::Index outputs = f(x).size();
-  Eigen::MatrixXd j(outputs, x.size());
-  Eigen::VectorXd xp = x;
-  for (Eigen::Index c = 0; c < x.size(); ++c) {
-    const double h = step * std::max(1.0, std::abs(x[c]));
-    xp[c] = x[c] + h;
-    const Eigen::VectorXd fp = f(xp);
-    xp[c] = x[c] - h;
-    const Eigen::VectorXd fm = f(xp);
-    xp[c] = x[c];
-    detail::require_size(fp.size(), outputs, "jacobian_central_difference", "f(x + h e_j)");
-    detail::require_size(fm.size(), outputs, "jacobian_central_difference", "f(x - h e_j)");
-    j.col(c) = (fp - fm) / (2.0 * h);
+  Eigen::MatrixXd jac(outputs, x.size());
+  Eigen::VectorXd shifted = x;
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    const double h = step * (1.0 + std::abs(x[j]));
+    shifted[j] = x[j] + h;
+    const Eigen::VectorXd plus = f(shifted);
+    shifted[j] = x[j] - h;
+    const Eigen::VectorXd minus = f(shifted);
+    shifted[j] = x[j];
+    detail::require_size(plus.size(), outputs, where, detail::message("f(x + h e_", j, ")"));
+    detail::require_size(minus.size(), outputs, where, detail::message("f(x - h e_", j, ")"));
+    jac.col(j) = (plus - minus) / (2.0 * h);
   }
-  return j;
+  return jac;
 }
 
 } // namespace dpgen

@@ -1,12 +1,12 @@
-// Optimizers over one flat parameter vector, all driven by the same loss+gradient callable:
-// gradient descent, Adam, and L-BFGS (LBFGS++, stepwise and as a whole minimisation); and,
-// from the outputs' Jacobian instead, half-inverse gradients (hig.hpp).
+// Optimizers over one flat parameter vector: gradient descent, Adam and L-BFGS (LBFGS++,
+// stepwise and as a whole minimisation) driven by one loss+gradient callable, and half-inverse
+// gradients (HIG) driven by a residual and its Jacobian.
 #pragma once
 
 #include "dpgen/error.hpp"
-#include "dpgen/hig.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/SVD>
 #include <LBFGS.h>
 
 #include <cmath>
@@ -189,6 +189,197 @@ inline LbfgsSummary lbfgs_minimize(const LossGradient& f, Eigen::VectorXd& x,
   }
   summary.loss = f(x, grad);
   summary.grad_norm = grad.norm();
+  return summary;
+}
+
+/// A residual with its Jacobian: returns r(x) (size m) and overwrites `jac` with the m-by-n
+/// Jacobian dr/dx (n = x.size()); jacobian.hpp assembles it from tangents or adjoints. The loss
+/// is L(x) = 1/2 |r(x)|^2, with gradient J^T r.
+using ResidualJacobian =
+    std::function<Eigen::VectorXd(const Eigen::VectorXd& x, Eigen::MatrixXd& jac)>;
+
+/// Settings of the half-inverse-gradient update and of hig_minimize.
+struct HigOptions {
+  /// eta in dx = -eta V Sigma^kappa U^T r (must be positive).
+  double learning_rate = 1.0;
+  /// kappa: -1/2 is the half-inverse gradient, -1 the Gauss-Newton step (pseudo-inverse),
+  /// +1 gradient descent (V Sigma U^T r = J^T r). Any finite value.
+  double exponent = -0.5;
+  /// Singular values sigma_i <= truncation * sigma_max are dropped (their directions take no
+  /// step); zero singular values always are. In [0, 1).
+  double truncation = 1e-6;
+  /// Largest number of updates hig_minimize performs (>= 0).
+  int max_iterations = 100;
+  /// hig_minimize stops when L = 1/2 |r|^2 is at most this.
+  double loss_tolerance = 0.0;
+  /// hig_minimize stops when an update has norm at most this (a zero Jacobian or residual
+  /// gives a zero update).
+  double step_tolerance = 0.0;
+};
+
+/// One half-inverse-gradient update, from an SVD J = U Sigma V^T.
+struct HigUpdate {
+  Eigen::VectorXd step;            ///< dx = -eta V Sigma^kappa U^T r over the kept sigma_i
+  Eigen::VectorXd singular_values; ///< all min(m, n) of them, decreasing
+  Eigen::Index rank = 0;           ///< how many singular values were kept
+};
+
+namespace detail {
+
+inline void check_hig_options(const HigOptions& o) {
+  if (!(o.learning_rate > 0.0) || !std::isfinite(o.learning_rate) || !std::isfinite(o.exponent) ||
+      !(o.truncation >= 0.0 && o.truncation < 1.0))
+    throw std::invalid_argument(
+        message("hig: need learning_rate > 0, a finite exponent and 0 <= truncation < 1 (got ",
+                o.learning_rate, ", ", o.exponent, ", ", o.truncation, ")"));
+  if (o.max_iterations < 0)
+    throw std::invalid_argument(
+        message("hig: max_iterations must be >= 0 (got ", o.max_iterations, ")"));
+}
+
+// Throws OptimizationError when r or J holds a NaN or Inf, naming which and where; `when` ends
+// the message (" in iteration 7", or empty).
+inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& jac,
+                               const std::string& when) {
+  const Eigen::Index i = first_non_finite(r);
+  if (i >= 0)
+    throw OptimizationError(
+        message("hig: residual is ", std::isnan(r[i]) ? "NaN" : "Inf", " at index ", i, when));
+  const Eigen::Map<const Eigen::VectorXd> entries(jac.data(), jac.size());
+  const Eigen::Index k = first_non_finite(entries);
+  if (k >= 0)
+    throw OptimizationError(message("hig: Jacobian is ", std::isnan(entries[k]) ? "NaN" : "Inf",
+                                    " at (", k % jac.rows(), ", ", k / jac.rows(), ")", when));
+}
+
+} // namespace detail
+
+/// The half-inverse-gradient update for residual r and Jacobian J = dr/dx (m-by-n):
+/// with J = U Sigma V^T (Eigen's BDCSVD, thin U and V),
+///   dx = -eta V Sigma^kappa U^T r,
+/// summed over the singular values above truncation * sigma_max. kappa = -1/2 scales every
+/// direction halfway between gradient descent (kappa = 1: J^T r) and Gauss-Newton
+/// (kappa = -1: J^+ r). For a loss other than 1/2 |r|^2 of outputs y with J = dy/dx, pass
+/// r = dL/dy (the book's form; e.g. 2 (y - y*) / batch for a mean squared error).
+/// Throws std::invalid_argument on bad options or sizes and OptimizationError when r or J is
+/// not finite or the SVD fails.
+inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r,
+                            const HigOptions& options = {}) {
+  detail::check_hig_options(options);
+  detail::require_size(r.size(), jac.rows(), "hig", "residual");
+  detail::require_finite_hig(r, jac, "");
+  HigUpdate update;
+  if (jac.size() == 0) {
+    update.step.setZero(jac.cols());
+    return update;
+  }
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  if (svd.info() != Eigen::Success)
+    throw OptimizationError("hig: the SVD of the Jacobian failed");
+  update.singular_values = svd.singularValues();
+  const Eigen::VectorXd& sigma = update.singular_values;
+  const double cutoff = options.truncation * sigma[0]; // sigma is sorted, sigma_0 = sigma_max
+  Eigen::VectorXd c = svd.matrixU().transpose() * r;   // c = U^T r, one entry per direction
+  for (Eigen::Index i = 0; i < c.size(); ++i) {
+    if (sigma[i] > cutoff && sigma[i] > 0.0) {
+      c[i] *= std::pow(sigma[i], options.exponent); // c_i <- sigma_i^kappa c_i
+      ++update.rank;
+    } else {
+      c[i] = 0.0; // truncated direction: no step along v_i
+    }
+  }
+  update.step = -options.learning_rate * (svd.matrixV() * c); // dx = -eta V c
+  return update;
+}
+
+/// Why hig_minimize stopped.
+enum class HigTermination {
+  max_iterations, ///< the iteration limit was reached
+  loss_tolerance, ///< L <= loss_tolerance
+  step_tolerance, ///< |dx| <= step_tolerance
+};
+
+/// The enumerator's name, for messages and logs.
+inline const char* to_string(HigTermination termination) {
+  switch (termination) {
+  case HigTermination::max_iterations:
+    return "max_iterations";
+  case HigTermination::loss_tolerance:
+    return "loss_tolerance";
+  case HigTermination::step_tolerance:
+    return "step_tolerance";
+  }
+  return "unknown";
+}
+
+/// What hig_minimize did.
+struct HigSummary {
+  int iterations = 0;        ///< updates performed
+  double initial_loss = 0.0; ///< 1/2 |r(x0)|^2
+  double final_loss = 0.0;   ///< 1/2 |r(x)|^2 at the returned x
+  Eigen::Index rank = 0;     ///< singular values kept in the last update
+  HigTermination termination = HigTermination::max_iterations;
+  std::string message; ///< one line saying why it stopped
+};
+
+/// Minimises L = 1/2 |r|^2 from x (updated in place) with half-inverse-gradient updates
+/// x <- x + hig_update(J(x), r(x)).step, one evaluation of f per iteration, stopping on the
+/// loss tolerance (checked before every update, so a start that meets it takes none), the
+/// step tolerance, or max_iterations. Throws OptimizationError ("hig: residual is NaN at
+/// index 3 in iteration 7") as soon as r or J is not finite (x then holds the offending
+/// iterate), std::invalid_argument on bad options or when f returns the wrong sizes.
+inline HigSummary hig_minimize(const ResidualJacobian& f, Eigen::VectorXd& x,
+                               const HigOptions& options = {}) {
+  detail::check_hig_options(options);
+  detail::require_finite(x, "hig", "initial parameter vector");
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jac;
+  // Evaluates r and J at x, checks their sizes and values, and returns L = 1/2 |r|^2.
+  auto evaluate = [&](int iteration) {
+    r = f(x, jac);
+    if (jac.rows() != r.size() || jac.cols() != x.size())
+      throw std::invalid_argument(detail::message("hig: Jacobian is ", jac.rows(), "x", jac.cols(),
+                                                  ", expected ", r.size(), "x", x.size()));
+    detail::require_finite_hig(r, jac, detail::message(" in iteration ", iteration));
+    return 0.5 * r.squaredNorm();
+  };
+  HigSummary summary;
+  summary.initial_loss = summary.final_loss = evaluate(0);
+  for (;;) {
+    if (summary.final_loss <= options.loss_tolerance) {
+      summary.termination = HigTermination::loss_tolerance;
+      break;
+    }
+    if (summary.iterations >= options.max_iterations) {
+      summary.termination = HigTermination::max_iterations;
+      break;
+    }
+    const HigUpdate update = hig_update(jac, r, options);
+    x += update.step;
+    summary.rank = update.rank;
+    ++summary.iterations;
+    summary.final_loss = evaluate(summary.iterations);
+    if (update.step.norm() <= options.step_tolerance) {
+      summary.termination = HigTermination::step_tolerance;
+      break;
+    }
+  }
+  switch (summary.termination) {
+  case HigTermination::max_iterations:
+    summary.message = detail::message("hig: stopped after ", summary.iterations,
+                                      " iterations (the limit), loss ", summary.final_loss);
+    break;
+  case HigTermination::loss_tolerance:
+    summary.message =
+        detail::message("hig: converged after ", summary.iterations, " iterations, loss ",
+                        summary.final_loss, " <= tolerance ", options.loss_tolerance);
+    break;
+  case HigTermination::step_tolerance:
+    summary.message = detail::message("hig: stopped after ", summary.iterations,
+                                      " iterations, update norm <= tolerance ",
+                                      options.step_tolerance, ", loss ", summary.final_loss);
+    break;
+  }
   return summary;
 }
 

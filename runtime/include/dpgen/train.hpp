@@ -53,6 +53,11 @@ struct TrainOptions {
   std::string csv_path;
   /// Called after every row (also the last one and a non-finite one) with its progress.
   std::function<void(const TrainProgress&)> callback;
+  /// The norm of a gradient, for the progress rows and gradient_tolerance. Empty: the Euclidean
+  /// norm of the vector. A distributed run, where each rank holds a block of the parameters,
+  /// passes the norm reduced over the ranks (dpgen::mpi::Decomposition::norm), so every rank
+  /// reports, and stops on, the same global value.
+  std::function<double(const Eigen::VectorXd&)> norm;
 };
 
 /// What train() did.
@@ -156,7 +161,7 @@ inline TrainSummary train(const LossGradient& f, Optimizer& optimizer, Eigen::Ve
       throw std::invalid_argument(detail::message("training: gradient has size ", grad.size(),
                                                   ", expected ", x.size(), " at iteration ",
                                                   progress.iteration));
-    progress.grad_norm = grad.norm();
+    progress.grad_norm = options.norm ? options.norm(grad) : grad.norm();
     summary.total_seconds += progress.seconds;
     summary.evaluations += progress.evaluations;
     log.row(progress);
@@ -172,6 +177,11 @@ inline TrainSummary train(const LossGradient& f, Optimizer& optimizer, Eigen::Ve
       throw TrainingError(detail::message("training: gradient is ",
                                           std::isnan(grad[bad]) ? "NaN" : "Inf", " at iteration ",
                                           progress.iteration, " (index ", bad, ")"),
+                          progress.iteration);
+    if (!std::isfinite(progress.grad_norm)) // a reduced norm: NaN on every rank
+      throw TrainingError(detail::message("training: gradient norm is ",
+                                          std::isnan(progress.grad_norm) ? "NaN" : "Inf",
+                                          " at iteration ", progress.iteration),
                           progress.iteration);
     summary.final_loss = progress.loss;
     summary.final_grad_norm = progress.grad_norm;

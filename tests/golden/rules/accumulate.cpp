@@ -29,6 +29,8 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT: #include <cmath>
 // CPP-NEXT: #include <cstddef>
 // CPP-NEXT: #include <limits>
+// CPP-NEXT: #include <stdexcept>
+// CPP-NEXT: #include <string>
 // CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__) && !defined(__clang__)
 // CPP-NEXT: // Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see
@@ -47,7 +49,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT: void accumulate_adjoint(const double* q, double* q_adj, const double* rhs_adj,
 // CPP-NEXT:                         const double* energy_adj, int n) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -130,7 +132,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -167,4 +169,110 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // accumulate_adjoint with the size of every array, checked against the elements the kernel touches.
+// CPP-NEXT: void accumulate_adjoint_checked(const double* q, size_t q_size, double* q_adj, size_t q_adj_size,
+// CPP-NEXT:                                 const double* rhs_adj, size_t rhs_adj_size,
+// CPP-NEXT:                                 const double* energy_adj, size_t energy_adj_size, int n) {
+// CPP-NEXT:   const std::ptrdiff_t q_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(0 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 0;
+// CPP-NEXT:                                                                 return i + 1;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(0 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 0;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(0 < n))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 0;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }()});
+// CPP-NEXT:   const std::ptrdiff_t q_range_hi =
+// CPP-NEXT:       std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(0 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i + 1;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(0 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(0 < n))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n)-1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }()});
+// CPP-NEXT:   if (q_range_hi >= 0 && (q_range_lo < 0 || std::size_t(q_range_hi) >= q_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("accumulate_adjoint_checked: 'q' has ") + std::to_string(q_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(q_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(q_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   if (q_adj != nullptr && q_range_hi >= 0 &&
+// CPP-NEXT:       (q_range_lo < 0 || std::size_t(q_range_hi) >= q_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("accumulate_adjoint_checked: 'q_adj' has ") + std::to_string(q_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(q_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(q_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t rhs_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                   if (!(0 < n - 1))
+// CPP-NEXT:                                                                     return 0;
+// CPP-NEXT:                                                                   const std::ptrdiff_t i = 0;
+// CPP-NEXT:                                                                   return i;
+// CPP-NEXT:                                                                 }(),
+// CPP-NEXT:                                                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                   if (!(0 < n - 1))
+// CPP-NEXT:                                                                     return 0;
+// CPP-NEXT:                                                                   const std::ptrdiff_t i = 0;
+// CPP-NEXT:                                                                   return i + 1;
+// CPP-NEXT:                                                                 }()});
+// CPP-NEXT:   const std::ptrdiff_t rhs_range_hi =
+// CPP-NEXT:       std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(0 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(0 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i + 1;
+// CPP-NEXT:                                 }()});
+// CPP-NEXT:   if (rhs_range_hi >= 0 && (rhs_range_lo < 0 || std::size_t(rhs_range_hi) >= rhs_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("accumulate_adjoint_checked: 'rhs_adj' has ") + std::to_string(rhs_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(rhs_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(rhs_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t energy_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(0 < n))
+// CPP-NEXT:       return 0;
+// CPP-NEXT:     return 0;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   const std::ptrdiff_t energy_range_hi = std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(0 < n))
+// CPP-NEXT:       return -1;
+// CPP-NEXT:     return 0;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   if (energy_range_hi >= 0 &&
+// CPP-NEXT:       (energy_range_lo < 0 || std::size_t(energy_range_hi) >= energy_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("accumulate_adjoint_checked: 'energy_adj' has ") +
+// CPP-NEXT:         std::to_string(energy_adj_size) + " elements, but the kernel touches elements " +
+// CPP-NEXT:         std::to_string(energy_range_lo) + " to " + std::to_string(energy_range_hi) + " (" +
+// CPP-NEXT:         "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   accumulate_adjoint(q, q_adj, rhs_adj, energy_adj, n);
 // CPP-NEXT: }

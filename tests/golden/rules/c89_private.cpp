@@ -34,6 +34,8 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT: #include <cmath>
 // CPP-NEXT: #include <cstddef>
 // CPP-NEXT: #include <limits>
+// CPP-NEXT: #include <stdexcept>
+// CPP-NEXT: #include <string>
 // CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__) && !defined(__clang__)
 // CPP-NEXT: // Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see
@@ -54,7 +56,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   const double w_1 = 0.5;
 // CPP-NEXT:   const double w_2 = 0.25;
 // CPP-NEXT:   // u_adj[0]: one cell, summed over the iterations () that read it
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     double acc = 0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[0] reads u[0]: acc += ∂v[0]/∂u[0] · v_adj[0]
@@ -68,7 +70,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       u_adj[0] += acc;
 // CPP-NEXT:   }
 // CPP-NEXT:   // u_adj[n - 1]: one cell, summed over the iterations () that read it
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     double acc = 0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[n - 1] reads u[n - 1]: acc += ∂v[n - 1]/∂u[n - 1] · v_adj[n - 1]
@@ -82,7 +84,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:       u_adj[n - 1] += acc;
 // CPP-NEXT:   }
 // CPP-NEXT:   // u_adj[c_i]: each cell gathers the reads of u made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -153,4 +155,11 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // c89_private_adjoint with the size of every array, checked against the elements the kernel touches
+// CPP-NEXT: // (not checkable: u, v, read at data-dependent indices or under data-dependent conditions).
+// CPP-NEXT: void c89_private_adjoint_checked(const double* u, size_t u_size, double* u_adj, size_t u_adj_size,
+// CPP-NEXT:                                  const double* v_adj, size_t v_adj_size, int n) {
+// CPP-NEXT:   c89_private_adjoint(u, u_adj, v_adj, n);
 // CPP-NEXT: }

@@ -55,7 +55,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:         "n = " + std::to_string(n) + ")");
 // CPP-NEXT:   }
 // CPP-NEXT:   // a_adj[c_i + 64 * c_j]: each cell gathers the reads of a made by the iterations (j, i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (a_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;

@@ -26,6 +26,8 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: #include <cmath>
 // CPP-NEXT: #include <cstddef>
 // CPP-NEXT: #include <limits>
+// CPP-NEXT: #include <stdexcept>
+// CPP-NEXT: #include <string>
 // CPP-NEXT: #include <vector>
 // CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__) && !defined(__clang__)
@@ -46,7 +48,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: void work_array_nest1_adjoint(const double* q, double* q_adj, const double* flux_adj,
 // CPP-NEXT:                               const double* q_new_adj, int n, double c) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -103,7 +105,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: void work_array_nest2_adjoint(const double* q, double* q_adj, const double* flux, double* flux_adj,
 // CPP-NEXT:                               const double* q_new_adj, int n, double c) {
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -145,7 +147,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
 // CPP-NEXT:   // flux_adj[c_i]: each cell gathers the reads of flux made by the iterations (i)
-// CPP-NEXT:   {
+// CPP-NEXT:   if (flux_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
@@ -212,7 +214,9 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: // recomputed first.
 // CPP-NEXT: void work_array_adjoint(const double* q, double* q_adj, const double* flux_adj,
 // CPP-NEXT:                         const double* q_new_adj, int n, double c) {
-// CPP-NEXT:   const std::ptrdiff_t flux_n = std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(n));
+// CPP-NEXT:   const std::ptrdiff_t flux_n =
+// CPP-NEXT:       std::max<std::ptrdiff_t>({0, static_cast<std::ptrdiff_t>(n), static_cast<std::ptrdiff_t>(n),
+// CPP-NEXT:                                 static_cast<std::ptrdiff_t>(n - 1)});
 // CPP-NEXT:   std::vector<double> flux_v(static_cast<std::size_t>(flux_n),
 // CPP-NEXT:                              std::numeric_limits<double>::quiet_NaN());
 // CPP-NEXT:   std::vector<double> flux_b(flux_adj, flux_adj + flux_n); // its seed, then more
@@ -222,4 +226,124 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:   work_array(q, flux_v.data(), q_new_v.data(), n, c);
 // CPP-NEXT:   work_array_nest2_adjoint(q, q_adj, flux_v.data(), flux_b.data(), q_new_adj, n, c);
 // CPP-NEXT:   work_array_nest1_adjoint(q, q_adj, flux_b.data(), q_new_adj, n, c);
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // work_array_adjoint with the size of every array, checked against the elements the kernel touches.
+// CPP-NEXT: void work_array_adjoint_checked(const double* q, size_t q_size, double* q_adj, size_t q_adj_size,
+// CPP-NEXT:                                 const double* flux_adj, size_t flux_adj_size,
+// CPP-NEXT:                                 const double* q_new_adj, size_t q_new_adj_size, int n, double c) {
+// CPP-NEXT:   const std::ptrdiff_t q_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i - 1;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }()});
+// CPP-NEXT:   const std::ptrdiff_t q_range_hi = std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n))
+// CPP-NEXT:                                                                   return -1;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = (n)-1;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n))
+// CPP-NEXT:                                                                   return -1;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = (n)-1;
+// CPP-NEXT:                                                                 return i - 1;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n - 1))
+// CPP-NEXT:                                                                   return -1;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i =
+// CPP-NEXT:                                                                     (n - 1) - 1;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }()});
+// CPP-NEXT:   if (q_range_hi >= 0 && (q_range_lo < 0 || std::size_t(q_range_hi) >= q_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("work_array_adjoint_checked: 'q' has ") + std::to_string(q_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(q_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(q_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   if (q_adj != nullptr && q_range_hi >= 0 &&
+// CPP-NEXT:       (q_range_lo < 0 || std::size_t(q_range_hi) >= q_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("work_array_adjoint_checked: 'q_adj' has ") + std::to_string(q_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(q_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(q_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t flux_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                    if (!(1 < n))
+// CPP-NEXT:                                                                      return 0;
+// CPP-NEXT:                                                                    const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                    return i;
+// CPP-NEXT:                                                                  }(),
+// CPP-NEXT:                                                                  [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                    if (!(1 < n - 1))
+// CPP-NEXT:                                                                      return 0;
+// CPP-NEXT:                                                                    const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                    return i + 1;
+// CPP-NEXT:                                                                  }(),
+// CPP-NEXT:                                                                  [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                    if (!(1 < n - 1))
+// CPP-NEXT:                                                                      return 0;
+// CPP-NEXT:                                                                    const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                    return i;
+// CPP-NEXT:                                                                  }()});
+// CPP-NEXT:   const std::ptrdiff_t flux_range_hi =
+// CPP-NEXT:       std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n)-1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i + 1;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }()});
+// CPP-NEXT:   if (flux_range_hi >= 0 && (flux_range_lo < 0 || std::size_t(flux_range_hi) >= flux_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("work_array_adjoint_checked: 'flux_adj' has ") + std::to_string(flux_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(flux_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(flux_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t q_new_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(1 < n - 1))
+// CPP-NEXT:       return 0;
+// CPP-NEXT:     const std::ptrdiff_t i = 1;
+// CPP-NEXT:     return i;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   const std::ptrdiff_t q_new_range_hi = std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(1 < n - 1))
+// CPP-NEXT:       return -1;
+// CPP-NEXT:     const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:     return i;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   if (q_new_range_hi >= 0 &&
+// CPP-NEXT:       (q_new_range_lo < 0 || std::size_t(q_new_range_hi) >= q_new_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("work_array_adjoint_checked: 'q_new_adj' has ") +
+// CPP-NEXT:         std::to_string(q_new_adj_size) + " elements, but the kernel touches elements " +
+// CPP-NEXT:         std::to_string(q_new_range_lo) + " to " + std::to_string(q_new_range_hi) + " (" +
+// CPP-NEXT:         "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   work_array_adjoint(q, q_adj, flux_adj, q_new_adj, n, c);
 // CPP-NEXT: }

@@ -13,3 +13,10 @@ DPGEN_KERNEL void neg_div_k_grad_1d(DPGEN_IN const double* p, DPGEN_IN const dou
 // faces. Symmetric positive semi-definite, the constants as null space.
 DPGEN_KERNEL void neg_div_k_grad_periodic2d(DPGEN_IN const double* p, DPGEN_IN const double* k,
                                             DPGEN_OUT double* out, int nx, int ny, double h);
+
+// -div(k grad p) on an nx-by-ny grid with a wall on every side; `west` ... `north`
+// weigh the wall faces: 0 = Neumann (no flux), 2 = Dirichlet (p = 0 on the face).
+// Symmetric; positive definite with a Dirichlet side, else the constants as null space.
+DPGEN_KERNEL void neg_div_k_grad_walls2d(DPGEN_IN const double* p, DPGEN_IN const double* k,
+                                         DPGEN_OUT double* out, int nx, int ny, double h,
+                                         double west, double east, double south, double north);

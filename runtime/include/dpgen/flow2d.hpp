@@ -1,0 +1,221 @@
+// A differentiable 2D incompressible flow solver (a smoke plume in a closed box) built from
+// dpgen kernels (kernels/flow2d.cpp): semi-Lagrangian transport of a marker and of the velocity,
+// a constant marker inflow, Boussinesq buoyancy, and a pressure projection solved by
+// multigrid-preconditioned CG whose gradient comes from the implicit-function rule. Link
+// dpgen::kernels to use this header.
+#pragma once
+
+#include "dpgen/implicit_solve.hpp"
+#include "dpgen/multigrid.hpp"
+#include "flow2d_adjoint.hpp"
+#include "kernels.hpp"
+
+#include <Eigen/Core>
+
+#include <stdexcept>
+#include <string>
+
+namespace dpgen {
+
+/// How the marker is transported.
+enum class MarkerAdvection {
+  semi_lagrangian, ///< s(x - dt u), bilinear: first order, diffusive
+  maccormack,      ///< semi-Lagrangian plus the MacCormack correction with its clamp (PhiFlow's)
+};
+
+/// Settings of a Flow2d step.
+struct FlowOptions {
+  MarkerAdvection marker_advection = MarkerAdvection::semi_lagrangian;
+  double dt = 1.0;       ///< time step
+  double buoyancy = 1.0; ///< v += dt * buoyancy * s (marker averaged onto the y faces)
+  /// The pressure solves (forward and backward): relative tolerance and iteration limit.
+  double pressure_tolerance = 1e-10;
+  int max_pressure_iterations = 100;
+};
+
+/// A closed nx-by-ny MAC grid of cells of size h and one time step on it. The state is one
+/// vector [s, u, v]: the marker s at the nx*ny cell centres, u on the (nx+1)*ny x faces, v on the
+/// nx*(ny+1) y faces (wall faces zero). One step:
+///   s1 = s(x - dt u) + inflow                      semi-Lagrangian (or MacCormack), marker
+///   u1 = u(x - dt u),  v1 = v(x - dt u) + dt b s1   semi-Lagrangian, velocity; buoyancy
+///   A p = -div(u1, v1)                              A = -laplace with closed walls (MG-PCG)
+///   (u2, v2) = (u1, v1) - grad p                    divergence-free
+/// and its adjoint, which recomputes the step's intermediates from the state (nothing is kept
+/// between calls, so a checkpointing schedule may call it in any order).
+class Flow2d {
+public:
+  /// `inflow`: the marker added per step at each cell (nx*ny values).
+  Flow2d(int nx, int ny, double h, Eigen::VectorXd inflow, FlowOptions options = {})
+      : nx_(nx), ny_(ny), h_(h), inflow_(std::move(inflow)), options_(options),
+        multigrid_(check_grid(nx, ny, h), ny, h, Boundaries::all(Boundary::neumann),
+                   flow_pressure_operator, Eigen::VectorXd::Ones(Eigen::Index(nx) * ny)) {
+    detail::require_size(inflow_.size(), cells(), "flow2d", "inflow");
+    detail::require_finite(inflow_, "flow2d", "inflow");
+    if (!(options_.dt > 0.0) || !std::isfinite(options_.buoyancy))
+      throw std::invalid_argument(
+          detail::message("flow2d: dt = ", options_.dt, " must be > 0 and buoyancy finite"));
+    cg_.relative_tolerance = options_.pressure_tolerance;
+    cg_.absolute_tolerance = 1e-300;
+    cg_.max_iterations = options_.max_pressure_iterations;
+    cg_.remove_null_space_mean = true; // closed walls: p is defined up to a constant
+    cg_.preconditioner = multigrid_.preconditioner();
+    cg_.name = "flow2d pressure";
+  }
+
+  // The CG options hold a preconditioner that points into this object: no copies or moves.
+  Flow2d(const Flow2d&) = delete;
+  Flow2d& operator=(const Flow2d&) = delete;
+
+  Eigen::Index cells() const { return Eigen::Index(nx_) * ny_; }
+  Eigen::Index u_faces() const { return Eigen::Index(nx_ + 1) * ny_; }
+  Eigen::Index v_faces() const { return Eigen::Index(nx_) * (ny_ + 1); }
+  /// Size of the state vector [s, u, v].
+  Eigen::Index state_size() const { return cells() + u_faces() + v_faces(); }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  const Eigen::VectorXd& inflow() const { return inflow_; }
+  /// The state's parts, as writable or read-only segments.
+  auto marker(Eigen::VectorXd& state) const { return state.segment(0, cells()); }
+  auto u(Eigen::VectorXd& state) const { return state.segment(cells(), u_faces()); }
+  auto v(Eigen::VectorXd& state) const { return state.segment(cells() + u_faces(), v_faces()); }
+  auto marker(const Eigen::VectorXd& state) const { return state.segment(0, cells()); }
+  auto u(const Eigen::VectorXd& state) const { return state.segment(cells(), u_faces()); }
+  auto v(const Eigen::VectorXd& state) const {
+    return state.segment(cells() + u_faces(), v_faces());
+  }
+
+  /// next = step(state). Throws std::invalid_argument for a state of the wrong size or with a
+  /// NaN or Inf, SolveError when the pressure solve fails.
+  void step(const Eigen::VectorXd& state, Eigen::VectorXd& next) {
+    detail::require_size(state.size(), state_size(), "flow2d step", "state");
+    // A NaN position would become an out-of-range cell index in the semi-Lagrangian kernels.
+    detail::require_finite(state, "flow2d step", "state");
+    forward(state);
+    next.resize(state_size());
+    marker(next) = s1_;
+    u(next).setZero();
+    v(next).setZero();
+    flow_subtract_gradient_u(u1_.data(), p_.data(), next.data() + cells(), nx_, ny_, h_);
+    flow_subtract_gradient_v(v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_,
+                             h_);
+  }
+
+  /// Adds (d step(state)/d state)^T next_adj into state_adj and (d step/d inflow)^T next_adj
+  /// into inflow_adj (sized nx*ny).
+  void step_adjoint(const Eigen::VectorXd& state, const Eigen::VectorXd& next_adj,
+                    Eigen::VectorXd& state_adj, Eigen::VectorXd& inflow_adj) {
+    detail::require_size(state.size(), state_size(), "flow2d step_adjoint", "state");
+    detail::require_size(next_adj.size(), state_size(), "flow2d step_adjoint", "next_adj");
+    detail::require_size(state_adj.size(), state_size(), "flow2d step_adjoint", "state_adj");
+    detail::require_size(inflow_adj.size(), cells(), "flow2d step_adjoint", "inflow_adj");
+    detail::require_finite(state, "flow2d step_adjoint", "state");
+    forward(state); // the step's intermediates: s1, u1, v1 (before and after buoyancy), p
+    using Eigen::VectorXd;
+    VectorXd s1_adj = marker(next_adj);
+    VectorXd u1_adj = VectorXd::Zero(u_faces()), v1_adj = VectorXd::Zero(v_faces());
+    VectorXd p_adj = VectorXd::Zero(cells());
+    // (u2, v2) = (u1, v1) - grad p
+    flow_subtract_gradient_u_adjoint(u1_.data(), u1_adj.data(), p_.data(), p_adj.data(),
+                                     next_adj.data() + cells(), nx_, ny_, h_);
+    flow_subtract_gradient_v_adjoint(v1_.data(), v1_adj.data(), p_.data(), p_adj.data(),
+                                     next_adj.data() + cells() + u_faces(), nx_, ny_, h_);
+    // A p = -div: lambda = A^+ P p_adj (A^T = A, same V-cycle), so div_adj = -lambda. A has no
+    // parameters: nothing to accumulate for theta.
+    const LinearSolveResult backward = solve_backward(multigrid_.fine_operator(), p_adj, cg_);
+    backward_summary_ = backward.summary;
+    const VectorXd div_adj = -backward.solution;
+    flow_divergence_adjoint(u1_.data(), u1_adj.data(), v1_.data(), v1_adj.data(), div_adj.data(),
+                            nx_, ny_, h_);
+    // v1 = v_advected + dt b s1
+    VectorXd va_adj = VectorXd::Zero(v_faces());
+    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(), v1_adj.data(), nx_,
+                          ny_, options_.dt * options_.buoyancy);
+    // u1 = u(x - dt u), v_advected = v(x - dt u), s1 = s(x - dt u) + inflow
+    const double dt_h = options_.dt / h_;
+    double* u_adj = state_adj.data() + cells();
+    double* v_adj = state_adj.data() + cells() + u_faces();
+    const double* su = state.data() + cells();
+    const double* sv = state.data() + cells() + u_faces();
+    flow_advect_u_adjoint(su, u_adj, sv, v_adj, u1_adj.data(), nx_, ny_, dt_h);
+    flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h);
+    if (options_.marker_advection == MarkerAdvection::maccormack) {
+      VectorXd sl_adj = VectorXd::Zero(cells()), rev_adj = VectorXd::Zero(cells());
+      VectorXd none = VectorXd::Zero(cells()), none_adj = VectorXd::Zero(cells());
+      flow_maccormack_marker_adjoint(state.data(), state_adj.data(), s_sl_.data(), sl_adj.data(),
+                                     s_rev_.data(), rev_adj.data(), su, u_adj, sv, v_adj,
+                                     inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_,
+                                     dt_h);
+      flow_advect_marker_adjoint(s_sl_.data(), sl_adj.data(), su, u_adj, sv, v_adj, none.data(),
+                                 none_adj.data(), rev_adj.data(), nx_, ny_, -dt_h);
+      flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj, none.data(),
+                                 none_adj.data(), sl_adj.data(), nx_, ny_, dt_h);
+    } else {
+      flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj,
+                                 inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_, dt_h);
+    }
+  }
+
+  /// The last forward and backward pressure solves (iterations, residuals).
+  const CgSummary& forward_pressure_summary() const { return forward_summary_; }
+  const CgSummary& backward_pressure_summary() const { return backward_summary_; }
+  /// The divergence of the velocity of a state (for checks: zero after a step).
+  Eigen::VectorXd divergence(const Eigen::VectorXd& state) const {
+    Eigen::VectorXd div(cells());
+    flow_divergence(state.data() + cells(), state.data() + cells() + u_faces(), div.data(), nx_,
+                    ny_, h_);
+    return div;
+  }
+
+private:
+  static int check_grid(int nx, int ny, double h) {
+    if (nx < 2 || ny < 2 || !(h > 0.0))
+      throw std::invalid_argument(detail::message("flow2d: need at least 2x2 cells and h > 0 (got ",
+                                                  nx, "x", ny, ", h = ", h, ")"));
+    return nx;
+  }
+
+  // s1 (and s_sl, s_rev for MacCormack), va (advected v), u1, v1 (= va + buoyancy) and p of
+  // one step from `state`.
+  void forward(const Eigen::VectorXd& state) {
+    const double dt_h = options_.dt / h_;
+    const double* s = state.data();
+    const double* su = state.data() + cells();
+    const double* sv = state.data() + cells() + u_faces();
+    s1_.resize(cells());
+    u1_.resize(u_faces());
+    va_.resize(v_faces());
+    v1_.resize(v_faces());
+    if (options_.marker_advection == MarkerAdvection::maccormack) {
+      // s_sl = s(x - dt u); s_rev = s_sl(x + dt u); then the corrected and clamped value.
+      s_sl_.resize(cells());
+      s_rev_.resize(cells());
+      const Eigen::VectorXd none = Eigen::VectorXd::Zero(cells());
+      flow_advect_marker(s, su, sv, none.data(), s_sl_.data(), nx_, ny_, dt_h);
+      flow_advect_marker(s_sl_.data(), su, sv, none.data(), s_rev_.data(), nx_, ny_, -dt_h);
+      flow_maccormack_marker(s, s_sl_.data(), s_rev_.data(), su, sv, inflow_.data(), s1_.data(),
+                             nx_, ny_, dt_h);
+    } else {
+      flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h);
+    }
+    flow_advect_u(su, sv, u1_.data(), nx_, ny_, dt_h);
+    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h);
+    flow_buoyancy(va_.data(), s1_.data(), v1_.data(), nx_, ny_, options_.dt * options_.buoyancy);
+    Eigen::VectorXd div(cells());
+    flow_divergence(u1_.data(), v1_.data(), div.data(), nx_, ny_, h_);
+    // No warm start: a recomputed step must give the same bits (checkpointing relies on it).
+    const LinearSolveResult r = solve_forward(multigrid_.fine_operator(), -div, cg_);
+    p_ = r.solution;
+    forward_summary_ = r.summary;
+  }
+
+  int nx_, ny_;
+  double h_;
+  Eigen::VectorXd inflow_;
+  FlowOptions options_;
+  Multigrid multigrid_;
+  CgOptions cg_;
+  Eigen::VectorXd s1_, u1_, va_, v1_, p_, s_sl_, s_rev_;
+  CgSummary forward_summary_, backward_summary_;
+};
+
+} // namespace dpgen

@@ -1,0 +1,443 @@
+// Geometric multigrid on 2D cell-centred grids: a V-cycle (damped Jacobi smoothing, bilinear
+// prolongation, restriction = its transpose / 4, direct coarse solve) used as the preconditioner
+// of conjugate_gradient, forward and backward. Matrix-free: the user's operator kernel is applied
+// on every level, with its coefficient averaged 2x2 from the level below. The transfers are dpgen
+// kernels (kernels/multigrid_transfer.cpp): link dpgen::kernels to use this header.
+#pragma once
+
+#include "dpgen/cg.hpp"
+#include "dpgen/error.hpp"
+#include "kernels.hpp"
+#include "multigrid_transfer_adjoint.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dpgen {
+
+/// The condition on one side of the grid, for the prolongation's ghost cells (the operator
+/// kernel applies the same condition on its own). Periodic must be set on both sides of an axis.
+enum class Boundary {
+  periodic,  ///< wraps around to the other side
+  dirichlet, ///< zero value on the boundary face (ghost = -cell)
+  neumann,   ///< zero normal derivative (ghost = cell); with no Dirichlet side, A 1 = 0
+};
+
+/// The enumerator's name, for messages.
+inline const char* to_string(Boundary boundary) {
+  switch (boundary) {
+  case Boundary::periodic:
+    return "periodic";
+  case Boundary::dirichlet:
+    return "dirichlet";
+  case Boundary::neumann:
+    return "neumann";
+  }
+  return "unknown";
+}
+
+/// The boundary condition of each side of the grid (west: i = 0, south: j = 0).
+struct Boundaries {
+  Boundary west = Boundary::periodic;
+  Boundary east = Boundary::periodic;
+  Boundary south = Boundary::periodic;
+  Boundary north = Boundary::periodic;
+  /// The same condition on every side.
+  static Boundaries all(Boundary b) { return {b, b, b, b}; }
+};
+
+/// The operator on one level: y = A_l x on an nx-by-ny row-major grid (cell (i, j) at j*nx + i)
+/// of cells of size h, with the level's cell-centred coefficient k. Must assign every cell of y,
+/// as a dpgen kernel such as `void neg_div_k_grad(const double* p, const double* k, double* out,
+/// int nx, int ny, double h)` does (a function pointer to it converts). Must be symmetric, with a
+/// positive diagonal, and a stencil of radius 1 (5 or 9 points): the diagonal is found by probing
+/// with colours that rely on it.
+using LevelOperator =
+    std::function<void(const double* x, const double* k, double* y, int nx, int ny, double h)>;
+
+namespace detail {
+
+// The cells of each probing colour along an axis of n cells: i mod 3, so two neighbours never
+// share a colour; on a periodic axis with n mod 3 = 1 the last cell (a neighbour of cell 0, also
+// colour 0) takes colour 1 instead, which neither of its neighbours n-2 (colour 2) and 0 has.
+// (With n mod 3 = 2 the wrapped pair n-1, 0 has colours 1, 0 already.)
+inline std::vector<std::vector<int>> probe_classes(int n, bool periodic) {
+  std::vector<std::vector<int>> classes(std::min(n, 3));
+  for (int i = 0; i < n; ++i) {
+    const bool moved = periodic && n > 3 && n % 3 == 1 && i == n - 1;
+    classes[moved ? 1 : i % 3].push_back(i);
+  }
+  return classes;
+}
+
+} // namespace detail
+
+/// diag(A) of a level operator on an nx-by-ny grid, matrix-free by probing: for a stencil of
+/// radius 1 (5 or 9 points), A applied to the indicator of one colour class (cells whose colours
+/// along x and along y agree, no two of them neighbours) returns A_cc at every cell c of the
+/// class. At most 9 operator applications. Also the diagonal a Jacobi-preconditioned CG needs.
+inline Eigen::VectorXd operator_diagonal(const LevelOperator& op, const Eigen::VectorXd& k, int nx,
+                                         int ny, double h, const Boundaries& boundaries) {
+  const Eigen::Index n = static_cast<Eigen::Index>(nx) * ny;
+  detail::require_size(k.size(), n, "operator_diagonal", "coefficient k");
+  const auto columns = detail::probe_classes(nx, boundaries.west == Boundary::periodic);
+  const auto rows = detail::probe_classes(ny, boundaries.south == Boundary::periodic);
+  Eigen::VectorXd probe = Eigen::VectorXd::Zero(n), column(n), diagonal(n);
+  for (const auto& row_class : rows)
+    for (const auto& column_class : columns) {
+      for (int j : row_class)
+        for (int i : column_class)
+          probe[static_cast<Eigen::Index>(j) * nx + i] = 1.0;
+      op(probe.data(), k.data(), column.data(), nx, ny, h);
+      for (int j : row_class)
+        for (int i : column_class) {
+          const Eigen::Index c = static_cast<Eigen::Index>(j) * nx + i;
+          diagonal[c] = column[c];
+          probe[c] = 0.0;
+        }
+    }
+  return diagonal;
+}
+
+/// Settings of the multigrid hierarchy and its V-cycle.
+struct MultigridOptions {
+  /// Number of levels including the finest. 0: halve both sides while they are even and the
+  /// grid has more than coarse_cells cells.
+  int levels = 0;
+  /// Automatic coarsening stops at or below this many cells.
+  int coarse_cells = 64;
+  /// The coarsest grid is solved directly (dense Cholesky); a coarsest grid with more cells than
+  /// this is an error (sizes such as 100 = 25 * 4 cannot be halved far enough).
+  int max_coarse_cells = 1024;
+  /// Damped Jacobi sweeps before and after the coarse-grid correction (the same number on both
+  /// sides, so the V-cycle is a symmetric operator).
+  int smoothing_sweeps = 2;
+  /// Jacobi damping w in x += w D^-1 (b - A x); 4/5 damps the high frequencies of a 5-point
+  /// Laplacian best. Must lie in (0, 1].
+  double jacobi_weight = 0.8;
+  /// Prefix of every error message.
+  std::string name = "multigrid";
+};
+
+/// A multigrid hierarchy for one operator and one coefficient field, and its V-cycle
+/// z = B r. B is symmetric and positive definite whenever A is (positive semi-definite with the
+/// constants as null space for periodic / all-Neumann grids, where CG projects them out with
+/// CgOptions::remove_null_space_mean), so it preconditions CG:
+///
+///   dpgen::Multigrid mg(nx, ny, h, dpgen::Boundaries::all(dpgen::Boundary::periodic),
+///                       neg_div_k_grad_periodic2d, k);
+///   dpgen::CgOptions cg;
+///   cg.preconditioner = mg.preconditioner();
+///   cg.remove_null_space_mean = mg.constant_null_space();
+///   dpgen::solve_forward(mg.fine_operator(), b, cg);   // and solve_backward with the same cg
+///
+/// The preconditioner and operator returned refer to this object, which must outlive them; a
+/// V-cycle uses the object's scratch vectors, so one Multigrid serves one solve at a time.
+class Multigrid {
+public:
+  /// Builds the hierarchy for an nx-by-ny grid of cells of size h and the coefficient k
+  /// (nx*ny cell values). Throws std::invalid_argument for bad input, sizes that cannot be
+  /// coarsened to a small enough grid, and operators that are not symmetric or have a
+  /// non-positive diagonal.
+  Multigrid(int nx, int ny, double h, Boundaries boundaries, LevelOperator op,
+            const Eigen::VectorXd& k, MultigridOptions options = {})
+      : boundaries_(boundaries), op_(std::move(op)), options_(std::move(options)) {
+    check_input(nx, ny, h);
+    build_levels(nx, ny, h);
+    set_coefficient(k);
+  }
+
+  /// Redoes the setup for a new coefficient on the same grid (coarse coefficients, diagonals,
+  /// coarse factorization).
+  void set_coefficient(const Eigen::VectorXd& k) {
+    Level& fine = levels_.front();
+    detail::require_size(k.size(), fine.cells(), options_.name, "coefficient k");
+    detail::require_finite(k, options_.name, "coefficient k");
+    fine.k = k;
+    for (std::size_t l = 1; l < levels_.size(); ++l)
+      mg_average_2x2(levels_[l - 1].k.data(), levels_[l].k.data(), levels_[l].nx, levels_[l].ny);
+    for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
+      set_smoother(static_cast<int>(l));
+    factor_coarsest();
+  }
+
+  /// z = B r: one V-cycle for A z = r from z = 0.
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    detail::require_size(r.size(), levels_.front().cells(), options_.name, "residual");
+    z.resize(r.size());
+    v_cycle(0, r, z, /*zero_guess=*/true);
+  }
+
+  /// x <- x + B (b - A x): one V-cycle from the guess x (multigrid as a stationary solver).
+  void cycle(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    detail::require_size(b.size(), levels_.front().cells(), options_.name, "right-hand side");
+    detail::require_size(x.size(), levels_.front().cells(), options_.name, "x");
+    v_cycle(0, b, x, /*zero_guess=*/false);
+  }
+
+  /// y = A x on the finest grid, with the fine coefficient.
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    detail::require_size(x.size(), levels_.front().cells(), options_.name, "x");
+    y.resize(x.size());
+    apply_level(levels_.front(), x, y);
+  }
+
+  /// The V-cycle as CgOptions::preconditioner (refers to this object).
+  VectorOperator preconditioner() {
+    return [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { precondition(r, z); };
+  }
+
+  /// The fine-grid operator as a VectorOperator for CG (refers to this object).
+  VectorOperator fine_operator() const {
+    return [this](const Eigen::VectorXd& x, Eigen::VectorXd& y) { apply(x, y); };
+  }
+
+  /// Number of levels, the finest included.
+  int levels() const { return static_cast<int>(levels_.size()); }
+  /// Cells along x and y on level l (0 = finest).
+  int level_nx(int l) const { return levels_.at(l).nx; }
+  int level_ny(int l) const { return levels_.at(l).ny; }
+  /// True when the operator annihilates the constants (periodic or all-Neumann, no reaction
+  /// term), as measured on the coarsest level: set CgOptions::remove_null_space_mean then.
+  bool constant_null_space() const { return null_space_; }
+
+private:
+  struct Level {
+    int nx = 0, ny = 0;
+    double h = 0.0;
+    Eigen::VectorXd k;        // coefficient, averaged 2x2 from the finer level
+    Eigen::VectorXd smoother; // w / diag(A): one Jacobi sweep is x += smoother .* (b - A x)
+    Eigen::VectorXd b, x;     // right-hand side and correction (coarse levels)
+    Eigen::VectorXd scratch;  // A x, residuals, prolonged corrections
+    Eigen::VectorXd transfer; // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
+    Eigen::Index cells() const { return static_cast<Eigen::Index>(nx) * ny; }
+  };
+
+  // Ghost weights of the prolongation kernels: ghost = self * (edge cell) + wrap * (other end).
+  struct Ghost {
+    double self, wrap;
+  };
+  static Ghost ghost(Boundary b) {
+    switch (b) {
+    case Boundary::periodic:
+      return {0.0, 1.0};
+    case Boundary::neumann:
+      return {1.0, 0.0};
+    case Boundary::dirichlet:
+      return {-1.0, 0.0};
+    }
+    return {0.0, 0.0};
+  }
+
+  void check_input(int nx, int ny, double h) const {
+    const std::string& where = options_.name;
+    if (nx < 1 || ny < 1)
+      throw std::invalid_argument(detail::message(where, ": grid of ", nx, "x", ny, " cells"));
+    if (!(h > 0.0) || !std::isfinite(h))
+      throw std::invalid_argument(detail::message(where, ": cell size h = ", h, " is not > 0"));
+    if (!op_)
+      throw std::invalid_argument(detail::message(where, ": no level operator given"));
+    if ((boundaries_.west == Boundary::periodic) != (boundaries_.east == Boundary::periodic) ||
+        (boundaries_.south == Boundary::periodic) != (boundaries_.north == Boundary::periodic))
+      throw std::invalid_argument(detail::message(
+          where, ": periodic must be set on both sides of an axis (west ",
+          to_string(boundaries_.west), ", east ", to_string(boundaries_.east), ", south ",
+          to_string(boundaries_.south), ", north ", to_string(boundaries_.north), ")"));
+    if (options_.levels < 0 || options_.coarse_cells < 1 || options_.max_coarse_cells < 1)
+      throw std::invalid_argument(detail::message(
+          where, ": levels must be >= 0 and coarse_cells, max_coarse_cells >= 1 (got ",
+          options_.levels, ", ", options_.coarse_cells, ", ", options_.max_coarse_cells, ")"));
+    if (options_.smoothing_sweeps < 1)
+      throw std::invalid_argument(detail::message(where, ": smoothing_sweeps must be >= 1 (got ",
+                                                  options_.smoothing_sweeps, ")"));
+    if (!(options_.jacobi_weight > 0.0 && options_.jacobi_weight <= 1.0))
+      throw std::invalid_argument(detail::message(where, ": jacobi_weight must lie in (0, 1] (got ",
+                                                  options_.jacobi_weight, ")"));
+  }
+
+  // Halves both sides level by level: while the grid is larger than coarse_cells (or, with
+  // options.levels set, until that many levels exist), as long as both sides are even.
+  void build_levels(int nx, int ny, double h) {
+    const std::string& where = options_.name;
+    const int wanted = options_.levels;
+    levels_.clear();
+    Level fine;
+    fine.nx = nx, fine.ny = ny, fine.h = h;
+    levels_.push_back(fine);
+    for (;;) {
+      const Level& last = levels_.back();
+      const bool more = wanted > 0 ? levels() < wanted : last.cells() > options_.coarse_cells;
+      if (!more)
+        break;
+      if (last.nx % 2 != 0 || last.ny % 2 != 0) {
+        if (wanted > 0)
+          throw std::invalid_argument(detail::message(where, ": cannot build ", wanted,
+                                                      " levels from ", nx, "x", ny, ": level ",
+                                                      levels() - 1, " has ", last.nx, "x", last.ny,
+                                                      " cells and an odd side cannot be halved"));
+        break;
+      }
+      Level coarse;
+      coarse.nx = last.nx / 2, coarse.ny = last.ny / 2, coarse.h = 2.0 * last.h;
+      levels_.push_back(coarse);
+    }
+    const Level& coarsest = levels_.back();
+    if (coarsest.cells() > options_.max_coarse_cells)
+      throw std::invalid_argument(detail::message(
+          where, ": the ", nx, "x", ny, " grid coarsens to ", coarsest.nx, "x", coarsest.ny,
+          " cells (", levels(),
+          " levels), more than max_coarse_cells = ", options_.max_coarse_cells,
+          " for the direct coarse solve; use sides m * 2^L with small m (e.g. powers of two)"));
+    for (std::size_t l = 0; l < levels_.size(); ++l) {
+      Level& level = levels_[l];
+      level.k.resize(level.cells());
+      level.scratch.resize(level.cells());
+      if (l > 0) {
+        level.b.resize(level.cells());
+        level.x.resize(level.cells());
+        level.transfer.resize(2 * level.cells());
+      }
+    }
+  }
+
+  void apply_level(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    op_(x.data(), level.k.data(), y.data(), level.nx, level.ny, level.h);
+  }
+
+  // smoother = w / diag(A), diag(A) > 0 checked.
+  void set_smoother(int l) {
+    Level& level = levels_[l];
+    const Eigen::VectorXd diagonal =
+        operator_diagonal(op_, level.k, level.nx, level.ny, level.h, boundaries_);
+    for (int j = 0; j < level.ny; ++j)
+      for (int i = 0; i < level.nx; ++i) {
+        const double d = diagonal[j * level.nx + i];
+        if (!(d > 0.0) || !std::isfinite(d))
+          throw std::invalid_argument(detail::message(
+              options_.name, ": the operator's diagonal is ", d, " at cell (", i, ", ", j,
+              ") of level ", l, " (", level.nx, "x", level.ny,
+              "); Jacobi smoothing needs a positive diagonal (negate a Laplacian; k must be > 0)"));
+      }
+    level.smoother = options_.jacobi_weight * diagonal.cwiseInverse();
+  }
+
+  // The coarsest operator as a dense matrix (one probe per cell), checked for symmetry, then
+  // factored. With the constants as null space (A 1 = 0) the factored matrix is A + s 1 1^T,
+  // s > 0: it is SPD, and for mean-free b its solution is the mean-free A^+ b.
+  void factor_coarsest() {
+    Level& level = levels_.back();
+    const Eigen::Index n = level.cells();
+    Eigen::MatrixXd a(n, n);
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index c = 0; c < n; ++c) {
+      unit[c] = 1.0;
+      apply_level(level, unit, level.scratch);
+      a.col(c) = level.scratch;
+      unit[c] = 0.0;
+    }
+    const std::string& where = options_.name;
+    if (!a.allFinite())
+      throw std::invalid_argument(
+          detail::message(where, ": the operator returned NaN or Inf on the coarsest level (",
+                          level.nx, "x", level.ny, ")"));
+    const double scale = a.cwiseAbs().maxCoeff();
+    const double asymmetry = (a - a.transpose()).cwiseAbs().maxCoeff();
+    if (asymmetry > 1e-10 * scale)
+      throw std::invalid_argument(detail::message(
+          where, ": the operator is not symmetric on the coarsest level (", level.nx, "x", level.ny,
+          "): max |A_ij - A_ji| = ", asymmetry, " against max |A_ij| = ", scale,
+          "; CG and this preconditioner need a symmetric operator"));
+    null_space_ = (a.rowwise().sum()).cwiseAbs().maxCoeff() <= 1e-10 * scale;
+    if (null_space_)
+      a.array() += a.diagonal().mean() / static_cast<double>(n); // A + s 1 1^T
+    coarse_solver_.compute(a);
+    if (coarse_solver_.info() != Eigen::Success)
+      throw std::invalid_argument(detail::message(
+          where, ": the operator is not positive definite on the coarsest level (", level.nx, "x",
+          level.ny, null_space_ ? ", after removing the constants" : "",
+          "); a Laplacian must be negated"));
+  }
+
+  // One damped Jacobi sweep: x <- x + w D^-1 (b - A x).
+  void smooth(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+    apply_level(level, x, level.scratch);
+    x.array() += level.smoother.array() * (b - level.scratch).array();
+  }
+
+  // R r = P^T r / 4: the generated adjoints of the two prolongation passes, in reverse order
+  // (P = P_y P_x, so P^T = P_x^T P_y^T). Adjoints accumulate, hence the zero fills.
+  void restrict_residual(const Eigen::VectorXd& r, Level& coarse) const {
+    const Ghost s = ghost(boundaries_.south), n = ghost(boundaries_.north);
+    const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
+    // The adjoints of these linear kernels never read their primal input; they get the
+    // buffer they accumulate into as a stand-in of the right size.
+    coarse.transfer.setZero();
+    mg_prolong_y_adjoint(coarse.transfer.data(), coarse.transfer.data(), r.data(), coarse.nx,
+                         coarse.ny, s.self, s.wrap, n.self, n.wrap);
+    coarse.b.setZero();
+    mg_prolong_x_adjoint(coarse.b.data(), coarse.b.data(), coarse.transfer.data(), coarse.nx,
+                         coarse.ny, w.self, w.wrap, e.self, e.wrap);
+    coarse.b *= 0.25;
+  }
+
+  // x += P x_coarse (bilinear, ghosts from the boundary conditions).
+  void add_prolonged(Level& coarse, Level& fine, Eigen::VectorXd& x) const {
+    const Ghost s = ghost(boundaries_.south), n = ghost(boundaries_.north);
+    const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
+    mg_prolong_x(coarse.x.data(), coarse.transfer.data(), coarse.nx, coarse.ny, w.self, w.wrap,
+                 e.self, e.wrap);
+    mg_prolong_y(coarse.transfer.data(), fine.scratch.data(), coarse.nx, coarse.ny, s.self, s.wrap,
+                 n.self, n.wrap);
+    x += fine.scratch;
+  }
+
+  // The V-cycle on level l for A_l x = b:
+  //   x <- S^m x                      m damped Jacobi sweeps (from x = 0: x = w D^-1 b first)
+  //   x <- x + P B_{l+1} R (b - A x)  coarse-grid correction, B_{l+1} the next level's V-cycle
+  //   x <- S^m x                      the same sweeps again
+  // and a direct solve on the coarsest level. With S self-adjoint (Jacobi), R = P^T / 4 and
+  // B_{l+1} symmetric, the map b -> x from x = 0 is symmetric: a valid CG preconditioner.
+  void v_cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool zero_guess) {
+    Level& level = levels_[l];
+    if (l == levels() - 1) {
+      if (zero_guess) {
+        x = coarse_solver_.solve(b);
+      } else {
+        apply_level(level, x, level.scratch);
+        x += coarse_solver_.solve(b - level.scratch);
+      }
+      return;
+    }
+    for (int s = 0; s < options_.smoothing_sweeps; ++s) {
+      if (s == 0 && zero_guess)
+        x = level.smoother.cwiseProduct(b);
+      else
+        smooth(level, b, x);
+    }
+    Level& coarse = levels_[l + 1];
+    apply_level(level, x, level.scratch);
+    level.scratch = b - level.scratch; // r = b - A x
+    restrict_residual(level.scratch, coarse);
+    v_cycle(l + 1, coarse.b, coarse.x, /*zero_guess=*/true);
+    add_prolonged(coarse, level, x);
+    for (int s = 0; s < options_.smoothing_sweeps; ++s)
+      smooth(level, b, x);
+  }
+
+  Boundaries boundaries_;
+  LevelOperator op_;
+  MultigridOptions options_;
+  std::vector<Level> levels_;
+  Eigen::LLT<Eigen::MatrixXd> coarse_solver_;
+  bool null_space_ = false;
+};
+
+} // namespace dpgen

@@ -1,0 +1,1 @@
+// a06_outer_shift_accum: dpgen must reject this kernel (no test).

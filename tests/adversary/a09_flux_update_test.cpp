@@ -1,0 +1,21 @@
+#include "support/adjoint_check.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include "a09_flux_update_adjoint.hpp"
+#include "a09_flux_update_tangent.hpp"
+
+DPGEN_KERNEL void a09_flux_update(DPGEN_IN const double* q, DPGEN_OUT double* f,
+                                  DPGEN_OUT double* qn, int n);
+TEST_CASE("adversary: a09_flux_update") {
+  for (int n : {0, 1, 2, 3, 4, 7, 16}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { a09_flux_update(in[0], out[0], out[1], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { a09_flux_update_adjoint(in[0], adj[0], seed[0], seed[1], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { a09_flux_update_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n); };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -1,0 +1,1 @@
+// a10_flux_read_beyond: dpgen must reject this kernel (no test).

@@ -1,0 +1,1 @@
+// a21_store_max_index: dpgen must reject this kernel (no test).

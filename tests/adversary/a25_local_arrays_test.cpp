@@ -1,0 +1,20 @@
+#include "support/adjoint_check.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include "a25_local_arrays_adjoint.hpp"
+#include "a25_local_arrays_tangent.hpp"
+
+DPGEN_KERNEL void a25_local_arrays(DPGEN_IN const double* u, DPGEN_OUT double* o, int n);
+TEST_CASE("adversary: a25_local_arrays") {
+  for (int n : {0, 1, 2, 3, 4, 7, 16}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { a25_local_arrays(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { a25_local_arrays_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { a25_local_arrays_tangent(in[0], dir[0], out[0], outd[0], n); };
+    dpgen_test::check_adjoint(p);
+  }
+}

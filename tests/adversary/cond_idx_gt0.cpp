@@ -1,0 +1,8 @@
+#include "dpgen/annotate.hpp"
+DPGEN_KERNEL void cond_idx_gt0(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    out[i] = a[i];
+    if (i > 0)
+      out[i] = out[i] + a[i - 1];
+  }
+}

@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+# Writes tests/adversary/<name>.cpp and <name>_test.cpp from the specs in
+# specs.py. Params: ("in", name, size[, cast]) ("out", name, size[, cast])
+# ("val", expr). reject=True: dpgen must refuse the kernel (no test run).
+import os, re, sys
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+from specs import SPECS
+
+def cst(c, const):
+    if not c: return ""
+    return "(const %s)" % c if const else "(%s)" % c
+
+def emit(s):
+    name = s["name"]; src = s["src"].strip() + "\n"
+    head = '#include "dpgen/annotate.hpp"\n' + s.get("includes", "")
+    open(os.path.join(here, name + ".cpp"), "w").write("// adversary: %s\n%s\n%s" % (s.get("why", ""), head, src))
+    if s.get("handtest"): return
+    if s.get("reject"):
+        open(os.path.join(here, name + "_test.cpp"), "w").write(
+            "// %s: dpgen must reject this kernel (no test).\n" % name)
+        return
+    protos = re.findall(r"DPGEN_KERNEL[^{;]*?\)(?=\s*\{)", src, re.S)
+    P = s["params"]; fname = s.get("kernel", name)
+    ins = [p for p in P if p[0] == "in"]; outs = [p for p in P if p[0] == "out"]
+    fw, ad, tg = [], [], []
+    ki = ko = 0
+    for p in P:
+        if p[0] == "in":
+            c = p[3] if len(p) > 3 else None
+            fw.append("%sin[%d]" % (cst(c, 1), ki)); ad += ["%sin[%d]" % (cst(c, 1), ki), "%sadj[%d]" % (cst(c, 0), ki)]
+            tg += ["%sin[%d]" % (cst(c, 1), ki), "%sdir[%d]" % (cst(c, 1), ki)]; ki += 1
+        elif p[0] == "out":
+            c = p[3] if len(p) > 3 else None
+            fw.append("%sout[%d]" % (cst(c, 0), ko)); ad.append("%sseed[%d]" % (cst(c, 1), ko))
+            tg += ["%sout[%d]" % (cst(c, 0), ko), "%soutd[%d]" % (cst(c, 0), ko)]; ko += 1
+        else:
+            fw.append(p[1]); ad.append(p[1]); tg.append(p[1])
+    T = s.get("T", "double")
+    rng = s.get("ranges", "")
+    t = ['#include "support/adjoint_check.hpp"', '#include <algorithm>', '#include <stdexcept>', head.strip(),
+         '#include "%s_adjoint.hpp"' % name, '#include "%s_tangent.hpp"' % name, ""]
+    t += [p + ";" for p in protos]
+    t += ['TEST_CASE("adversary: %s") {' % name, "  %s {" % s.get("loop", "for (int n : {0, 1, 2, 3, 4, 7, 16})")]
+    t += ["    " + l for l in s.get("pre", "").splitlines()]
+    t += ["    CAPTURE(n);", "    dpgen_test::Problem<%s> p;" % T,
+          "    p.in_sizes = {%s};" % ", ".join("size_t(%s)" % p[2] for p in ins),
+          "    p.out_sizes = {%s};" % ", ".join("size_t(%s)" % p[2] for p in outs)]
+    if rng: t.append("    p.in_ranges = {%s};" % rng)
+    if s.get("linear"): t.append("    p.linear = true;")
+    t += ["    p.forward = [&](auto in, auto out) { %s(%s); };" % (fname, ", ".join(fw)),
+          "    p.adjoint = [&](auto in, auto adj, auto seed) { %s_adjoint(%s); };" % (fname, ", ".join(ad))]
+    if not s.get("notangent"):
+        t.append("    p.tangent = [&](auto in, auto dir, auto out, auto outd) { %s_tangent(%s); };" % (fname, ", ".join(tg)))
+    t += ["    dpgen_test::check_adjoint(p);", "  }"]
+    t += ["  " + l for l in s.get("extra", "").splitlines()]
+    t += ["}", ""]
+    open(os.path.join(here, name + "_test.cpp"), "w").write("\n".join(t))
+
+only = sys.argv[1:]
+for s in SPECS:
+    if not only or s["name"] in only:
+        emit(s)

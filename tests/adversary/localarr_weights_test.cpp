@@ -1,0 +1,20 @@
+// localarr_weights (tests/adversary/): see localarr_weights.cpp; sizes n in {0, 1, 2, 3, 6}.
+#include "adv.hpp"
+#include "localarr_weights_adjoint.hpp"
+#include "localarr_weights_tangent.hpp"
+void localarr_weights(const double*, double*, int n);
+TEST_CASE("adversary: localarr_weights") {
+  for (int n : {0, 1, 2, 3, 6}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { localarr_weights(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { localarr_weights_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { localarr_weights_tangent(in[0], dir[0], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      localarr_weights_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -1,0 +1,20 @@
+// reduce_normalize (tests/adversary/): see reduce_normalize.cpp; sizes n in {0, 1, 2, 3, 8}.
+#include "adv.hpp"
+#include "reduce_normalize_adjoint.hpp"
+#include "reduce_normalize_tangent.hpp"
+void reduce_normalize(const double*, double*, double*, int n);
+TEST_CASE("adversary: reduce_normalize") {
+  for (int n : {0, 1, 2, 3, 8}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(1),ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { reduce_normalize(in[0], out[0], out[1], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { reduce_normalize_adjoint(in[0], adj[0], seed[0], seed[1], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { reduce_normalize_tangent(in[0], dir[0], out[0], od[0], out[1], od[1], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      reduce_normalize_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], seed[1], out_n[1], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

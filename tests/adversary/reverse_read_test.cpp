@@ -1,0 +1,20 @@
+// reverse_read (tests/adversary/): see reverse_read.cpp; sizes n in {0, 1, 2, 5}.
+#include "adv.hpp"
+#include "reverse_read_adjoint.hpp"
+#include "reverse_read_tangent.hpp"
+void reverse_read(const double*, double*, int n);
+TEST_CASE("adversary: reverse_read") {
+  for (int n : {0, 1, 2, 5}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { reverse_read(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { reverse_read_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { reverse_read_tangent(in[0], dir[0], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      reverse_read_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

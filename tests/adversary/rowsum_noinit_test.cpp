@@ -1,0 +1,20 @@
+// rowsum_noinit (tests/adversary/): see rowsum_noinit.cpp; sizes n in {0, 1, 2, 3, 8}.
+#include "adv.hpp"
+#include "rowsum_noinit_adjoint.hpp"
+#include "rowsum_noinit_tangent.hpp"
+void rowsum_noinit(const double*, double*, int n);
+TEST_CASE("adversary: rowsum_noinit") {
+  for (int n : {0, 1, 2, 3, 8}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n * n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { rowsum_noinit(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { rowsum_noinit_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { rowsum_noinit_tangent(in[0], dir[0], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      rowsum_noinit_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

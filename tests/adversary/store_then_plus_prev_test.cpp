@@ -1,0 +1,20 @@
+// store_then_plus_prev (tests/adversary/): see store_then_plus_prev.cpp; sizes n in {0, 1, 2, 5}.
+#include "adv.hpp"
+#include "store_then_plus_prev_adjoint.hpp"
+#include "store_then_plus_prev_tangent.hpp"
+void store_then_plus_prev(const double*, const double*, double*, int n);
+TEST_CASE("adversary: store_then_plus_prev") {
+  for (int n : {0, 1, 2, 5}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n),ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { store_then_plus_prev(in[0], in[1], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { store_then_plus_prev_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { store_then_plus_prev_tangent(in[0], dir[0], in[1], dir[1], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      store_then_plus_prev_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

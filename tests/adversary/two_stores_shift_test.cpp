@@ -1,0 +1,20 @@
+// two_stores_shift (tests/adversary/): see two_stores_shift.cpp; sizes n in {1, 2, 5}.
+#include "adv.hpp"
+#include "two_stores_shift_adjoint.hpp"
+#include "two_stores_shift_tangent.hpp"
+void two_stores_shift(const double*, const double*, double*, int n);
+TEST_CASE("adversary: two_stores_shift") {
+  for (int n : {1, 2, 5}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {ADV_SZ(n),ADV_SZ(n)};
+    p.out_sizes = {ADV_SZ(n)};
+    p.forward = [&](auto in, auto out) { two_stores_shift(in[0], in[1], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { two_stores_shift_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) { two_stores_shift_tangent(in[0], dir[0], in[1], dir[1], out[0], od[0], n); };
+    p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
+      two_stores_shift_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -1,0 +1,19 @@
+// The checked entry point of an adjoint, `<kernel>_adjoint_checked`: every
+// array followed by its element count, checked against the elements the
+// kernel touches before the raw adjoint runs (see emit_checked.cpp).
+#pragma once
+
+#include "emit_util.hpp"
+#include "ir.hpp"
+
+#include <string>
+
+namespace dpgen {
+
+/// Kernels whose arrays are flat pointers get one (std::vector entry points
+/// check their sizes themselves; arrays of rows have none).
+bool has_checked_entry(const Kernel& k);
+std::string checked_signature(const Kernel& k);
+void emit_checked_entry(Code& code, const Kernel& k);
+
+} // namespace dpgen

@@ -1,0 +1,289 @@
+// Emit tangents: the forward kernel again, from the IR, with the directional
+// derivative of every store next to it (forward mode, a Jacobian-vector
+// product). No index is inverted: each iteration computes its own outputs'
+// tangents from the tangents of what it reads, so the loops are the
+// kernel's own, and parallel where every element is written once.
+#include "emit_tangent.hpp"
+
+#include "derive.hpp"
+#include "emit_util.hpp"
+#include "print.hpp"
+
+#include <fmt/format.h>
+
+namespace dpgen {
+
+namespace {
+
+constexpr int kMinParallelIterations = 8192;
+
+// Everything a tangent kernel needs, computed once per kernel so locals shared
+// by several stores get one tangent each.
+struct TangentPlan {
+  const Kernel* k = nullptr;
+  std::set<std::string> active;       // DPGEN_IN arrays and work arrays
+  std::vector<std::vector<ExprP>> dot; // per nest, per store: its tangent (null: 0)
+  DeriveNames names;
+  TangentLocals locals;
+};
+
+void names_in(const ExprP& e, std::set<std::string>& out, std::set<const LocalVar*>& seen) {
+  if (!e)
+    return;
+  if (e->op == Op::Local) {
+    if (seen.insert(e->local.get()).second) {
+      out.insert(e->local->name);
+      names_in(e->local->def, out, seen);
+    }
+    return;
+  }
+  for (const auto& o : e->ops)
+    names_in(o, out, seen);
+}
+
+TangentPlan plan_tangent(const Kernel& k) {
+  TangentPlan p;
+  p.k = &k;
+  for (const auto& prm : k.params)
+    if (prm.kind == ParamKind::In || k.intermediates.count(prm.name))
+      p.active.insert(prm.name);
+  // Names a tangent local must not take: parameters, their _dot, every local.
+  std::set<const LocalVar*> seen;
+  for (const auto& prm : k.params) {
+    p.locals.taken.insert(prm.name);
+    p.locals.taken.insert(prm.name + "_dot");
+  }
+  for (const auto& l : k.kernel_locals)
+    names_in(local_ref(l), p.locals.taken, seen);
+  for (const auto& n : k.nests)
+    for (const auto& s : n.stores)
+      names_in(s.value, p.locals.taken, seen);
+  for (const auto& n : k.nests) {
+    p.dot.emplace_back();
+    for (const auto& s : n.stores)
+      p.dot.back().push_back(tangent(s.value, p.active, p.names, p.locals));
+  }
+  return p;
+}
+
+// The tangent's parameters (`decl`) or the arguments from the shaped entry
+// point to the flat one: each DPGEN_IN array followed by its read-only
+// `<name>_dot`, each DPGEN_OUT array followed by its `<name>_dot` result. An
+// in-place array's new values go to the array itself.
+std::string tangent_list(const Kernel& k, bool shaped, bool decl) {
+  std::vector<std::string> ps;
+  auto array = [&](const Param& p, bool is_const, const std::string& name) {
+    return decl ? array_declaration(p, is_const, name, shaped, k.c_linkage)
+                : flat_argument(p, is_const, name);
+  };
+  for (const auto& p : k.params) {
+    if ((decl && shaped && p.synthetic) || !p.twin_of.empty())
+      continue;
+    switch (p.kind) {
+    case ParamKind::In:
+      ps.push_back(array(p, !p.inout, p.name));
+      ps.push_back(array(p, !p.inout, p.name + "_dot"));
+      break;
+    case ParamKind::Out:
+      ps.push_back(array(p, false, p.name));
+      ps.push_back(array(p, false, p.name + "_dot"));
+      break;
+    case ParamKind::ConstArray:
+      ps.push_back(array(p, true, p.name));
+      break;
+    case ParamKind::Scalar:
+      if (decl)
+        ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+      else // a vector's size: the size() of the vector it follows
+        ps.push_back(p.synthetic ? p.name.substr(0, p.name.size() - 5) + ".size()" : p.name);
+      break;
+    }
+  }
+  return fmt::format("{}", fmt::join(ps, ", "));
+}
+std::string tangent_params(const Kernel& k, bool shaped) { return tangent_list(k, shaped, true); }
+std::string flat_tangent_arguments(const Kernel& k) { return tangent_list(k, false, false); }
+
+// `std::vector` tangents have their arrays' sizes.
+void emit_vector_checks(Code& code, const Kernel& k) {
+  emit_vector_size_checks(code, k, k.name + "_tangent", "_dot", [](const Param& p) {
+    return p.kind == ParamKind::In || p.kind == ParamKind::Out;
+  });
+}
+
+// A loop bound in the counters' type (a size_t size minus one stays signed).
+std::string bound(const ExprP& e) {
+  if (e->op == Op::IntConst)
+    return print(e);
+  return fmt::format("static_cast<{}>({})", kCellType, print(e));
+}
+
+void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
+  const Nest& nest = tp.k->nests[n];
+  code.open("");
+  int opened = 1;
+  bool accumulates = false;
+  for (const auto& s : nest.stores)
+    accumulates = accumulates || s.accumulate;
+  for (size_t d = 0; d < nest.loops.size(); ++d) {
+    const Loop& l = nest.loops[d];
+    if (d == 0 && !accumulates) {
+      // Every element is written by one iteration (proved, or checked on
+      // entry), so iterations are independent.
+      std::vector<std::string> extents;
+      for (const auto& m : nest.loops)
+        extents.push_back(fmt::format("({} - {})", bound(m.hi), bound(m.lo)));
+      code.line("#pragma omp parallel for if ({} >= {})", fmt::join(extents, " * "),
+                kMinParallelIterations);
+    }
+    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, bound(l.lo), l.var,
+                          bound(l.hi), l.var));
+    ++opened;
+  }
+  std::set<int> done;
+  std::set<std::string> vars;
+  for (size_t i = 0; i < nest.stores.size(); ++i) {
+    const Store& s = nest.stores[i];
+    const ExprP& dot = tp.dot[n][i];
+    std::map<int, LocalP> cond_locals;
+    for (const auto& pc : s.path)
+      collect(pc.cond, cond_locals, vars);
+    define_locals(code, cond_locals, done);
+    bool guarded = !s.path.empty();
+    if (guarded)
+      code.open(fmt::format("if ({})", conjunction(s.path)));
+    std::map<int, LocalP> locals;
+    collect(s.index, locals, vars);
+    collect(s.value, locals, vars);
+    collect(dot, locals, vars);
+    std::set<int> inner = done;
+    define_locals(code, locals, guarded ? inner : done);
+    const char* op = s.accumulate ? "+=" : "=";
+    std::string idx = subscript(s.index);
+    std::string dot_text = dot ? print(dot) : type_spelling(s.value->type) == "float" ? "0.0f" : "0.0";
+    const Param* twin = tp.k->find_param(s.array);
+    if (twin && !twin->twin_of.empty()) {
+      // In place: both values from the old element first, then the stores.
+      const std::string& u = twin->twin_of;
+      code.line("const {} {}_new_value = {};", type_spelling(s.value->type), u, print(s.value));
+      code.line("const {} {}_new_dot = {};", type_spelling(s.value->type), u, dot_text);
+      code.line("{}{} = {}_new_value;", u, idx, u);
+      code.line("{}_dot{} = {}_new_dot;", u, idx, u);
+    } else {
+      code.line("{}{} {} {};", s.array, idx, op, print(s.value));
+      code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
+    }
+    if (guarded)
+      code.close();
+  }
+  for (int i = 0; i < opened; ++i)
+    code.close();
+}
+
+void emit_kernel(Code& code, const TangentPlan& tp) {
+  const Kernel& k = *tp.k;
+  open_namespaces(code, k);
+  bool shaped = has_rows(k);
+  std::string name = k.name + (shaped ? "_tangent_flat" : "_tangent");
+  if (shaped) {
+    code.raw("namespace {\n");
+    code.line("// Tangent of {} ({}:{}) on flat arrays; {}_tangent below takes them as "
+              "declared.",
+              k.name, base_name(k.file), k.pos.line, k.name);
+  } else {
+    code.line("// Tangent of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
+  }
+  code.open(fmt::format("void {}({})", name, tangent_params(k, !shaped)));
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  // Tangents of the locals set before every loop (a0 = a[0]: a0_dot = a_dot[0]).
+  std::set<int> done;
+  std::set<std::string> vars;
+  for (const auto& l : tp.locals.locals)
+    if (l->kernel_level) {
+      std::map<int, LocalP> deps;
+      collect(l->def, deps, vars);
+      define_locals(code, deps, done);
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+    }
+  emit_size_checks(code, k, k.name + "_tangent");
+  for (size_t n = 0; n < k.nests.size(); ++n) {
+    code.line("// loop nest {}: each store, then its tangent", n + 1);
+    emit_nest(code, tp, n);
+  }
+  code.close();
+  if (shaped) {
+    code.raw("} // namespace\n\n");
+    code.line("// Tangent of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
+    code.open(fmt::format("void {}_tangent({})", k.name, tangent_params(k, true)));
+    emit_vector_checks(code, k);
+    code.line("{}_tangent_flat({});", k.name, flat_tangent_arguments(k));
+    code.close();
+  }
+  close_namespaces(code, k);
+}
+
+} // namespace
+
+std::string tangent_signature(const Kernel& k) {
+  return fmt::format("void {}_tangent({})", k.name, tangent_params(k, true));
+}
+
+EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
+                              const std::string& source_name, const std::string& stem) {
+  EmittedFile out;
+  bool vectors = false, checks = false;
+  for (const auto* k : kernels) {
+    vectors = vectors || has_vectors(*k);
+    checks = checks || has_vectors(*k) || !k->size_checks.empty();
+  }
+  Code h;
+  h.raw(fmt::format(kBanner, source_name));
+  h.raw("//\n"
+        "// Tangent (forward-mode, Jacobian-vector product) kernels. For a kernel\n"
+        "// f(in..., out..., constants...), f_tangent takes the same parameters in order,\n"
+        "// each DPGEN_IN array followed by its direction <name>_dot (read only), and each\n"
+        "// DPGEN_OUT array followed by <name>_dot, which receives the derivative of that\n"
+        "// output along the directions. The outputs themselves are computed too.\n"
+        "#pragma once\n\n");
+  if (vectors)
+    h.raw("#include <vector>\n\n");
+  for (const auto* k : kernels) {
+    open_namespaces(h, *k);
+    h.raw(fmt::format("/// Tangent of {} ({}:{}).\n", k->name, base_name(k->file), k->pos.line));
+    if (k->c_linkage)
+      h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
+    h.raw(tangent_signature(*k) + ";\n");
+    if (k->c_linkage)
+      h.raw("#ifdef __cplusplus\n}\n#endif\n");
+    close_namespaces(h, *k);
+    h.raw("\n");
+  }
+  out.header = formatted(h.str(), stem + "_tangent.hpp");
+
+  Code c;
+  c.raw(fmt::format(kBanner, source_name));
+  c.raw("//\n"
+        "// Forward mode: every store of the kernel followed by its directional\n"
+        "// derivative, d out = sum over reads of (d out / d read) * read_dot, in the\n"
+        "// kernel's own loops.\n");
+  c.raw(fmt::format("#include \"{}_tangent.hpp\"\n\n", stem));
+  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n");
+  if (checks)
+    c.raw("#include <stdexcept>\n#include <string>\n");
+  c.raw("\n");
+  c.raw("namespace {\n"
+        "// std::min/std::max by value, the first argument on ties (as in the adjoints).\n"
+        "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"
+        "template <typename T> inline T dpgen_max(T a, T b) { return a < b ? b : a; }\n"
+        "} // namespace\n\n");
+  for (const auto* k : kernels) {
+    TangentPlan tp = plan_tangent(*k);
+    emit_kernel(c, tp);
+    c.raw("\n");
+  }
+  out.source = formatted(c.str(), stem + "_tangent.cpp");
+  return out;
+}
+
+} // namespace dpgen

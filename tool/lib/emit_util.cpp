@@ -1,0 +1,177 @@
+// Shared by the emitters: see emit_util.hpp.
+#include "emit_util.hpp"
+
+#include "print.hpp"
+
+#include <clang/Format/Format.h>
+#include <clang/Tooling/Core/Replacement.h>
+
+#include <algorithm>
+
+namespace dpgen {
+
+
+
+void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string>& vars) {
+  if (!e)
+    return;
+  if (e->op == Op::LoopVar)
+    vars.insert(e->name);
+  if (e->op == Op::Local) {
+    if (e->local->kernel_level || locals.count(e->local->id))
+      return;
+    locals[e->local->id] = e->local;
+    collect(e->local->def, locals, vars);
+    return;
+  }
+  for (const auto& o : e->ops)
+    collect(o, locals, vars);
+}
+
+
+std::string cond_text(const PathCond& pc) {
+  return pc.positive ? print(pc.cond) : "!(" + print(pc.cond) + ")";
+}
+
+
+// Emits `const T name = def;` for each local in `locals` not yet in `done`.
+void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int>& done) {
+  for (const auto& [id, l] : locals)
+    if (done.insert(id).second)
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+}
+
+std::string conjunction(const std::vector<PathCond>& conds) {
+  std::vector<std::string> parts;
+  for (const auto& pc : conds)
+    parts.push_back(cond_text(pc));
+  return fmt::format("{}", fmt::join(parts, " && "));
+}
+
+
+// Comments name the kernel file without its directory, so generated files do
+// not depend on where the tree was checked out.
+std::string base_name(const std::string& path) {
+  auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// A C++ string literal holding `s`.
+std::string literal(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// The write-once rules dpgen could not prove for all sizes, checked on entry:
+// sizes that break one would make the adjoint wrong, so they stop it with a
+// message naming the rule, the kernel line and the sizes.
+void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name) {
+  std::vector<std::string> shown;
+  for (const auto& p : k.params)
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int)
+      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
+  std::string sizes = shown.empty() ? "\"\""
+                                    : fmt::format("{}", fmt::join(shown, " + \", \" + "));
+  for (const auto& c : k.size_checks) {
+    code.line("// Run-time check (not provable from the kernel alone): {}.", c.what);
+    std::vector<std::string> parts = c.premises;
+    parts.push_back(fmt::format("!({})", c.must_hold));
+    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
+    bool tangent = fn_name.size() > 8 && fn_name.compare(fn_name.size() - 8, 8, "_tangent") == 0;
+    std::string msg = fmt::format("{}:{}: {}: these sizes break the rule that {}, so the "
+                                  "{} would be wrong (",
+                                  base_name(c.pos.file), c.pos.line, fn_name, c.what,
+                                  tangent ? "tangent" : "adjoint");
+    code.line("throw std::invalid_argument(std::string({}) + {} + \")\");", literal(msg), sizes);
+    code.close();
+  }
+}
+
+
+// Arrays of rows or std::vectors: the user-facing entry point takes them as
+// declared and calls a flat twin.
+bool has_rows(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
+    return p.kind != ParamKind::Scalar && (!p.rows.empty() || !p.container.empty());
+  });
+}
+
+bool has_inout(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.inout; });
+}
+
+bool has_vectors(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(),
+                     [](const Param& p) { return !p.container.empty(); });
+}
+
+
+void open_namespaces(Code& c, const Kernel& k) {
+  for (const auto& ns : k.namespaces)
+    c.raw(fmt::format("namespace {} {{\n", ns));
+}
+void close_namespaces(Code& c, const Kernel& k) {
+  for (auto it = k.namespaces.rbegin(); it != k.namespaces.rend(); ++it)
+    c.raw(fmt::format("}} // namespace {}\n", *it));
+}
+
+
+// clang-format (LLVM style, 100 columns) over the generated text, so long
+// expressions wrap the way a person would wrap them.
+std::string formatted(const std::string& code, const std::string& name) {
+  clang::format::FormatStyle style = clang::format::getLLVMStyle();
+  style.ColumnLimit = 100;
+  style.SortIncludes = clang::format::FormatStyle::SI_Never;
+  style.PointerAlignment = clang::format::FormatStyle::PAS_Left;
+  auto repl = clang::format::reformat(style, code, {clang::tooling::Range(0, code.size())}, name);
+  auto out = clang::tooling::applyAllReplacements(code, repl);
+  if (!out) {
+    llvm::consumeError(out.takeError());
+    return code;
+  }
+  return *out;
+}
+
+
+
+std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
+                              bool c_language) {
+  std::string c = is_const ? "const " : "";
+  if (p.row_pointers) // `double** a` passes as `const double* const* a` / `double* const* a_adj`
+    return fmt::format("{}{}* const* {}", c_language ? "" : c, p.elem_name, name);
+  if (shaped && !p.rows.empty())
+    return fmt::format("{}{} (*{}){}", c, p.elem_name, name, p.rows);
+  if (shaped && !p.container.empty())
+    return fmt::format("{}{}& {}", c, p.container, name);
+  return fmt::format("{}{}* {}", c, p.elem_name, name);
+}
+
+// Rows of a multi-dimensional array are contiguous: the first element's
+// address is the flat array.
+std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
+  if (!p.container.empty())
+    return name + ".data()";
+  if (p.rows.empty())
+    return name;
+  return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);
+}
+
+void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
+                             const std::string& suffix, bool (*wanted)(const Param&)) {
+  for (const auto& p : k.params)
+    if (!p.container.empty() && wanted(p)) {
+      code.open(fmt::format("if ({}{}.size() != {}.size())", p.name, suffix, p.name));
+      code.line("throw std::invalid_argument(\"{}: {}{} has \" + "
+                "std::to_string({}{}.size()) + \" elements but {} has \" + "
+                "std::to_string({}.size()));",
+                fn, p.name, suffix, p.name, suffix, p.name, p.name);
+      code.close();
+    }
+}
+
+} // namespace dpgen
