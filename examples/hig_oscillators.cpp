@@ -165,13 +165,11 @@ int main(int argc, char** argv) try {
       args.get_int("--max-epochs", 1000000, "epochs per method at most (also after --max-time)", 0);
   const std::string methods = args.get_string("--methods", "gd,sip,hig", "which to run, in order");
   const int seed = args.get_int("--seed", 1, "seed of the data and of the initial weights", 0);
-  const int check = args.get_int(
-      "--check-gradient", 0, "1: check gradients and Jacobians against central differences, exit", 0, 1);
-  const double require = args.get_double(
-      "--require-reduction", 0, "exit 1 unless every method run cut the loss at least this much", 0);
+  // --require-reduction applies to every method run; --check-gradient also checks the
+  // physics Jacobian and a block of HIG's joint Jacobian.
+  const auto common = dpgen_examples::common_options(args, "hig_oscillators", false);
   const int threads = args.get_int(
       "--threads", 1, "Eigen's threads for the SVDs (0: OpenMP's default)", 0, 1024);
-  const std::string out = args.get_string("--out", "hig_oscillators_out", "output folder");
   if (args.finish())
     return 0;
   if (threads > 0)
@@ -186,7 +184,7 @@ int main(int argc, char** argv) try {
   std::printf("network: %lld parameters; physics Jacobian d s_T / d u: %d x %d\n",
               static_cast<long long>(theta0.size()), kState, kSteps);
 
-  if (check) {
+  if (common.check) {
     // (1) d s_T / d u from VJP rows against JVP columns and central differences.
     const VectorXd s0 = p.data.col(0), u = VectorXd::LinSpaced(kSteps, -0.3, 0.4);
     const MatrixXd j_fd = dpgen::jacobian_central_difference(
@@ -223,7 +221,7 @@ int main(int argc, char** argv) try {
 
   const auto evaluate = [&](const VectorXd& th) { return p.loss(th, 0, samples, samples, nullptr); };
   std::vector<History> histories;
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   std::vector<std::string> method_list; // checked before anything runs
   for (std::size_t pos = 0; pos <= methods.size();) {
     const std::size_t comma = std::min(methods.find(',', pos), methods.size());
@@ -366,7 +364,7 @@ int main(int argc, char** argv) try {
   std::printf("wrote %s{gd,sip,hig}.csv %sloss_time.svg %sloss_epoch.svg\n", dir.c_str(),
               dir.c_str(), dir.c_str());
   for (const History& h : histories)
-    if (dpgen_examples::check_reduction(h.loss.front() / h.loss.back(), require))
+    if (dpgen_examples::check_reduction(h.loss.front() / h.loss.back(), common.require))
       return 1;
   return 0;
 } catch (const std::exception& e) {

@@ -84,11 +84,8 @@ int main(int argc, char** argv) try {
   const double lambda = args.get_double(
       "--lambda", 1e-4, "Tikhonov weight of PG's inverse diffusion", 0, 1e9, true);
   const int seed = args.get_int("--seed", 1, "seed of the hot boxes", 0);
-  const int check = args.get_int("--check-gradient", 0,
-                                 "1: check dL/dx and dP/dx against central differences, exit", 0, 1);
-  const double require = args.get_double(
-      "--require-reduction", 0, "exit 1 unless PG cuts the loss at least this much", 0);
-  const std::string out = args.get_string("--out", "pg_heat_out", "output folder");
+  // --require-reduction applies to PG; --check-gradient also checks dP/dx.
+  const auto common = dpgen_examples::common_options(args, "pg_heat", false);
   if (args.finish())
     return 0;
 
@@ -101,7 +98,7 @@ int main(int argc, char** argv) try {
     return r.squaredNorm();
   };
 
-  if (check) {
+  if (common.check) {
     const VectorXd at = hot_boxes(n, 99);
     // P is linear: its JVP is P v and its VJP P^T w, at any x.
     const auto jvp = [&](const VectorXd&, const VectorXd& v) { return heat.forward(v); };
@@ -168,7 +165,7 @@ int main(int argc, char** argv) try {
   });
   std::printf("PG: %d CG iterations in all (each applies P and P^T once)\n", cg_iterations);
 
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   std::ofstream csv(dir + "losses.csv");
   csv << "method,iter,loss_y,error_x\n";
   std::vector<dpgen_examples::Series> ys, xs;
@@ -185,7 +182,7 @@ int main(int argc, char** argv) try {
   std::printf("wrote %slosses.csv %sloss_y.svg %serror_x.svg\n", dir.c_str(), dir.c_str(),
               dir.c_str());
   const Curve& p = curves.back();
-  return dpgen_examples::check_reduction(p.loss.front() / p.loss.back(), require);
+  return dpgen_examples::check_reduction(p.loss.front() / p.loss.back(), common.require);
 } catch (const std::exception& e) {
   std::fprintf(stderr, "error: %s\n", e.what());
   return 1;

@@ -73,17 +73,14 @@ int main(int argc, char** argv) try {
       "--lr-adam", 0.75, "Adam step size (not in the notebook; first step ~ GD's)", 0, 1e9, true);
   const double lr_hig = args.get_double(
       "--lr-hig", 0.11, "HIG step size (not in the notebook; first step ~ GD's)", 0, 1e9, true);
-  const int check = args.get_int("--check-gradient", 0,
-                                 "1: check dL/dx and dy/dx against central differences, exit", 0, 1);
-  const double require = args.get_double(
-      "--require-reduction", 0, "exit 1 unless PG and HIG cut the loss at least this much", 0);
-  const std::string out = args.get_string("--out", "physgrad_comparison_out", "output folder");
+  // --require-reduction applies to PG and HIG; --check-gradient also checks dy/dx.
+  const auto common = dpgen_examples::common_options(args, "physgrad_comparison", false);
   if (args.finish())
     return 0;
 
   VectorXd x0(2);
   x0 << 3.0, 3.0;
-  if (check) {
+  if (common.check) {
     // The Jacobian from JVP columns and from VJP rows against central differences, then dL/dx.
     const VectorXd at = (VectorXd(2) << 1.3, -0.7).finished();
     const double jac_error = (physics_jacobian(at) - dpgen::jacobian_central_difference(physics, at))
@@ -147,7 +144,7 @@ int main(int argc, char** argv) try {
   timed({"HIG", "#9467bd", lr_hig, {}},
         [&](VectorXd& x) { x += dpgen::hig_update(physics_jacobian(x), 2.0 * physics(x), hig_options).step; });
 
-  const std::string dir = dpgen_examples::output_dir(out);
+  const std::string dir = dpgen_examples::output_dir(common.out);
   std::ofstream csv(dir + "iterates.csv");
   csv << "method,iter,x0,x1,loss\n";
   std::vector<dpgen_examples::Series> loss_series, path_series;
@@ -182,7 +179,7 @@ int main(int argc, char** argv) try {
   const double l0 = loss_of_y(physics(x0));
   for (const Run& r : runs)
     if ((r.name == "PG" || r.name == "HIG") &&
-        dpgen_examples::check_reduction(l0 / loss_of_y(physics(r.xs.back())), require))
+        dpgen_examples::check_reduction(l0 / loss_of_y(physics(r.xs.back())), common.require))
       return 1;
   return 0;
 } catch (const std::exception& e) {
