@@ -145,9 +145,11 @@ struct CommonOptions {
   bool check = false; ///< --check-gradient: compare with central differences and exit
 };
 
-inline CommonOptions common_options(Args& args, const std::string& name) {
+/// `csv_log` false: no --csv option (examples that write their CSVs into --out).
+inline CommonOptions common_options(Args& args, const std::string& name, bool csv_log = true) {
   CommonOptions o;
-  o.csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds); none: no log");
+  if (csv_log)
+    o.csv = args.get_string("--csv", "", "CSV log path (iter,loss,grad_norm,seconds); none: no log");
   o.out = args.get_string("--out", "out/" + name, "folder for pictures");
   o.require = args.get_double("--require-reduction", 0,
                               "exit with an error unless the loss drops by this factor (0: "

@@ -58,20 +58,6 @@ VectorXd vjp_small(const VectorXd& x, const VectorXd& w) {
   return g;
 }
 
-// Central differences, column j = (f(x + h e_j) - f(x - h e_j)) / 2h with h = 1e-5 (1 + |x_j|).
-MatrixXd jacobian_central(const std::function<VectorXd(const VectorXd&)>& f, const VectorXd& x) {
-  const VectorXd y = f(x);
-  MatrixXd j(y.size(), x.size());
-  for (Eigen::Index k = 0; k < x.size(); ++k) {
-    const double h = 1e-5 * (1.0 + std::abs(x[k]));
-    VectorXd xp = x, xm = x;
-    xp[k] += h;
-    xm[k] -= h;
-    j.col(k) = (f(xp) - f(xm)) / (2.0 * h);
-  }
-  return j;
-}
-
 double max_abs(const MatrixXd& a) { return a.cwiseAbs().maxCoeff(); }
 
 // upwind_step as R^{2n} -> R^n: x = (d, u), y = d_next.
@@ -111,7 +97,7 @@ TEST_CASE("jacobian: tangent and adjoint assembly of a nonlinear function") {
   CHECK(max_abs(by_columns - by_rows) <= 1e-12);
   CHECK(max_abs(by_columns - exact) <= 1e-12);
   // Central differences: truncation h^2 |f'''| / 6 ~ 1e-10 plus rounding eps |f| / h ~ 1e-11.
-  CHECK(max_abs(by_columns - jacobian_central(f_small, x)) <= 1e-8 * (1.0 + max_abs(exact)));
+  CHECK(max_abs(by_columns - dpgen::jacobian_central_difference(f_small, x)) <= 1e-8 * (1.0 + max_abs(exact)));
 
   // n = 3 inputs <= m = 4 outputs: three tangents beat four adjoints.
   dpgen::JacobianMode mode = dpgen::JacobianMode::adjoint;
@@ -173,7 +159,7 @@ TEST_CASE("jacobian: generated upwind_step tangent and adjoint kernels") {
   CHECK(max_abs(by_columns - by_rows) <= 1e-12);
   // d_next is bilinear in (d, u) on each branch: central differences are exact up to rounding,
   // eps |d_next| / h ~ 1e-11.
-  const MatrixXd fd = jacobian_central([&](const VectorXd& y) { return k.forward(y); }, x);
+  const MatrixXd fd = dpgen::jacobian_central_difference([&](const VectorXd& y) { return k.forward(y); }, x);
   CHECK(max_abs(by_columns - fd) <= 1e-8);
   // Each row couples d[i-1], d[i], d[i+1] and u[i]: at most 4 nonzeros.
   for (Eigen::Index i = 0; i < k.n; ++i)
@@ -211,4 +197,32 @@ TEST_CASE("jacobian: size mismatches and missing products throw") {
         "jacobian: neither a Jacobian-vector nor a vector-Jacobian product given");
   CHECK(message([&] { dpgen::jacobian(jvp_small, vjp_small, x, -1); }) ==
         "jacobian: sizes must be >= 0 (got 3 inputs, -1 outputs)");
+  CHECK(message([&] { dpgen::jacobian_central_difference(f_small, x, 0.0); }) ==
+        "jacobian (central differences): step must be positive (got 0)");
+  CHECK(message([&] { dpgen::jacobian_central_difference(nullptr, x); }) ==
+        "jacobian (central differences): no function given");
+  // An f whose output size depends on x: 4 entries at x, 3 once x_1 moves.
+  const auto ragged = [](const VectorXd& v) {
+    return VectorXd(VectorXd::Zero(v[1] == 1.0 ? 4 : 3));
+  };
+  CHECK(message([&] { dpgen::jacobian_central_difference(ragged, x); }) ==
+        "jacobian (central differences): f(x + h e_1) has size 3, expected 4");
+}
+
+TEST_CASE("jacobian_central_difference: exact on quadratics up to rounding, steps scale with x") {
+  // Central differences have no truncation error on a quadratic: only rounding, eps |f| / h.
+  const auto quadratic = [](const VectorXd& v) {
+    return VectorXd((VectorXd(2) << v[0] * v[0] - 3.0 * v[1], v[0] * v[1]).finished());
+  };
+  const VectorXd x = (VectorXd(2) << 2.0, -1e4).finished();
+  MatrixXd exact(2, 2);
+  exact << 2.0 * x[0], -3.0, x[1], x[0];
+  CHECK(max_abs(dpgen::jacobian_central_difference(quadratic, x) - exact) <= 1e-6);
+  // On a cubic the error is h^2 f''' / 6 = h^2 with h = step (1 + |x|): step 1e-2 at x = 1
+  // gives h = 0.02 and an error of 4e-4 (a step not scaled by 1 + |x| would give 1e-4).
+  const auto cubic = [](const VectorXd& v) {
+    return VectorXd(VectorXd::Constant(1, v[0] * v[0] * v[0]));
+  };
+  const MatrixXd j = dpgen::jacobian_central_difference(cubic, VectorXd::Ones(1), 1e-2);
+  CHECK(j(0, 0) - 3.0 == doctest::Approx(4e-4).epsilon(1e-6));
 }

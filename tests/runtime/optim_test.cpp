@@ -305,6 +305,30 @@ TEST_CASE("HIG truncation drops the direction of a tiny singular value") {
   CHECK(std::abs(v.col(2).dot(all.step)) > 1e3 * std::abs(c[2]));
 }
 
+TEST_CASE("HIG on a wide Jacobian (fewer outputs than parameters, as a batch's) and r = dL/dy") {
+  // y = A x with A 3x7; hig_update takes any gradient g = dL/dy in place of a residual.
+  const Eigen::MatrixXd a =
+      Eigen::Map<const Eigen::MatrixXd>(dpgen_test::random_vector(21, 61).data(), 3, 7);
+  const VectorXd b = dpgen_test::random_vector(3, 62);
+  // kappa = -1 from x = 0 with g = A x - b = -b: the minimum-norm step that fits y = b exactly.
+  const dpgen::HigUpdate gn = dpgen::hig_update(a, -b, hig_options(1.0, -1.0, 0.0, 1));
+  CHECK(gn.rank == 3);
+  CHECK(gn.singular_values.size() == 3);
+  CHECK((a * gn.step - b).norm() <= 1e-12 * b.norm());
+  const VectorXd min_norm = a.completeOrthogonalDecomposition().pseudoInverse() * b;
+  CHECK((gn.step - min_norm).norm() <= 1e-12 * min_norm.norm());
+  // kappa = -1/2 with g = 2 (y - y*) / 4 (a mean squared error over 4 samples' worth), against
+  // an independent SVD (Jacobi): dx = -eta V Sigma^(-1/2) U^T g.
+  const VectorXd g = 0.5 * (a * dpgen_test::random_vector(7, 63) - b);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const VectorXd expected = -0.7 * svd.matrixV() *
+                            svd.singularValues().array().rsqrt().matrix().asDiagonal() *
+                            svd.matrixU().transpose() * g;
+  const dpgen::HigUpdate half = dpgen::hig_update(a, g, hig_options(0.7, -0.5, 1e-10, 1));
+  CHECK((half.step - expected).norm() <= 1e-12 * expected.norm());
+  CHECK((half.singular_values - svd.singularValues()).norm() <= 1e-12 * svd.singularValues()[0]);
+}
+
 TEST_CASE("HIG beats GD on an ill-conditioned least-squares problem in the same iterations") {
   // Singular values 1 .. 1e-3 (cond(J) = 1e3, cond(J^T J) = 1e6).
   VectorXd sigma(10);

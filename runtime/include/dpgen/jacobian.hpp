@@ -1,12 +1,14 @@
 // Dense Jacobians of a function R^n -> R^m from its products: column by column from
 // Jacobian-vector products (tangents, n calls) or row by row from vector-Jacobian products
-// (adjoints, m calls), and a helper that takes whichever needs fewer calls.
+// (adjoints, m calls), a helper that takes whichever needs fewer calls, and central
+// differences to check them against.
 #pragma once
 
 #include "dpgen/error.hpp"
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -111,6 +113,35 @@ inline Eigen::MatrixXd jacobian(const JacobianVectorProduct& jvp, const VectorJa
     *mode_used = mode;
   return mode == JacobianMode::tangent ? jacobian_by_columns(jvp, x, outputs)
                                        : jacobian_by_rows(vjp, x, outputs);
+}
+
+/// The Jacobian of f at x by central differences, for checking the other two (not for use):
+/// column j = (f(x + h e_j) - f(x - h e_j)) / 2h with h = step (1 + |x_j|). Its error is about
+/// h^2 |f'''| / 6 + eps |f| / h: for smooth f of unit scale, the default step gives ~1e-10.
+/// Throws std::invalid_argument when step is not positive or f changes its output size.
+inline Eigen::MatrixXd
+jacobian_central_difference(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
+                            const Eigen::VectorXd& x, double step = 1e-5) {
+  const char* where = "jacobian (central differences)";
+  if (!(step > 0.0) || !std::isfinite(step))
+    throw std::invalid_argument(detail::message(where, ": step must be positive (got ", step, ")"));
+  if (!f)
+    throw std::invalid_argument(detail::message(where, ": no function given"));
+  const Eigen::Index outputs = f(x).size();
+  Eigen::MatrixXd jac(outputs, x.size());
+  Eigen::VectorXd shifted = x;
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    const double h = step * (1.0 + std::abs(x[j]));
+    shifted[j] = x[j] + h;
+    const Eigen::VectorXd plus = f(shifted);
+    shifted[j] = x[j] - h;
+    const Eigen::VectorXd minus = f(shifted);
+    shifted[j] = x[j];
+    detail::require_size(plus.size(), outputs, where, detail::message("f(x + h e_", j, ")"));
+    detail::require_size(minus.size(), outputs, where, detail::message("f(x - h e_", j, ")"));
+    jac.col(j) = (plus - minus) / (2.0 * h);
+  }
+  return jac;
 }
 
 } // namespace dpgen

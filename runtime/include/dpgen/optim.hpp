@@ -259,8 +259,10 @@ inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& 
 ///   dx = -eta V Sigma^kappa U^T r,
 /// summed over the singular values above truncation * sigma_max. kappa = -1/2 scales every
 /// direction halfway between gradient descent (kappa = 1: J^T r) and Gauss-Newton
-/// (kappa = -1: J^+ r). Throws std::invalid_argument on bad options or sizes and
-/// OptimizationError when r or J is not finite or the SVD fails.
+/// (kappa = -1: J^+ r). For a loss other than 1/2 |r|^2 of outputs y with J = dy/dx, pass
+/// r = dL/dy (the book's form; e.g. 2 (y - y*) / batch for a mean squared error).
+/// Throws std::invalid_argument on bad options or sizes and OptimizationError when r or J is
+/// not finite or the SVD fails.
 inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r,
                             const HigOptions& options = {}) {
   detail::check_hig_options(options);

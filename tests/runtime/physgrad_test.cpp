@@ -1,0 +1,135 @@
+// Tests of dpgen/physgrad.hpp: the PG update on the book's y = (x0, x1^2) example against its
+// closed form (and the notebook's printed iterates); one PG step with an exact inverse solves
+// a linear problem; the regularized inverse against a dense solve and its limits; errors.
+#include "dpgen/physgrad.hpp"
+
+#include "test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using dpgen_test::random_vector;
+
+// The book's "simple example": y(x) = (x0, x1^2), L = |y|^2, inverse y^-1 = (y0, sqrt(y1)).
+dpgen::PhysicalGradientProblem book_example() {
+  dpgen::PhysicalGradientProblem p;
+  p.forward = [](const VectorXd& x) { return VectorXd((VectorXd(2) << x[0], x[1] * x[1]).finished()); };
+  p.inverse = [](const VectorXd& y, const VectorXd&) {
+    return VectorXd((VectorXd(2) << y[0], std::sqrt(y[1])).finished());
+  };
+  p.loss = dpgen::l2_loss_newton(VectorXd::Zero(2));
+  return p;
+}
+
+TEST_CASE("PG on the book's example: y shrinks by 1 - lr per step, x = (3 q^k, 3 q^(k/2))") {
+  const auto p = book_example();
+  dpgen::PgOptions o;
+  o.learning_rate = 0.3;
+  VectorXd x(2);
+  x << 3.0, 3.0;
+  for (int k = 1; k <= 10; ++k) {
+    x = dpgen::physical_update(p, x, o);
+    CHECK(x[0] == doctest::Approx(3.0 * std::pow(0.7, k)).epsilon(1e-14));
+    CHECK(x[1] == doctest::Approx(3.0 * std::pow(0.7, 0.5 * k)).epsilon(1e-14));
+  }
+  // The notebook (float32, JAX) prints "PG iter 9: [0.08474258 0.50421]".
+  CHECK(x[0] == doctest::Approx(0.08474258).epsilon(1e-6));
+  CHECK(x[1] == doctest::Approx(0.50421).epsilon(1e-5));
+}
+
+TEST_CASE("with an exact inverse and lr 1, one PG step solves a linear problem; pg_minimize") {
+  const MatrixXd a = MatrixXd::Identity(5, 5) + 0.3 * Eigen::Map<const MatrixXd>(
+                                                           random_vector(25, 1).data(), 5, 5);
+  const VectorXd target = random_vector(5, 2);
+  dpgen::PhysicalGradientProblem p;
+  p.forward = [&](const VectorXd& x) -> VectorXd { return a * x; };
+  p.inverse = [&](const VectorXd& y, const VectorXd&) -> VectorXd {
+    return a.partialPivLu().solve(y);
+  };
+  p.loss = dpgen::l2_loss_newton(target);
+  VectorXd x = random_vector(5, 3);
+  dpgen::PgOptions o;
+  o.max_iterations = 5;
+  o.loss_tolerance = 1e-24;
+  const dpgen::PgSummary s = dpgen::pg_minimize(p, x, o);
+  CHECK(s.termination == dpgen::PgTermination::loss_tolerance);
+  CHECK(s.iterations == 1);
+  CHECK((a * x - target).norm() < 1e-12);
+  CHECK(s.initial_loss > 0.1);
+  // lr 1/2 halves the residual in y each step: loss / 4 per step.
+  x = random_vector(5, 3);
+  o.learning_rate = 0.5;
+  o.loss_tolerance = -1.0;
+  const dpgen::PgSummary half = dpgen::pg_minimize(p, x, o);
+  CHECK(half.termination == dpgen::PgTermination::max_iterations);
+  CHECK(half.iterations == 5);
+  CHECK(half.final_loss == doctest::Approx(half.initial_loss / std::pow(4.0, 5)).epsilon(1e-10));
+}
+
+TEST_CASE("regularized inverse: the dense Tikhonov solution; lambda -> 0 inverts exactly") {
+  // A smoothing operator (three Jacobi-style diffusion passes), applied as a dense matrix.
+  const int n = 16;
+  MatrixXd d = MatrixXd::Identity(n, n) * 0.5;
+  for (int i = 0; i < n; ++i) {
+    d(i, (i + 1) % n) += 0.25;
+    d(i, (i + n - 1) % n) += 0.25;
+  }
+  const MatrixXd p = d * d * d;
+  const auto apply = [&](const VectorXd& v, VectorXd& out) { out = p * v; };
+  const auto apply_t = [&](const VectorXd& v, VectorXd& out) { out = p.transpose() * v; };
+  const VectorXd x = random_vector(n, 4), y = random_vector(n, 5);
+  const double lambda = 1e-3;
+  const VectorXd got = dpgen::regularized_inverse(apply, apply_t, y, x, lambda);
+  const MatrixXd normal = p.transpose() * p + lambda * MatrixXd::Identity(n, n);
+  const VectorXd expected = x + normal.ldlt().solve(p.transpose() * (y - p * x));
+  CHECK((got - expected).norm() < 1e-8 * expected.norm());
+  // P is singular (the checkerboard mode is wiped out): large lambda keeps x, the
+  // regularized solve stays finite where the exact inverse does not exist.
+  const VectorXd kept = dpgen::regularized_inverse(apply, apply_t, y, x, 1e8);
+  CHECK((kept - x).norm() < 1e-6 * x.norm());
+  // For an invertible P, small lambda recovers P^-1 y.
+  const MatrixXd q = MatrixXd::Identity(n, n) + 0.5 * d;
+  const auto apply_q = [&](const VectorXd& v, VectorXd& out) { out = q * v; };
+  const auto apply_qt = [&](const VectorXd& v, VectorXd& out) { out = q.transpose() * v; };
+  const VectorXd inv = dpgen::regularized_inverse(apply_q, apply_qt, y, x, 1e-12);
+  CHECK((q * inv - y).norm() < 1e-8 * y.norm());
+}
+
+TEST_CASE("bad input is a clear error") {
+  auto p = book_example();
+  VectorXd x(2);
+  x << 3.0, 3.0;
+  dpgen::PgOptions o;
+  o.learning_rate = -1.0;
+  CHECK_THROWS_WITH_AS(dpgen::physical_update(p, x, o),
+                       "pg: learning_rate must be positive and finite (got -1)",
+                       std::invalid_argument);
+  o = {};
+  p.inverse = [](const VectorXd&, const VectorXd&) { return VectorXd::Zero(3).eval(); };
+  CHECK_THROWS_WITH_AS(dpgen::physical_update(p, x, o),
+                       "pg: inverse simulator's result has size 3, expected 2",
+                       std::invalid_argument);
+  p.inverse = nullptr;
+  CHECK_THROWS_WITH_AS(dpgen::physical_update(p, x, o),
+                       "pg: the problem needs forward, inverse and loss callables",
+                       std::invalid_argument);
+  p = book_example();
+  x[0] = std::nan("");
+  CHECK_THROWS_WITH_AS(dpgen::physical_update(p, x, o), "pg: x contains nan at index 0",
+                       std::invalid_argument);
+  const auto identity = [](const VectorXd& v, VectorXd& out) { out = v; };
+  CHECK_THROWS_WITH_AS(dpgen::regularized_inverse(identity, identity, VectorXd::Ones(2),
+                                                  VectorXd::Ones(2), 0.0),
+                       "regularized inverse: lambda must be positive (got 0)",
+                       std::invalid_argument);
+}
+
+} // namespace
