@@ -64,23 +64,33 @@ int main(int argc, char** argv) try {
   dpgen_examples::Args args(argc, argv, "smoke_optimization",
                             "Optimize the initial velocities of three smoke plumes so that after "
                             "20 steps they match a fourth (the PBDL book's NS example, dpgen).");
-  const int scale = args.get_int("--scale", 1, "cells per domain unit (1: the book's 32x40)");
-  const int steps = args.get_int("--steps", 20, "simulation steps");
-  const double dt = args.get_double("--dt", 1.0, "time step");
-  const int iters = args.get_int("--iters", 80, "optimizer iterations");
-  const double lr = args.get_double("--lr", 1e-3, "learning rate");
-  const std::string method = args.get_string("--optimizer", "gd", "gd, adam or lbfgs");
+  // --large 1: the same physical problem (box, inflows, end time 20) at 8x the resolution in
+  // each direction and 5x the steps; every default below can still be overridden.
+  const bool large = args.get_int("--large", 0,
+                                  "1: the larger run, 256x320 cells, 100 steps of dt 0.2, Revolve "
+                                  "with 10 snapshots, Adam (defaults below are for 0)") != 0;
+  const int scale = args.get_int("--scale", large ? 8 : 1,
+                                 "cells per domain unit (1: the book's 32x40)");
+  const int steps = args.get_int("--steps", large ? 100 : 20, "simulation steps");
+  const double dt = args.get_double("--dt", large ? 0.2 : 1.0, "time step");
+  const int iters = args.get_int("--iters", large ? 10 : 80, "optimizer iterations");
+  const double lr = args.get_double("--lr", large ? 1e-3 : 1e-3, "learning rate");
+  const std::string method =
+      args.get_string("--optimizer", large ? "adam" : "gd", "gd, adam or lbfgs");
   const std::string advection =
       args.get_string("--advection", "maccormack", "marker transport: maccormack or sl");
-  const int checkpoints =
-      args.get_int("--checkpoints", 0, "Revolve snapshots per simulation (0: store every state)");
+  const int checkpoints = args.get_int("--checkpoints", large ? 10 : 0,
+                                       "Revolve snapshots per simulation (0: store every state)");
+  const int frame_every = args.get_int(
+      "--frame-every", large ? 5 : 1,
+      "with --out: a PNG of the optimized plumes every this many steps (frames/frame_<t>.png)");
   const double tol = args.get_double("--pressure-tol", 1e-8, "relative tolerance, pressure solves");
   const auto common = dpgen_examples::common_options(args, "smoke_optimization");
   if (args.finish())
     return 0;
-  if (scale < 1 || steps < 1 || iters < 0 || !(dt > 0) || checkpoints < 0)
+  if (scale < 1 || steps < 1 || iters < 0 || !(dt > 0) || checkpoints < 0 || frame_every < 1)
     throw std::invalid_argument("smoke_optimization: need --scale >= 1, --steps >= 1, --dt > 0, "
-                                "--iters >= 0, --checkpoints >= 0");
+                                "--iters >= 0, --checkpoints >= 0, --frame-every >= 1");
   if (advection != "maccormack" && advection != "sl")
     throw std::invalid_argument("smoke_optimization: --advection must be maccormack or sl");
 
@@ -102,19 +112,19 @@ int main(int argc, char** argv) try {
               "%d velocity unknowns per plume\n",
               nx, ny, steps, dt, advection.c_str(), int(velocity_size));
 
-  // A plume from an initial velocity (the marker starts empty): the states at every step.
+  // A plume from an initial velocity (the marker starts empty): the marker at every step.
   const auto simulate = [&](dpgen::Flow2d& flow, const Eigen::Ref<const VectorXd>& velocity) {
-    std::vector<VectorXd> states(1, VectorXd::Zero(flow.state_size()));
-    states[0].tail(velocity_size) = velocity;
-    VectorXd next;
+    VectorXd state = VectorXd::Zero(flow.state_size()), next;
+    state.tail(velocity_size) = velocity;
+    std::vector<VectorXd> markers(1, state.head(flow.cells()));
     for (int t = 0; t < steps; ++t) {
-      flow.step(states.back(), next);
-      states.push_back(next);
+      flow.step(state, next);
+      state.swap(next);
+      markers.push_back(state.head(flow.cells()));
     }
-    return states;
+    return markers;
   };
-  const VectorXd reference =
-      simulate(*flows[3], VectorXd::Zero(velocity_size)).back().head(shape.cells());
+  const VectorXd reference = simulate(*flows[3], VectorXd::Zero(velocity_size)).back();
 
   // x: the initial velocities [u, v] of the three plumes, one after the other. The wall faces
   // are no unknowns: the simulation multiplies them by 0 (so their gradient is 0 too).
@@ -180,9 +190,11 @@ int main(int argc, char** argv) try {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("loss %.6g -> %.6g (%.2fx lower) in %d iterations; %s\n", s.initial_loss,
               s.final_loss, s.initial_loss / s.final_loss, s.iterations, s.message.c_str());
-  std::printf("wall time: %.3g s for %d loss+gradient evaluations (3 plumes x %d steps each, "
-              "forward and backward); per plume: %lld forward steps, %d states stored at most\n",
-              wall, s.evaluations, steps, last_stats.forward_steps, last_stats.max_snapshots);
+  std::printf("wall time: %.3g s for %d loss+gradient evaluations (%.3g s each; 3 plumes x %d "
+              "steps each, forward and backward); per plume: %lld forward steps, %d states "
+              "stored at most\n",
+              wall, s.evaluations, wall / std::max(1, s.evaluations), steps,
+              last_stats.forward_steps, last_stats.max_snapshots);
   if (scale == 1 && steps == 20 && dt == 1.0) {
     std::printf("\noptimization step | loss (dpgen) | loss (notebook, PhiFlow)\n");
     for (int k = 0; k < 10; ++k)
@@ -199,10 +211,10 @@ int main(int argc, char** argv) try {
     std::vector<std::vector<std::vector<double>>> runs;
     for (int b = 0; b < 3; ++b) {
       before.push_back(
-          vec(simulate(*flows[b], VectorXd::Zero(velocity_size)).back().head(shape.cells())));
+          vec(simulate(*flows[b], VectorXd::Zero(velocity_size)).back()));
       runs.push_back({});
       for (const VectorXd& st : simulate(*flows[b], x.segment(b * velocity_size, velocity_size)))
-        runs.back().push_back(vec(st.head(shape.cells())));
+        runs.back().push_back(vec(st));
       after.push_back(runs.back().back());
     }
     before.push_back(vec(reference));
@@ -235,17 +247,39 @@ int main(int argc, char** argv) try {
       frame_titles.push_back("ours, t=" + std::to_string(k * steps / 5));
     }
     for (int k = 1; k <= 5; ++k) {
-      frames.push_back(vec(ref_run[size_t(k * steps / 5)].head(shape.cells())));
+      frames.push_back(vec(ref_run[size_t(k * steps / 5)]));
       frame_titles.push_back("ref., t=" + std::to_string(k * steps / 5));
     }
     dpgen_examples::write_png_fields(dir + "frames.png", frames, nx, ny,
                                      figure("optimized plume 1 against the reference",
                                             frame_titles));
+    // The optimized plumes (and the reference) as PNG frames, one every frame_every steps and
+    // the last one: frames/frame_<t>.png.
+    const std::string frame_dir = dpgen_examples::output_dir(dir + "frames");
+    int frame_count = 0;
+    for (int t = 0; t <= steps; ++t) {
+      if (t % frame_every != 0 && t != steps)
+        continue;
+      std::vector<std::vector<double>> panels;
+      for (int b = 0; b < 3; ++b)
+        panels.push_back(runs[size_t(b)][size_t(t)]);
+      panels.push_back(vec(ref_run[size_t(t)]));
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%03d.png", t);
+      dpgen_examples::write_png_fields(
+          frame_dir + name, panels, nx, ny,
+          figure("optimized plumes and the reference, step " + std::to_string(t) + " of " +
+                     std::to_string(steps),
+                 {"plume 1", "plume 2", "plume 3", "reference"}));
+      ++frame_count;
+    }
     dpgen_examples::write_svg_plot(dir + "loss.svg", "smoke_optimization: loss", "iteration",
                                    "sum of 1/2 |s_T - s_ref|^2",
                                    {{"loss", curve.iteration, curve.loss}}, true);
-    std::printf("pictures: %sfinal_before.png %sfinal_optimized.png %sframes.png %sloss.svg\n",
-                dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str());
+    std::printf("pictures: %sfinal_before.png %sfinal_optimized.png %sframes.png (strip) "
+                "%sloss.svg, %d frames in %s\n",
+                dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), frame_count,
+                frame_dir.c_str());
   }
   return dpgen_examples::check_reduction(s.initial_loss / s.final_loss, common.require);
 } catch (const std::exception& e) {

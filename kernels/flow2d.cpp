@@ -1,10 +1,18 @@
-// Kernels of the 2D incompressible flow solver (dpgen/flow2d.hpp) on a closed
-// MAC grid of nx-by-ny cells of size h: the marker s at cell centres (j*nx + i),
-// u on the x faces ((nx+1) per row, u[j*(nx+1) + i] on the west face of cell
-// (i, j)), v on the y faces (v[j*nx + i] on the south face). The wall faces
-// (i = 0, nx for u; j = 0, ny for v) carry zero normal velocity. dpgen generates
-// every adjoint; the semi-Lagrangian reads are data-dependent, so theirs are in
-// scatter form.
+// Kernels of the 2D incompressible flow solver (dpgen/flow2d.hpp) on a MAC grid of
+// nx-by-ny cells of size h: the marker s at cell centres (j*nx + i), u on the x
+// faces ((nx+1) per row, u[j*(nx+1) + i] on the west face of cell (i, j)), v on
+// the y faces (v[j*nx + i] on the south face). dpgen generates every adjoint; the
+// semi-Lagrangian reads are data-dependent, so theirs are in scatter form.
+//
+// Each axis is closed or periodic (px, py: 0 or 1).
+//   closed:   the wall faces (i = 0, nx for u; j = 0, ny for v) carry zero normal
+//             velocity; traces are clamped to the grid (zero gradient at walls).
+//   periodic: face nx of a u row is face 0 (row ny of v is row 0). The kernels
+//             write it as a bit-identical copy of face 0 (same expression, same
+//             reads) and never read it: it is there so that both layouts are the
+//             same, and a state's copy faces have no influence on anything.
+//             Traces wrap around (x - nx floor(x / nx): floor has zero
+//             derivative, so the wrap does not change the gradient).
 #include "kernels.hpp"
 
 #include <algorithm>
@@ -14,22 +22,29 @@
 // supported by the generator yet.)
 
 // Semi-Lagrangian transport of the marker, plus the inflow: trace each cell
-// centre back by dt * (centre velocity), clamp to the cell centres (zero
-// gradient at the walls), interpolate bilinearly:
+// centre back by dt * (centre velocity), clamp to the cell centres (closed) or
+// wrap (periodic), interpolate bilinearly:
 //   s_out = s(x - dt u(x)) + inflow.   (dt_h = dt / h: distances in cells)
 DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const double* u,
                                      DPGEN_IN const double* v, DPGEN_IN const double* inflow,
-                                     DPGEN_OUT double* s_out, int nx, int ny, double dt_h) {
+                                     DPGEN_OUT double* s_out, int nx, int ny, double dt_h, int px,
+                                     int py) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const double uc = 0.5 * (u[j * (nx + 1) + i] + u[j * (nx + 1) + i + 1]);
-      const double vc = 0.5 * (v[j * nx + i] + v[(j + 1) * nx + i]);
-      const double x = std::min(std::max(i - dt_h * uc, 0.0), nx - 1.0);
-      const double y = std::min(std::max(j - dt_h * vc, 0.0), ny - 1.0);
-      const int i0 = static_cast<int>(std::floor(x));
-      const int j0 = static_cast<int>(std::floor(y));
-      const int i1 = i0 < nx - 1 ? i0 + 1 : i0;
-      const int j1 = j0 < ny - 1 ? j0 + 1 : j0;
+      const int ie = i < nx - 1 ? i + 1 : (px != 0 ? 0 : nx); // east face (wrapped)
+      const int jn = j < ny - 1 ? j + 1 : (py != 0 ? 0 : ny); // north face row (wrapped)
+      const double uc = 0.5 * (u[j * (nx + 1) + i] + u[j * (nx + 1) + ie]);
+      const double vc = 0.5 * (v[j * nx + i] + v[jn * nx + i]);
+      const double xr = i - dt_h * uc, yr = j - dt_h * vc;
+      const double x =
+          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), nx - 1.0);
+      const double y =
+          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), ny - 1.0);
+      // (x < nx also when x rounds to nx after the wrap: cell nx-1 with weight fx = 1.)
+      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
+      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
+      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : i0);
+      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : j0);
       const double fx = x - i0, fy = y - j0;
       s_out[j * nx + i] = (1.0 - fy) * ((1.0 - fx) * s[j0 * nx + i0] + fx * s[j0 * nx + i1]) +
                           fy * ((1.0 - fx) * s[j1 * nx + i0] + fx * s[j1 * nx + i1]) +
@@ -40,117 +55,172 @@ DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const do
 // Semi-Lagrangian self-advection of u on its own (nx+1)-by-ny face grid; the
 // velocity at an x face is u there and the mean of the 4 nearest v faces.
 DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double* v,
-                                DPGEN_OUT double* u_out, int nx, int ny, double dt_h) {
+                                DPGEN_OUT double* u_out, int nx, int ny, double dt_h, int px,
+                                int py) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       const int k = j * (nx + 1) + i;
-      if (i == 0 || i == nx) {
+      if (px == 0 && (i == 0 || i == nx)) {
         u_out[k] = 0.0;
         continue;
       }
-      const double vf = 0.25 * (v[j * nx + i - 1] + v[j * nx + i] + v[(j + 1) * nx + i - 1] +
-                                v[(j + 1) * nx + i]);
-      const double x = std::min(std::max(i - dt_h * u[k], 0.0), 1.0 * nx);
-      const double y = std::min(std::max(j - dt_h * vf, 0.0), ny - 1.0);
-      const int i0 = x < nx ? static_cast<int>(std::floor(x)) : nx - 1;
-      const int j0 = static_cast<int>(std::floor(y));
-      const int j1 = j0 < ny - 1 ? j0 + 1 : j0;
+      const int ce = i < nx ? i : 0;      // the cell east of the face; face nx is face 0
+      const int cw = i > 0 ? i - 1 : nx - 1; // the cell west of it
+      const int jn = j < ny - 1 ? j + 1 : (py != 0 ? 0 : ny);
+      const double vf =
+          0.25 * (v[j * nx + cw] + v[j * nx + ce] + v[jn * nx + cw] + v[jn * nx + ce]);
+      const double xr = ce - dt_h * u[j * (nx + 1) + ce], yr = j - dt_h * vf;
+      const double x =
+          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), 1.0 * nx);
+      const double y =
+          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), ny - 1.0);
+      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
+      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
+      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : nx);
+      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : j0);
       const double fx = x - i0, fy = y - j0;
       u_out[k] =
-          (1.0 - fy) * ((1.0 - fx) * u[j0 * (nx + 1) + i0] + fx * u[j0 * (nx + 1) + i0 + 1]) +
-          fy * ((1.0 - fx) * u[j1 * (nx + 1) + i0] + fx * u[j1 * (nx + 1) + i0 + 1]);
-    }
-}
-
-// div u per cell: (u_e - u_w + v_n - v_s) / h.
-DPGEN_KERNEL void flow_divergence(DPGEN_IN const double* u, DPGEN_IN const double* v,
-                                  DPGEN_OUT double* div, int nx, int ny, double h) {
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      div[j * nx + i] =
-          (u[j * (nx + 1) + i + 1] - u[j * (nx + 1) + i] + v[(j + 1) * nx + i] - v[j * nx + i]) / h;
-}
-
-// The projection's velocity update: u -= dp/dx on the interior x faces.
-// (One kernel per component: dpgen wants one loop nest per kernel.)
-DPGEN_KERNEL void flow_subtract_gradient_u(DPGEN_IN const double* u, DPGEN_IN const double* p,
-                                           DPGEN_OUT double* u_out, int nx, int ny, double h) {
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      const int k = j * (nx + 1) + i;
-      if (i == 0 || i == nx) {
-        u_out[k] = 0.0;
-        continue;
-      }
-      u_out[k] = u[k] - (p[j * nx + i] - p[j * nx + i - 1]) / h;
-    }
-}
-
-// v -= dp/dy on the interior y faces.
-DPGEN_KERNEL void flow_subtract_gradient_v(DPGEN_IN const double* v, DPGEN_IN const double* p,
-                                           DPGEN_OUT double* v_out, int nx, int ny, double h) {
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int k = j * nx + i;
-      if (j == 0 || j == ny) {
-        v_out[k] = 0.0;
-        continue;
-      }
-      v_out[k] = v[k] - (p[k] - p[k - nx]) / h;
+          (1.0 - fy) * ((1.0 - fx) * u[j0 * (nx + 1) + i0] + fx * u[j0 * (nx + 1) + i1]) +
+          fy * ((1.0 - fx) * u[j1 * (nx + 1) + i0] + fx * u[j1 * (nx + 1) + i1]);
     }
 }
 
 // Semi-Lagrangian self-advection of v on its nx-by-(ny+1) face grid.
 DPGEN_KERNEL void flow_advect_v(DPGEN_IN const double* u, DPGEN_IN const double* v,
-                                DPGEN_OUT double* v_out, int nx, int ny, double dt_h) {
+                                DPGEN_OUT double* v_out, int nx, int ny, double dt_h, int px,
+                                int py) {
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int k = j * nx + i;
-      if (j == 0 || j == ny) {
+      if (py == 0 && (j == 0 || j == ny)) {
         v_out[k] = 0.0;
         continue;
       }
-      const double uf = 0.25 * (u[(j - 1) * (nx + 1) + i] + u[(j - 1) * (nx + 1) + i + 1] +
-                                u[j * (nx + 1) + i] + u[j * (nx + 1) + i + 1]);
-      const double x = std::min(std::max(i - dt_h * uf, 0.0), nx - 1.0);
-      const double y = std::min(std::max(j - dt_h * v[k], 0.0), 1.0 * ny);
-      const int i0 = static_cast<int>(std::floor(x));
-      const int j0 = y < ny ? static_cast<int>(std::floor(y)) : ny - 1;
-      const int i1 = i0 < nx - 1 ? i0 + 1 : i0;
+      const int cn = j < ny ? j : 0;      // the cell row north of the face; row ny is row 0
+      const int cs = j > 0 ? j - 1 : ny - 1; // the row south of it
+      const int ie = i < nx - 1 ? i + 1 : (px != 0 ? 0 : nx);
+      const double uf = 0.25 * (u[cs * (nx + 1) + i] + u[cs * (nx + 1) + ie] +
+                                u[cn * (nx + 1) + i] + u[cn * (nx + 1) + ie]);
+      const double xr = i - dt_h * uf, yr = cn - dt_h * v[cn * nx + i];
+      const double x =
+          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), nx - 1.0);
+      const double y =
+          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), 1.0 * ny);
+      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
+      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
+      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : i0);
+      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : ny);
       const double fx = x - i0, fy = y - j0;
       v_out[k] = (1.0 - fy) * ((1.0 - fx) * v[j0 * nx + i0] + fx * v[j0 * nx + i1]) +
-                 fy * ((1.0 - fx) * v[(j0 + 1) * nx + i0] + fx * v[(j0 + 1) * nx + i1]);
+                 fy * ((1.0 - fx) * v[j1 * nx + i0] + fx * v[j1 * nx + i1]);
     }
 }
 
-// Boussinesq buoyancy: v += dt_b * (marker averaged onto the y face), with
-// dt_b = dt * buoyancy coefficient.
-DPGEN_KERNEL void flow_buoyancy(DPGEN_IN const double* v, DPGEN_IN const double* s,
-                                DPGEN_OUT double* v_out, int nx, int ny, double dt_b) {
+// div u per cell: (u_e - u_w + v_n - v_s) / h (the east and north faces of the
+// last column and row wrap to face 0 when periodic: copies are not read).
+DPGEN_KERNEL void flow_divergence(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                  DPGEN_OUT double* div, int nx, int ny, double h, int px,
+                                  int py) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int ie = i < nx - 1 ? i + 1 : (px != 0 ? 0 : nx);
+      const int jn = j < ny - 1 ? j + 1 : (py != 0 ? 0 : ny);
+      div[j * nx + i] =
+          (u[j * (nx + 1) + ie] - u[j * (nx + 1) + i] + v[jn * nx + i] - v[j * nx + i]) / h;
+    }
+}
+
+// The projection's velocity update: u -= dp/dx on the x faces (closed: the
+// walls stay zero; periodic: face nx is face 0 again).
+// (One kernel per component: dpgen wants one loop nest per kernel.)
+DPGEN_KERNEL void flow_subtract_gradient_u(DPGEN_IN const double* u, DPGEN_IN const double* p,
+                                           DPGEN_OUT double* u_out, int nx, int ny, double h,
+                                           int px) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const int k = j * (nx + 1) + i;
+      if (px == 0 && (i == 0 || i == nx)) {
+        u_out[k] = 0.0;
+        continue;
+      }
+      const int ce = i < nx ? i : 0;
+      const int cw = i > 0 ? i - 1 : nx - 1;
+      u_out[k] = u[j * (nx + 1) + ce] - (p[j * nx + ce] - p[j * nx + cw]) / h;
+    }
+}
+
+// v -= dp/dy on the y faces.
+DPGEN_KERNEL void flow_subtract_gradient_v(DPGEN_IN const double* v, DPGEN_IN const double* p,
+                                           DPGEN_OUT double* v_out, int nx, int ny, double h,
+                                           int py) {
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int k = j * nx + i;
-      if (j == 0 || j == ny) {
+      if (py == 0 && (j == 0 || j == ny)) {
         v_out[k] = 0.0;
         continue;
       }
-      v_out[k] = v[k] + dt_b * 0.5 * (s[k - nx] + s[k]);
+      const int cn = j < ny ? j : 0;
+      const int cs = j > 0 ? j - 1 : ny - 1;
+      v_out[k] = v[cn * nx + i] - (p[cn * nx + i] - p[cs * nx + i]) / h;
     }
 }
 
-// -div(k grad p) with closed walls (no flux through them; the constants are its
-// null space): the pressure Poisson operator, k = 1 for a plain projection (a
-// LevelOperator of dpgen/multigrid.hpp).
+// Boussinesq buoyancy and a body force on the y faces:
+//   v += dt_b * (marker averaged onto the face) + dt * (fy averaged onto the face),
+// with dt_b = dt * buoyancy coefficient and fy a force per unit mass at the cell
+// centres.
+DPGEN_KERNEL void flow_buoyancy(DPGEN_IN const double* v, DPGEN_IN const double* s,
+                                DPGEN_IN const double* fy, DPGEN_OUT double* v_out, int nx,
+                                int ny, double dt_b, double dt, int py) {
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int k = j * nx + i;
+      if (py == 0 && (j == 0 || j == ny)) {
+        v_out[k] = 0.0;
+        continue;
+      }
+      const int n = (j < ny ? j : 0) * nx + i;       // the cell north of the face
+      const int so = (j > 0 ? j - 1 : ny - 1) * nx + i; // and south of it
+      v_out[k] = v[n] + dt_b * 0.5 * (s[so] + s[n]) + dt * 0.5 * (fy[so] + fy[n]);
+    }
+}
+
+// The body force on the x faces: u += dt * (fx averaged onto the face).
+DPGEN_KERNEL void flow_force_u(DPGEN_IN const double* u, DPGEN_IN const double* fx,
+                               DPGEN_OUT double* u_out, int nx, int ny, double dt, int px) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const int k = j * (nx + 1) + i;
+      if (px == 0 && (i == 0 || i == nx)) {
+        u_out[k] = 0.0;
+        continue;
+      }
+      const int ce = i < nx ? i : 0;
+      const int cw = i > 0 ? i - 1 : nx - 1;
+      u_out[k] = u[j * (nx + 1) + ce] + dt * 0.5 * (fx[j * nx + cw] + fx[j * nx + ce]);
+    }
+}
+
+// -div(k grad p) with closed walls (no flux through them) or periodic axes; the
+// constants are its null space either way: the pressure Poisson operator, k = 1
+// for a plain projection (a LevelOperator of dpgen/multigrid.hpp, with px, py
+// bound). ox, oy: 1 for periodic, 0 for closed (the weight of the wrapped face).
 DPGEN_KERNEL void flow_pressure_operator(DPGEN_IN const double* p, DPGEN_IN const double* k,
-                                         DPGEN_OUT double* out, int nx, int ny, double h) {
+                                         DPGEN_OUT double* out, int nx, int ny, double h,
+                                         double ox, double oy) {
   const double inv_h2 = 1.0 / (h * h);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int c = j * nx + i;
-      double sum = i < nx - 1 ? 0.5 * (k[c] + k[c + 1]) * (p[c] - p[c + 1]) : 0.0;
-      sum += i > 0 ? 0.5 * (k[c] + k[c - 1]) * (p[c] - p[c - 1]) : 0.0;
-      sum += j < ny - 1 ? 0.5 * (k[c] + k[c + nx]) * (p[c] - p[c + nx]) : 0.0;
-      sum += j > 0 ? 0.5 * (k[c] + k[c - nx]) * (p[c] - p[c - nx]) : 0.0;
+      const int e = j * nx + (i < nx - 1 ? i + 1 : 0);
+      const int w = j * nx + (i > 0 ? i - 1 : nx - 1);
+      const int no = (j < ny - 1 ? j + 1 : 0) * nx + i;
+      const int so = (j > 0 ? j - 1 : ny - 1) * nx + i;
+      double sum = (i < nx - 1 ? 1.0 : ox) * 0.5 * (k[c] + k[e]) * (p[c] - p[e]);
+      sum += (i > 0 ? 1.0 : ox) * 0.5 * (k[c] + k[w]) * (p[c] - p[w]);
+      sum += (j < ny - 1 ? 1.0 : oy) * 0.5 * (k[c] + k[no]) * (p[c] - p[no]);
+      sum += (j > 0 ? 1.0 : oy) * 0.5 * (k[c] + k[so]) * (p[c] - p[so]);
       out[c] = sum * inv_h2;
     }
 }
@@ -164,18 +234,24 @@ DPGEN_KERNEL void flow_pressure_operator(DPGEN_IN const double* p, DPGEN_IN cons
 DPGEN_KERNEL void flow_maccormack_marker(DPGEN_IN const double* s, DPGEN_IN const double* s_sl,
                                          DPGEN_IN const double* s_rev, DPGEN_IN const double* u,
                                          DPGEN_IN const double* v, DPGEN_IN const double* inflow,
-                                         DPGEN_OUT double* s_out, int nx, int ny, double dt_h) {
+                                         DPGEN_OUT double* s_out, int nx, int ny, double dt_h,
+                                         int px, int py) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int k = j * nx + i;
-      const double uc = 0.5 * (u[j * (nx + 1) + i] + u[j * (nx + 1) + i + 1]);
-      const double vc = 0.5 * (v[j * nx + i] + v[(j + 1) * nx + i]);
-      const double x = std::min(std::max(i - dt_h * uc, 0.0), nx - 1.0);
-      const double y = std::min(std::max(j - dt_h * vc, 0.0), ny - 1.0);
-      const int i0 = static_cast<int>(std::floor(x));
-      const int j0 = static_cast<int>(std::floor(y));
-      const int i1 = i0 < nx - 1 ? i0 + 1 : i0;
-      const int j1 = j0 < ny - 1 ? j0 + 1 : j0;
+      const int ie = i < nx - 1 ? i + 1 : (px != 0 ? 0 : nx);
+      const int jn = j < ny - 1 ? j + 1 : (py != 0 ? 0 : ny);
+      const double uc = 0.5 * (u[j * (nx + 1) + i] + u[j * (nx + 1) + ie]);
+      const double vc = 0.5 * (v[j * nx + i] + v[jn * nx + i]);
+      const double xr = i - dt_h * uc, yr = j - dt_h * vc;
+      const double x =
+          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), nx - 1.0);
+      const double y =
+          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), ny - 1.0);
+      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
+      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
+      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : i0);
+      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : j0);
       const double a = s[j0 * nx + i0], b = s[j0 * nx + i1];
       const double c = s[j1 * nx + i0], d = s[j1 * nx + i1];
       const double lo = std::min(std::min(a, b), std::min(c, d));

@@ -1,8 +1,8 @@
-// A differentiable 2D incompressible flow solver (a smoke plume in a closed box) built from
-// dpgen kernels (kernels/flow2d.cpp): semi-Lagrangian transport of a marker and of the velocity,
-// a constant marker inflow, Boussinesq buoyancy, and a pressure projection solved by
-// multigrid-preconditioned CG whose gradient comes from the implicit-function rule. Link
-// dpgen::kernels to use this header.
+// A differentiable 2D incompressible flow solver (a smoke plume in a closed box, or a flow with
+// periodic axes) built from dpgen kernels (kernels/flow2d.cpp): semi-Lagrangian transport of a
+// marker and of the velocity, a constant marker inflow, Boussinesq buoyancy, a body force field,
+// and a pressure projection solved by multigrid-preconditioned CG whose gradient comes from the
+// implicit-function rule. Link dpgen::kernels to use this header.
 #pragma once
 
 #include "dpgen/implicit_solve.hpp"
@@ -31,14 +31,23 @@ struct FlowOptions {
   /// The pressure solves (forward and backward): relative tolerance and iteration limit.
   double pressure_tolerance = 1e-10;
   int max_pressure_iterations = 100;
+  /// Periodic axes (false: closed walls on both sides of that axis). On a periodic x axis the
+  /// u face i = nx of each row is face 0: steps write it as a bit-identical copy and never read
+  /// it (so its value in a state has no influence, and its gradient is zero); likewise the v row
+  /// j = ny on a periodic y axis.
+  bool periodic_x = false;
+  bool periodic_y = false;
 };
 
-/// A closed nx-by-ny MAC grid of cells of size h and one time step on it. The state is one
-/// vector [s, u, v]: the marker s at the nx*ny cell centres, u on the (nx+1)*ny x faces, v on the
-/// nx*(ny+1) y faces (wall faces zero). One step:
+/// An nx-by-ny MAC grid of cells of size h (each axis closed or periodic) and one time step on
+/// it. The state is one vector [s, u, v]: the marker s at the nx*ny cell centres, u on the
+/// (nx+1)*ny x faces, v on the nx*(ny+1) y faces (wall faces zero; on a periodic axis the last
+/// face is a copy of the first). One step, with a body force f = (fx, fy) per cell (zero unless
+/// set_force is called) averaged onto the faces:
 ///   s1 = s(x - dt u) + inflow                      semi-Lagrangian (or MacCormack), marker
-///   u1 = u(x - dt u),  v1 = v(x - dt u) + dt b s1   semi-Lagrangian, velocity; buoyancy
-///   A p = -div(u1, v1)                              A = -laplace with closed walls (MG-PCG)
+///   u1 = u(x - dt u) + dt fx                        semi-Lagrangian, velocity; force
+///   v1 = v(x - dt u) + dt b s1 + dt fy              buoyancy and force
+///   A p = -div(u1, v1)                              A = -laplace, walls or periodic (MG-PCG)
 ///   (u2, v2) = (u1, v1) - grad p                    divergence-free
 /// and its adjoint, which recomputes the step's intermediates from the state (nothing is kept
 /// between calls, so a checkpointing schedule may call it in any order).
@@ -47,8 +56,9 @@ public:
   /// `inflow`: the marker added per step at each cell (nx*ny values).
   Flow2d(int nx, int ny, double h, Eigen::VectorXd inflow, FlowOptions options = {})
       : nx_(nx), ny_(ny), h_(h), inflow_(std::move(inflow)), options_(options),
-        multigrid_(check_grid(nx, ny, h), ny, h, Boundaries::all(Boundary::neumann),
-                   flow_pressure_operator, Eigen::VectorXd::Ones(Eigen::Index(nx) * ny)) {
+        multigrid_(check_grid(nx, ny, h), ny, h, pressure_boundaries(options),
+                   pressure_operator(options), Eigen::VectorXd::Ones(Eigen::Index(nx) * ny)),
+        force_(Eigen::VectorXd::Zero(2 * Eigen::Index(nx) * ny)) {
     detail::require_size(inflow_.size(), cells(), "flow2d", "inflow");
     detail::require_finite(inflow_, "flow2d", "inflow");
     if (!(options_.dt > 0.0) || !std::isfinite(options_.buoyancy))
@@ -57,7 +67,7 @@ public:
     cg_.relative_tolerance = options_.pressure_tolerance;
     cg_.absolute_tolerance = 1e-300;
     cg_.max_iterations = options_.max_pressure_iterations;
-    cg_.remove_null_space_mean = true; // closed walls: p is defined up to a constant
+    cg_.remove_null_space_mean = true; // walls or periodic: p is defined up to a constant
     cg_.preconditioner = multigrid_.preconditioner();
     cg_.name = "flow2d pressure";
   }
@@ -74,6 +84,19 @@ public:
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   const Eigen::VectorXd& inflow() const { return inflow_; }
+  bool periodic_x() const { return options_.periodic_x; }
+  bool periodic_y() const { return options_.periodic_y; }
+
+  /// The body force per unit mass, [fx, fy] at the cell centres (2*nx*ny values: fx of every
+  /// cell, then fy), added as dt * f (averaged onto the faces) in every following step until set
+  /// again. A force that changes in time: set it before each step (and before that step's
+  /// step_adjoint, whose force_adj is then the gradient for that step's force).
+  void set_force(const Eigen::VectorXd& force) {
+    detail::require_size(force.size(), 2 * cells(), "flow2d set_force", "force");
+    detail::require_finite(force, "flow2d set_force", "force");
+    force_ = force;
+  }
+  const Eigen::VectorXd& force() const { return force_; }
   /// The state's parts, as writable or read-only segments.
   auto marker(Eigen::VectorXd& state) const { return state.segment(0, cells()); }
   auto u(Eigen::VectorXd& state) const { return state.segment(cells(), u_faces()); }
@@ -95,63 +118,77 @@ public:
     marker(next) = s1_;
     u(next).setZero();
     v(next).setZero();
-    flow_subtract_gradient_u(u1_.data(), p_.data(), next.data() + cells(), nx_, ny_, h_);
+    flow_subtract_gradient_u(u1_.data(), p_.data(), next.data() + cells(), nx_, ny_, h_, px());
     flow_subtract_gradient_v(v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_,
-                             h_);
+                             h_, py());
   }
 
   /// Adds (d step(state)/d state)^T next_adj into state_adj and (d step/d inflow)^T next_adj
   /// into inflow_adj (sized nx*ny).
   void step_adjoint(const Eigen::VectorXd& state, const Eigen::VectorXd& next_adj,
                     Eigen::VectorXd& state_adj, Eigen::VectorXd& inflow_adj) {
+    force_adj_scratch_.setZero(2 * cells());
+    step_adjoint(state, next_adj, state_adj, inflow_adj, force_adj_scratch_);
+  }
+
+  /// The same, and adds (d step/d force)^T next_adj into force_adj (sized 2*nx*ny, as the
+  /// force).
+  void step_adjoint(const Eigen::VectorXd& state, const Eigen::VectorXd& next_adj,
+                    Eigen::VectorXd& state_adj, Eigen::VectorXd& inflow_adj,
+                    Eigen::VectorXd& force_adj) {
     detail::require_size(state.size(), state_size(), "flow2d step_adjoint", "state");
     detail::require_size(next_adj.size(), state_size(), "flow2d step_adjoint", "next_adj");
     detail::require_size(state_adj.size(), state_size(), "flow2d step_adjoint", "state_adj");
     detail::require_size(inflow_adj.size(), cells(), "flow2d step_adjoint", "inflow_adj");
+    detail::require_size(force_adj.size(), 2 * cells(), "flow2d step_adjoint", "force_adj");
     detail::require_finite(state, "flow2d step_adjoint", "state");
-    forward(state); // the step's intermediates: s1, u1, v1 (before and after buoyancy), p
+    forward(state); // the step's intermediates: s1, u1 and v1 (before and after the forces), p
     using Eigen::VectorXd;
     VectorXd s1_adj = marker(next_adj);
     VectorXd u1_adj = VectorXd::Zero(u_faces()), v1_adj = VectorXd::Zero(v_faces());
     VectorXd p_adj = VectorXd::Zero(cells());
     // (u2, v2) = (u1, v1) - grad p
     flow_subtract_gradient_u_adjoint(u1_.data(), u1_adj.data(), p_.data(), p_adj.data(),
-                                     next_adj.data() + cells(), nx_, ny_, h_);
+                                     next_adj.data() + cells(), nx_, ny_, h_, px());
     flow_subtract_gradient_v_adjoint(v1_.data(), v1_adj.data(), p_.data(), p_adj.data(),
-                                     next_adj.data() + cells() + u_faces(), nx_, ny_, h_);
+                                     next_adj.data() + cells() + u_faces(), nx_, ny_, h_, py());
     // A p = -div: lambda = A^+ P p_adj (A^T = A, same V-cycle), so div_adj = -lambda. A has no
     // parameters: nothing to accumulate for theta.
     const LinearSolveResult backward = solve_backward(multigrid_.fine_operator(), p_adj, cg_);
     backward_summary_ = backward.summary;
     const VectorXd div_adj = -backward.solution;
     flow_divergence_adjoint(u1_.data(), u1_adj.data(), v1_.data(), v1_adj.data(), div_adj.data(),
-                            nx_, ny_, h_);
-    // v1 = v_advected + dt b s1
-    VectorXd va_adj = VectorXd::Zero(v_faces());
-    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(), v1_adj.data(), nx_,
-                          ny_, options_.dt * options_.buoyancy);
+                            nx_, ny_, h_, px(), py());
+    // v1 = v_advected + dt b s1 + dt fy,  u1 = u_advected + dt fx
+    VectorXd va_adj = VectorXd::Zero(v_faces()), ua_adj = VectorXd::Zero(u_faces());
+    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(),
+                          force_.data() + cells(), force_adj.data() + cells(), v1_adj.data(), nx_,
+                          ny_, options_.dt * options_.buoyancy, options_.dt, py());
+    flow_force_u_adjoint(ua_.data(), ua_adj.data(), force_.data(), force_adj.data(),
+                         u1_adj.data(), nx_, ny_, options_.dt, px());
     // u1 = u(x - dt u), v_advected = v(x - dt u), s1 = s(x - dt u) + inflow
     const double dt_h = options_.dt / h_;
     double* u_adj = state_adj.data() + cells();
     double* v_adj = state_adj.data() + cells() + u_faces();
     const double* su = state.data() + cells();
     const double* sv = state.data() + cells() + u_faces();
-    flow_advect_u_adjoint(su, u_adj, sv, v_adj, u1_adj.data(), nx_, ny_, dt_h);
-    flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h);
+    flow_advect_u_adjoint(su, u_adj, sv, v_adj, ua_adj.data(), nx_, ny_, dt_h, px(), py());
+    flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h, px(), py());
     if (options_.marker_advection == MarkerAdvection::maccormack) {
       VectorXd sl_adj = VectorXd::Zero(cells()), rev_adj = VectorXd::Zero(cells());
       VectorXd none = VectorXd::Zero(cells()), none_adj = VectorXd::Zero(cells());
       flow_maccormack_marker_adjoint(state.data(), state_adj.data(), s_sl_.data(), sl_adj.data(),
                                      s_rev_.data(), rev_adj.data(), su, u_adj, sv, v_adj,
                                      inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_,
-                                     dt_h);
+                                     dt_h, px(), py());
       flow_advect_marker_adjoint(s_sl_.data(), sl_adj.data(), su, u_adj, sv, v_adj, none.data(),
-                                 none_adj.data(), rev_adj.data(), nx_, ny_, -dt_h);
+                                 none_adj.data(), rev_adj.data(), nx_, ny_, -dt_h, px(), py());
       flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj, none.data(),
-                                 none_adj.data(), sl_adj.data(), nx_, ny_, dt_h);
+                                 none_adj.data(), sl_adj.data(), nx_, ny_, dt_h, px(), py());
     } else {
       flow_advect_marker_adjoint(state.data(), state_adj.data(), su, u_adj, sv, v_adj,
-                                 inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_, dt_h);
+                                 inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_, dt_h,
+                                 px(), py());
     }
   }
 
@@ -162,11 +199,27 @@ public:
   Eigen::VectorXd divergence(const Eigen::VectorXd& state) const {
     Eigen::VectorXd div(cells());
     flow_divergence(state.data() + cells(), state.data() + cells() + u_faces(), div.data(), nx_,
-                    ny_, h_);
+                    ny_, h_, px(), py());
     return div;
   }
 
 private:
+  int px() const { return options_.periodic_x ? 1 : 0; }
+  int py() const { return options_.periodic_y ? 1 : 0; }
+
+  static Boundaries pressure_boundaries(const FlowOptions& o) {
+    const Boundary x = o.periodic_x ? Boundary::periodic : Boundary::neumann;
+    const Boundary y = o.periodic_y ? Boundary::periodic : Boundary::neumann;
+    return {x, x, y, y};
+  }
+  // The pressure operator kernel with the options' axes bound (weights of the wrapped faces).
+  static LevelOperator pressure_operator(const FlowOptions& o) {
+    const double ox = o.periodic_x ? 1.0 : 0.0, oy = o.periodic_y ? 1.0 : 0.0;
+    return [ox, oy](const double* x, const double* k, double* y, int nx, int ny, double h) {
+      flow_pressure_operator(x, k, y, nx, ny, h, ox, oy);
+    };
+  }
+
   static int check_grid(int nx, int ny, double h) {
     if (nx < 2 || ny < 2 || !(h > 0.0))
       throw std::invalid_argument(detail::message("flow2d: need at least 2x2 cells and h > 0 (got ",
@@ -174,14 +227,15 @@ private:
     return nx;
   }
 
-  // s1 (and s_sl, s_rev for MacCormack), va (advected v), u1, v1 (= va + buoyancy) and p of
-  // one step from `state`.
+  // s1 (and s_sl, s_rev for MacCormack), ua and va (advected u and v), u1 (= ua + force),
+  // v1 (= va + buoyancy + force) and p of one step from `state`.
   void forward(const Eigen::VectorXd& state) {
     const double dt_h = options_.dt / h_;
     const double* s = state.data();
     const double* su = state.data() + cells();
     const double* sv = state.data() + cells() + u_faces();
     s1_.resize(cells());
+    ua_.resize(u_faces());
     u1_.resize(u_faces());
     va_.resize(v_faces());
     v1_.resize(v_faces());
@@ -190,18 +244,21 @@ private:
       s_sl_.resize(cells());
       s_rev_.resize(cells());
       const Eigen::VectorXd none = Eigen::VectorXd::Zero(cells());
-      flow_advect_marker(s, su, sv, none.data(), s_sl_.data(), nx_, ny_, dt_h);
-      flow_advect_marker(s_sl_.data(), su, sv, none.data(), s_rev_.data(), nx_, ny_, -dt_h);
+      flow_advect_marker(s, su, sv, none.data(), s_sl_.data(), nx_, ny_, dt_h, px(), py());
+      flow_advect_marker(s_sl_.data(), su, sv, none.data(), s_rev_.data(), nx_, ny_, -dt_h, px(),
+                         py());
       flow_maccormack_marker(s, s_sl_.data(), s_rev_.data(), su, sv, inflow_.data(), s1_.data(),
-                             nx_, ny_, dt_h);
+                             nx_, ny_, dt_h, px(), py());
     } else {
-      flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h);
+      flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h, px(), py());
     }
-    flow_advect_u(su, sv, u1_.data(), nx_, ny_, dt_h);
-    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h);
-    flow_buoyancy(va_.data(), s1_.data(), v1_.data(), nx_, ny_, options_.dt * options_.buoyancy);
+    flow_advect_u(su, sv, ua_.data(), nx_, ny_, dt_h, px(), py());
+    flow_force_u(ua_.data(), force_.data(), u1_.data(), nx_, ny_, options_.dt, px());
+    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h, px(), py());
+    flow_buoyancy(va_.data(), s1_.data(), force_.data() + cells(), v1_.data(), nx_, ny_,
+                  options_.dt * options_.buoyancy, options_.dt, py());
     Eigen::VectorXd div(cells());
-    flow_divergence(u1_.data(), v1_.data(), div.data(), nx_, ny_, h_);
+    flow_divergence(u1_.data(), v1_.data(), div.data(), nx_, ny_, h_, px(), py());
     // No warm start: a recomputed step must give the same bits (checkpointing relies on it).
     const LinearSolveResult r = solve_forward(multigrid_.fine_operator(), -div, cg_);
     p_ = r.solution;
@@ -214,7 +271,8 @@ private:
   FlowOptions options_;
   Multigrid multigrid_;
   CgOptions cg_;
-  Eigen::VectorXd s1_, u1_, va_, v1_, p_, s_sl_, s_rev_;
+  Eigen::VectorXd force_; // [fx, fy] per cell
+  Eigen::VectorXd s1_, ua_, u1_, va_, v1_, p_, s_sl_, s_rev_, force_adj_scratch_;
   CgSummary forward_summary_, backward_summary_;
 };
 
