@@ -38,19 +38,22 @@ def cases():
         # the flow solver's MAC-grid kernels (u: ny x (nx+1) faces, v: (ny+1) x nx faces);
         # the semi-Lagrangian ones read at data-dependent indices, small steps keep the
         # departure points away from cell edges for the finite differences
+        # px, py: 1 for a periodic axis (both settings covered across the cases)
         "flow_advect_marker": ((rand(ny, nx), rand(ny, nx + 1), rand(ny + 1, nx), rand(ny, nx),
-                                nx, ny, 0.3), {}),
+                                nx, ny, 0.3, 0, 0), {}),
         "flow_maccormack_marker": ((rand(ny, nx), rand(ny, nx), rand(ny, nx), rand(ny, nx + 1),
-                                    rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.3), {}),
-        "flow_advect_u": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3), {}),
-        "flow_advect_v": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3),
+                                    rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.3, 1, 0), {}),
+        "flow_advect_u": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 1, 0), {}),
+        "flow_advect_v": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 0, 1),
                           {"v_out_shape": [ny + 1, nx]}),
-        "flow_divergence": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.5),
+        "flow_divergence": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.5, 1, 1),
                             {"div_shape": [ny, nx]}),
-        "flow_subtract_gradient_u": ((rand(ny, nx + 1), rand(ny, nx), nx, ny, 0.5), {}),
-        "flow_subtract_gradient_v": ((rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.5), {}),
-        "flow_buoyancy": ((rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.2), {}),
-        "flow_pressure_operator": ((rand(ny, nx), rand(ny, nx), nx, ny, 0.5), {}),
+        "flow_subtract_gradient_u": ((rand(ny, nx + 1), rand(ny, nx), nx, ny, 0.5, 1), {}),
+        "flow_subtract_gradient_v": ((rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.5, 0), {}),
+        "flow_buoyancy": ((rand(ny + 1, nx), rand(ny, nx), rand(ny + 1, nx), nx, ny, 0.2, 0.1, 1),
+                          {}),
+        "flow_force_u": ((rand(ny, nx + 1), rand(ny, nx), nx, ny, 0.1, 1), {}),
+        "flow_pressure_operator": ((rand(ny, nx), rand(ny, nx), nx, ny, 0.5, 1.0, 0.0), {}),
     }
 
 
