@@ -1,29 +1,9 @@
 #!/usr/bin/env bash
-# Checks the adversary tests themselves, without dpgen: the adjoint is replaced
-# by a finite-difference J^T w of the forward kernel (see tests/styles/selfcheck.sh);
-# the generated headers are stubs (a no-op template per generated name).
-# Usage: selfcheck.sh [kernel.cpp ...]   A FAIL is a bug in the test, not dpgen.
-set -u
+# Checks the adversary tests themselves, without dpgen: tests/styles/selfcheck.sh
+# (the adjoint replaced by a finite-difference J^T w of the forward kernel)
+# over tests/adversary/*.cpp. A FAIL is a bug in the test, not dpgen.
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-CXX=${CXX:-g++}
-work=$(mktemp -d /tmp/dpgen-advself.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-$CXX -std=c++17 -O1 -c "$root/tests/kernels/main.cpp" -o "$work/main.o" || exit 2
-one() {
-  local src=$1 stem out
-  stem=$(basename "$src" .cpp); out=$work/$stem; mkdir -p "$out"
-  { echo '#pragma once'
-    grep -oE '\b[A-Za-z0-9_]+_(adjoint|tangent|adjoint_checked)\b *\(' "$here/${stem}_test.cpp" | sed 's/ *($//' | sort -u |
-      while read -r f; do echo "template <typename... A> void $f(A&&...) {}"; done
-  } > "$out/${stem}_adjoint.hpp"
-  echo '#pragma once' > "$out/${stem}_tangent.hpp"
-  if ! $CXX -std=c++17 -O1 -fopenmp -I"$root/runtime/include" -I"$here/selfcheck" -I"$here" \
-      -I"$out" "$src" "$here/${stem}_test.cpp" "$work/main.o" -o "$out/t" > "$out/cxx.log" 2>&1; then
-    printf '%-30s COMPILE-ERROR %s\n' "$stem" "$(grep -m1 error "$out/cxx.log")"; return; fi
-  if timeout 300 "$out/t" -tce='*throws*' > "$out/run.log" 2>&1; then printf '%-30s PASS\n' "$stem"
-  else printf '%-30s FAIL %s\n' "$stem" "$(grep -m1 -E 'ERROR|disagree|overwrote' "$out/run.log")"; fi
-}
-export -f one; export here root CXX work
-if [ $# -gt 0 ]; then printf '%s\n' "$@"; else ls "$here"/*.cpp | grep -v '_test\.cpp$'; fi |
-  xargs -P "${JOBS:-2}" -I{} bash -c 'one {}' | sort
+if [ $# -eq 0 ]; then
+  set -- $(ls "$here"/*.cpp | grep -v '_test\.cpp$')
+fi
+exec "$here/../styles/selfcheck.sh" "$@"

@@ -1,7 +1,8 @@
-// Self-check of the style tests (tests/styles/selfcheck.sh): stands in for
+// Self-check of the style tests (tests/styles/selfcheck.sh, also for tests/adversary): stands in for
 // tests/support/adjoint_check.hpp and replaces every Problem's adjoint by a
 // finite-difference J^T w built from its forward kernel, so the tests and
 // forward kernels are checked without dpgen (sizes, guard cells, ranges).
+// The tangent and checked entry points are dropped (stubs).
 #pragma once
 
 #define check_adjoint check_adjoint_real
@@ -48,6 +49,8 @@ template <typename T> Problem<T> with_fd_adjoint(Problem<T> p) {
         adj[a][i] = T(double(adj[a][i]) + (fp - fm) / (2 * h));
       }
   };
+  p.tangent = nullptr;
+  p.checked = nullptr;
   return p;
 }
 
