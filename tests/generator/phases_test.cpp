@@ -1,0 +1,239 @@
+// Unit tests of the generator's phases, one at a time, on tiny kernels held in
+// memory: lower (source -> IR), derive (partials), schedule (gather groups,
+// blocks, scatter units) and emit (printing). The golden and diagnostic lit
+// tests check what the tool writes as a whole; these check what each phase
+// hands to the next, so a change that breaks one phase fails here by name.
+#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include "lib/derive.hpp"
+#include "lib/emit.hpp"
+#include "lib/frontend.hpp"
+#include "lib/print.hpp"
+#include "lib/schedule.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace dpgen;
+
+std::string annotate_header() {
+  std::ifstream f(DPGEN_ANNOTATE_HPP);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Lowers `code` (a file that includes dpgen/annotate.hpp); diagnostics are
+// dropped, the result says whether the file was accepted.
+bool lower(const std::string& code, std::vector<Kernel>& kernels) {
+  FrontendOptions o;
+  o.resource_dir = DPGEN_CLANG_RESOURCE_DIR;
+  o.driver = DPGEN_CLANG_DRIVER;
+  o.quiet = true;
+  return lower_code("#include \"dpgen/annotate.hpp\"\n" + code, "unit.cpp", o, kernels,
+                    {{"dpgen/annotate.hpp", annotate_header()}});
+}
+
+Kernel lower_one(const std::string& code) {
+  std::vector<Kernel> ks;
+  REQUIRE(lower(code, ks));
+  REQUIRE(ks.size() == 1);
+  return ks.front();
+}
+
+// The shifts of a gather group's blocks in counter `v`, as "v:-1" strings
+// (a block without an entry for `v` has shift 0), sorted.
+std::vector<std::string> shifts(const GatherGroup& g, const std::string& v) {
+  std::vector<std::string> out;
+  for (const auto& b : g.blocks) {
+    auto it = b.shift.find(v);
+    out.push_back(v + ":" + (it == b.shift.end() ? std::string("0") : it->second.str()));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+const char* kUpwind = R"(
+DPGEN_KERNEL void up(DPGEN_IN const double* d, DPGEN_OUT double* out, int n, double c) {
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = d[i] - c * (d[i] - d[i - 1]) + 0.5 * d[i + 1] * d[i + 1];
+}
+)";
+
+} // namespace
+
+TEST_CASE("lower: parameters, one nest, its loop bounds and the store") {
+  const Kernel k = lower_one(kUpwind);
+  CHECK(k.name == "up");
+  REQUIRE(k.params.size() == 4);
+  CHECK(k.params[0].kind == ParamKind::In);
+  CHECK(k.params[1].kind == ParamKind::Out);
+  CHECK(k.params[2].kind == ParamKind::Scalar);
+  CHECK(k.params[3].kind == ParamKind::Scalar);
+  CHECK(k.params[3].elem == Type::Double);
+  REQUIRE(k.nests.size() == 1);
+  const Nest& nest = k.nests.front();
+  REQUIRE(nest.loops.size() == 1);
+  CHECK(print(nest.loops[0].lo) == "1");
+  CHECK(print(nest.loops[0].hi) == "n - 1");
+  REQUIRE(nest.stores.size() == 1);
+  const Store& s = nest.stores.front();
+  CHECK(s.array == "out");
+  CHECK(print(s.index) == nest.loops[0].var);
+  CHECK_FALSE(s.accumulate);
+  CHECK(s.pos.line == 5); // the include line and an empty line come first
+  // Three distinct cells of d are read.
+  std::set<std::string> cells;
+  for (const auto& r : reads_in(s.value))
+    cells.insert(print(r.read->ops[0]));
+  CHECK(cells.size() == 3);
+}
+
+TEST_CASE("lower: a C89 counter declared before its loop gives the same IR as one declared in it") {
+  const Kernel a = lower_one(R"(
+DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; i++) b[i] = 3.0 * a[i];
+})");
+  const Kernel c89 = lower_one(R"(
+DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  int i;
+  for (i = 0; i < n; i++) b[i] = 3.0 * a[i];
+})");
+  REQUIRE(a.nests.size() == 1);
+  REQUIRE(c89.nests.size() == 1);
+  CHECK(print(a.nests[0].loops[0].hi) == print(c89.nests[0].loops[0].hi));
+  CHECK(print(a.nests[0].stores[0].value) == print(c89.nests[0].stores[0].value));
+  CHECK(print(a.nests[0].stores[0].index) == print(c89.nests[0].stores[0].index));
+}
+
+TEST_CASE("lower: two nests stay two nests, each with its own bounds (issue 9, defect 1)") {
+  const Kernel k = lower_one(R"(
+DPGEN_KERNEL void two(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* x,
+                      DPGEN_OUT double* y, int m, int n) {
+  for (int k = 0; k < m; k++) for (int j = 0; j < n + 1; j++) x[k * (n + 2) + j] = 2.0 * a[k * (n + 2) + j];
+  for (int k = 0; k < m + 1; k++) for (int j = 0; j < n; j++) y[k * (n + 2) + j] = 3.0 * b[k * (n + 2) + j];
+})");
+  REQUIRE(k.nests.size() == 2);
+  CHECK(print(k.nests[0].loops[0].hi) == "m");
+  CHECK(print(k.nests[0].loops[1].hi) == "n + 1");
+  CHECK(print(k.nests[1].loops[0].hi) == "m + 1");
+  CHECK(print(k.nests[1].loops[1].hi) == "n");
+  CHECK(k.nests[0].stores[0].array == "x");
+  CHECK(k.nests[1].stores[0].array == "y");
+}
+
+TEST_CASE("lower: '+=' into an output is an accumulating store; a leading guard is on its path") {
+  const Kernel k = lower_one(R"(
+DPGEN_KERNEL void red(DPGEN_IN const double* a, DPGEN_OUT double* s, int n) {
+  if (n < 2) return;
+  for (int i = 0; i < n; ++i) s[0] += a[i] * a[i];
+})");
+  REQUIRE(k.nests.size() == 1);
+  const Store& s = k.nests[0].stores[0];
+  CHECK(s.accumulate);
+  // `if (n < 2) return;` before the loop: the store runs where !(n < 2).
+  REQUIRE(s.path.size() == 1);
+  CHECK_FALSE(s.path[0].positive);
+  CHECK(print(s.path[0].cond) == "n < 2");
+}
+
+TEST_CASE("lower: kernels outside the subset are rejected, and no kernel is returned") {
+  std::vector<Kernel> ks;
+  CHECK_FALSE(lower(R"(
+DPGEN_KERNEL void gs(DPGEN_OUT double* u, DPGEN_IN const double* f, int n) {
+  for (int i = 1; i < n; ++i) u[i] = u[i - 1] + f[i];
+})",
+                    ks));
+  ks.clear();
+  CHECK_FALSE(lower(R"(
+DPGEN_KERNEL void brk(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) { if (a[i] > 1) break; b[i] = a[i]; }
+})",
+                    ks));
+  ks.clear();
+  CHECK_FALSE(lower("int f(int x) { return x; }\n", ks)); // a file without any kernel
+}
+
+TEST_CASE("derive: partials of a store's value w.r.t. one read") {
+  const Kernel k = lower_one(R"(
+DPGEN_KERNEL void sq(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* o, int n) {
+  for (int i = 0; i < n; ++i) o[i] = a[i] * a[i] + 2.0 * b[i];
+})");
+  const Store& s = k.nests[0].stores[0];
+  std::set<const Expr*> a_reads, b_reads;
+  for (const auto& r : reads_in(s.value))
+    (r.read->name == "a" ? a_reads : b_reads).insert(r.read);
+  REQUIRE(a_reads.size() == 2); // both occurrences of a[i]: one cell
+  REQUIRE(b_reads.size() == 1);
+  DeriveNames names;
+  const ExprP da = derivative(s.value, a_reads, names);
+  const ExprP db = derivative(s.value, b_reads, names);
+  REQUIRE(da != nullptr);
+  REQUIRE(db != nullptr);
+  CHECK(print(db) == "2.0");
+  // d(a*a)/da = a + a (one term per occurrence), in whatever order the rule writes it.
+  const std::string pa = print(da);
+  CHECK(pa.find("a[i]") != std::string::npos);
+  CHECK(pa.find("b[") == std::string::npos);
+  // A read the value does not depend on has an exactly zero partial.
+  DeriveNames fresh;
+  const Store& same = k.nests[0].stores[0];
+  std::set<const Expr*> none;
+  CHECK(derivative(same.value, none, fresh) == nullptr);
+}
+
+TEST_CASE("schedule: a three-point stencil is one gather group with shifts -1, 0, +1") {
+  const Kernel k = lower_one(kUpwind);
+  const AdjointPlan plan = schedule(k);
+  CHECK(plan.scatters.empty());
+  CHECK(plan.remarks.empty());
+  REQUIRE(plan.gathers.size() == 1);
+  const GatherGroup& g = plan.gathers.front();
+  CHECK(g.array == "d");
+  const std::string v = k.nests[0].loops[0].var;
+  // Cell c was read by iteration c - shift: d[i+1] at shift 1, d[i-1] at shift -1.
+  const std::vector<std::string> got = shifts(g, v);
+  CHECK(std::count(got.begin(), got.end(), v + ":-1") >= 1);
+  CHECK(std::count(got.begin(), got.end(), v + ":1") >= 1);
+  CHECK(std::count(got.begin(), got.end(), v + ":0") >= 1);
+  for (const auto& b : g.blocks)
+    for (const auto& t : b.terms)
+      CHECK(t.partial != nullptr);
+}
+
+TEST_CASE("schedule: a read at a data-dependent index gets a serial scatter unit and a remark") {
+  const Kernel k = lower_one(R"(
+DPGEN_KERNEL void sample(DPGEN_IN const double* q, DPGEN_IN const double* x, DPGEN_OUT double* o, int n) {
+  for (int i = 0; i < n; ++i) {
+    int j = (int)x[i];
+    j = j < 0 ? 0 : (j > n - 1 ? n - 1 : j);
+    o[i] = 2.0 * q[j];
+  }
+})");
+  const AdjointPlan plan = schedule(k);
+  REQUIRE(plan.scatters.size() == 1);
+  CHECK(plan.scatters[0].array == "q");
+  REQUIRE(plan.remarks.size() == 1);
+  CHECK(plan.remarks[0].text.find("scatter") != std::string::npos);
+}
+
+TEST_CASE("emit: the adjoint's signature and body follow the signature rule") {
+  const Kernel k = lower_one(kUpwind);
+  CHECK(adjoint_signature(k) ==
+        "void up_adjoint(const double* d, double* d_adj, const double* out_adj, int n, double c)");
+  std::vector<AdjointPlan> plans{schedule(k)};
+  const EmittedFile f = emit_file(plans, "unit.cpp", "unit");
+  CHECK(f.header.find(adjoint_signature(k)) != std::string::npos);
+  CHECK(f.source.find("d_adj[") != std::string::npos);
+  CHECK(f.source.find("out_adj[") != std::string::npos);
+  CHECK(f.kernels.find("void up(") != std::string::npos);
+  // Printing is a pure function of the plan.
+  std::vector<AdjointPlan> again{schedule(k)};
+  CHECK(emit_file(again, "unit.cpp", "unit").source == f.source);
+}
