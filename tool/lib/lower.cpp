@@ -1566,7 +1566,9 @@ private:
 
   // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
 
-  Accesses acc_; // what the checks need (check.hpp)
+  // The reads of work arrays and in-place arrays and the stores to in-place
+  // arrays, which the checks need besides the IR (check.hpp).
+  Accesses acc_;
 
   // The value u[k] of an in-place array has here: what this iteration stored
   // at k, or the value before the call (a read of the input).
@@ -1581,6 +1583,8 @@ private:
     return r;
   }
 
+  // ---- work arrays (outputs a later loop nest reads) ---------------------------
+
   bool written_by_other_nest(const std::string& array) const {
     for (const auto& [key, idx] : nest_index_)
       if (key != cur_key())
@@ -1590,6 +1594,8 @@ private:
     return false;
   }
 
+  // Unless set, a read of a work array outside every loop is recorded for
+  // the checks (Accesses::kernel_level_work_reads).
   bool path_reads_ok_ = false;
 
   // `e >= 0` wherever this statement runs: its loops run, the counters are
