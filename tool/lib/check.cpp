@@ -25,6 +25,9 @@ class Checker {
 public:
   Checker(Kernel& k, const Accesses& a, Diagnostics& diag) : k_(k), a_(a), diag_(diag) {}
 
+  // The rules in this order; the first violation stops them. (Later rules
+  // rely on what earlier ones proved: output_extents needs the affine
+  // indices check_outputs proved.)
   bool run() {
     try {
       check_intermediates();
@@ -84,7 +87,6 @@ private:
   // a loop with the nests that read it (a buffer refilled per row would hold
   // only the last row when the adjoint recomputes it), and no nest both
   // writes it and reads it.
-
   void check_intermediates() {
     // A work array's first store must set it: starting from '+=' adds to the
     // caller's contents, which the adjoint cannot recompute.
@@ -114,12 +116,11 @@ private:
         for (const auto& st : n.stores) {
           if (st.array != r.array)
             continue;
-          const auto* key = &n.key;
           size_t shared = 0;
-          while (key && shared < key->size() && shared < r.nest_key.size() &&
-                 (*key)[shared] == r.nest_key[shared])
+          while (shared < n.key.size() && shared < r.nest_key.size() &&
+                 n.key[shared] == r.nest_key[shared])
             ++shared;
-          if (st.seq >= r.seq && *key == r.nest_key && r.index && same_index(r.index, st.index)) {
+          if (st.seq >= r.seq && n.key == r.nest_key && r.index && same_index(r.index, st.index)) {
             // Read after a loop wrote the array, then written again at the
             // same element: an element holding two values in turn
             // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
@@ -136,7 +137,7 @@ private:
                                       "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
                                       r.array, before->pos.line, st.pos.line, r.array));
           }
-          if (st.seq >= r.seq || *key == r.nest_key)
+          if (st.seq >= r.seq || n.key == r.nest_key)
             fail(r.pos, fmt::format("output '{}' is read here and written on line {}, in the same "
                                     "loop or later: a value carried from one iteration to the "
                                     "next through an output (a recurrence, like a prefix sum, or "
@@ -316,11 +317,9 @@ private:
   }
 
   // How many outer loops two nests share (the same `for` statements).
-  size_t shared_loops(const Nest& a, const Nest& b) const {
-    const std::vector<int>* ka = &a.key;
-    const std::vector<int>* kb = &b.key;
+  static size_t shared_loops(const Nest& a, const Nest& b) {
     size_t n = 0;
-    while (ka && kb && n < ka->size() && n < kb->size() && (*ka)[n] == (*kb)[n])
+    while (n < a.key.size() && n < b.key.size() && a.key[n] == b.key[n])
       ++n;
     return n;
   }
