@@ -3,7 +3,7 @@
 // hang, and every kernel it accepts must produce code that compiles: the
 // generated file is parsed by Clang, and a failure aborts (a finding).
 #include "lib/emit.hpp"
-#include "lib/frontend.hpp"
+#include "lib/find.hpp"
 #include "lib/schedule.hpp"
 
 #include <clang/Frontend/FrontendActions.h>

@@ -2,7 +2,7 @@
 // schedule -> emit, then write. Used by the dpgen driver and by tests.
 #pragma once
 
-#include "frontend.hpp"
+#include "find.hpp"
 
 #include <string>
 #include <vector>

@@ -4,6 +4,7 @@
 // with the path condition under which they execute.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -17,6 +18,10 @@ struct SourcePos {
   std::string file;
   unsigned line = 0;
   unsigned col = 0;
+  /// The front end's own handle on the position (a Clang SourceLocation's
+  /// raw encoding; 0: none), so that a diagnostic at it shows the macro
+  /// expansions behind it as Clang would. Later phases ignore it.
+  std::uint64_t loc = 0;
 };
 
 enum class Type { Int, Float, Double, Bool };
@@ -59,7 +64,7 @@ struct LocalVar {
   std::string name;      // unique within the kernel
   std::string type_name; // as spelled in the emitted code ("double", "int")
   ExprP def;
-  int id = 0;               // creation order; definitions only use lower ids
+  int id = 0;                // creation order; definitions only use lower ids
   bool kernel_level = false; // defined outside every loop (depends on params only)
   /// A symbol in index algebra whatever its definition (a row-pointer
   /// array's row length, ir.hpp: row_symbol).
@@ -195,6 +200,11 @@ struct Store {
 struct Nest {
   std::vector<Loop> loops; // outermost first; may be empty for straight-line code
   std::vector<Store> stores;
+  /// Which `for` statements the nest runs in: a number per loop, outermost
+  /// first, then its segment (straight-line code after a loop gets a nest of
+  /// its own). Two nests share their first n entries when they share n
+  /// outer loops; no two nests have the same key (check.cpp).
+  std::vector<int> key;
 };
 
 /// A condition on the sizes that the generated adjoint checks on entry, for a
@@ -223,7 +233,7 @@ struct Kernel {
   /// (one past the largest index), for buffers the adjoint allocates.
   std::map<std::string, std::string> extent;
   SourcePos pos;
-  std::string file; // source file as given on the command line
+  std::string file;       // source file as given on the command line
   bool c_linkage = false; // a C kernel: its adjoint is declared extern "C"
 
   const Param* find_param(const std::string& n) const {

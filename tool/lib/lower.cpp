@@ -1,35 +1,32 @@
-// Find and lower (phases 1 and 2): DPGEN_KERNEL functions in the Clang AST
-// become kernel IR. Every construct outside the subset is reported at its
-// location and the kernel is dropped; nothing is guessed.
-#include "frontend.hpp"
+// Lower (phase 2): the body of a DPGEN_KERNEL function, as Clang parsed it,
+// becomes kernel IR (ir.hpp): loops, stores under their path conditions, SSA
+// locals, inlined helper calls. Every construct outside the subset is
+// reported at its location, every statement's error in turn, and the kernel
+// is dropped; nothing is guessed. The lowered kernel then goes through the
+// output rules (check.hpp). find.cpp hands it the functions to lower.
+#include "lower.hpp"
+#include "check.hpp"
 #include "ir_walk.hpp"
 
 #include "affine.hpp"
 #include "prove.hpp"
 
-#include <clang/AST/ASTConsumer.h>
 #include <clang/AST/ASTContext.h>
 #include <clang/AST/Attr.h>
 #include <clang/AST/Expr.h>
 #include <clang/AST/ExprCXX.h>
+#include <clang/AST/ParentMapContext.h>
 #include <clang/AST/Stmt.h>
 #include <clang/AST/StmtCXX.h>
 #include <clang/AST/StmtOpenMP.h>
-#include <clang/ASTMatchers/ASTMatchFinder.h>
-#include <clang/ASTMatchers/ASTMatchers.h>
+#include <clang/Basic/FileManager.h>
 #include <clang/Basic/SourceManager.h>
-#include <clang/Frontend/CompilerInstance.h>
-#include <clang/Frontend/FrontendActions.h>
 #include <clang/Lex/Lexer.h>
-#include <clang/Tooling/Tooling.h>
 #include <fmt/format.h>
-#include <llvm/Support/MemoryBuffer.h>
-#include <llvm/Support/VirtualFileSystem.h>
 #include <llvm/Support/raw_ostream.h>
 
 #include <functional>
 #include <map>
-#include <numeric>
 #include <set>
 
 namespace dpgen {
@@ -37,7 +34,6 @@ namespace dpgen {
 namespace {
 
 using namespace clang;
-using namespace clang::ast_matchers;
 
 constexpr const char* kSupportedCalls =
     "std::min, std::max, std::abs/fabs, sqrt, exp, log, sin, cos, tanh, pow, "
@@ -57,15 +53,6 @@ std::string math_function(const FunctionDecl* f) {
   return "";
 }
 
-std::string annotation(const Decl* d) {
-  for (const auto* a : d->specific_attrs<AnnotateAttr>()) {
-    llvm::StringRef s = a->getAnnotation();
-    if (s.starts_with("dpgen."))
-      return s.str();
-  }
-  return "";
-}
-
 // What a name in the kernel body refers to.
 struct Binding {
   enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray } kind;
@@ -82,6 +69,37 @@ struct Binding {
 // Thrown to abandon a kernel after its diagnostic has been reported.
 struct Rejected {};
 
+// Reports the errors of the checks (check.cpp) through Clang, at the
+// position the IR carries: at the SourceLocation it was made from, so the
+// diagnostic shows the source line and any macro expansion as Clang would.
+class ClangDiagnostics : public Diagnostics {
+public:
+  ClangDiagnostics(ASTContext& ctx, SourceLocation fallback) : ctx_(ctx), fallback_(fallback) {}
+
+  void error(const SourcePos& at, const std::string& message) override {
+    auto& d = ctx_.getDiagnostics();
+    unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
+    d.Report(location(at), id) << message;
+  }
+
+private:
+  SourceLocation location(const SourcePos& at) const {
+    if (at.loc)
+      return SourceLocation::getFromRawEncoding(SourceLocation::UIntTy(at.loc));
+    // A position made without a location: its file, line and column.
+    const auto& sm = ctx_.getSourceManager();
+    if (auto f = sm.getFileManager().getOptionalFileRef(at.file)) {
+      SourceLocation loc = sm.translateFileLineCol(&f->getFileEntry(), at.line, at.col);
+      if (loc.isValid())
+        return loc;
+    }
+    return fallback_;
+  }
+
+  ASTContext& ctx_;
+  SourceLocation fallback_;
+};
+
 enum class Escape { None, Always };
 
 class Lowerer {
@@ -94,10 +112,9 @@ public:
       body(fn_->getBody());
       if (failed_)
         return false; // every statement's error is reported; the checks need them all
-      check_intermediates();
-      check_inout();
-      check_outputs();
-      output_extents();
+      ClangDiagnostics diag(ctx_, fn_->getLocation());
+      if (!check_kernel(k_, acc_, diag))
+        return false;
     } catch (const Rejected&) {
       return false;
     }
@@ -193,11 +210,18 @@ private:
     throw Rejected{};
   }
 
+  // Where `loc` is (its expansion, for a macro), keeping `loc` itself for
+  // diagnostics at the position (ClangDiagnostics).
   SourcePos pos(SourceLocation loc) const {
+    SourcePos out;
+    out.loc = loc.getRawEncoding();
     PresumedLoc p = sm_.getPresumedLoc(sm_.getExpansionLoc(loc));
     if (p.isInvalid())
-      return {};
-    return {p.getFilename(), p.getLine(), p.getColumn()};
+      return out;
+    out.file = p.getFilename();
+    out.line = p.getLine();
+    out.col = p.getColumn();
+    return out;
   }
 
   std::string text(const Stmt* s) const {
@@ -1352,7 +1376,7 @@ private:
         }
         add_store(twin->name, acc->index, cast(value, p->elem), false, pos(lhs->getBeginLoc()),
                   lhs->getBeginLoc());
-        inout_stores_.push_back({p->name, cur_key(), next_store_seq_ - 1, acc->index});
+        acc_.inout_stores.push_back({p->name, cur_key(), next_store_seq_ - 1, acc->index});
         return;
       }
       if (!frames_.empty() && !frames_.back().is_void)
@@ -1454,6 +1478,7 @@ private:
     auto it = nest_index_.find(cur_key());
     if (it == nest_index_.end()) {
       Nest n;
+      n.key = cur_key();
       for (const auto& l : loops_)
         n.loops.push_back(*l);
       k_.nests.push_back(n);
@@ -1470,11 +1495,6 @@ private:
       if (prefix[i].cond != path[i].cond || prefix[i].positive != path[i].positive)
         return false;
     return true;
-  }
-
-  static bool same_index(const ExprP& a, const ExprP& b) {
-    auto pa = to_poly(a), pb = to_poly(b);
-    return pa && pb ? *pa == *pb : same(a, b);
   }
 
   // The store of this iteration that a later statement on the current path
@@ -1507,7 +1527,6 @@ private:
       }
       prev->value = cond ? select(cond, updated, prev->value) : updated;
       prev->pos = p;
-      store_locs_[{p.line, p.col}] = loc;
       return;
     }
     // Otherwise a store whose path is not provably disjoint from another
@@ -1542,20 +1561,14 @@ private:
     st.accumulate = accumulate;
     st.seq = next_store_seq_++;
     nest.stores.push_back(st);
-    store_locs_[{p.line, p.col}] = loc;
   }
   int next_store_seq_ = 0;
 
   // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
 
-  struct InoutAccess {
-    std::string array;
-    std::vector<int> nest_key;
-    int seq;     // stores numbered below this one came before the access
-    ExprP index;
-    SourceLocation loc = {};
-  };
-  std::vector<InoutAccess> inout_stores_, inout_reads_;
+  // The reads of work arrays and in-place arrays and the stores to in-place
+  // arrays, which the checks need besides the IR (check.hpp).
+  Accesses acc_;
 
   // The value u[k] of an in-place array has here: what this iteration stored
   // at k, or the value before the call (a read of the input).
@@ -1564,48 +1577,13 @@ private:
     if (nit != nest_index_.end())
       if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
         return st->value;
-    inout_reads_.push_back({p->name, cur_key(), next_store_seq_, idx, loc});
+    acc_.inout_reads.push_back({p->name, cur_key(), next_store_seq_, idx, {}, pos(loc)});
     ExprP r = read(p->name, idx, p->elem, pos(loc));
     std::const_pointer_cast<Expr>(r)->text = text(e);
     return r;
   }
 
-  // An in-place array is read, where it is also written, only at the element
-  // its iteration writes (anything else reads a value another iteration may
-  // have updated: Gauss-Seidel), and never after a loop that wrote it.
-  void check_inout() {
-    for (const auto& r : inout_reads_)
-      for (const auto& s : inout_stores_) {
-        if (s.array != r.array)
-          continue;
-        size_t shared = 0;
-        while (shared < s.nest_key.size() && shared < r.nest_key.size() &&
-               s.nest_key[shared] == r.nest_key[shared])
-          ++shared;
-        bool same_nest = s.nest_key == r.nest_key;
-        auto ps = to_poly(s.index), pr = to_poly(r.index);
-        bool same_cell = ps && pr && *ps == *pr;
-        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq)))
-          fail(r.loc, fmt::format("in-place array '{}' is read here at an element another "
-                                  "iteration or loop may already have updated: a value carried "
-                                  "through the array (Gauss-Seidel, an in-place stencil) is "
-                                  "outside the kernel subset; read only the element each "
-                                  "iteration writes, or write the new values to a separate "
-                                  "DPGEN_OUT array",
-                                  r.array));
-      }
-  }
-
-  // Reads of intermediates: which array, in which nest, after which store.
-  struct IntermediateRead {
-    std::string array;
-    std::vector<int> nest_key;
-    int seq; // stores numbered below this one came before the read
-    SourceLocation loc;
-    ExprP index = nullptr;
-    std::vector<PathCond> path = {};
-  };
-  std::vector<IntermediateRead> intermediate_reads_;
+  // ---- work arrays (outputs a later loop nest reads) ---------------------------
 
   bool written_by_other_nest(const std::string& array) const {
     for (const auto& [key, idx] : nest_index_)
@@ -1616,86 +1594,9 @@ private:
     return false;
   }
 
-  const std::vector<int>* nest_key(const Nest& n) const {
-    for (const auto& [key, idx] : nest_index_)
-      if (&k_.nests[idx] == &n)
-        return &key;
-    return nullptr;
-  }
-
-  // An intermediate is written before it is read, by nests that do not share
-  // a loop with the nests that read it (a buffer refilled per row would hold
-  // only the last row when the adjoint recomputes it), and no nest both
-  // writes it and reads it.
-  std::vector<std::pair<std::string, SourceLocation>> kernel_level_work_reads_;
+  // Unless set, a read of a work array outside every loop is recorded for
+  // the checks (Accesses::kernel_level_work_reads).
   bool path_reads_ok_ = false;
-
-  void check_intermediates() {
-    // A work array's first store must set it: starting from '+=' adds to the
-    // caller's contents, which the adjoint cannot recompute.
-    for (const auto& w : k_.intermediates) {
-      const Store* first = nullptr;
-      for (const auto& n : k_.nests)
-        for (const auto& st : n.stores)
-          if (st.array == w && (!first || st.seq < first->seq))
-            first = &st;
-      if (first && first->accumulate)
-        fail_at(first->pos, fmt::format("work array '{}' (read by a later loop) is first written "
-                                        "with '+=': it adds to the caller's contents, which the "
-                                        "adjoint cannot recompute; set it with '=' first",
-                                        w));
-    }
-    // A work array read outside every loop into a local would be needed by
-    // every nest's adjoint; only stores outside loops may read it directly.
-    for (const auto& [array, loc] : kernel_level_work_reads_)
-      for (const auto& l : k_.kernel_locals) {
-        if (any_node(l->def, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }))
-          fail(loc, fmt::format("a local outside every loop reads work array '{}'; use the "
-                                "element directly in the store, or read it inside a loop",
-                                array));
-      }
-    for (const auto& r : intermediate_reads_)
-      for (const auto& n : k_.nests)
-        for (const auto& st : n.stores) {
-          if (st.array != r.array)
-            continue;
-          const auto* key = nest_key(n);
-          size_t shared = 0;
-          while (key && shared < key->size() && shared < r.nest_key.size() &&
-                 (*key)[shared] == r.nest_key[shared])
-            ++shared;
-          if (st.seq >= r.seq && *key == r.nest_key && r.index && same_index(r.index, st.index)) {
-            // Read after a loop wrote the array, then written again at the
-            // same element: an element holding two values in turn
-            // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
-            const Store* before = nullptr;
-            for (const auto& m : k_.nests)
-              for (const auto& e : m.stores)
-                if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
-                  before = &e;
-            if (before)
-              fail(r.loc, fmt::format("output '{}' is read here after line {} wrote it, and "
-                                      "written again on line {}: an output holds one value per "
-                                      "element, and the adjoint cannot tell the two apart; put "
-                                      "the first value in a DPGEN_OUT work array of its own "
-                                      "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
-                                      r.array, before->pos.line, st.pos.line, r.array));
-          }
-          if (st.seq >= r.seq || *key == r.nest_key)
-            fail(r.loc, fmt::format("output '{}' is read here and written on line {}, in the same "
-                                    "loop or later: a value carried from one iteration to the "
-                                    "next through an output (a recurrence, like a prefix sum, or "
-                                    "an in-place update) is outside the kernel subset; write the "
-                                    "new values to another array",
-                                    r.array, st.pos.line));
-          if (shared > 0)
-            fail(r.loc, fmt::format("work array '{}' is written (line {}) and read inside the "
-                                    "same outer loop: dpgen recomputes work arrays once for the "
-                                    "whole kernel; write it in a loop nest of its own, or use a "
-                                    "local array",
-                                    r.array, st.pos.line));
-        }
-  }
 
   // `e >= 0` wherever this statement runs: its loops run, the counters are
   // in range, the conditions on its path hold, unsigned sizes are >= 0.
@@ -1821,16 +1722,6 @@ private:
       add_facts(pc, f);
     return f;
   }
-  std::map<std::pair<unsigned, unsigned>, SourceLocation> store_locs_;
-
-  // Two write indices that differ by a nonzero constant never meet.
-  static bool indices_differ(const ExprP& a, const ExprP& b) {
-    auto pa = to_poly(a), pb = to_poly(b);
-    if (!pa || !pb)
-      return false;
-    Poly d = *pa - *pb;
-    return d.is_constant() && d.constant_term() != 0;
-  }
 
   static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
     for (const auto& x : a)
@@ -1838,352 +1729,6 @@ private:
         if (x.cond == y.cond && x.positive != y.positive)
           return true;
     return false;
-  }
-
-  // Each output cell is written by exactly one iteration: the write index
-  // must be affine and one-to-one over the loop box. Inequalities between
-  // sizes that the rule needs are proved from what the kernel says about them
-  // (the loops run, its guards); the rest become run-time checks.
-  void check_outputs() {
-    for (auto& nest : k_.nests) {
-      for (auto& s : nest.stores) {
-        auto p = to_poly(s.index);
-        if (!p)
-          fail_at(s.pos, fmt::format("index of output '{}' must be an affine function of the "
-                                     "loop counters (no conditional or data-dependent writes)",
-                                     s.array));
-        std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
-        for (const auto& l : nest.loops) {
-          Poly c = p->coefficient("@" + l.var);
-          for (const auto& [m, coef] : c.terms())
-            for (const auto& sym : m)
-              if (sym[0] == '@')
-                fail_at(s.pos, fmt::format("index of output '{}' multiplies loop counters",
-                                           s.array));
-          if (c == Poly()) {
-            if (s.accumulate)
-              continue; // a reduction: every iteration adds to the same element
-            fail_at(s.pos, fmt::format("output '{}' is written at the same index by every "
-                                       "iteration of loop '{}' (a reduction or a loop-carried "
-                                       "dependence); each element must be written once with "
-                                       "'=', or summed into with '+='",
-                                       s.array, l.var));
-          }
-          dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
-        }
-        if (!s.accumulate)
-          check_one_to_one(nest, s, dims);
-      }
-      // Within one loop nest, every store to an output uses the same index
-      // (their paths are disjoint), so no two iterations meet; stores that
-      // all add ('+=') may go anywhere.
-      if (!nest.loops.empty())
-        for (size_t a = 0; a < nest.stores.size(); ++a)
-          for (size_t b = a + 1; b < nest.stores.size(); ++b) {
-            const Store &x = nest.stores[a], &y = nest.stores[b];
-            if (x.array == y.array && !(x.accumulate && y.accumulate) &&
-                !(*to_poly(x.index) == *to_poly(y.index)) &&
-                !residues_differ(*to_poly(x.index), *to_poly(y.index)))
-              fail_at(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
-                                         "line {} of the same loop: dpgen cannot prove two "
-                                         "iterations never write the same element",
-                                         y.array, print_index(y), print_index(x), x.pos.line));
-          }
-    }
-    // Across loop nests: an element written twice would be overwritten in
-    // the forward pass but counted twice in the adjoint. A later '+=' adds to
-    // what an earlier store left, which is fine; a later '=' must write other
-    // elements than every earlier store.
-    struct Ref {
-      const Nest* nest;
-      const Store* store;
-    };
-    std::vector<Ref> all;
-    for (const auto& n : k_.nests)
-      for (const auto& st : n.stores)
-        all.push_back({&n, &st});
-    std::sort(all.begin(), all.end(),
-              [](const Ref& a, const Ref& b) { return a.store->seq < b.store->seq; });
-    for (size_t a = 0; a < all.size(); ++a)
-      for (size_t b = a + 1; b < all.size(); ++b) {
-        const Nest &nx = *all[a].nest, &ny = *all[b].nest;
-        const Store &x = *all[a].store, &y = *all[b].store;
-        if (x.array != y.array || &nx == &ny)
-          continue;
-        size_t shared = shared_loops(nx, ny);
-        if (y.accumulate) {
-          // Sequential nests: the '+=' runs after the whole earlier nest. In
-          // nests inside a shared loop, only when both touch an element in the
-          // same iteration of the shared loops: the same index, in those
-          // counters alone.
-          if (shared == 0 || (*to_poly(x.index) == *to_poly(y.index) &&
-                              only_counters(*to_poly(x.index), nx, shared)))
-            continue;
-        }
-        if (residues_differ(*to_poly(x.index), *to_poly(y.index)))
-          continue;
-        Facts facts;
-        for (const Nest* n : {&nx, &ny})
-          for (const auto& l : n->loops)
-            add_nonempty(l, facts);
-        for (const Store* st : {&x, &y})
-          for (const auto& pc : st->path)
-            add_facts(pc, facts);
-        auto rx = index_range(x, nx), ry = index_range(y, ny);
-        if (rx && ry) {
-          // apart: max x < min y, or max y < min x
-          Poly one = Poly::constant(1);
-          Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
-          if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
-            continue;
-          Poly one_ = Poly::constant(1);
-          bool overlap = prove_nonneg(-g1 - one_, facts) && prove_nonneg(-g2 - one_, facts);
-          if (shared == 0 && !overlap) {
-            SizeCheck c;
-            c.premises = premises(facts_premises(nx, x, ny, y));
-            c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
-            c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
-                                 "elements [{}, {}] and [{}, {}], which must not overlap",
-                                 y.array, x.pos.line, y.pos.line, rx->first.str(),
-                                 rx->second.str(), ry->first.str(), ry->second.str());
-            c.pos = y.pos;
-            k_.size_checks.push_back(c);
-            continue;
-          }
-        }
-        fail_at(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
-                                   "nest, and dpgen cannot prove the two write different "
-                                   "elements (the adjoint would count an overwritten "
-                                   "element twice); write each element in one loop, with "
-                                   "an index branch for the boundary",
-                                   y.array, x.pos.line));
-      }
-  }
-
-  // The C++ conditions under which a check applies: both stores execute.
-  std::vector<std::string> facts_premises(const Nest& nx, const Store& x, const Nest& ny,
-                                          const Store& y) {
-    std::vector<std::string> out;
-    for (const Nest* n : {&nx, &ny})
-      for (const auto& l : n->loops)
-        out.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
-    for (const Store* st : {&x, &y})
-      for (const auto& pc : st->path) {
-        Facts f;
-        add_facts(pc, f);
-        for (const auto& p : f)
-          out.push_back(fmt::format("({}) >= 0", p.code()));
-      }
-    return out;
-  }
-  static std::vector<std::string> premises(std::vector<std::string> v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    return v;
-  }
-
-  // Two indices never meet when every counter coefficient of both is a
-  // multiple of some g > 1 and their remaining parts differ by a constant that
-  // is not (fine[2 * i] and fine[2 * i + 1]).
-  static bool residues_differ(const Poly& x, const Poly& y) {
-    long long g = 0;
-    Poly rx = x, ry = y;
-    for (const Poly* p : {&x, &y})
-      for (const auto& [m, coef] : p->terms()) {
-        bool counter = false;
-        for (const auto& sym : m)
-          counter = counter || sym[0] == '@';
-        if (!counter)
-          continue;
-        if (m.size() != 1)
-          return false; // a counter times a size: no constant modulus
-        g = std::gcd(g, coef < 0 ? -coef : coef);
-        (p == &x ? rx : ry) = (p == &x ? rx : ry).without(m[0]);
-      }
-    Poly d = rx - ry;
-    return g > 1 && d.is_constant() && d.constant_term() % g != 0;
-  }
-
-  // How many outer loops two nests share (the same `for` statements).
-  size_t shared_loops(const Nest& a, const Nest& b) const {
-    const std::vector<int>* ka = nullptr;
-    const std::vector<int>* kb = nullptr;
-    for (const auto& [key, idx] : nest_index_) {
-      if (&k_.nests[idx] == &a)
-        ka = &key;
-      if (&k_.nests[idx] == &b)
-        kb = &key;
-    }
-    size_t n = 0;
-    while (ka && kb && n < ka->size() && n < kb->size() && (*ka)[n] == (*kb)[n])
-      ++n;
-    return n;
-  }
-
-  // The polynomial mentions no counter but the first `shared` loops of `nest`.
-  static bool only_counters(const Poly& p, const Nest& nest, size_t shared) {
-    for (size_t i = shared; i < nest.loops.size(); ++i)
-      if (p.mentions("@" + nest.loops[i].var))
-        return false;
-    return true;
-  }
-
-  static std::string print_index(const Store& s) { return to_poly(s.index)->str(); }
-
-  // [min, max] of a store's index over its loop box, when every counter's
-  // coefficient is a constant.
-  // (The sign of a coefficient that is a size, like nx in j * nx + i, is
-  // proved from the facts where the store runs.)
-  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
-    Facts facts;
-    for (const auto& l : nest.loops)
-      add_nonempty(l, facts);
-    for (const auto& pc : s.path)
-      add_facts(pc, facts);
-    Poly p = *to_poly(s.index), lo, hi;
-    for (const auto& l : nest.loops) {
-      Poly c = p.coefficient("@" + l.var);
-      bool up = prove_nonneg(c, facts);
-      if (!up && !prove_nonneg(-c, facts))
-        return std::nullopt;
-      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
-      lo = lo + c * (up ? first : last);
-      hi = hi + c * (up ? last : first);
-      p = p.without("@" + l.var);
-    }
-    return std::pair{lo + p, hi + p};
-  }
-
-  // One past the largest index each output's stores reach, for the buffers
-  // of an adjoint that recomputes the forward kernel (work arrays).
-  void output_extents() {
-    bool inout = std::any_of(k_.params.begin(), k_.params.end(),
-                             [](const Param& p) { return p.inout; });
-    if (k_.intermediates.empty() && !inout)
-      return;
-    for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && p.inout)
-        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
-                                             "kernel with in-place array '{}': write the new "
-                                             "values of '{}' to a DPGEN_OUT array",
-                                             *k_.intermediates.begin(), p.name, p.name));
-    for (const auto& p : k_.params)
-      if (k_.intermediates.count(p.name) && p.row_pointers)
-        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) has "
-                                             "row pointers: the adjoint recomputes work arrays "
-                                             "into flat buffers; pass it as a flat pointer or "
-                                             "'double (*{})[N]'",
-                                             p.name, p.name));
-    for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && !p.container.empty())
-        fail(fn_->getLocation(), fmt::format("work array '{}' (an output a later loop reads) in a "
-                                             "kernel with std::vector parameter '{}': pass the "
-                                             "arrays as pointers",
-                                             *k_.intermediates.begin(), p.name));
-    std::map<std::string, std::vector<std::string>> ends;
-    for (const auto& n : k_.nests)
-      for (const auto& st : n.stores) {
-        auto r = index_range(st, n);
-        if (!r)
-          fail_at(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
-                                      "adjoint needs buffers for (a work array or an in-place "
-                                      "array)",
-                                      st.array));
-        ends[st.array].push_back(
-            fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
-      }
-    // A later loop may read a work array beyond what was written (the
-    // buffer holds NaN there): the buffer covers the reads too.
-    for (const auto& r : intermediate_reads_) {
-      auto it = nest_index_.find(r.nest_key);
-      if (it == nest_index_.end())
-        continue;
-      Store probe{r.array, r.index, r.index, r.path, {}};
-      auto range = to_poly(r.index) ? index_range(probe, k_.nests[it->second]) : std::nullopt;
-      if (!range)
-        fail(r.loc, fmt::format("cannot bound this read of work array '{}', which the adjoint "
-                                "recomputes into a buffer",
-                                r.array));
-      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
-                                          (range->second + Poly::constant(1)).code()));
-      // Provably outside every earlier store's range: an element no loop
-      // writes, whose value is the caller's (the adjoint's buffer has NaN).
-      bool outside_all = true, any_store = false;
-      for (const auto& n : k_.nests)
-        for (const auto& st : n.stores) {
-          if (st.array != r.array)
-            continue;
-          any_store = true;
-          auto w = index_range(st, n);
-          Facts facts;
-          for (const Nest* m : {&n, static_cast<const Nest*>(&k_.nests[it->second])})
-            for (const auto& l : m->loops)
-              add_nonempty(l, facts);
-          Poly one = Poly::constant(1);
-          bool outside = w && (prove_nonneg(range->second - w->second - one, facts) ||
-                               prove_nonneg(w->first - range->first - one, facts));
-          outside_all = outside_all && outside;
-        }
-      if (any_store && outside_all)
-        fail(r.loc, fmt::format("reads work array '{}' at elements no earlier loop writes (their "
-                                "values are the caller's, which the adjoint cannot recompute); "
-                                "write every element a later loop reads",
-                                r.array));
-    }
-    for (const auto& [array, e] : ends)
-      k_.extent[array] = e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
-                                       : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})",
-                                                     fmt::join(e, ", "));
-  }
-
-  // Mixed-radix test: with the counters ordered by coefficient, every
-  // coefficient exceeds the largest offset the smaller ones can reach:
-  //   sum_{smaller} |c| * (extent - 1) < |c_next|.
-  // Proved from the facts where the store runs (its loops run, its guards
-  // hold); otherwise checked at run time.
-  void check_one_to_one(const Nest& nest, const Store& s,
-                        std::vector<std::pair<Poly, Poly>> dims) {
-    std::stable_sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
-      return smaller_coefficient(a.first, b.first);
-    });
-    Facts facts;
-    for (const auto& l : nest.loops)
-      add_nonempty(l, facts);
-    for (const auto& pc : s.path)
-      add_facts(pc, facts);
-    Poly reach;
-    for (size_t i = 0; i < dims.size(); ++i) {
-      Poly c = dims[i].first;
-      // The step's magnitude: a mirrored index (`(ny - 1 - j) * ld`) steps by -ld.
-      bool negative = !c.terms().empty();
-      for (const auto& [m, coef] : c.terms())
-        negative = negative && coef < 0;
-      if (negative)
-        c = -c;
-      if (i > 0) {
-        Poly slack = c - reach - Poly::constant(1); // must be >= 0
-        if (!prove_nonneg(slack, facts)) {
-          if (prove_nonneg(-slack - Poly::constant(1), facts))
-            fail_at(s.pos, fmt::format("output '{}' is written twice per element: index "
-                                       "coefficient '{}' against a reach of '{}'",
-                                       s.array, c.str(), reach.str()));
-          SizeCheck chk;
-          chk.premises = premises(facts_premises(nest, s, nest, s));
-          chk.must_hold = fmt::format("({}) >= 0", slack.code());
-          chk.what = fmt::format("output '{}' is written once per element: its index steps by "
-                                 "'{}' where the faster counters reach '{}'",
-                                 s.array, c.str(), reach.str());
-          chk.pos = s.pos;
-          k_.size_checks.push_back(chk);
-        }
-      }
-      reach = reach + c * (dims[i].second - Poly::constant(1));
-    }
-  }
-
-  [[noreturn]] void fail_at(const SourcePos& p, const std::string& msg) {
-    auto it = store_locs_.find({p.line, p.col});
-    fail(it != store_locs_.end() ? it->second : fn_->getLocation(), msg);
   }
 
   // An index that multiplies three or more sizes and counters (a 3D
@@ -2558,12 +2103,12 @@ private:
         // adjoint recomputes it and runs the nests backwards.
         if (!st && written_by_other_nest(p->name)) {
           if (loops_.empty() && !path_reads_ok_)
-            kernel_level_work_reads_.push_back({p->name, e->getBeginLoc()});
+            acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
           ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
           std::const_pointer_cast<Expr>(r)->text = text(e);
           k_.intermediates.insert(p->name);
-          intermediate_reads_.push_back(
-              {p->name, cur_key(), next_store_seq_, e->getBeginLoc(), acc->index, path_});
+          acc_.work_reads.push_back(
+              {p->name, cur_key(), next_store_seq_, acc->index, path_, pos(e->getBeginLoc())});
           return r;
         }
         if (!st || st->accumulate)
@@ -2811,167 +2356,19 @@ private:
   }
 };
 
-// ---- Finding kernels ------------------------------------------------------
-
-// Matches every function definition carrying an annotation; the callback
-// keeps those marked DPGEN_KERNEL in the main file.
-class KernelCollector : public MatchFinder::MatchCallback {
-public:
-  KernelCollector(std::vector<Kernel>& out, bool& ok, std::string file)
-      : out_(out), ok_(ok), file_(std::move(file)) {}
-
-  void run(const MatchFinder::MatchResult& r) override {
-    const auto* fn = r.Nodes.getNodeAs<FunctionDecl>("kernel");
-    if (!fn || annotation(fn) != "dpgen.kernel")
-      return;
-    if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation())))
-      return;
-    if (fn->isTemplateInstantiation())
-      return;
-    found_ = true;
-    Kernel k;
-    if (Lowerer(*r.Context, fn).run(k)) {
-      k.file = file_;
-      k.c_linkage = !r.Context->getLangOpts().CPlusPlus;
-      out_.push_back(std::move(k));
-    } else {
-      ok_ = false;
-    }
-  }
-  bool found() const { return found_; }
-
-private:
-  std::vector<Kernel>& out_;
-  bool& ok_;
-  std::string file_;
-  bool found_ = false;
-};
-
-class Consumer : public ASTConsumer {
-public:
-  Consumer(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
-      : collector_(out, ok, file), ok_(ok), deps_(deps) {
-    // A kernel: an annotated function definition (DPGEN_KERNEL).
-    auto kernel = functionDecl(isDefinition(), hasAttr(attr::Annotate)).bind("kernel");
-    finder_.addMatcher(kernel, &collector_);
-  }
-
-  void HandleTranslationUnit(ASTContext& ctx) override {
-    if (deps_) {
-      const auto& sm = ctx.getSourceManager();
-      for (auto it = sm.fileinfo_begin(); it != sm.fileinfo_end(); ++it)
-        deps_->push_back(it->first.getName().str());
-    }
-    if (ctx.getDiagnostics().hasErrorOccurred()) {
-      ok_ = false;
-      return; // a syntax error was reported by Clang already
-    }
-    finder_.matchAST(ctx);
-    if (!collector_.found() && ok_) {
-      auto& d = ctx.getDiagnostics();
-      const auto& sm = ctx.getSourceManager();
-      unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error,
-                                      "no DPGEN_KERNEL function in this file (mark a kernel "
-                                      "with DPGEN_KERNEL from dpgen/annotate.hpp)");
-      d.Report(sm.getLocForStartOfFile(sm.getMainFileID()), id);
-      ok_ = false;
-    }
-  }
-
-private:
-  KernelCollector collector_;
-  MatchFinder finder_;
-  bool& ok_;
-  std::vector<std::string>* deps_;
-};
-
-class Action : public ASTFrontendAction {
-public:
-  Action(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
-      : out_(out), ok_(ok), file_(std::move(file)), deps_(deps) {}
-  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance&, llvm::StringRef) override {
-    return std::make_unique<Consumer>(out_, ok_, file_, deps_);
-  }
-
-private:
-  std::vector<Kernel>& out_;
-  bool& ok_;
-  std::string file_;
-  std::vector<std::string>* deps_;
-};
-
 } // namespace
 
-namespace {
-
-bool is_c_file(const std::string& file) {
-  return file.size() > 2 && file.compare(file.size() - 2, 2, ".c") == 0;
-}
-
-// A `.c` kernel is parsed as C (C11 unless a C -std= is given); C++ -std=
-// flags meant for the rest of the build are dropped for it, and the other way
-// round.
-std::vector<std::string> compiler_args(const FrontendOptions& opts, const std::string& file) {
-  bool c = is_c_file(file);
-  std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
-  if (!opts.resource_dir.empty())
-    args.push_back("-resource-dir=" + opts.resource_dir);
-  std::vector<std::string> rest;
-  bool has_std = false;
-  for (const auto& a : opts.compiler_args) {
-    if (a.rfind("-std=", 0) == 0) {
-      bool cxx_std = a.find("++") != std::string::npos;
-      if (cxx_std == c)
-        continue; // the other language's standard
-      has_std = true;
-    }
-    rest.push_back(a);
+std::string annotation(const clang::Decl* d) {
+  for (const auto* a : d->specific_attrs<clang::AnnotateAttr>()) {
+    llvm::StringRef s = a->getAnnotation();
+    if (s.starts_with("dpgen."))
+      return s.str();
   }
-  if (!has_std)
-    args.push_back(c ? "-std=c11" : "-std=c++17");
-  args.push_back(c ? "-xc" : "-xc++");
-  args.insert(args.end(), rest.begin(), rest.end());
-  return args;
+  return "";
 }
 
-bool run(std::vector<std::string> args, const std::string& file, const FrontendOptions& opts,
-         std::vector<Kernel>& kernels, std::vector<std::string>* deps,
-         llvm::IntrusiveRefCntPtr<llvm::vfs::FileSystem> files) {
-  args.push_back(file);
-  bool ok = true;
-  std::vector<Kernel> found;
-  auto fm = llvm::makeIntrusiveRefCnt<FileManager>(FileSystemOptions(), files);
-  tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file, deps), fm.get());
-  IgnoringDiagConsumer ignore;
-  if (opts.quiet)
-    inv.setDiagnosticConsumer(&ignore);
-  if (!inv.run())
-    ok = false;
-  kernels.insert(kernels.end(), found.begin(), found.end());
-  return ok;
-}
-
-} // namespace
-
-bool lower_file(const std::string& file, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels, std::vector<std::string>* deps) {
-  return run(compiler_args(opts, file), file, opts, kernels, deps, llvm::vfs::getRealFileSystem());
-}
-
-bool lower_code(const std::string& code, const std::string& name, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels,
-                const std::vector<std::pair<std::string, std::string>>& headers) {
-  // The real file system (for <cmath>) under an in-memory one with the code.
-  auto memory = llvm::makeIntrusiveRefCnt<llvm::vfs::InMemoryFileSystem>();
-  memory->addFile("/dpgen-memory/" + name, 0, llvm::MemoryBuffer::getMemBufferCopy(code));
-  for (const auto& [path, text] : headers)
-    memory->addFile("/dpgen-memory/include/" + path, 0, llvm::MemoryBuffer::getMemBufferCopy(text));
-  auto overlay = llvm::makeIntrusiveRefCnt<llvm::vfs::OverlayFileSystem>(
-      llvm::vfs::getRealFileSystem());
-  overlay->pushOverlay(memory);
-  auto args = compiler_args(opts, name);
-  args.push_back("-I/dpgen-memory/include");
-  return run(args, "/dpgen-memory/" + name, opts, kernels, nullptr, overlay);
+bool lower_kernel(clang::ASTContext& ctx, const clang::FunctionDecl* fn, Kernel& out) {
+  return Lowerer(ctx, fn).run(out);
 }
 
 } // namespace dpgen

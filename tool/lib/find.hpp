@@ -1,5 +1,6 @@
-// Find and lower: parse kernel files with Clang, find DPGEN_KERNEL functions,
-// check them against the supported subset and lower them to the kernel IR.
+// Find (phase 1): parse kernel files with Clang and find their DPGEN_KERNEL
+// functions, which lower.hpp turns into checked kernel IR. The entry points
+// of the front end (find, lower, check).
 #pragma once
 
 #include "ir.hpp"
@@ -21,8 +22,8 @@ struct FrontendOptions {
 /// Returns false if any error was reported.
 /// `deps`, if given, receives every file the parse read (for build-system
 /// dependency files).
-bool lower_file(const std::string& file, const FrontendOptions& opts,
-                std::vector<Kernel>& kernels, std::vector<std::string>* deps = nullptr);
+bool lower_file(const std::string& file, const FrontendOptions& opts, std::vector<Kernel>& kernels,
+                std::vector<std::string>* deps = nullptr);
 
 /// The same for source text held in memory, named `name`; `headers` maps
 /// further in-memory files (e.g. "dpgen/annotate.hpp") to their contents.

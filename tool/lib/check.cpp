@@ -1,0 +1,499 @@
+// Check (the end of phase 2): the output rules of check.hpp, proved on the
+// lowered loop nests and stores. The first rule a kernel breaks is reported
+// at the store or read it concerns (SourcePos) and the kernel is dropped.
+#include "check.hpp"
+#include "ir_walk.hpp"
+
+#include "affine.hpp"
+#include "prove.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <optional>
+
+namespace dpgen {
+
+namespace {
+
+// Thrown to abandon the checks after the first error has been reported.
+struct Stop {};
+
+class Checker {
+public:
+  Checker(Kernel& k, const Accesses& a, Diagnostics& diag) : k_(k), a_(a), diag_(diag) {}
+
+  // The rules in this order; the first violation stops them. (Later rules
+  // rely on what earlier ones proved: output_extents needs the affine
+  // indices check_outputs proved.)
+  bool run() {
+    try {
+      check_intermediates();
+      check_inout();
+      check_outputs();
+      output_extents();
+    } catch (const Stop&) {
+      return false;
+    }
+    return true;
+  }
+
+private:
+  Kernel& k_;
+  const Accesses& a_;
+  Diagnostics& diag_;
+
+  [[noreturn]] void fail(const SourcePos& at, const std::string& msg) {
+    diag_.error(at, msg);
+    throw Stop{};
+  }
+
+  const Nest* nest_with_key(const std::vector<int>& key) const {
+    for (const auto& n : k_.nests)
+      if (n.key == key)
+        return &n;
+    return nullptr;
+  }
+
+  // An in-place array is read, where it is also written, only at the element
+  // its iteration writes (anything else reads a value another iteration may
+  // have updated: Gauss-Seidel), and never after a loop that wrote it.
+  void check_inout() {
+    for (const auto& r : a_.inout_reads)
+      for (const auto& s : a_.inout_stores) {
+        if (s.array != r.array)
+          continue;
+        size_t shared = 0;
+        while (shared < s.nest_key.size() && shared < r.nest_key.size() &&
+               s.nest_key[shared] == r.nest_key[shared])
+          ++shared;
+        bool same_nest = s.nest_key == r.nest_key;
+        auto ps = to_poly(s.index), pr = to_poly(r.index);
+        bool same_cell = ps && pr && *ps == *pr;
+        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq)))
+          fail(r.pos, fmt::format("in-place array '{}' is read here at an element another "
+                                  "iteration or loop may already have updated: a value carried "
+                                  "through the array (Gauss-Seidel, an in-place stencil) is "
+                                  "outside the kernel subset; read only the element each "
+                                  "iteration writes, or write the new values to a separate "
+                                  "DPGEN_OUT array",
+                                  r.array));
+      }
+  }
+
+  // An intermediate is written before it is read, by nests that do not share
+  // a loop with the nests that read it (a buffer refilled per row would hold
+  // only the last row when the adjoint recomputes it), and no nest both
+  // writes it and reads it.
+  void check_intermediates() {
+    // A work array's first store must set it: starting from '+=' adds to the
+    // caller's contents, which the adjoint cannot recompute.
+    for (const auto& w : k_.intermediates) {
+      const Store* first = nullptr;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores)
+          if (st.array == w && (!first || st.seq < first->seq))
+            first = &st;
+      if (first && first->accumulate)
+        fail(first->pos, fmt::format("work array '{}' (read by a later loop) is first written "
+                                     "with '+=': it adds to the caller's contents, which the "
+                                     "adjoint cannot recompute; set it with '=' first",
+                                     w));
+    }
+    // A work array read outside every loop into a local would be needed by
+    // every nest's adjoint; only stores outside loops may read it directly.
+    for (const auto& [array, at] : a_.kernel_level_work_reads)
+      for (const auto& l : k_.kernel_locals) {
+        if (any_node(l->def, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }))
+          fail(at, fmt::format("a local outside every loop reads work array '{}'; use the "
+                               "element directly in the store, or read it inside a loop",
+                               array));
+      }
+    for (const auto& r : a_.work_reads)
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != r.array)
+            continue;
+          size_t shared = 0;
+          while (shared < n.key.size() && shared < r.nest_key.size() &&
+                 n.key[shared] == r.nest_key[shared])
+            ++shared;
+          if (st.seq >= r.seq && n.key == r.nest_key && r.index && same_index(r.index, st.index)) {
+            // Read after a loop wrote the array, then written again at the
+            // same element: an element holding two values in turn
+            // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
+            const Store* before = nullptr;
+            for (const auto& m : k_.nests)
+              for (const auto& e : m.stores)
+                if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
+                  before = &e;
+            if (before)
+              fail(r.pos, fmt::format("output '{}' is read here after line {} wrote it, and "
+                                      "written again on line {}: an output holds one value per "
+                                      "element, and the adjoint cannot tell the two apart; put "
+                                      "the first value in a DPGEN_OUT work array of its own "
+                                      "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
+                                      r.array, before->pos.line, st.pos.line, r.array));
+          }
+          if (st.seq >= r.seq || n.key == r.nest_key)
+            fail(r.pos, fmt::format("output '{}' is read here and written on line {}, in the same "
+                                    "loop or later: a value carried from one iteration to the "
+                                    "next through an output (a recurrence, like a prefix sum, or "
+                                    "an in-place update) is outside the kernel subset; write the "
+                                    "new values to another array",
+                                    r.array, st.pos.line));
+          if (shared > 0)
+            fail(r.pos, fmt::format("work array '{}' is written (line {}) and read inside the "
+                                    "same outer loop: dpgen recomputes work arrays once for the "
+                                    "whole kernel; write it in a loop nest of its own, or use a "
+                                    "local array",
+                                    r.array, st.pos.line));
+        }
+  }
+
+  // Each output cell is written by exactly one iteration: the write index
+  // must be affine and one-to-one over the loop box. Inequalities between
+  // sizes that the rule needs are proved from what the kernel says about them
+  // (the loops run, its guards); the rest become run-time checks.
+  void check_outputs() {
+    for (auto& nest : k_.nests) {
+      for (auto& s : nest.stores) {
+        auto p = to_poly(s.index);
+        if (!p)
+          fail(s.pos, fmt::format("index of output '{}' must be an affine function of the "
+                                  "loop counters (no conditional or data-dependent writes)",
+                                  s.array));
+        std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
+        for (const auto& l : nest.loops) {
+          Poly c = p->coefficient("@" + l.var);
+          for (const auto& [m, coef] : c.terms())
+            for (const auto& sym : m)
+              if (sym[0] == '@')
+                fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
+          if (c == Poly()) {
+            if (s.accumulate)
+              continue; // a reduction: every iteration adds to the same element
+            fail(s.pos, fmt::format("output '{}' is written at the same index by every "
+                                    "iteration of loop '{}' (a reduction or a loop-carried "
+                                    "dependence); each element must be written once with "
+                                    "'=', or summed into with '+='",
+                                    s.array, l.var));
+          }
+          dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+        }
+        if (!s.accumulate)
+          check_one_to_one(nest, s, dims);
+      }
+      // Within one loop nest, every store to an output uses the same index
+      // (their paths are disjoint), so no two iterations meet; stores that
+      // all add ('+=') may go anywhere.
+      if (!nest.loops.empty())
+        for (size_t a = 0; a < nest.stores.size(); ++a)
+          for (size_t b = a + 1; b < nest.stores.size(); ++b) {
+            const Store &x = nest.stores[a], &y = nest.stores[b];
+            if (x.array == y.array && !(x.accumulate && y.accumulate) &&
+                !(*to_poly(x.index) == *to_poly(y.index)) &&
+                !residues_differ(*to_poly(x.index), *to_poly(y.index)))
+              fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
+                                      "line {} of the same loop: dpgen cannot prove two "
+                                      "iterations never write the same element",
+                                      y.array, print_index(y), print_index(x), x.pos.line));
+          }
+    }
+    // Across loop nests: an element written twice would be overwritten in
+    // the forward pass but counted twice in the adjoint. A later '+=' adds to
+    // what an earlier store left, which is fine; a later '=' must write other
+    // elements than every earlier store.
+    struct Ref {
+      const Nest* nest;
+      const Store* store;
+    };
+    std::vector<Ref> all;
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores)
+        all.push_back({&n, &st});
+    std::sort(all.begin(), all.end(),
+              [](const Ref& a, const Ref& b) { return a.store->seq < b.store->seq; });
+    for (size_t a = 0; a < all.size(); ++a)
+      for (size_t b = a + 1; b < all.size(); ++b) {
+        const Nest &nx = *all[a].nest, &ny = *all[b].nest;
+        const Store &x = *all[a].store, &y = *all[b].store;
+        if (x.array != y.array || &nx == &ny)
+          continue;
+        size_t shared = shared_loops(nx, ny);
+        if (y.accumulate) {
+          // Sequential nests: the '+=' runs after the whole earlier nest. In
+          // nests inside a shared loop, only when both touch an element in the
+          // same iteration of the shared loops: the same index, in those
+          // counters alone.
+          if (shared == 0 || (*to_poly(x.index) == *to_poly(y.index) &&
+                              only_counters(*to_poly(x.index), nx, shared)))
+            continue;
+        }
+        if (residues_differ(*to_poly(x.index), *to_poly(y.index)))
+          continue;
+        Facts facts;
+        for (const Nest* n : {&nx, &ny})
+          for (const auto& l : n->loops)
+            add_nonempty(l, facts);
+        for (const Store* st : {&x, &y})
+          for (const auto& pc : st->path)
+            add_facts(pc, facts);
+        auto rx = index_range(x, nx), ry = index_range(y, ny);
+        if (rx && ry) {
+          // apart: max x < min y, or max y < min x
+          Poly one = Poly::constant(1);
+          Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
+          if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
+            continue;
+          Poly one_ = Poly::constant(1);
+          bool overlap = prove_nonneg(-g1 - one_, facts) && prove_nonneg(-g2 - one_, facts);
+          if (shared == 0 && !overlap) {
+            SizeCheck c;
+            c.premises = premises(facts_premises(nx, x, ny, y));
+            c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
+            c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
+                                 "elements [{}, {}] and [{}, {}], which must not overlap",
+                                 y.array, x.pos.line, y.pos.line, rx->first.str(), rx->second.str(),
+                                 ry->first.str(), ry->second.str());
+            c.pos = y.pos;
+            k_.size_checks.push_back(c);
+            continue;
+          }
+        }
+        fail(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
+                                "nest, and dpgen cannot prove the two write different "
+                                "elements (the adjoint would count an overwritten "
+                                "element twice); write each element in one loop, with "
+                                "an index branch for the boundary",
+                                y.array, x.pos.line));
+      }
+  }
+
+  // The C++ conditions under which a check applies: both stores execute.
+  std::vector<std::string> facts_premises(const Nest& nx, const Store& x, const Nest& ny,
+                                          const Store& y) {
+    std::vector<std::string> out;
+    for (const Nest* n : {&nx, &ny})
+      for (const auto& l : n->loops)
+        out.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+    for (const Store* st : {&x, &y})
+      for (const auto& pc : st->path) {
+        Facts f;
+        add_facts(pc, f);
+        for (const auto& p : f)
+          out.push_back(fmt::format("({}) >= 0", p.code()));
+      }
+    return out;
+  }
+  static std::vector<std::string> premises(std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+
+  // Two indices never meet when every counter coefficient of both is a
+  // multiple of some g > 1 and their remaining parts differ by a constant that
+  // is not (fine[2 * i] and fine[2 * i + 1]).
+  static bool residues_differ(const Poly& x, const Poly& y) {
+    long long g = 0;
+    Poly rx = x, ry = y;
+    for (const Poly* p : {&x, &y})
+      for (const auto& [m, coef] : p->terms()) {
+        bool counter = false;
+        for (const auto& sym : m)
+          counter = counter || sym[0] == '@';
+        if (!counter)
+          continue;
+        if (m.size() != 1)
+          return false; // a counter times a size: no constant modulus
+        g = std::gcd(g, coef < 0 ? -coef : coef);
+        (p == &x ? rx : ry) = (p == &x ? rx : ry).without(m[0]);
+      }
+    Poly d = rx - ry;
+    return g > 1 && d.is_constant() && d.constant_term() % g != 0;
+  }
+
+  // How many outer loops two nests share (the same `for` statements).
+  static size_t shared_loops(const Nest& a, const Nest& b) {
+    size_t n = 0;
+    while (n < a.key.size() && n < b.key.size() && a.key[n] == b.key[n])
+      ++n;
+    return n;
+  }
+
+  // The polynomial mentions no counter but the first `shared` loops of `nest`.
+  static bool only_counters(const Poly& p, const Nest& nest, size_t shared) {
+    for (size_t i = shared; i < nest.loops.size(); ++i)
+      if (p.mentions("@" + nest.loops[i].var))
+        return false;
+    return true;
+  }
+
+  static std::string print_index(const Store& s) { return to_poly(s.index)->str(); }
+
+  // [min, max] of a store's index over its loop box, when every counter's
+  // coefficient is a constant.
+  // (The sign of a coefficient that is a size, like nx in j * nx + i, is
+  // proved from the facts where the store runs.)
+  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : s.path)
+      add_facts(pc, facts);
+    Poly p = *to_poly(s.index), lo, hi;
+    for (const auto& l : nest.loops) {
+      Poly c = p.coefficient("@" + l.var);
+      bool up = prove_nonneg(c, facts);
+      if (!up && !prove_nonneg(-c, facts))
+        return std::nullopt;
+      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
+      lo = lo + c * (up ? first : last);
+      hi = hi + c * (up ? last : first);
+      p = p.without("@" + l.var);
+    }
+    return std::pair{lo + p, hi + p};
+  }
+
+  // One past the largest index each output's stores reach, for the buffers
+  // of an adjoint that recomputes the forward kernel (work arrays).
+  void output_extents() {
+    bool inout =
+        std::any_of(k_.params.begin(), k_.params.end(), [](const Param& p) { return p.inout; });
+    if (k_.intermediates.empty() && !inout)
+      return;
+    for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && p.inout)
+        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) in a "
+                                 "kernel with in-place array '{}': write the new "
+                                 "values of '{}' to a DPGEN_OUT array",
+                                 *k_.intermediates.begin(), p.name, p.name));
+    for (const auto& p : k_.params)
+      if (k_.intermediates.count(p.name) && p.row_pointers)
+        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) has "
+                                 "row pointers: the adjoint recomputes work arrays "
+                                 "into flat buffers; pass it as a flat pointer or "
+                                 "'double (*{})[N]'",
+                                 p.name, p.name));
+    for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && !p.container.empty())
+        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) in a "
+                                 "kernel with std::vector parameter '{}': pass the "
+                                 "arrays as pointers",
+                                 *k_.intermediates.begin(), p.name));
+    std::map<std::string, std::vector<std::string>> ends;
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores) {
+        auto r = index_range(st, n);
+        if (!r)
+          fail(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
+                                   "adjoint needs buffers for (a work array or an in-place "
+                                   "array)",
+                                   st.array));
+        ends[st.array].push_back(
+            fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
+      }
+    // A later loop may read a work array beyond what was written (the
+    // buffer holds NaN there): the buffer covers the reads too.
+    for (const auto& r : a_.work_reads) {
+      const Nest* reader = nest_with_key(r.nest_key);
+      if (!reader)
+        continue;
+      Store probe{r.array, r.index, r.index, r.path, {}};
+      auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;
+      if (!range)
+        fail(r.pos, fmt::format("cannot bound this read of work array '{}', which the adjoint "
+                                "recomputes into a buffer",
+                                r.array));
+      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
+                                          (range->second + Poly::constant(1)).code()));
+      // Provably outside every earlier store's range: an element no loop
+      // writes, whose value is the caller's (the adjoint's buffer has NaN).
+      bool outside_all = true, any_store = false;
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != r.array)
+            continue;
+          any_store = true;
+          auto w = index_range(st, n);
+          Facts facts;
+          for (const Nest* m : {&n, reader})
+            for (const auto& l : m->loops)
+              add_nonempty(l, facts);
+          Poly one = Poly::constant(1);
+          bool outside = w && (prove_nonneg(range->second - w->second - one, facts) ||
+                               prove_nonneg(w->first - range->first - one, facts));
+          outside_all = outside_all && outside;
+        }
+      if (any_store && outside_all)
+        fail(r.pos, fmt::format("reads work array '{}' at elements no earlier loop writes (their "
+                                "values are the caller's, which the adjoint cannot recompute); "
+                                "write every element a later loop reads",
+                                r.array));
+    }
+    for (const auto& [array, e] : ends)
+      k_.extent[array] =
+          e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
+                        : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})", fmt::join(e, ", "));
+  }
+
+  // Mixed-radix test: with the counters ordered by coefficient, every
+  // coefficient exceeds the largest offset the smaller ones can reach:
+  //   sum_{smaller} |c| * (extent - 1) < |c_next|.
+  // Proved from the facts where the store runs (its loops run, its guards
+  // hold); otherwise checked at run time.
+  void check_one_to_one(const Nest& nest, const Store& s, std::vector<std::pair<Poly, Poly>> dims) {
+    std::stable_sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
+      return smaller_coefficient(a.first, b.first);
+    });
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : s.path)
+      add_facts(pc, facts);
+    Poly reach;
+    for (size_t i = 0; i < dims.size(); ++i) {
+      Poly c = dims[i].first;
+      // The step's magnitude: a mirrored index (`(ny - 1 - j) * ld`) steps by -ld.
+      bool negative = !c.terms().empty();
+      for (const auto& [m, coef] : c.terms())
+        negative = negative && coef < 0;
+      if (negative)
+        c = -c;
+      if (i > 0) {
+        Poly slack = c - reach - Poly::constant(1); // must be >= 0
+        if (!prove_nonneg(slack, facts)) {
+          if (prove_nonneg(-slack - Poly::constant(1), facts))
+            fail(s.pos, fmt::format("output '{}' is written twice per element: index "
+                                    "coefficient '{}' against a reach of '{}'",
+                                    s.array, c.str(), reach.str()));
+          SizeCheck chk;
+          chk.premises = premises(facts_premises(nest, s, nest, s));
+          chk.must_hold = fmt::format("({}) >= 0", slack.code());
+          chk.what = fmt::format("output '{}' is written once per element: its index steps by "
+                                 "'{}' where the faster counters reach '{}'",
+                                 s.array, c.str(), reach.str());
+          chk.pos = s.pos;
+          k_.size_checks.push_back(chk);
+        }
+      }
+      reach = reach + c * (dims[i].second - Poly::constant(1));
+    }
+  }
+};
+
+} // namespace
+
+bool same_index(const ExprP& a, const ExprP& b) {
+  auto pa = to_poly(a), pb = to_poly(b);
+  return pa && pb ? *pa == *pb : same(a, b);
+}
+
+bool check_kernel(Kernel& k, const Accesses& accesses, Diagnostics& diag) {
+  return Checker(k, accesses, diag).run();
+}
+
+} // namespace dpgen

@@ -1,0 +1,192 @@
+// Find (phase 1): Clang parses a kernel file (the compiler arguments are
+// assembled here), an AST matcher finds the DPGEN_KERNEL function
+// definitions of the main file, and each goes to lower.hpp. The front end's
+// entry points, lower_file and lower_code (find.hpp).
+#include "find.hpp"
+#include "lower.hpp"
+
+#include <clang/AST/ASTConsumer.h>
+#include <clang/AST/ASTContext.h>
+#include <clang/AST/Attr.h>
+#include <clang/ASTMatchers/ASTMatchFinder.h>
+#include <clang/ASTMatchers/ASTMatchers.h>
+#include <clang/Basic/SourceManager.h>
+#include <clang/Frontend/CompilerInstance.h>
+#include <clang/Frontend/FrontendActions.h>
+#include <clang/Tooling/Tooling.h>
+#include <llvm/Support/MemoryBuffer.h>
+#include <llvm/Support/VirtualFileSystem.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+namespace {
+
+using namespace clang;
+using namespace clang::ast_matchers;
+
+// Matches every function definition carrying an annotation; the callback
+// keeps those marked DPGEN_KERNEL in the main file.
+class KernelCollector : public MatchFinder::MatchCallback {
+public:
+  KernelCollector(std::vector<Kernel>& out, bool& ok, std::string file)
+      : out_(out), ok_(ok), file_(std::move(file)) {}
+
+  void run(const MatchFinder::MatchResult& r) override {
+    const auto* fn = r.Nodes.getNodeAs<FunctionDecl>("kernel");
+    if (!fn || annotation(fn) != "dpgen.kernel")
+      return;
+    if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation())))
+      return;
+    if (fn->isTemplateInstantiation())
+      return;
+    found_ = true;
+    Kernel k;
+    if (lower_kernel(*r.Context, fn, k)) {
+      k.file = file_;
+      k.c_linkage = !r.Context->getLangOpts().CPlusPlus;
+      out_.push_back(std::move(k));
+    } else {
+      ok_ = false;
+    }
+  }
+  bool found() const { return found_; }
+
+private:
+  std::vector<Kernel>& out_;
+  bool& ok_;
+  std::string file_;
+  bool found_ = false;
+};
+
+class Consumer : public ASTConsumer {
+public:
+  Consumer(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
+      : collector_(out, ok, file), ok_(ok), deps_(deps) {
+    // A kernel: an annotated function definition (DPGEN_KERNEL).
+    auto kernel = functionDecl(isDefinition(), hasAttr(attr::Annotate)).bind("kernel");
+    finder_.addMatcher(kernel, &collector_);
+  }
+
+  void HandleTranslationUnit(ASTContext& ctx) override {
+    if (deps_) {
+      const auto& sm = ctx.getSourceManager();
+      for (auto it = sm.fileinfo_begin(); it != sm.fileinfo_end(); ++it)
+        deps_->push_back(it->first.getName().str());
+    }
+    if (ctx.getDiagnostics().hasErrorOccurred()) {
+      ok_ = false;
+      return; // a syntax error was reported by Clang already
+    }
+    finder_.matchAST(ctx);
+    if (!collector_.found() && ok_) {
+      auto& d = ctx.getDiagnostics();
+      const auto& sm = ctx.getSourceManager();
+      unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error,
+                                      "no DPGEN_KERNEL function in this file (mark a kernel "
+                                      "with DPGEN_KERNEL from dpgen/annotate.hpp)");
+      d.Report(sm.getLocForStartOfFile(sm.getMainFileID()), id);
+      ok_ = false;
+    }
+  }
+
+private:
+  KernelCollector collector_;
+  MatchFinder finder_;
+  bool& ok_;
+  std::vector<std::string>* deps_;
+};
+
+class Action : public ASTFrontendAction {
+public:
+  Action(std::vector<Kernel>& out, bool& ok, std::string file, std::vector<std::string>* deps)
+      : out_(out), ok_(ok), file_(std::move(file)), deps_(deps) {}
+  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance&, llvm::StringRef) override {
+    return std::make_unique<Consumer>(out_, ok_, file_, deps_);
+  }
+
+private:
+  std::vector<Kernel>& out_;
+  bool& ok_;
+  std::string file_;
+  std::vector<std::string>* deps_;
+};
+
+} // namespace
+
+namespace {
+
+bool is_c_file(const std::string& file) {
+  return file.size() > 2 && file.compare(file.size() - 2, 2, ".c") == 0;
+}
+
+// A `.c` kernel is parsed as C (C11 unless a C -std= is given); C++ -std=
+// flags meant for the rest of the build are dropped for it, and the other way
+// round.
+std::vector<std::string> compiler_args(const FrontendOptions& opts, const std::string& file) {
+  bool c = is_c_file(file);
+  std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
+  if (!opts.resource_dir.empty())
+    args.push_back("-resource-dir=" + opts.resource_dir);
+  std::vector<std::string> rest;
+  bool has_std = false;
+  for (const auto& a : opts.compiler_args) {
+    if (a.rfind("-std=", 0) == 0) {
+      bool cxx_std = a.find("++") != std::string::npos;
+      if (cxx_std == c)
+        continue; // the other language's standard
+      has_std = true;
+    }
+    rest.push_back(a);
+  }
+  if (!has_std)
+    args.push_back(c ? "-std=c11" : "-std=c++17");
+  args.push_back(c ? "-xc" : "-xc++");
+  args.insert(args.end(), rest.begin(), rest.end());
+  return args;
+}
+
+bool run(std::vector<std::string> args, const std::string& file, const FrontendOptions& opts,
+         std::vector<Kernel>& kernels, std::vector<std::string>* deps,
+         llvm::IntrusiveRefCntPtr<llvm::vfs::FileSystem> files) {
+  args.push_back(file);
+  bool ok = true;
+  std::vector<Kernel> found;
+  auto fm = llvm::makeIntrusiveRefCnt<FileManager>(FileSystemOptions(), files);
+  tooling::ToolInvocation inv(args, std::make_unique<Action>(found, ok, file, deps), fm.get());
+  IgnoringDiagConsumer ignore;
+  if (opts.quiet)
+    inv.setDiagnosticConsumer(&ignore);
+  if (!inv.run())
+    ok = false;
+  kernels.insert(kernels.end(), found.begin(), found.end());
+  return ok;
+}
+
+} // namespace
+
+bool lower_file(const std::string& file, const FrontendOptions& opts, std::vector<Kernel>& kernels,
+                std::vector<std::string>* deps) {
+  return run(compiler_args(opts, file), file, opts, kernels, deps, llvm::vfs::getRealFileSystem());
+}
+
+bool lower_code(const std::string& code, const std::string& name, const FrontendOptions& opts,
+                std::vector<Kernel>& kernels,
+                const std::vector<std::pair<std::string, std::string>>& headers) {
+  // The real file system (for <cmath>) under an in-memory one with the code.
+  auto memory = llvm::makeIntrusiveRefCnt<llvm::vfs::InMemoryFileSystem>();
+  memory->addFile("/dpgen-memory/" + name, 0, llvm::MemoryBuffer::getMemBufferCopy(code));
+  for (const auto& [path, text] : headers)
+    memory->addFile("/dpgen-memory/include/" + path, 0, llvm::MemoryBuffer::getMemBufferCopy(text));
+  auto overlay =
+      llvm::makeIntrusiveRefCnt<llvm::vfs::OverlayFileSystem>(llvm::vfs::getRealFileSystem());
+  overlay->pushOverlay(memory);
+  auto args = compiler_args(opts, name);
+  args.push_back("-I/dpgen-memory/include");
+  return run(args, "/dpgen-memory/" + name, opts, kernels, nullptr, overlay);
+}
+
+} // namespace dpgen
