@@ -6,7 +6,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include "lib/derive.hpp"
 #include "lib/emit.hpp"
-#include "lib/frontend.hpp"
+#include "lib/find.hpp"
 #include "lib/print.hpp"
 #include "lib/schedule.hpp"
 
