@@ -10,4 +10,7 @@ DPGEN_KERNEL void gauss_seidel(DPGEN_INOUT double* u, DPGEN_IN const double* f, 
     u[i] = 0.5 * (u[i - 1] + u[i + 1]) - f[i];
   // CHECK: inplace_stencil.cpp:[[@LINE-1]]:19: error: in-place array 'u' is read here at an element another iteration or loop may already have updated
   // CHECK-SAME: write the new values to a separate DPGEN_OUT array
+  // Every read that breaks the rule is reported (u[i + 1] too), in one run:
+  // CHECK: inplace_stencil.cpp:[[@LINE-4]]:30: error: in-place array 'u' is read here
+  // CHECK: 2 errors generated.
 }

@@ -12,4 +12,7 @@ DPGEN_KERNEL void half_sum_of_squares(DPGEN_IN const double* a, DPGEN_OUT double
     *loss += a[i] * a[i];
   *loss = *loss * 0.5;
   // CHECK: rescale_after_reduction.cpp:[[@LINE-1]]:11: error: output 'loss' is read here after line 12 wrote it, and written again on line 13: an output holds one value per element
+  // The write-once rule is checked too, and its error reported in the same run:
+  // CHECK: rescale_after_reduction.cpp:[[@LINE-3]]:3: error: output 'loss' is also written on line 10 in another loop nest
+  // CHECK: 2 errors generated.
 }

@@ -1,6 +1,6 @@
 // Check (the end of phase 2): the output rules of check.hpp, proved on the
-// lowered loop nests and stores. The first rule a kernel breaks is reported
-// at the store or read it concerns (SourcePos) and the kernel is dropped.
+// lowered loop nests and stores. Every violation is reported, once per store
+// or read, at the SourcePos it concerns, and the kernel is dropped.
 #include "check.hpp"
 #include "ir_walk.hpp"
 
@@ -13,41 +13,37 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 
 namespace dpgen {
 
 namespace {
 
-// Thrown to abandon the checks after the first error has been reported.
-struct Stop {};
-
 class Checker {
 public:
   Checker(Kernel& k, const Accesses& a, Diagnostics& diag) : k_(k), a_(a), diag_(diag) {}
 
-  // The rules in this order; the first violation stops them. (Later rules
-  // rely on what earlier ones proved: output_extents needs the affine
-  // indices check_outputs proved.)
+  // Every rule in turn, each reporting every violation it finds (one per
+  // store or read). Where an output index is not affine, or multiplies
+  // counters, the rules that need its range (the rest of the write-once
+  // rule, the extents) are left out.
   bool run() {
-    try {
-      check_intermediates();
-      check_inout();
-      check_outputs();
+    check_intermediates();
+    check_inout();
+    if (check_outputs())
       output_extents();
-    } catch (const Stop&) {
-      return false;
-    }
-    return true;
+    return ok_;
   }
 
 private:
   Kernel& k_;
   const Accesses& a_;
   Diagnostics& diag_;
+  bool ok_ = true;
 
-  [[noreturn]] void fail(const SourcePos& at, const std::string& msg) {
+  void fail(const SourcePos& at, const std::string& msg) {
     diag_.error(at, msg);
-    throw Stop{};
+    ok_ = false;
   }
 
   const Nest* nest_with_key(const std::vector<int>& key) const {
@@ -62,7 +58,7 @@ private:
   // have updated: Gauss-Seidel), and never after a loop that wrote it.
   void check_inout() {
     for (const auto& r : a_.inout_reads)
-      for (const auto& s : a_.inout_stores) {
+      for (const auto& s : a_.inout_stores) { // the first store it conflicts with
         if (s.array != r.array)
           continue;
         size_t shared = 0;
@@ -72,7 +68,7 @@ private:
         bool same_nest = s.nest_key == r.nest_key;
         auto ps = to_poly(s.index), pr = to_poly(r.index);
         bool same_cell = ps && pr && *ps == *pr;
-        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq)))
+        if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq))) {
           fail(r.pos, fmt::format("in-place array '{}' is read here at an element another "
                                   "iteration or loop may already have updated: a value carried "
                                   "through the array (Gauss-Seidel, an in-place stencil) is "
@@ -80,6 +76,8 @@ private:
                                   "iteration writes, or write the new values to a separate "
                                   "DPGEN_OUT array",
                                   r.array));
+          break;
+        }
       }
   }
 
@@ -106,100 +104,97 @@ private:
     // every nest's adjoint; only stores outside loops may read it directly.
     for (const auto& [array, at] : a_.kernel_level_work_reads)
       for (const auto& l : k_.kernel_locals) {
-        if (any_node(l->def, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }))
+        if (any_node(l->def,
+                     [&](const ExprP& x) { return x->op == Op::Read && x->name == array; })) {
           fail(at, fmt::format("a local outside every loop reads work array '{}'; use the "
                                "element directly in the store, or read it inside a loop",
                                array));
+          break;
+        }
       }
     for (const auto& r : a_.work_reads)
-      for (const auto& n : k_.nests)
-        for (const auto& st : n.stores) {
-          if (st.array != r.array)
-            continue;
-          size_t shared = 0;
-          while (shared < n.key.size() && shared < r.nest_key.size() &&
-                 n.key[shared] == r.nest_key[shared])
-            ++shared;
-          if (st.seq >= r.seq && n.key == r.nest_key && r.index && same_index(r.index, st.index)) {
-            // Read after a loop wrote the array, then written again at the
-            // same element: an element holding two values in turn
-            // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
-            const Store* before = nullptr;
-            for (const auto& m : k_.nests)
-              for (const auto& e : m.stores)
-                if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
-                  before = &e;
-            if (before)
-              fail(r.pos, fmt::format("output '{}' is read here after line {} wrote it, and "
-                                      "written again on line {}: an output holds one value per "
-                                      "element, and the adjoint cannot tell the two apart; put "
-                                      "the first value in a DPGEN_OUT work array of its own "
-                                      "(`sum[0] += ...;` then `{}[0] = f(sum[0]);`)",
-                                      r.array, before->pos.line, st.pos.line, r.array));
-          }
-          if (st.seq >= r.seq || n.key == r.nest_key)
-            fail(r.pos, fmt::format("output '{}' is read here and written on line {}, in the same "
-                                    "loop or later: a value carried from one iteration to the "
-                                    "next through an output (a recurrence, like a prefix sum, or "
-                                    "an in-place update) is outside the kernel subset; write the "
-                                    "new values to another array",
-                                    r.array, st.pos.line));
-          if (shared > 0)
-            fail(r.pos, fmt::format("work array '{}' is written (line {}) and read inside the "
-                                    "same outer loop: dpgen recomputes work arrays once for the "
-                                    "whole kernel; write it in a loop nest of its own, or use a "
-                                    "local array",
-                                    r.array, st.pos.line));
+      check_work_read(r);
+  }
+
+  // One read of a work array against the stores to it: the first rule it
+  // breaks.
+  void check_work_read(const Access& r) {
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores) {
+        if (st.array != r.array)
+          continue;
+        size_t shared = 0;
+        while (shared < n.key.size() && shared < r.nest_key.size() &&
+               n.key[shared] == r.nest_key[shared])
+          ++shared;
+        if (st.seq >= r.seq && n.key == r.nest_key && r.index && same_index(r.index, st.index)) {
+          // Read after a loop wrote the array, then written again at the
+          // same element: an element holding two values in turn
+          // (`s[0] += ...` in a loop, then `s[0] = sqrt(s[0])`).
+          const Store* before = nullptr;
+          for (const auto& m : k_.nests)
+            for (const auto& e : m.stores)
+              if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
+                before = &e;
+          if (before)
+            return fail(r.pos, fmt::format("output '{}' is read here after line {} wrote it, "
+                                           "and written again on line {}: an output holds one "
+                                           "value per element, and the adjoint cannot tell the "
+                                           "two apart; put the first value in a DPGEN_OUT work "
+                                           "array of its own (`sum[0] += ...;` then "
+                                           "`{}[0] = f(sum[0]);`)",
+                                           r.array, before->pos.line, st.pos.line, r.array));
         }
+        if (st.seq >= r.seq || n.key == r.nest_key)
+          return fail(r.pos, fmt::format("output '{}' is read here and written on line {}, in "
+                                         "the same loop or later: a value carried from one "
+                                         "iteration to the next through an output (a "
+                                         "recurrence, like a prefix sum, or an in-place "
+                                         "update) is outside the kernel subset; write the new "
+                                         "values to another array",
+                                         r.array, st.pos.line));
+        if (shared > 0)
+          return fail(r.pos, fmt::format("work array '{}' is written (line {}) and read inside "
+                                         "the same outer loop: dpgen recomputes work arrays "
+                                         "once for the whole kernel; write it in a loop nest of "
+                                         "its own, or use a local array",
+                                         r.array, st.pos.line));
+      }
   }
 
   // Each output cell is written by exactly one iteration: the write index
   // must be affine and one-to-one over the loop box. Inequalities between
   // sizes that the rule needs are proved from what the kernel says about them
   // (the loops run, its guards); the rest become run-time checks.
-  void check_outputs() {
-    for (auto& nest : k_.nests) {
-      for (auto& s : nest.stores) {
-        auto p = to_poly(s.index);
-        if (!p)
-          fail(s.pos, fmt::format("index of output '{}' must be an affine function of the "
-                                  "loop counters (no conditional or data-dependent writes)",
-                                  s.array));
-        std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
-        for (const auto& l : nest.loops) {
-          Poly c = p->coefficient("@" + l.var);
-          for (const auto& [m, coef] : c.terms())
-            for (const auto& sym : m)
-              if (sym[0] == '@')
-                fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
-          if (c == Poly()) {
-            if (s.accumulate)
-              continue; // a reduction: every iteration adds to the same element
-            fail(s.pos, fmt::format("output '{}' is written at the same index by every "
-                                    "iteration of loop '{}' (a reduction or a loop-carried "
-                                    "dependence); each element must be written once with "
-                                    "'=', or summed into with '+='",
-                                    s.array, l.var));
-          }
-          dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+  // Returns false where an index is not affine or multiplies counters.
+  bool check_outputs() {
+    bool affine = true;
+    std::set<std::string> not_affine; // outputs with an index the rules below cannot range
+    for (const auto& nest : k_.nests) {
+      bool nest_affine = true;
+      for (const auto& s : nest.stores)
+        if (!check_store(nest, s)) {
+          nest_affine = false;
+          not_affine.insert(s.array);
         }
-        if (!s.accumulate)
-          check_one_to_one(nest, s, dims);
-      }
+      affine = affine && nest_affine;
       // Within one loop nest, every store to an output uses the same index
       // (their paths are disjoint), so no two iterations meet; stores that
       // all add ('+=') may go anywhere.
-      if (!nest.loops.empty())
+      std::set<const Store*> reported;
+      if (!nest.loops.empty() && nest_affine)
         for (size_t a = 0; a < nest.stores.size(); ++a)
           for (size_t b = a + 1; b < nest.stores.size(); ++b) {
             const Store &x = nest.stores[a], &y = nest.stores[b];
-            if (x.array == y.array && !(x.accumulate && y.accumulate) &&
-                !(*to_poly(x.index) == *to_poly(y.index)) &&
-                !residues_differ(*to_poly(x.index), *to_poly(y.index)))
-              fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
-                                      "line {} of the same loop: dpgen cannot prove two "
-                                      "iterations never write the same element",
-                                      y.array, print_index(y), print_index(x), x.pos.line));
+            if (reported.count(&y) || x.array != y.array || (x.accumulate && y.accumulate) ||
+                *to_poly(x.index) == *to_poly(y.index) ||
+                residues_differ(*to_poly(x.index), *to_poly(y.index)))
+              continue;
+            fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
+                                    "line {} of the same loop: dpgen cannot prove two "
+                                    "iterations never write the same element",
+                                    y.array, print_index(y), print_index(x), x.pos.line));
+            reported.insert(&y); // once per store
           }
     }
     // Across loop nests: an element written twice would be overwritten in
@@ -216,11 +211,12 @@ private:
         all.push_back({&n, &st});
     std::sort(all.begin(), all.end(),
               [](const Ref& a, const Ref& b) { return a.store->seq < b.store->seq; });
+    std::set<const Store*> reported;
     for (size_t a = 0; a < all.size(); ++a)
       for (size_t b = a + 1; b < all.size(); ++b) {
         const Nest &nx = *all[a].nest, &ny = *all[b].nest;
         const Store &x = *all[a].store, &y = *all[b].store;
-        if (x.array != y.array || &nx == &ny)
+        if (x.array != y.array || &nx == &ny || reported.count(&y) || not_affine.count(x.array))
           continue;
         size_t shared = shared_loops(nx, ny);
         if (y.accumulate) {
@@ -269,7 +265,46 @@ private:
                                 "element twice); write each element in one loop, with "
                                 "an index branch for the boundary",
                                 y.array, x.pos.line));
+        reported.insert(&y); // once per store
       }
+    return affine;
+  }
+
+  // One store's index: affine, each term with one counter at most, moving
+  // with every loop around it (unless the store adds), one-to-one. Returns
+  // false where the index is not affine or multiplies counters.
+  bool check_store(const Nest& nest, const Store& s) {
+    auto p = to_poly(s.index);
+    if (!p) {
+      fail(s.pos, fmt::format("index of output '{}' must be an affine function of the "
+                              "loop counters (no conditional or data-dependent writes)",
+                              s.array));
+      return false;
+    }
+    std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
+    for (const auto& l : nest.loops) {
+      Poly c = p->coefficient("@" + l.var);
+      for (const auto& [m, coef] : c.terms())
+        for (const auto& sym : m)
+          if (sym[0] == '@') {
+            fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
+            return false;
+          }
+      if (c == Poly()) {
+        if (s.accumulate)
+          continue; // a reduction: every iteration adds to the same element
+        fail(s.pos, fmt::format("output '{}' is written at the same index by every "
+                                "iteration of loop '{}' (a reduction or a loop-carried "
+                                "dependence); each element must be written once with "
+                                "'=', or summed into with '+='",
+                                s.array, l.var));
+        return true;
+      }
+      dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+    }
+    if (!s.accumulate)
+      check_one_to_one(nest, s, dims);
+    return true;
   }
 
   // The C++ conditions under which a check applies: both stores execute.
@@ -388,11 +423,13 @@ private:
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
         auto r = index_range(st, n);
-        if (!r)
+        if (!r) {
           fail(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
                                    "adjoint needs buffers for (a work array or an in-place "
                                    "array)",
                                    st.array));
+          continue;
+        }
         ends[st.array].push_back(
             fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
       }
@@ -404,10 +441,12 @@ private:
         continue;
       Store probe{r.array, r.index, r.index, r.path, {}};
       auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;
-      if (!range)
+      if (!range) {
         fail(r.pos, fmt::format("cannot bound this read of work array '{}', which the adjoint "
                                 "recomputes into a buffer",
                                 r.array));
+        continue;
+      }
       ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
                                           (range->second + Poly::constant(1)).code()));
       // Provably outside every earlier store's range: an element no loop
@@ -467,9 +506,9 @@ private:
         Poly slack = c - reach - Poly::constant(1); // must be >= 0
         if (!prove_nonneg(slack, facts)) {
           if (prove_nonneg(-slack - Poly::constant(1), facts))
-            fail(s.pos, fmt::format("output '{}' is written twice per element: index "
-                                    "coefficient '{}' against a reach of '{}'",
-                                    s.array, c.str(), reach.str()));
+            return fail(s.pos, fmt::format("output '{}' is written twice per element: index "
+                                           "coefficient '{}' against a reach of '{}'",
+                                           s.array, c.str(), reach.str()));
           SizeCheck chk;
           chk.premises = premises(facts_premises(nest, s, nest, s));
           chk.must_hold = fmt::format("({}) >= 0", slack.code());

@@ -46,8 +46,10 @@ struct Accesses {
 
 /// Checks the lowered kernel: work arrays, in-place arrays, the write-once
 /// rule for every output, and the extents of the outputs the adjoint needs
-/// buffers for. Adds `k.size_checks` and `k.extent`. Reports the first
-/// violation to `diag` and returns false; true if the kernel passes.
+/// buffers for. Adds `k.size_checks` and `k.extent`. Reports every
+/// violation to `diag` (one per store or read; where an output index is not
+/// affine, the rules that need its range are left out) and returns false if
+/// there was any.
 bool check_kernel(Kernel& k, const Accesses& accesses, Diagnostics& diag);
 
 /// Two indices are the same (as polynomials where they are affine).

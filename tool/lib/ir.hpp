@@ -223,7 +223,9 @@ struct Kernel {
   std::vector<std::string> namespaces;
   std::vector<Param> params;
   std::vector<LocalP> kernel_locals;
-  std::vector<PathCond> guards; // `if (...) return;` at kernel level, negated
+  /// `if (...) return;` in the kernel outside every loop, as the condition
+  /// under which the kernel goes on (also on the path of every later store).
+  std::vector<PathCond> guards;
   std::vector<Nest> nests;
   std::vector<SizeCheck> size_checks;
   /// Outputs that later loop nests read (work arrays). The adjoint recomputes

@@ -720,6 +720,11 @@ private:
       path_.push_back({c, false});
     if (else_e == Escape::Always)
       path_.push_back({c, true});
+    // `if (n < 3) return;` in the kernel itself, outside every loop and
+    // helper: a guard of the whole kernel (it is also on every later path).
+    if ((then_e == Escape::Always || else_e == Escape::Always) && loops_.empty() &&
+        frames_.empty())
+      k_.guards.push_back(path_.back());
     return Escape::None;
   }
 

@@ -21,7 +21,7 @@ std::string annotation(const clang::Decl* d);
 
 /// Lowers kernel `fn` into `out` and checks it. Errors go to the context's
 /// diagnostics (`file:line:col: error: ...`): every error in the kernel's
-/// statements, or else the first rule the lowered kernel breaks. Returns
+/// statements, or else every rule the lowered kernel breaks. Returns
 /// false if any error was reported.
 bool lower_kernel(clang::ASTContext& ctx, const clang::FunctionDecl* fn, Kernel& out);
 
