@@ -176,6 +176,26 @@ bool smaller_coefficient(const Poly& a, const Poly& b) {
   return key(a) < key(b);
 }
 
+std::vector<RadixStep> mixed_radix(std::vector<std::pair<Poly, Poly>> dims) {
+  std::vector<RadixStep> out;
+  for (size_t i = 0; i < dims.size(); ++i)
+    out.push_back({i, dims[i].first, dims[i].first, Poly()});
+  std::stable_sort(out.begin(), out.end(), [](const RadixStep& a, const RadixStep& b) {
+    return smaller_coefficient(a.coefficient, b.coefficient);
+  });
+  Poly reach;
+  for (auto& s : out) {
+    bool negative = !s.step.terms().empty();
+    for (const auto& [m, coef] : s.step.terms())
+      negative = negative && coef < 0;
+    if (negative)
+      s.step = -s.step;
+    s.reach = reach;
+    reach = reach + s.step * (dims[s.dim].second - Poly::constant(1));
+  }
+  return out;
+}
+
 std::optional<Poly> to_poly(const ExprP& e) {
   switch (e->op) {
   case Op::IntConst:

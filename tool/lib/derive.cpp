@@ -247,6 +247,13 @@ ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveN
   return Deriver(reads, names).d(value);
 }
 
+const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {
+  auto [it, added] = table_.try_emplace({&s, reads});
+  if (added)
+    it->second = derivative(s.value, reads, names_);
+  return it->second;
+}
+
 ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,
               TangentLocals& tangents) {
   return Deriver(active, names, tangents).d(value);

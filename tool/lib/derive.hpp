@@ -26,6 +26,23 @@ struct DeriveNames {
 /// the primal values. nullptr stands for an exact zero.
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names);
 
+/// The partials of one kernel's stores, each computed once: d store.value /
+/// d(reads) per store and set of reads, kept for whoever asks again. The
+/// schedule asks first for every read of a differentiable input alone (is it
+/// read through a value at all? its scatter partial), then for the reads each
+/// gather block merges; a block of one read gets the partial computed for
+/// that read. The order of first requests numbers the locals the rules
+/// introduce (`exp_v0`, ...), so the names depend on the kernel only.
+class Partials {
+public:
+  /// d s.value / d(reads); nullptr stands for an exact zero.
+  const ExprP& of(const Store& s, const std::set<const Expr*>& reads);
+
+private:
+  std::map<std::pair<const Store*, std::set<const Expr*>>, ExprP> table_;
+  DeriveNames names_;
+};
+
 /// The locals a tangent introduces: `<local>_dot` for each local whose
 /// derivative is not trivial (numbered after every other local), and the
 /// names in use (parameters and their `_dot`s, so none is shadowed).

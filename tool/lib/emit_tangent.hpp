@@ -2,7 +2,7 @@
 // product of a kernel, from the same IR as its adjoint.
 #pragma once
 
-#include "emit.hpp"
+#include "emit_file.hpp"
 #include "ir.hpp"
 
 #include <string>
