@@ -1,4 +1,5 @@
-// Index analysis: polynomials, index pieces, box domains (see affine.hpp).
+// Index analysis (used by lower, schedule and plan): polynomials, index
+// pieces, box domains (see affine.hpp).
 #include "affine.hpp"
 
 #include <tuple>

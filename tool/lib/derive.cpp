@@ -1,4 +1,4 @@
-// Derive: one differentiation rule per IR node, the maths above each rule.
+// Derive (phase 3): one differentiation rule per IR node, the maths above each rule.
 // Values that are integers, booleans or pass through floor/ceil carry no
 // derivative; every other node has an exact rule or is rejected earlier by
 // the lowering.
@@ -92,10 +92,11 @@ public:
     case Op::And:
     case Op::Or:
     case Op::Not: // comparisons and logic are boolean: returned above
-      break;
+      // Cannot occur: an internal error, never a silent zero derivative.
+      throw std::logic_error("derive: a local, integer or boolean node reached the rules");
     }
-    // A real-valued expression without a rule would silently get a zero
-    // derivative: never.
+    // Every Op has its case above (no default: -Wswitch names a new one); a
+    // value outside the enum would otherwise get a silent zero derivative.
     throw std::logic_error("derive: no rule for a real-valued expression of this kind");
   }
 

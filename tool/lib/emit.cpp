@@ -4,17 +4,10 @@
 // loop_plan.cpp; the file around the kernels is emit_file.cpp.
 #include "emit.hpp"
 
-#include "ir_walk.hpp"
-
 #include "emit_checked.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
 
-#include <clang/Format/Format.h>
-#include <clang/Tooling/Core/Replacement.h>
-
-#include <algorithm>
-#include <deque>
 #include <fmt/format.h>
 #include <functional>
 #include <set>
@@ -234,9 +227,12 @@ constexpr int kMinParallelCells = 8192;
 // (`lower`; else the maximum of minima).
 std::string print_bound(const CellBound& b, const std::string& t, bool lower) {
   std::vector<std::string> parts;
-  for (const auto& part : b.parts)
-    parts.push_back(part.size() == 1 ? part.front().code()
-                                     : lower ? print_max(part, t) : print_min(part, t));
+  for (const auto& part : b.parts) {
+    if (part.size() == 1)
+      parts.push_back(part.front().code());
+    else
+      parts.push_back(lower ? print_max(part, t) : print_min(part, t));
+  }
   if (parts.size() == 1)
     return parts[0];
   std::string fn = lower ? "min" : "max";

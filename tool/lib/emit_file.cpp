@@ -39,10 +39,11 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
     h.raw(adjoint_signature(*p->kernel) + ";\n");
     if (has_checked_entry(*p->kernel))
-      h.raw(fmt::format("/// The same, each array followed by its number of elements: sizes too small\n"
-                        "/// for the elements the kernel touches throw std::invalid_argument.\n"
-                        "{};\n",
-                        checked_signature(*p->kernel)));
+      h.raw(fmt::format(
+          "/// The same, each array followed by its number of elements: sizes too small\n"
+          "/// for the elements the kernel touches throw std::invalid_argument.\n"
+          "{};\n",
+          checked_signature(*p->kernel)));
     if (p->kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
     close_namespaces(h, *p->kernel);
@@ -67,10 +68,10 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
         continue;
       ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
       bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
-      flat.push_back(prm.kind == ParamKind::Scalar
-                         ? fmt::format("{} {}", prm.spelling, prm.name)
-                         : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name,
-                                       prm.name));
+      flat.push_back(
+          prm.kind == ParamKind::Scalar
+              ? fmt::format("{} {}", prm.spelling, prm.name)
+              : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name, prm.name));
     }
     if (k.c_linkage) {
       // C's variable-length rows and restrict are not C++: from C++ the same

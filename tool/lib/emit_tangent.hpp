@@ -1,4 +1,4 @@
-// Emit tangents (forward mode): `<kernel>_tangent`, the Jacobian-vector
+// Emit tangents (phase 6, --tangent; forward mode): `<kernel>_tangent`, the Jacobian-vector
 // product of a kernel, from the same IR as its adjoint.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Emit the PyTorch ops of a kernel file (see emit_torch.hpp). Each op:
+// Emit (phase 6, --torch): the PyTorch ops of a kernel file (see emit_torch.hpp). Each op:
 //  - takes the kernel's parameters in order, outputs left out: arrays as tensors, scalars
 //    as `int` / `float` / `bool` arguments, then one keyword argument `<out>_shape` per output
 //    (default: the shape of the first array argument);

@@ -39,8 +39,8 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
     }
     std::vector<AdjointPlan> plans;
     for (const auto& k : kernels) {
-      Partials partials;                          // 3. derive: each partial once (derive.hpp)
-      plans.push_back(schedule(k, partials));     // 4. schedule
+      Partials partials;                      // 3. derive: each partial once (derive.hpp)
+      plans.push_back(schedule(k, partials)); // 4. schedule
       for (const auto& r : plans.back().remarks)
         llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,
                                     r.text);

@@ -49,8 +49,8 @@ struct FusionKey {
 /// interior: unless it is empty or apart from the interior at run time, every
 /// cell is treated as an edge.
 struct EdgeReach {
-  Box box;                          // all counters of the block ("@v" keys)
-  std::set<std::string> cell_dims;  // those of the layout
+  Box box;                         // all counters of the block ("@v" keys)
+  std::set<std::string> cell_dims; // those of the layout
 };
 
 /// One cell loop over one or more gather groups (fused when more than one)

@@ -1,4 +1,4 @@
-// Schedule: group every read of a DPGEN_IN array into gather blocks or
+// Schedule (phase 4): group every read of a DPGEN_IN array into gather blocks or
 // scatter units (see schedule.hpp for the worked example).
 #include "schedule.hpp"
 
@@ -19,7 +19,8 @@ namespace {
 
 // A domain as a value compared by its fields: per box, per counter, the
 // bound sets.
-using DomainKey = std::vector<std::map<std::string, std::pair<std::vector<Poly>, std::vector<Poly>>>>;
+using DomainKey =
+    std::vector<std::map<std::string, std::pair<std::vector<Poly>, std::vector<Poly>>>>;
 
 DomainKey domain_key(const Domain& d) {
   DomainKey key;
