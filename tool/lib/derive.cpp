@@ -4,6 +4,8 @@
 // the lowering.
 #include "derive.hpp"
 
+#include "prove.hpp"
+
 #include <map>
 #include <stdexcept>
 
@@ -253,6 +255,24 @@ const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {
   if (added)
     it->second = derivative(s.value, reads, names_);
   return it->second;
+}
+
+Partials derive(const Kernel& k) {
+  Partials partials;
+  for (const auto& param : k.params) {
+    if (param.kind != ParamKind::In)
+      continue;
+    for (const auto& nest : k.nests)
+      for (const auto& store : nest.stores) {
+        std::vector<PathCond> guards;
+        if (store_domain(nest, store, guards).empty())
+          continue; // never executes
+        for (const auto& site : reads_in(store.value))
+          if (site.read->name == param.name)
+            partials.of(store, {site.read});
+      }
+  }
+  return partials;
 }
 
 ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,

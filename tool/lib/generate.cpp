@@ -39,7 +39,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
     }
     std::vector<AdjointPlan> plans;
     for (const auto& k : kernels) {
-      Partials partials;                      // 3. derive: each partial once (derive.hpp)
+      Partials partials = derive(k);          // 3. derive: each partial once
       plans.push_back(schedule(k, partials)); // 4. schedule
       for (const auto& r : plans.back().remarks)
         llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,

@@ -211,37 +211,6 @@ bool nest_reads(const Nest& n, const std::string& array) {
   return false;
 }
 
-} // namespace
-
-Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {
-  Box loop_box;
-  for (const auto& l : nest.loops) {
-    Interval iv;
-    iv.lo.push_back(*to_poly(l.lo));
-    iv.hi.push_back(*to_poly(l.hi));
-    loop_box.dims["@" + l.var] = iv;
-  }
-  Domain d = {simplify(loop_box)};
-  // A condition on the sizes that every iteration of the nest implies (an
-  // early `if (n < 3) return;` before loops that need n >= 3) guards nothing.
-  Facts runs;
-  for (const auto& l : nest.loops)
-    add_nonempty(l, runs);
-  for (const auto& pc : s.path) {
-    auto cd = condition_domain(pc.cond);
-    if (!cd) {
-      if (!nest.loops.empty() && implied(pc, runs))
-        continue;
-      guards.push_back(pc);
-      continue;
-    }
-    d = pc.positive ? intersect(d, *cd) : subtract(d, *cd);
-  }
-  return d;
-}
-
-namespace {
-
 // The gather groups and scatter units of `k`'s reads.
 AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
   AdjointPlan plan;
@@ -381,7 +350,7 @@ AdjointPlan schedule(const Kernel& k, Partials& partials) {
       for (auto& p : s->params)
         if (k.intermediates.count(p.name))
           p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
-      Partials stage_partials;
+      Partials stage_partials = derive(*s);
       auto stage_plan = std::make_shared<AdjointPlan>(schedule_reads(*s, stage_partials));
       plan.stages.push_back({s, stage_plan});
     }

@@ -26,6 +26,7 @@
 #include "affine.hpp"
 #include "derive.hpp"
 #include "ir.hpp"
+#include "prove.hpp"
 
 #include <map>
 #include <memory>
@@ -99,13 +100,10 @@ struct AdjointPlan {
   std::vector<Stage> stages; // a kernel with work arrays: one per loop nest
 };
 
-/// Phase 4. `partials` (derive.hpp) is the kernel's table of partials: each
-/// is computed once, on its first request. The stages of a kernel with work
-/// arrays are scheduled with a table each.
+/// Phase 4. `partials` is derive(k) (derive.hpp): the schedule looks up the
+/// partial of each read and adds those of the reads its blocks merge. The
+/// stages of a kernel with work arrays are derived and scheduled here, each
+/// with a table of its own.
 AdjointPlan schedule(const Kernel& k, Partials& partials);
-
-/// The iteration domain of a store: its loop box intersected with the index
-/// conditions on its path; other conditions are returned as guards.
-Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards);
 
 } // namespace dpgen
