@@ -6,7 +6,8 @@
 // reach into the interior (checked at run time), and the parallel test (the
 // mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
 // when their fusion keys, compared by fields, are equal. emit.cpp prints the
-// plan; it decides nothing about domains.
+// plan: it decides no box, bound, fusion or test; it only specializes each
+// term's expressions to the box the plan puts it in (its Specializer).
 #pragma once
 
 #include "affine.hpp"
