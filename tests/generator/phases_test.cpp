@@ -6,7 +6,9 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include "lib/derive.hpp"
 #include "lib/emit.hpp"
+#include "lib/emit_file.hpp"
 #include "lib/find.hpp"
+#include "lib/loop_plan.hpp"
 #include "lib/print.hpp"
 #include "lib/schedule.hpp"
 
@@ -45,6 +47,12 @@ Kernel lower_one(const std::string& code) {
   REQUIRE(lower(code, ks));
   REQUIRE(ks.size() == 1);
   return ks.front();
+}
+
+// Phases 3 and 4: the partials, then the schedule that looks them up.
+AdjointPlan schedule_of(const Kernel& k) {
+  Partials partials = derive(k);
+  return schedule(k, partials);
 }
 
 // The shifts of a gather group's blocks in counter `v`, as "v:-1" strings
@@ -188,9 +196,21 @@ DPGEN_KERNEL void sq(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_O
   CHECK(derivative(same.value, none, fresh) == nullptr);
 }
 
+TEST_CASE("derive: the phase computes each partial once; the schedule's lookups return it") {
+  const Kernel k = lower_one(kUpwind);
+  Partials partials = derive(k);
+  const Store& s = k.nests[0].stores[0];
+  for (const auto& r : reads_in(s.value)) {
+    const ExprP& first = partials.of(s, {r.read});
+    const ExprP& second = partials.of(s, {r.read});
+    CHECK(&first == &second); // the same table entry: not derived again
+    REQUIRE(first != nullptr);
+  }
+}
+
 TEST_CASE("schedule: a three-point stencil is one gather group with shifts -1, 0, +1") {
   const Kernel k = lower_one(kUpwind);
-  const AdjointPlan plan = schedule(k);
+  const AdjointPlan plan = schedule_of(k);
   CHECK(plan.scatters.empty());
   CHECK(plan.remarks.empty());
   REQUIRE(plan.gathers.size() == 1);
@@ -216,7 +236,7 @@ DPGEN_KERNEL void sample(DPGEN_IN const double* q, DPGEN_IN const double* x, DPG
     o[i] = 2.0 * q[j];
   }
 })");
-  const AdjointPlan plan = schedule(k);
+  const AdjointPlan plan = schedule_of(k);
   REQUIRE(plan.scatters.size() == 1);
   CHECK(plan.scatters[0].array == "q");
   REQUIRE(plan.remarks.size() == 1);
@@ -227,13 +247,61 @@ TEST_CASE("emit: the adjoint's signature and body follow the signature rule") {
   const Kernel k = lower_one(kUpwind);
   CHECK(adjoint_signature(k) ==
         "void up_adjoint(const double* d, double* d_adj, const double* out_adj, int n, double c)");
-  std::vector<AdjointPlan> plans{schedule(k)};
-  const EmittedFile f = emit_file(plans, "unit.cpp", "unit");
+  const AdjointPlan plan = schedule_of(k);
+  const EmittedFile f = emit_file({plan_loops(plan)}, "unit.cpp", "unit");
   CHECK(f.header.find(adjoint_signature(k)) != std::string::npos);
   CHECK(f.source.find("d_adj[") != std::string::npos);
   CHECK(f.source.find("out_adj[") != std::string::npos);
   CHECK(f.kernels.find("void up(") != std::string::npos);
   // Printing is a pure function of the plan.
-  std::vector<AdjointPlan> again{schedule(k)};
-  CHECK(emit_file(again, "unit.cpp", "unit").source == f.source);
+  const AdjointPlan again = schedule_of(k);
+  CHECK(emit_file({plan_loops(again)}, "unit.cpp", "unit").source == f.source);
+}
+
+TEST_CASE("plan: the cell loop of a three-point stencil, its interior and the parallel test") {
+  const Kernel k = lower_one(kUpwind);
+  const AdjointPlan plan = schedule_of(k);
+  const LoopPlan loops = plan_loops(plan);
+  REQUIRE(loops.inputs.size() == 1);
+  CHECK(loops.inputs[0].array == "d");
+  CHECK(loops.inputs[0].scatters.empty());
+  REQUIRE(loops.inputs[0].gathers.size() == 1);
+  const GatherStep& step = loops.inputs[0].gathers[0];
+  CHECK_FALSE(step.fused());
+  const CellLoop& cl = step.loops.at(0);
+  CHECK(cl.any_bulk);
+  CHECK(cl.unit_1d); // d[i + s]: unit stride in one counter, no mixed-radix test
+  // Iterations 1 .. n-2 read cells 0 .. n-1; every term is present (branch
+  // free) for cells 2 .. n-3, i.e. the interior [2, n - 2).
+  REQUIRE(cl.interior.dims.size() == 1);
+  const Interval& in = cl.interior.dims.begin()->second;
+  std::vector<std::string> lo, hi;
+  for (const auto& p : in.lo)
+    lo.push_back(p.str());
+  for (const auto& p : in.hi)
+    hi.push_back(p.str());
+  CHECK(std::find(lo.begin(), lo.end(), "2") != lo.end());
+  CHECK(std::find(hi.begin(), hi.end(), "n - 2") != hi.end());
+}
+
+TEST_CASE("plan: inputs read through the same layout fuse into one loop; a 2D layout gets the "
+          "mixed-radix test") {
+  const Kernel k = lower_one(R"(
+DPGEN_KERNEL void lap(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* o,
+                      int nx, int ny) {
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i)
+      o[j * nx + i] = a[j * nx + i + 1] * b[j * nx + i + 1] - a[(j - 1) * nx + i - 1] * b[(j - 1) * nx + i - 1];
+})");
+  const AdjointPlan plan = schedule_of(k);
+  const LoopPlan loops = plan_loops(plan);
+  REQUIRE(loops.inputs.size() == 2);
+  REQUIRE(loops.inputs[0].gathers.size() == 1);
+  const GatherStep& step = loops.inputs[0].gathers[0];
+  CHECK(step.fused());                     // a and b share layout j * nx + i and the cell box
+  CHECK(step.loops.size() == 3);           // the fused loop, then each input alone
+  CHECK(step.loops[0].groups.size() == 2); // both inputs in the fused loop
+  CHECK(loops.inputs[1].gathers.empty());  // b is done inside a's step
+  CHECK_FALSE(step.loops[0].unit_1d);
+  CHECK(step.loops[0].radix.size() == 2); // counters by coefficient: i (1), then j (nx)
 }

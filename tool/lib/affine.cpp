@@ -1,4 +1,5 @@
-// Index analysis: polynomials, index pieces, box domains (see affine.hpp).
+// Index analysis (used by lower, schedule and plan): polynomials, index
+// pieces, box domains (see affine.hpp).
 #include "affine.hpp"
 
 #include <tuple>
@@ -174,6 +175,26 @@ bool smaller_coefficient(const Poly& a, const Poly& b) {
     return std::make_tuple(rank, d, top, rest, p.str());
   };
   return key(a) < key(b);
+}
+
+std::vector<RadixStep> mixed_radix(std::vector<std::pair<Poly, Poly>> dims) {
+  std::vector<RadixStep> out;
+  for (size_t i = 0; i < dims.size(); ++i)
+    out.push_back({i, dims[i].first, dims[i].first, Poly()});
+  std::stable_sort(out.begin(), out.end(), [](const RadixStep& a, const RadixStep& b) {
+    return smaller_coefficient(a.coefficient, b.coefficient);
+  });
+  Poly reach;
+  for (auto& s : out) {
+    bool negative = !s.step.terms().empty();
+    for (const auto& [m, coef] : s.step.terms())
+      negative = negative && coef < 0;
+    if (negative)
+      s.step = -s.step;
+    s.reach = reach;
+    reach = reach + s.step * (dims[s.dim].second - Poly::constant(1));
+  }
+  return out;
 }
 
 std::optional<Poly> to_poly(const ExprP& e) {

@@ -63,6 +63,27 @@ private:
 /// pass wrongly.
 bool smaller_coefficient(const Poly& a, const Poly& b);
 
+/// One counter of a layout `sum_k c_k * x_k` (0 <= x_k < e_k) in mixed-radix
+/// order: `dim` indexes the caller's list, `coefficient` is c_k as given,
+/// `step` its magnitude (a coefficient whose terms are all negative, as in a
+/// mirrored `(ny - 1 - j) * nx`, steps by its negation) and `reach` the largest
+/// offset the counters before it reach, the sum of step * (e - 1).
+struct RadixStep {
+  size_t dim;
+  Poly coefficient;
+  Poly step;
+  Poly reach;
+};
+
+/// The mixed-radix one-to-one test, written once: with the counters ordered
+/// by coefficient (smaller_coefficient), a layout gives distinct counters
+/// distinct offsets when the first step is not zero and every later step
+/// exceeds the reach of the ones before it (reach < step). Returns the
+/// counters in that order. `dims`: (coefficient, extent) per counter. The
+/// lowering proves the conditions for the write-once rule (or checks them on
+/// entry); the adjoint prints them as the run-time test of its parallel loops.
+std::vector<RadixStep> mixed_radix(std::vector<std::pair<Poly, Poly>> dims);
+
 /// The integer expression as a polynomial, seeing through integer Locals;
 /// nullopt when it is not a polynomial (a division, a conditional, a cast).
 std::optional<Poly> to_poly(const ExprP& e);

@@ -485,23 +485,14 @@ private:
   // Proved from the facts where the store runs (its loops run, its guards
   // hold); otherwise checked at run time.
   void check_one_to_one(const Nest& nest, const Store& s, std::vector<std::pair<Poly, Poly>> dims) {
-    std::stable_sort(dims.begin(), dims.end(), [&](const auto& a, const auto& b) {
-      return smaller_coefficient(a.first, b.first);
-    });
     Facts facts;
     for (const auto& l : nest.loops)
       add_nonempty(l, facts);
     for (const auto& pc : s.path)
       add_facts(pc, facts);
-    Poly reach;
-    for (size_t i = 0; i < dims.size(); ++i) {
-      Poly c = dims[i].first;
-      // The step's magnitude: a mirrored index (`(ny - 1 - j) * ld`) steps by -ld.
-      bool negative = !c.terms().empty();
-      for (const auto& [m, coef] : c.terms())
-        negative = negative && coef < 0;
-      if (negative)
-        c = -c;
+    const auto steps = mixed_radix(std::move(dims)); // affine.hpp
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const Poly &c = steps[i].step, &reach = steps[i].reach;
       if (i > 0) {
         Poly slack = c - reach - Poly::constant(1); // must be >= 0
         if (!prove_nonneg(slack, facts)) {
@@ -519,7 +510,6 @@ private:
           k_.size_checks.push_back(chk);
         }
       }
-      reach = reach + c * (dims[i].second - Poly::constant(1));
     }
   }
 };

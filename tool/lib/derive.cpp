@@ -1,8 +1,10 @@
-// Derive: one differentiation rule per IR node, the maths above each rule.
+// Derive (phase 3): one differentiation rule per IR node, the maths above each rule.
 // Values that are integers, booleans or pass through floor/ceil carry no
 // derivative; every other node has an exact rule or is rejected earlier by
 // the lowering.
 #include "derive.hpp"
+
+#include "prove.hpp"
 
 #include <map>
 #include <stdexcept>
@@ -92,10 +94,11 @@ public:
     case Op::And:
     case Op::Or:
     case Op::Not: // comparisons and logic are boolean: returned above
-      break;
+      // Cannot occur: an internal error, never a silent zero derivative.
+      throw std::logic_error("derive: a local, integer or boolean node reached the rules");
     }
-    // A real-valued expression without a rule would silently get a zero
-    // derivative: never.
+    // Every Op has its case above (no default: -Wswitch names a new one); a
+    // value outside the enum would otherwise get a silent zero derivative.
     throw std::logic_error("derive: no rule for a real-valued expression of this kind");
   }
 
@@ -245,6 +248,31 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
 
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names) {
   return Deriver(reads, names).d(value);
+}
+
+const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {
+  auto [it, added] = table_.try_emplace({&s, reads});
+  if (added)
+    it->second = derivative(s.value, reads, names_);
+  return it->second;
+}
+
+Partials derive(const Kernel& k) {
+  Partials partials;
+  for (const auto& param : k.params) {
+    if (param.kind != ParamKind::In)
+      continue;
+    for (const auto& nest : k.nests)
+      for (const auto& store : nest.stores) {
+        std::vector<PathCond> guards;
+        if (store_domain(nest, store, guards).empty())
+          continue; // never executes
+        for (const auto& site : reads_in(store.value))
+          if (site.read->name == param.name)
+            partials.of(store, {site.read});
+      }
+  }
+  return partials;
 }
 
 ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,

@@ -26,6 +26,30 @@ struct DeriveNames {
 /// the primal values. nullptr stands for an exact zero.
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names);
 
+/// The partials of one kernel's stores, each computed once: d store.value /
+/// d(reads) per store and set of reads. derive() fills in every read of a
+/// differentiable input alone; the schedule looks those up (is the read a
+/// value at all? its scatter partial) and asks for the reads each gather
+/// block merges, computed on the first request (a block of one read gets the
+/// read's own partial). The order of computation numbers the locals the rules
+/// introduce (`exp_v0`, ...), so the names depend on the kernel only; a
+/// merged partial needs no new one (a call's rule applies to a set of reads
+/// only where it applies to one of them).
+class Partials {
+public:
+  /// d s.value / d(reads); nullptr stands for an exact zero.
+  const ExprP& of(const Store& s, const std::set<const Expr*>& reads);
+
+private:
+  std::map<std::pair<const Store*, std::set<const Expr*>>, ExprP> table_;
+  DeriveNames names_;
+};
+
+/// Phase 3: the partial of every store that runs (store_domain, prove.hpp)
+/// w.r.t. each read of a DPGEN_IN array in it, one read at a time, in the
+/// order input -> loop nest -> store -> read.
+Partials derive(const Kernel& k);
+
 /// The locals a tangent introduces: `<local>_dot` for each local whose
 /// derivative is not trivial (numbered after every other local), and the
 /// names in use (parameters and their `_dot`s, so none is shadowed).

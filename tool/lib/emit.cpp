@@ -1,18 +1,13 @@
-// Emit: gather loops (bounding box, branch-free interior, guarded edges),
-// scatter loops, and the file around them.
+// Emit (phase 6): prints one kernel's adjoint from its loop plan: the gather
+// loops (bounding box, branch-free interior, guarded edges), the scatter loops
+// and the entry points around them. What the loops are is decided in
+// loop_plan.cpp; the file around the kernels is emit_file.cpp.
 #include "emit.hpp"
-
-#include "ir_walk.hpp"
 
 #include "emit_checked.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
 
-#include <clang/Format/Format.h>
-#include <clang/Tooling/Core/Replacement.h>
-
-#include <algorithm>
-#include <deque>
 #include <fmt/format.h>
 #include <functional>
 #include <set>
@@ -83,7 +78,7 @@ struct BlockContext {
   std::string acc;
   std::string hit;    // flag set when a term applies (edge cells)
   bool edge;          // guarded: check that the iteration is in the domain
-  const Box* interior; // cell-space interior box (interior mode)
+  const std::vector<Box>* interior_boxes; // interior mode: the block's boxes (loop_plan)
   Factored* factored = nullptr; // interior: shared invariant partials
 };
 
@@ -182,15 +177,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array,
             subscript(s.index));
 
-  std::vector<Box> boxes;
-  if (cx.edge) {
-    boxes = b.domain;
-  } else {
-    Domain in_iter = shift({*cx.interior}, back);
-    boxes = intersect(b.domain, in_iter);
-    if (boxes.size() != 1)
-      boxes = b.domain; // cannot happen for a bulk block; keep it exact anyway
-  }
+  const std::vector<Box>& boxes = cx.edge ? b.domain : *cx.interior_boxes;
   for (const Box& box : boxes) {
     code.open("");
     // Layout counters come from the cell.
@@ -236,142 +223,22 @@ constexpr int kMinParallelCells = 8192;
 
 // ---- a gather group ------------------------------------------------------------
 
-void collect_selects(const ExprP& e, std::vector<ExprP>& conds, std::set<const LocalVar*>& seen) {
-  walk(
-      e,
-      [&](const ExprP& x) {
-        if (x->op == Op::Select)
-          conds.push_back(x->ops[0]);
-        return true;
-      },
-      [](const ExprP& l) { return !l->local->kernel_level; }, seen);
-}
-
-// Shrinks the interior so that the index conditions of its terms (a periodic
-// wrap `i == n - 1 ? 0 : i + 1`) are decided there: a narrow condition box at
-// the low end raises the interior's lower bound, one at the high end lowers
-// its upper bound. Cells given up go to the guarded edge loop.
-void narrow_for_selects(const GatherGroup& g, Box& interior) {
-  for (const auto& b : g.blocks) {
-    if (!b.bulk)
-      continue;
-    std::vector<ExprP> conds;
-    std::set<const LocalVar*> seen;
-    const Term& t = b.terms.front();
-    collect_selects(t.partial, conds, seen);
-    collect_selects(t.store->index, conds, seen);
-    for (const auto& pc : b.guards)
-      collect_selects(pc.cond, conds, seen);
-    for (const auto& c : conds) {
-      auto cd = condition_domain(c);
-      if (!cd)
-        continue;
-      for (const auto& box : *cd)
-        for (const auto& [key, iv] : box.dims) {
-          auto in = interior.dims.find(key);
-          if (in == interior.dims.end() || iv.lo.size() != 1 || iv.hi.size() != 1)
-            continue;
-          Poly width = iv.hi[0] - iv.lo[0];
-          if (!width.is_constant())
-            continue;
-          auto sit = b.shift.find(key.substr(1));
-          Poly d = sit == b.shift.end() ? Poly() : sit->second;
-          Poly lo = iv.lo[0] + d, hi = iv.hi[0] + d; // in cell space
-          auto near = [](const std::vector<Poly>& set, const Poly& p) {
-            for (const auto& q : set)
-              if ((p - q).is_constant())
-                return true;
-            return false;
-          };
-          if (near(in->second.lo, lo))
-            in->second.lo.push_back(hi);
-          else if (near(in->second.hi, hi))
-            in->second.hi.push_back(lo);
-        }
-    }
-  }
-}
-
-std::vector<Poly> shifted(const std::vector<Poly>& set, const Poly& d) {
-  std::vector<Poly> out;
-  for (const auto& p : set)
-    out.push_back(p + d);
-  return out;
-}
-
-// min over candidates of max(candidate set), printed.
-std::string min_of_max(const std::vector<std::vector<Poly>>& cands, const std::string& t,
-                       bool lower) {
+// A cell bound as C++: the minimum over its parts of the maximum of each
+// (`lower`; else the maximum of minima).
+std::string print_bound(const CellBound& b, const std::string& t, bool lower) {
   std::vector<std::string> parts;
-  std::set<std::string> seen;
-  std::vector<Poly> singles;
-  for (const auto& c : cands) {
-    if (c.size() == 1) {
-      singles.push_back(c.front());
-      continue;
-    }
-    std::string s = lower ? print_max(c, t) : print_min(c, t);
-    if (seen.insert(s).second)
-      parts.push_back(s);
+  for (const auto& part : b.parts) {
+    if (part.size() == 1)
+      parts.push_back(part.front().code());
+    else
+      parts.push_back(lower ? print_max(part, t) : print_min(part, t));
   }
-  // Singletons that differ by a constant: keep the extreme one.
-  std::vector<Poly> kept;
-  for (const auto& p : singles) {
-    bool drop = false;
-    for (auto it = kept.begin(); it != kept.end();) {
-      Poly d = p - *it;
-      if (!d.is_constant()) {
-        ++it;
-        continue;
-      }
-      long long v = d.constant_term();
-      bool p_better = lower ? v < 0 : v > 0;
-      if (p_better)
-        it = kept.erase(it);
-      else {
-        drop = true;
-        break;
-      }
-    }
-    if (!drop)
-      kept.push_back(p);
-  }
-  for (const auto& p : kept)
-    if (seen.insert(p.code()).second)
-      parts.push_back(p.code());
   if (parts.size() == 1)
     return parts[0];
   std::string fn = lower ? "min" : "max";
   if (parts.size() == 2)
     return fmt::format("std::{}<{}>({}, {})", fn, t, parts[0], parts[1]);
   return fmt::format("std::{}<{}>({{{}}})", fn, t, fmt::join(parts, ", "));
-}
-
-// Cell bounding box of a group, per layout counter: (lo, hi) as C++.
-std::map<std::string, std::pair<std::string, std::string>> cell_bounds(const GatherGroup& g) {
-  std::map<std::string, std::pair<std::string, std::string>> bounds;
-  for (const auto& [v, c] : g.layout) {
-    std::vector<std::vector<Poly>> los, his;
-    for (const auto& b : g.blocks) {
-      auto sit = b.shift.find(v);
-      Poly d = sit == b.shift.end() ? Poly() : sit->second;
-      for (const auto& box : b.domain) {
-        const Interval& iv = box.dims.at("@" + v);
-        los.push_back(shifted(iv.lo, d));
-        his.push_back(shifted(iv.hi, d));
-      }
-    }
-    bounds[v] = {min_of_max(los, kCellType, true), min_of_max(his, kCellType, false)};
-  }
-  return bounds;
-}
-
-// The memory index of cell (c_j, c_i, ...) of a group's layout.
-std::string cell_index(const GatherGroup& g) {
-  Poly index = g.base;
-  for (const auto& [v, c] : g.layout)
-    index = index + c * Poly::symbol("c_" + v);
-  return index.code();
 }
 
 std::string adj_cell(const GatherGroup& g) {
@@ -383,7 +250,8 @@ std::string adj_cell(const GatherGroup& g) {
 
 // One cell loop for one or more gather groups that share a layout and a cell
 // box (several inputs of one kernel, fused so the loop reads shared data once).
-void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGroup*>& gs) {
+void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
+  const std::vector<const GatherGroup*>& gs = plan.groups;
   const GatherGroup& g0 = *gs.front();
   const bool fused = gs.size() > 1;
   auto acc_name = [&](const GatherGroup& g) { return fused ? "acc_" + g.array : std::string("acc"); };
@@ -439,29 +307,8 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
     cell_params.push_back(fmt::format("const {} c_{}", kCellType, v));
   std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
 
-  // Interior box (cell space, "@v" keys): inside every bulk block of every
-  // group, narrowed so index conditions are decided.
-  Box interior;
-  bool any_bulk = false;
-  for (const auto& [v, c] : g0.layout) {
-    Interval& in = interior.dims["@" + v];
-    for (const auto* g : gs)
-      for (const auto& b : g->blocks) {
-        if (!b.bulk)
-          continue;
-        any_bulk = true;
-        auto sit = b.shift.find(v);
-        Poly d = sit == b.shift.end() ? Poly() : sit->second;
-        const Interval& iv = b.domain.front().dims.at("@" + v);
-        for (const auto& p : shifted(iv.lo, d))
-          in.lo.push_back(p);
-        for (const auto& p : shifted(iv.hi, d))
-          in.hi.push_back(p);
-      }
-  }
-  for (const auto* g : gs)
-    narrow_for_selects(*g, interior);
-  interior = simplify(interior);
+  const bool any_bulk = plan.any_bulk;
+  const Box& interior = plan.interior;
 
   // Edge cell: every block, each checked against its iteration domain.
   code.open(fmt::format("auto edge = [=]({})", params));
@@ -469,7 +316,8 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   code.close(";");
   if (any_bulk) {
     code.open(fmt::format("auto interior = [=]({})", params));
-    for (const auto* g : gs) {
+    for (size_t gi = 0; gi < gs.size(); ++gi) {
+      const GatherGroup* g = gs[gi];
       bool has_bulk = false;
       for (const auto& b : g->blocks)
         has_bulk = has_bulk || b.bulk;
@@ -489,11 +337,11 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
       // declared before them.
       Factored factored{acc_name(*g), {}};
       Code blocks(code.depth());
-      for (const auto& b : g->blocks)
-        if (b.bulk)
-          emit_block({k, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false, &interior,
-                      guarded ? nullptr : &factored},
-                     b);
+      for (size_t bi = 0; bi < g->blocks.size(); ++bi)
+        if (g->blocks[bi].bulk)
+          emit_block({k, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false,
+                      &plan.interior_boxes[gi][bi], guarded ? nullptr : &factored},
+                     g->blocks[bi]);
       if (!factored.sums.empty())
         code.line("// partials the same in every iteration, factored out: sums of seeds");
       for (const auto& [name, p] : factored.sums)
@@ -510,45 +358,30 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   }
 
   // Ranges.
-  auto bounds = cell_bounds(g0);
   for (const auto& [v, c] : g0.layout)
-    code.line("const {} lo_{} = {}, hi_{} = {};", kCellType, v, bounds[v].first, v,
-              bounds[v].second);
+    code.line("const {} lo_{} = {}, hi_{} = {};", kCellType, v,
+              print_bound(plan.bounds.at(v).lo, kCellType, true), v,
+              print_bound(plan.bounds.at(v).hi, kCellType, false));
   // The interior holds only if no narrow (edge) block reaches into it.
   if (any_bulk) {
     std::vector<std::string> apart;
-    for (const auto* g : gs)
-      for (const auto& b : g->blocks) {
-        if (b.bulk)
-          continue;
-        std::map<std::string, Poly> fwd;
-        for (const auto& [v, c] : g->layout) {
-          auto it = b.shift.find(v);
-          fwd["@" + v] = it == b.shift.end() ? Poly() : it->second;
-        }
-        for (const auto& box : shift(b.domain, fwd)) {
-          Box cells_box;
-          for (const auto& [v, c] : g->layout)
-            cells_box.dims["@" + v] = box.dims.at("@" + v);
-          if (box_disjoint(cells_box, {interior}))
-            continue;
-          std::vector<std::string> ors;
-          for (const auto& [key, iv] : box.dims) {
-            std::string v = key.substr(1);
-            std::string t = kCellType;
-            std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
-            ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
-            if (cells_box.dims.count(key)) {
-              ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
-              ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
-            }
-          }
-          apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
+    for (const auto& reach : plan.reaches) {
+      std::vector<std::string> ors;
+      for (const auto& [key, iv] : reach.box.dims) {
+        std::string v = key.substr(1);
+        std::string t = kCellType;
+        std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
+        ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
+        if (reach.cell_dims.count(key)) {
+          ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
+          ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
         }
       }
+      apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
+    }
     for (const auto& [v, c] : g0.layout) {
       std::string t = kCellType;
-      const Interval& iv = interior.dims["@" + v];
+      const Interval& iv = interior.dims.at("@" + v);
       code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
                 print_max(iv.lo, t), v);
       code.line("{} in_hi_{} = std::max<{}>(in_lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
@@ -569,16 +402,15 @@ void emit_gather(Code& code, const Kernel& k, const std::vector<const GatherGrou
   for (const auto& [v, c] : g0.layout)
     extents.push_back(fmt::format("(hi_{} - lo_{})", v, v));
   conds.push_back(fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelCells));
-  bool unit_1d = g0.layout.size() == 1 && g0.layout[0].second.is_constant();
-  if (!unit_1d) {
-    auto order = g0.layout;
-    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      return smaller_coefficient(a.second, b.second);
-    });
+  if (!plan.unit_1d) {
+    // A symbolic coefficient is printed as it is: a negative one (a mirrored
+    // layout) fails the test, and its loop runs serially.
     std::vector<std::string> reach;
-    for (size_t i = 0; i < order.size(); ++i) {
-      const auto& [v, c] = order[i];
-      std::string coef = c.is_constant() ? std::to_string(std::llabs(c.constant_term())) : c.code();
+    for (size_t i = 0; i < plan.radix.size(); ++i) {
+      const RadixStep& st = plan.radix[i];
+      const std::string& v = g0.layout[st.dim].first;
+      const Poly& c = st.coefficient;
+      std::string coef = c.is_constant() ? st.step.code() : c.code();
       if (i > 0)
         conds.push_back(fmt::format("{} < {}", fmt::join(reach, " + "), coef));
       else if (!c.is_constant())
@@ -772,55 +604,32 @@ std::string flat_arguments(const Kernel& k) {
 // The statements of an adjoint function: kernel-level locals, size checks,
 // the gather loops (fused where they share a nest, layout and cell box) and
 // the scatter loops.
-void emit_body(Code& code, const AdjointPlan& plan) {
-  const Kernel& k = *plan.kernel;
+void emit_body(Code& code, const LoopPlan& plan) {
+  const Kernel& k = *plan.adjoint->kernel;
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
   emit_size_checks(code, k, k.name + "_adjoint");
-  // Gather groups of different inputs that share a loop nest, a layout and a
-  // cell box run in one fused loop.
-  std::set<const GatherGroup*> done;
-  auto key = [](const GatherGroup& g) {
-    std::string s = fmt::format("{}|{}|", static_cast<const void*>(g.nest), cell_index(g));
-    for (const auto& [v, b] : cell_bounds(g))
-      s += v + ":" + b.first + "," + b.second + ";";
-    return s;
-  };
-  for (const auto& p : k.params) {
-    if (p.kind != ParamKind::In)
-      continue;
-    for (const auto& g : plan.gathers) {
-      if (g.array != p.name || done.count(&g))
-        continue;
-      std::vector<const GatherGroup*> fused = {&g};
-      for (const auto& h : plan.gathers)
-        if (&h != &g && h.array != g.array && !done.count(&h) && !h.layout.empty() &&
-            key(h) == key(g) && std::none_of(fused.begin(), fused.end(), [&](const auto* f) {
-              return f->array == h.array;
-            }))
-          fused.push_back(&h);
-      for (const auto* f : fused)
-        done.insert(f);
-      if (fused.size() == 1) {
-        emit_gather(code, k, fused);
+  for (const auto& in : plan.inputs) {
+    for (const auto& step : in.gathers) {
+      if (!step.fused()) {
+        emit_gather(code, k, step.loops.front());
         continue;
       }
       // Fused when every input is active; one loop each when some adjoint
       // is null (an inactive input).
       std::vector<std::string> all;
-      for (const auto* f : fused)
+      for (const auto* f : step.loops.front().groups)
         all.push_back(f->array + "_adj != nullptr");
       code.open(fmt::format("if ({})", fmt::join(all, " && ")));
-      emit_gather(code, k, fused);
+      emit_gather(code, k, step.loops.front());
       code.close();
       code.open("else");
-      for (const auto* f : fused)
-        emit_gather(code, k, {f});
+      for (size_t i = 1; i < step.loops.size(); ++i)
+        emit_gather(code, k, step.loops[i]);
       code.close();
     }
-    for (const auto& u : plan.scatters)
-      if (u.array == p.name)
-        emit_scatter(code, u);
+    for (const auto* u : in.scatters)
+      emit_scatter(code, *u);
   }
 }
 
@@ -833,49 +642,21 @@ std::string forward_params(const Kernel& k) {
   return fmt::format("{}", fmt::join(ps, ", "));
 }
 
-bool reads_array(const ExprP& e, const std::string& array, std::set<const LocalVar*>& seen) {
-  return any_node(
-      e, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }, seen);
-}
-
-bool nest_reads(const Nest& n, const std::string& array) {
-  std::set<const LocalVar*> seen;
-  for (const auto& st : n.stores) {
-    if (reads_array(st.value, array, seen) || reads_array(st.index, array, seen))
-      return true;
-    for (const auto& pc : st.path)
-      if (reads_array(pc.cond, array, seen))
-        return true;
-  }
-  return false;
-}
-
 // A kernel whose later loop nests read what earlier ones wrote (work
 // arrays): one adjoint per nest, run in reverse order. The driver recomputes
 // the work arrays with the forward kernel (into buffers, NaN where the
 // kernel writes nothing), seeds them with their own seeds, and lets each
 // nest's adjoint add to them before the nest that wrote them reads them.
-void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
-  std::deque<Kernel> stages;
-  std::vector<AdjointPlan> plans;
-  for (size_t j = 0; j < k.nests.size(); ++j) {
-    Kernel s = k;
-    s.name = fmt::format("{}_nest{}", k.name, j + 1);
-    s.nests = {k.nests[j]};
-    s.size_checks.clear();
-    for (auto& p : s.params)
-      if (k.intermediates.count(p.name))
-        p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
-    stages.push_back(std::move(s));
-    plans.push_back(schedule(stages.back()));
-  }
+void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
+  const Kernel& k = *plan.adjoint->kernel;
+  const std::vector<Stage>& stages = plan.adjoint->stages; // schedule.cpp
   code.raw("namespace {\n");
   for (size_t j = 0; j < stages.size(); ++j) {
-    const Kernel& s = stages[j];
+    const Kernel& s = *stages[j].kernel;
     code.line("// Adjoint of loop nest {} of {} ({}:{}).", j + 1, k.name, base_name(k.file),
               s.nests.front().stores.front().pos.line);
     code.open(fmt::format("void {}_adjoint({})", s.name, param_list(s, false)));
-    emit_body(code, plans[j]);
+    emit_body(code, plan.stages[j]);
     code.close();
     code.raw("\n");
   }
@@ -914,7 +695,7 @@ void emit_staged(Code& code, const Kernel& k, const std::string& fn_name) {
   }
   code.line("{}({});", k.name, fmt::join(fwd, ", "));
   for (size_t j = stages.size(); j-- > 0;) {
-    const Kernel& s = stages[j];
+    const Kernel& s = *stages[j].kernel;
     std::vector<std::string> args;
     for (const auto& p : s.params) {
       bool work = k.intermediates.count(p.name) > 0;
@@ -991,15 +772,17 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
   }
 }
 
-void emit_kernel(Code& code, const AdjointPlan& plan) {
-  const Kernel& k = *plan.kernel;
+} // namespace
+
+void emit_kernel(Code& code, const LoopPlan& plan) {
+  const Kernel& k = *plan.adjoint->kernel;
   open_namespaces(code, k);
   bool rows = has_rows(k) || has_inout(k);
   std::string name = k.name + (rows ? "_adjoint_flat" : "_adjoint");
   if (rows)
     code.raw("namespace {\n");
   if (!k.intermediates.empty()) {
-    emit_staged(code, k, name);
+    emit_staged(code, plan, name);
   } else {
     if (rows)
       code.line("// Adjoint of {} ({}:{}) on flat arrays; {}_adjoint below takes the arrays "
@@ -1023,127 +806,8 @@ void emit_kernel(Code& code, const AdjointPlan& plan) {
   close_namespaces(code, k);
 }
 
-} // namespace
-
 std::string adjoint_signature(const Kernel& k) {
   return fmt::format("void {}_adjoint({})", k.name, param_list(k));
-}
-
-EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& source_name,
-                      const std::string& stem) {
-  EmittedFile out;
-  Code h;
-  h.raw(fmt::format(kBanner, source_name));
-  h.raw("//\n"
-        "// Reverse-mode (vector-Jacobian product) kernels. For a kernel\n"
-        "// f(in..., out..., constants...), f_adjoint takes the same parameters in order,\n"
-        "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
-        "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
-        "#pragma once\n\n"
-        "#include <stddef.h> // size_t, for the checked entry points (C and C++)\n\n");
-  bool vectors = false, spans = false;
-  for (const auto& p : plans) {
-    vectors = vectors || has_std_vectors(*p.kernel);
-    spans = spans || has_spans(*p.kernel);
-  }
-  h.raw(container_includes(vectors, spans));
-  for (const auto& p : plans) {
-    open_namespaces(h, *p.kernel);
-    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p.kernel->name, base_name(p.kernel->file),
-                      p.kernel->pos.line));
-    if (p.kernel->c_linkage) // a C kernel: callable from C
-      h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
-    h.raw(adjoint_signature(*p.kernel) + ";\n");
-    if (has_checked_entry(*p.kernel))
-      h.raw(fmt::format("/// The same, each array followed by its number of elements: sizes too small\n"
-                        "/// for the elements the kernel touches throw std::invalid_argument.\n"
-                        "{};\n",
-                        checked_signature(*p.kernel)));
-    if (p.kernel->c_linkage)
-      h.raw("#ifdef __cplusplus\n}\n#endif\n");
-    close_namespaces(h, *p.kernel);
-    h.raw("\n");
-  }
-  out.header = formatted(h.str(), stem + "_adjoint.hpp");
-
-  // The forward kernels' declarations, so a caller includes them instead of
-  // writing them by hand.
-  Code d;
-  d.raw(fmt::format(kBanner, source_name));
-  d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
-        "#pragma once\n\n");
-  d.raw(container_includes(vectors, spans));
-  for (const auto& p : plans) {
-    const Kernel& k = *p.kernel;
-    open_namespaces(d, k);
-    d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
-    std::vector<std::string> ps, flat;
-    for (const auto& prm : k.params) {
-      if (prm.synthetic || !prm.twin_of.empty())
-        continue;
-      ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
-      bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
-      flat.push_back(prm.kind == ParamKind::Scalar
-                         ? fmt::format("{} {}", prm.spelling, prm.name)
-                         : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name,
-                                       prm.name));
-    }
-    if (k.c_linkage) {
-      // C's variable-length rows and restrict are not C++: from C++ the same
-      // function is declared with flat pointers (the same ABI).
-      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" void {}({});\n#else\n", k.name,
-                        fmt::join(flat, ", ")));
-      d.raw(fmt::format("void {}({});\n#endif\n", k.name, fmt::join(ps, ", ")));
-    } else {
-      d.raw(fmt::format("void {}({});\n", k.name, fmt::join(ps, ", ")));
-    }
-    close_namespaces(d, k);
-    d.raw("\n");
-  }
-  out.kernels = formatted(d.str(), stem + "_kernels.hpp");
-
-  Code c;
-  c.raw(fmt::format(kBanner, source_name));
-  c.raw("//\n"
-        "// Gather form: each adjoint cell is written by exactly one loop iteration, which\n"
-        "// sums the contributions of every forward iteration that read that cell, each\n"
-        "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
-        "// loop; edge cells check each term's iteration domain.\n");
-  c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
-  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n");
-  bool checks = false;
-  for (const auto& p : plans)
-    checks = checks || !p.kernel->size_checks.empty() || has_vectors(*p.kernel);
-  c.raw("#include <stdexcept>\n#include <string>\n"); // the checked entry points
-  bool staged = false;
-  for (const auto& p : plans)
-    staged = staged || !p.kernel->intermediates.empty();
-  for (const auto& p : plans)
-    staged = staged || has_inout(*p.kernel);
-  if (staged)
-    c.raw("#include <vector>\n");
-  c.raw("\n");
-  c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
-        "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
-        "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"
-        "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
-        "#endif\n\n");
-  c.raw("namespace {\n"
-        "// std::min/std::max with the same result (the first argument on ties), by\n"
-        "// value so loops around them vectorize.\n"
-        "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"
-        "template <typename T> inline T dpgen_max(T a, T b) { return a < b ? b : a; }\n"
-        "} // namespace\n\n");
-  for (const auto& p : plans) {
-    emit_kernel(c, p);
-    c.raw("\n");
-    if (has_checked_entry(*p.kernel)) {
-      emit_checked_entry(c, *p.kernel);
-      c.raw("\n");
-    }
-  }
-  out.source = formatted(c.str(), stem + "_adjoint.cpp");
-  return out;
 }
 
 } // namespace dpgen

@@ -1,26 +1,21 @@
-// Emit (phase 5): print an adjoint plan as readable C++ (fmt), with a header
-// naming the source kernel and a comment per contribution naming its rule.
+// Emit (phase 6): print one kernel's adjoint from its loop plan as readable
+// C++ (fmt), with a comment per contribution naming its rule. The file around
+// the kernels (banner, includes, declarations) is emit_file.hpp.
 #pragma once
 
-#include "schedule.hpp"
+#include "emit_util.hpp"
+#include "loop_plan.hpp"
 
 #include <string>
 
 namespace dpgen {
 
-struct EmittedFile {
-  std::string header; // <stem>_adjoint.hpp
-  std::string source; // <stem>_adjoint.cpp
-  std::string kernels; // <stem>_kernels.hpp: declarations of the forward kernels
-};
-
 /// The adjoint's declaration, e.g.
 /// `void upwind_step_adjoint(const double* d, double* d_adj, ...)`.
 std::string adjoint_signature(const Kernel& k);
 
-/// Prints all kernels of one input file. `source_name` is shown in comments,
-/// `stem` names the generated files.
-EmittedFile emit_file(const std::vector<AdjointPlan>& plans, const std::string& source_name,
-                      const std::string& stem);
+/// Appends the adjoint of `plan`'s kernel (its entry points, in the kernel's
+/// namespaces) to `code`.
+void emit_kernel(Code& code, const LoopPlan& plan);
 
 } // namespace dpgen

@@ -1,4 +1,4 @@
-// The checked entry point `<kernel>_adjoint_checked`: the adjoint's
+// Emit (phase 6): the checked entry point `<kernel>_adjoint_checked`: the adjoint's
 // parameters with each array followed by its element count. It computes, from
 // the kernel's loop bounds and index expressions, the range of elements the
 // kernel (and so its adjoint) touches in each array, throws

@@ -1,4 +1,4 @@
-// The checked entry point of an adjoint, `<kernel>_adjoint_checked`: every
+// Emit (phase 6): the checked entry point of an adjoint, `<kernel>_adjoint_checked`: every
 // array followed by its element count, checked against the elements the
 // kernel touches before the raw adjoint runs (see emit_checked.cpp).
 #pragma once

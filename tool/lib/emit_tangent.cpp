@@ -1,4 +1,4 @@
-// Emit tangents: the forward kernel again, from the IR, with the directional
+// Emit tangents (phase 6, --tangent): the forward kernel again, from the IR, with the directional
 // derivative of every store next to it (forward mode, a Jacobian-vector
 // product). No index is inverted: each iteration computes its own outputs'
 // tangents from the tangents of what it reads, so the loops are the

@@ -1,8 +1,8 @@
-// Emit tangents (forward mode): `<kernel>_tangent`, the Jacobian-vector
+// Emit tangents (phase 6, --tangent; forward mode): `<kernel>_tangent`, the Jacobian-vector
 // product of a kernel, from the same IR as its adjoint.
 #pragma once
 
-#include "emit.hpp"
+#include "emit_file.hpp"
 #include "ir.hpp"
 
 #include <string>

@@ -1,4 +1,4 @@
-// Emit the PyTorch ops of a kernel file (see emit_torch.hpp). Each op:
+// Emit (phase 6, --torch): the PyTorch ops of a kernel file (see emit_torch.hpp). Each op:
 //  - takes the kernel's parameters in order, outputs left out: arrays as tensors, scalars
 //    as `int` / `float` / `bool` arguments, then one keyword argument `<out>_shape` per output
 //    (default: the shape of the first array argument);
@@ -95,9 +95,12 @@ struct AccessMap {
 
 // The reads of `e`, each with the domain it happens in: the store's domain narrowed by the
 // index conditions of the conditional expressions it sits in.
+// `path`: the arms taken so far (a select and which arm); a local is visited
+// once per path.
+using ArmPath = std::vector<std::pair<const Expr*, bool>>;
+
 void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
-                   std::set<std::pair<const LocalVar*, std::string>>& seen,
-                   const std::string& path) {
+                   std::set<std::pair<const LocalVar*, ArmPath>>& seen, const ArmPath& path) {
   if (!e || where.empty())
     return;
   switch (e->op) {
@@ -112,9 +115,11 @@ void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
   case Op::Select: {
     collect_reads(e->ops[0], where, out, seen, path);
     auto cd = condition_domain(e->ops[0]);
-    const std::string id = fmt::format("{}", static_cast<const void*>(e.get()));
-    collect_reads(e->ops[1], cd ? intersect(where, *cd) : where, out, seen, path + "+" + id);
-    collect_reads(e->ops[2], cd ? subtract(where, *cd) : where, out, seen, path + "-" + id);
+    ArmPath taken = path;
+    taken.push_back({e.get(), true});
+    collect_reads(e->ops[1], cd ? intersect(where, *cd) : where, out, seen, taken);
+    taken.back().second = false;
+    collect_reads(e->ops[2], cd ? subtract(where, *cd) : where, out, seen, taken);
     return;
   }
   default:
@@ -129,12 +134,12 @@ AccessMap accesses(const Kernel& k) {
     for (const auto& st : nest.stores) {
       std::vector<PathCond> guards;
       Domain d = store_domain(nest, st, guards);
-      std::set<std::pair<const LocalVar*, std::string>> seen;
+      std::set<std::pair<const LocalVar*, ArmPath>> seen;
       m.accesses[st.array].push_back({st.index, d});
-      collect_reads(st.index, d, m, seen, "");
-      collect_reads(st.value, d, m, seen, "");
+      collect_reads(st.index, d, m, seen, {});
+      collect_reads(st.value, d, m, seen, {});
       for (const auto& pc : st.path)
-        collect_reads(pc.cond, d, m, seen, "");
+        collect_reads(pc.cond, d, m, seen, {});
     }
   return m;
 }

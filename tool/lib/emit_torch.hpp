@@ -1,4 +1,4 @@
-// Emit the PyTorch glue of a kernel file (`dpgen --torch`): for each kernel a
+// Emit (phase 6, --torch): the PyTorch glue of a kernel file (`dpgen --torch`): for each kernel a
 // torch::autograd::Function whose forward calls the kernel and whose backward
 // calls its generated adjoint, registered as the op torch.ops.dpgen.<kernel>.
 #pragma once

@@ -1,4 +1,4 @@
-// Shared by the emitters (emit.cpp: adjoints, emit_tangent.cpp: tangents):
+// Emit (phase 6), shared by the emitters (emit.cpp: adjoints, emit_tangent.cpp: tangents):
 // the code buffer, locals and conditions as C++, the checks on entry, the
 // parameter shapes, namespaces, and clang-format over the result.
 #pragma once

@@ -1,9 +1,13 @@
-// The pipeline driver: all inputs are analysed before anything is written.
+// The pipeline driver: the phases by name, for every input file: lower (with
+// its checks) -> derive -> schedule -> plan -> emit -> output. All inputs are
+// analysed before anything is written.
 #include "generate.hpp"
 
-#include "emit.hpp"
-#include "emit_torch.hpp"
+#include "derive.hpp"
+#include "emit_file.hpp"
 #include "emit_tangent.hpp"
+#include "emit_torch.hpp"
+#include "loop_plan.hpp"
 #include "output.hpp"
 #include "schedule.hpp"
 
@@ -28,13 +32,15 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = false;
       continue;
     }
+    // 1-2. find, lower and check (find.hpp)
     if (!lower_file(input, opts.frontend, kernels, &deps)) {
       ok = false;
       continue;
     }
     std::vector<AdjointPlan> plans;
     for (const auto& k : kernels) {
-      plans.push_back(schedule(k));
+      Partials partials = derive(k);          // 3. derive: each partial once
+      plans.push_back(schedule(k, partials)); // 4. schedule
       for (const auto& r : plans.back().remarks)
         llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,
                                     r.text);
@@ -50,7 +56,10 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = add_torch_files(plans, input, opts.out_dir, pending) && ok;
       continue;
     }
-    EmittedFile f = emit_file(plans, llvm::sys::path::filename(input).str(), stem);
+    std::vector<LoopPlan> loops; // 5. plan the loops
+    for (const auto& p : plans)
+      loops.push_back(plan_loops(p));
+    EmittedFile f = emit_file(loops, llvm::sys::path::filename(input).str(), stem); // 6. emit
     llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
     llvm::sys::path::append(hpp, stem + "_adjoint.hpp");
     llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
@@ -80,7 +89,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
                  << "\n";
     return 1;
   }
-  std::string error;
+  std::string error; // 7. output
   int written = 0;
   if (!write_if_changed(pending, error, &written)) {
     llvm::errs() << "error: " << error << "\n";

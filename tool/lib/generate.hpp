@@ -1,5 +1,5 @@
-// The whole pipeline for a set of kernel files: find -> lower -> derive ->
-// schedule -> emit, then write. Used by the dpgen driver and by tests.
+// The whole pipeline for a set of kernel files: find -> lower (and check) ->
+// derive -> schedule -> plan -> emit, then output. Used by the dpgen driver and by tests.
 #pragma once
 
 #include "find.hpp"

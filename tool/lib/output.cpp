@@ -1,4 +1,4 @@
-// Atomic write-if-changed (see output.hpp).
+// Output (phase 7): atomic write-if-changed (see output.hpp).
 #include "output.hpp"
 
 #include <llvm/Support/FileSystem.h>

@@ -1,4 +1,4 @@
-// Writing generated files: atomically (temp file + rename) and only when the
+// Output (phase 7), writing generated files: atomically (temp file + rename) and only when the
 // content changed, so builds do not cascade and an error never leaves half a
 // file behind.
 #pragma once

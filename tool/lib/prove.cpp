@@ -232,4 +232,31 @@ bool prove_nonneg(const Poly& goal, const Facts& facts) {
   return false;
 }
 
+Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {
+  Box loop_box;
+  for (const auto& l : nest.loops) {
+    Interval iv;
+    iv.lo.push_back(*to_poly(l.lo));
+    iv.hi.push_back(*to_poly(l.hi));
+    loop_box.dims["@" + l.var] = iv;
+  }
+  Domain d = {simplify(loop_box)};
+  // A condition on the sizes that every iteration of the nest implies (an
+  // early `if (n < 3) return;` before loops that need n >= 3) guards nothing.
+  Facts runs;
+  for (const auto& l : nest.loops)
+    add_nonempty(l, runs);
+  for (const auto& pc : s.path) {
+    auto cd = condition_domain(pc.cond);
+    if (!cd) {
+      if (!nest.loops.empty() && implied(pc, runs))
+        continue;
+      guards.push_back(pc);
+      continue;
+    }
+    d = pc.positive ? intersect(d, *cd) : subtract(d, *cd);
+  }
+  return d;
+}
+
 } // namespace dpgen

@@ -41,4 +41,9 @@ void add_facts_with_counters(const PathCond& pc, Facts& out);
 /// symbols' lower bounds.
 bool prove_nonneg(const Poly& goal, const Facts& facts);
 
+/// The iteration domain of a store: its loop box intersected with the index
+/// conditions on its path; other conditions are returned as guards. Empty:
+/// the store never runs.
+Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards);
+
 } // namespace dpgen

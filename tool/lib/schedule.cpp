@@ -1,4 +1,4 @@
-// Schedule: group every read of a DPGEN_IN array into gather blocks or
+// Schedule (phase 4): group every read of a DPGEN_IN array into gather blocks or
 // scatter units (see schedule.hpp for the worked example).
 #include "schedule.hpp"
 
@@ -10,27 +10,26 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <memory>
+#include <tuple>
 
 namespace dpgen {
 
 namespace {
 
-std::string domain_key(const Domain& d) {
-  std::string s;
+// A domain as a value compared by its fields: per box, per counter, the
+// bound sets.
+using DomainKey =
+    std::vector<std::map<std::string, std::pair<std::vector<Poly>, std::vector<Poly>>>>;
+
+DomainKey domain_key(const Domain& d) {
+  DomainKey key;
   for (const auto& b : d) {
-    s += "{";
-    for (const auto& [v, iv] : b.dims) {
-      s += v + ":";
-      for (const auto& p : iv.lo)
-        s += p.str() + ",";
-      s += "/";
-      for (const auto& p : iv.hi)
-        s += p.str() + ",";
-      s += ";";
-    }
-    s += "}";
+    key.emplace_back();
+    for (const auto& [v, iv] : b.dims)
+      key.back()[v] = {iv.lo, iv.hi};
   }
-  return s;
+  return key;
 }
 
 // The layout decomposition of one affine index: coefficient per counter,
@@ -133,12 +132,32 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
   return out;
 }
 
-std::string layout_key(const std::string& array, const Nest* nest, const Decomposed& d) {
-  std::string s = fmt::format("{}|{}|", array, static_cast<const void*>(nest));
-  for (const auto& [v, c] : d.layout)
-    s += v + "*" + c.str() + ";";
-  return s + "|" + d.base.str();
-}
+// Reads that share a gather group: the same input, loop nest (its index in
+// the kernel), layout and base.
+struct GroupKey {
+  std::string array;
+  size_t nest;
+  std::vector<std::pair<std::string, Poly>> layout;
+  Poly base;
+  bool operator<(const GroupKey& o) const {
+    return std::tie(array, nest, layout, base) < std::tie(o.array, o.nest, o.layout, o.base);
+  }
+};
+
+// Reads that share a block of a group: the same store (its index in the
+// nest), shift, iteration domain and run-time guards (printed conditions and
+// their signs).
+struct BlockKey {
+  size_t group;
+  size_t store;
+  std::map<std::string, Poly> shift;
+  DomainKey domain;
+  std::vector<std::pair<bool, std::string>> guards;
+  bool operator<(const BlockKey& o) const {
+    return std::tie(group, store, shift, domain, guards) <
+           std::tie(o.group, o.store, o.shift, o.domain, o.guards);
+  }
+};
 
 // A block is bulk when its domain is one box that is not provably narrow
 // (a constant number of cells) in any layout counter.
@@ -175,41 +194,29 @@ std::string describe_read(const Expr* r) {
   return fmt::format("{}[{}]", r->name, print(r->ops[0]));
 }
 
-} // namespace
-
-Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {
-  Box loop_box;
-  for (const auto& l : nest.loops) {
-    Interval iv;
-    iv.lo.push_back(*to_poly(l.lo));
-    iv.hi.push_back(*to_poly(l.hi));
-    loop_box.dims["@" + l.var] = iv;
-  }
-  Domain d = {simplify(loop_box)};
-  // A condition on the sizes that every iteration of the nest implies (an
-  // early `if (n < 3) return;` before loops that need n >= 3) guards nothing.
-  Facts runs;
-  for (const auto& l : nest.loops)
-    add_nonempty(l, runs);
-  for (const auto& pc : s.path) {
-    auto cd = condition_domain(pc.cond);
-    if (!cd) {
-      if (!nest.loops.empty() && implied(pc, runs))
-        continue;
-      guards.push_back(pc);
-      continue;
-    }
-    d = pc.positive ? intersect(d, *cd) : subtract(d, *cd);
-  }
-  return d;
+bool reads_array(const ExprP& e, const std::string& array, std::set<const LocalVar*>& seen) {
+  return any_node(
+      e, [&](const ExprP& x) { return x->op == Op::Read && x->name == array; }, seen);
 }
 
-AdjointPlan schedule(const Kernel& k) {
+bool nest_reads(const Nest& n, const std::string& array) {
+  std::set<const LocalVar*> seen;
+  for (const auto& st : n.stores) {
+    if (reads_array(st.value, array, seen) || reads_array(st.index, array, seen))
+      return true;
+    for (const auto& pc : st.path)
+      if (reads_array(pc.cond, array, seen))
+        return true;
+  }
+  return false;
+}
+
+// The gather groups and scatter units of `k`'s reads.
+AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
   AdjointPlan plan;
   plan.kernel = &k;
-  std::map<std::string, size_t> group_index;
-  std::map<std::string, size_t> block_index; // group|store|shift|piece -> block
-  DeriveNames names;
+  std::map<GroupKey, size_t> group_index;
+  std::map<BlockKey, size_t> block_index;
 
   for (const auto& param : k.params) {
     if (param.kind != ParamKind::In)
@@ -225,7 +232,7 @@ AdjointPlan schedule(const Kernel& k) {
           const Expr* r = site.read;
           if (r->name != param.name)
             continue;
-          ExprP partial = derivative(store.value, {r}, names);
+          const ExprP& partial = partials.of(store, {r});
           if (!partial)
             continue; // read only through a condition or an index
           auto pieces = index_pieces(r->ops[0]);
@@ -258,20 +265,20 @@ AdjointPlan schedule(const Kernel& k) {
           // others become guards.
           Domain rdom = sdom;
           std::vector<PathCond> rguards = guards;
-          std::string guard_key;
+          std::vector<std::pair<bool, std::string>> guard_key;
           for (const auto& pc : site.conds) {
             if (auto cd = condition_domain(pc.cond)) {
               rdom = pc.positive ? intersect(rdom, *cd) : subtract(rdom, *cd);
             } else {
               rguards.push_back(pc);
-              guard_key += (pc.positive ? "+" : "-") + print(pc.cond) + ";";
+              guard_key.push_back({pc.positive, print(pc.cond)});
             }
           }
           for (const auto& [piece, dec] : affine) {
             Domain bdom = intersect(rdom, piece.where);
             if (bdom.empty())
               continue;
-            std::string gkey = layout_key(param.name, &nest, dec);
+            GroupKey gkey{param.name, size_t(&nest - k.nests.data()), dec.layout, dec.base};
             auto git = group_index.find(gkey);
             if (git == group_index.end()) {
               GatherGroup g;
@@ -290,11 +297,8 @@ AdjointPlan schedule(const Kernel& k) {
               git = group_index.emplace(gkey, plan.gathers.size() - 1).first;
             }
             GatherGroup& g = plan.gathers[git->second];
-            std::string shift_key;
-            for (const auto& [v, p] : dec.shift)
-              shift_key += v + "=" + p.str() + ";";
-            std::string bkey = fmt::format("{}|{}|{}|{}|{}", gkey, static_cast<const void*>(&store),
-                                           shift_key, domain_key(bdom), guard_key);
+            BlockKey bkey{git->second, size_t(&store - nest.stores.data()), dec.shift,
+                          domain_key(bdom), guard_key};
             auto bit = block_index.find(bkey);
             if (bit == block_index.end()) {
               Block b;
@@ -320,7 +324,7 @@ AdjointPlan schedule(const Kernel& k) {
   for (auto& g : plan.gathers) {
     for (auto& b : g.blocks) {
       for (auto& t : b.terms)
-        t.partial = derivative(t.store->value, t.reads, names);
+        t.partial = partials.of(*t.store, t.reads);
       b.bulk = is_bulk(b, g);
     }
     g.blocks.erase(std::remove_if(g.blocks.begin(), g.blocks.end(),
@@ -330,6 +334,26 @@ AdjointPlan schedule(const Kernel& k) {
   plan.gathers.erase(std::remove_if(plan.gathers.begin(), plan.gathers.end(),
                                     [](const GatherGroup& g) { return g.blocks.empty(); }),
                      plan.gathers.end());
+  return plan;
+}
+
+} // namespace
+
+AdjointPlan schedule(const Kernel& k, Partials& partials) {
+  AdjointPlan plan = schedule_reads(k, partials);
+  if (!k.intermediates.empty())
+    for (size_t j = 0; j < k.nests.size(); ++j) {
+      auto s = std::make_shared<Kernel>(k);
+      s->name = fmt::format("{}_nest{}", k.name, j + 1);
+      s->nests = {k.nests[j]};
+      s->size_checks.clear();
+      for (auto& p : s->params)
+        if (k.intermediates.count(p.name))
+          p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
+      Partials stage_partials = derive(*s);
+      auto stage_plan = std::make_shared<AdjointPlan>(schedule_reads(*s, stage_partials));
+      plan.stages.push_back({s, stage_plan});
+    }
   return plan;
 }
 

@@ -24,9 +24,12 @@
 #pragma once
 
 #include "affine.hpp"
+#include "derive.hpp"
 #include "ir.hpp"
+#include "prove.hpp"
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -78,17 +81,29 @@ struct Remark {
   std::string text;
 };
 
+struct AdjointPlan;
+
+/// A kernel whose later loop nests read what earlier ones wrote (work arrays)
+/// is adjoint nest by nest: a stage is the kernel restricted to one nest, with
+/// the work arrays that nest reads as inputs and the others as outputs, and
+/// its own plan.
+struct Stage {
+  std::shared_ptr<const Kernel> kernel;
+  std::shared_ptr<const AdjointPlan> plan;
+};
+
 struct AdjointPlan {
   const Kernel* kernel = nullptr;
   std::vector<GatherGroup> gathers;
   std::vector<ScatterUnit> scatters;
   std::vector<Remark> remarks;
+  std::vector<Stage> stages; // a kernel with work arrays: one per loop nest
 };
 
-AdjointPlan schedule(const Kernel& k);
-
-/// The iteration domain of a store: its loop box intersected with the index
-/// conditions on its path; other conditions are returned as guards.
-Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards);
+/// Phase 4. `partials` is derive(k) (derive.hpp): the schedule looks up the
+/// partial of each read and adds those of the reads its blocks merge. The
+/// stages of a kernel with work arrays are derived and scheduled here, each
+/// with a table of its own.
+AdjointPlan schedule(const Kernel& k, Partials& partials);
 
 } // namespace dpgen

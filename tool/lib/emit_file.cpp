@@ -1,0 +1,135 @@
+// Emit, file level (phase 6): the banner, includes and declarations of the
+// generated files of one input file, around the kernels emit.cpp prints.
+#include "emit_file.hpp"
+
+#include "emit.hpp"
+#include "emit_checked.hpp"
+#include "emit_util.hpp"
+
+#include <fmt/format.h>
+
+namespace dpgen {
+
+EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& source_name,
+                      const std::string& stem) {
+  EmittedFile out;
+  std::vector<const AdjointPlan*> plans;
+  for (const auto& l : loops)
+    plans.push_back(l.adjoint);
+  Code h;
+  h.raw(fmt::format(kBanner, source_name));
+  h.raw("//\n"
+        "// Reverse-mode (vector-Jacobian product) kernels. For a kernel\n"
+        "// f(in..., out..., constants...), f_adjoint takes the same parameters in order,\n"
+        "// each DPGEN_IN array followed by its <name>_adj, which is accumulated with +=,\n"
+        "// and each DPGEN_OUT array replaced by its read-only seed <name>_adj.\n"
+        "#pragma once\n\n"
+        "#include <stddef.h> // size_t, for the checked entry points (C and C++)\n\n");
+  bool vectors = false, spans = false;
+  for (const auto& p : plans) {
+    vectors = vectors || has_std_vectors(*p->kernel);
+    spans = spans || has_spans(*p->kernel);
+  }
+  h.raw(container_includes(vectors, spans));
+  for (const auto& p : plans) {
+    open_namespaces(h, *p->kernel);
+    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p->kernel->name, base_name(p->kernel->file),
+                      p->kernel->pos.line));
+    if (p->kernel->c_linkage) // a C kernel: callable from C
+      h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
+    h.raw(adjoint_signature(*p->kernel) + ";\n");
+    if (has_checked_entry(*p->kernel))
+      h.raw(fmt::format(
+          "/// The same, each array followed by its number of elements: sizes too small\n"
+          "/// for the elements the kernel touches throw std::invalid_argument.\n"
+          "{};\n",
+          checked_signature(*p->kernel)));
+    if (p->kernel->c_linkage)
+      h.raw("#ifdef __cplusplus\n}\n#endif\n");
+    close_namespaces(h, *p->kernel);
+    h.raw("\n");
+  }
+  out.header = formatted(h.str(), stem + "_adjoint.hpp");
+
+  // The forward kernels' declarations, so a caller includes them instead of
+  // writing them by hand.
+  Code d;
+  d.raw(fmt::format(kBanner, source_name));
+  d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
+        "#pragma once\n\n");
+  d.raw(container_includes(vectors, spans));
+  for (const auto& p : plans) {
+    const Kernel& k = *p->kernel;
+    open_namespaces(d, k);
+    d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
+    std::vector<std::string> ps, flat;
+    for (const auto& prm : k.params) {
+      if (prm.synthetic || !prm.twin_of.empty())
+        continue;
+      ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
+      bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
+      flat.push_back(
+          prm.kind == ParamKind::Scalar
+              ? fmt::format("{} {}", prm.spelling, prm.name)
+              : fmt::format("{}{}* {}", is_const ? "const " : "", prm.elem_name, prm.name));
+    }
+    if (k.c_linkage) {
+      // C's variable-length rows and restrict are not C++: from C++ the same
+      // function is declared with flat pointers (the same ABI).
+      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" void {}({});\n#else\n", k.name,
+                        fmt::join(flat, ", ")));
+      d.raw(fmt::format("void {}({});\n#endif\n", k.name, fmt::join(ps, ", ")));
+    } else {
+      d.raw(fmt::format("void {}({});\n", k.name, fmt::join(ps, ", ")));
+    }
+    close_namespaces(d, k);
+    d.raw("\n");
+  }
+  out.kernels = formatted(d.str(), stem + "_kernels.hpp");
+
+  Code c;
+  c.raw(fmt::format(kBanner, source_name));
+  c.raw("//\n"
+        "// Gather form: each adjoint cell is written by exactly one loop iteration, which\n"
+        "// sums the contributions of every forward iteration that read that cell, each\n"
+        "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
+        "// loop; edge cells check each term's iteration domain.\n");
+  c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
+  c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n");
+  bool checks = false;
+  for (const auto& p : plans)
+    checks = checks || !p->kernel->size_checks.empty() || has_vectors(*p->kernel);
+  c.raw("#include <stdexcept>\n#include <string>\n"); // the checked entry points
+  bool staged = false;
+  for (const auto& p : plans)
+    staged = staged || !p->kernel->intermediates.empty();
+  for (const auto& p : plans)
+    staged = staged || has_inout(*p->kernel);
+  if (staged)
+    c.raw("#include <vector>\n");
+  c.raw("\n");
+  c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
+        "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
+        "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"
+        "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
+        "#endif\n\n");
+  c.raw("namespace {\n"
+        "// std::min/std::max with the same result (the first argument on ties), by\n"
+        "// value so loops around them vectorize.\n"
+        "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"
+        "template <typename T> inline T dpgen_max(T a, T b) { return a < b ? b : a; }\n"
+        "} // namespace\n\n");
+  for (const auto& l : loops) {
+    const AdjointPlan* p = l.adjoint;
+    emit_kernel(c, l);
+    c.raw("\n");
+    if (has_checked_entry(*p->kernel)) {
+      emit_checked_entry(c, *p->kernel);
+      c.raw("\n");
+    }
+  }
+  out.source = formatted(c.str(), stem + "_adjoint.cpp");
+  return out;
+}
+
+} // namespace dpgen

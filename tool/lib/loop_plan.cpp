@@ -1,0 +1,290 @@
+// Plan (phase 5): cell boxes, interiors, edge reaches, fusion and the
+// parallel test of the gather loops (see loop_plan.hpp).
+#include "loop_plan.hpp"
+
+#include "ir_walk.hpp"
+
+#include <algorithm>
+
+namespace dpgen {
+
+namespace {
+
+void collect_selects(const ExprP& e, std::vector<ExprP>& conds, std::set<const LocalVar*>& seen) {
+  walk(
+      e,
+      [&](const ExprP& x) {
+        if (x->op == Op::Select)
+          conds.push_back(x->ops[0]);
+        return true;
+      },
+      [](const ExprP& l) { return !l->local->kernel_level; }, seen);
+}
+
+// Shrinks the interior so that the index conditions of its terms (a periodic
+// wrap `i == n - 1 ? 0 : i + 1`) are decided there: a narrow condition box at
+// the low end raises the interior's lower bound, one at the high end lowers
+// its upper bound. Cells given up go to the guarded edge loop.
+void narrow_for_selects(const GatherGroup& g, Box& interior) {
+  for (const auto& b : g.blocks) {
+    if (!b.bulk)
+      continue;
+    std::vector<ExprP> conds;
+    std::set<const LocalVar*> seen;
+    const Term& t = b.terms.front();
+    collect_selects(t.partial, conds, seen);
+    collect_selects(t.store->index, conds, seen);
+    for (const auto& pc : b.guards)
+      collect_selects(pc.cond, conds, seen);
+    for (const auto& c : conds) {
+      auto cd = condition_domain(c);
+      if (!cd)
+        continue;
+      for (const auto& box : *cd)
+        for (const auto& [key, iv] : box.dims) {
+          auto in = interior.dims.find(key);
+          if (in == interior.dims.end() || iv.lo.size() != 1 || iv.hi.size() != 1)
+            continue;
+          Poly width = iv.hi[0] - iv.lo[0];
+          if (!width.is_constant())
+            continue;
+          auto sit = b.shift.find(key.substr(1));
+          Poly d = sit == b.shift.end() ? Poly() : sit->second;
+          Poly lo = iv.lo[0] + d, hi = iv.hi[0] + d; // in cell space
+          auto near = [](const std::vector<Poly>& set, const Poly& p) {
+            for (const auto& q : set)
+              if ((p - q).is_constant())
+                return true;
+            return false;
+          };
+          if (near(in->second.lo, lo))
+            in->second.lo.push_back(hi);
+          else if (near(in->second.hi, hi))
+            in->second.hi.push_back(lo);
+        }
+    }
+  }
+}
+
+std::vector<Poly> shifted(const std::vector<Poly>& set, const Poly& d) {
+  std::vector<Poly> out;
+  for (const auto& p : set)
+    out.push_back(p + d);
+  return out;
+}
+
+// The shift of block `b` in counter `v` (zero when it has none).
+Poly shift_of(const Block& b, const std::string& v) {
+  auto it = b.shift.find(v);
+  return it == b.shift.end() ? Poly() : it->second;
+}
+
+// The minimum over candidates of the maximum of each (`lower`; else the
+// maximum of minima). Candidate sets lose duplicate bounds, equal sets are
+// kept once, and of single bounds that differ by a constant only the extreme
+// one is kept.
+CellBound bound_of(const std::vector<std::vector<Poly>>& cands, bool lower) {
+  CellBound out;
+  auto add = [&](std::vector<Poly> part) {
+    if (std::find(out.parts.begin(), out.parts.end(), part) == out.parts.end())
+      out.parts.push_back(std::move(part));
+  };
+  std::vector<Poly> singles;
+  for (const auto& c : cands) {
+    if (c.size() == 1) {
+      singles.push_back(c.front());
+      continue;
+    }
+    std::vector<Poly> part;
+    for (const auto& p : c)
+      if (std::find(part.begin(), part.end(), p) == part.end())
+        part.push_back(p);
+    add(part);
+  }
+  std::vector<Poly> kept;
+  for (const auto& p : singles) {
+    bool drop = false;
+    for (auto it = kept.begin(); it != kept.end();) {
+      Poly d = p - *it;
+      if (!d.is_constant()) {
+        ++it;
+        continue;
+      }
+      long long v = d.constant_term();
+      bool p_better = lower ? v < 0 : v > 0;
+      if (p_better)
+        it = kept.erase(it);
+      else {
+        drop = true;
+        break;
+      }
+    }
+    if (!drop)
+      kept.push_back(p);
+  }
+  for (const auto& p : kept)
+    add({p});
+  return out;
+}
+
+// Cell bounding box of a group, per layout counter.
+std::map<std::string, CellRange> cell_bounds(const GatherGroup& g) {
+  std::map<std::string, CellRange> bounds;
+  for (const auto& [v, c] : g.layout) {
+    std::vector<std::vector<Poly>> los, his;
+    for (const auto& b : g.blocks) {
+      Poly d = shift_of(b, v);
+      for (const auto& box : b.domain) {
+        const Interval& iv = box.dims.at("@" + v);
+        los.push_back(shifted(iv.lo, d));
+        his.push_back(shifted(iv.hi, d));
+      }
+    }
+    bounds[v] = {bound_of(los, true), bound_of(his, false)};
+  }
+  return bounds;
+}
+
+FusionKey fusion_key(const Kernel& k, const GatherGroup& g) {
+  FusionKey key;
+  key.nest = size_t(g.nest - k.nests.data());
+  key.cell = g.base;
+  for (const auto& [v, c] : g.layout)
+    key.cell = key.cell + c * Poly::symbol("c_" + v);
+  key.bounds = cell_bounds(g);
+  return key;
+}
+
+CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
+  CellLoop loop;
+  loop.groups = gs;
+  const GatherGroup& g0 = *gs.front();
+  if (g0.layout.empty())
+    return loop; // a single cell: summed over the iterations that read it
+  loop.bounds = cell_bounds(g0);
+
+  // Interior box (cell space, "@v" keys): inside every bulk block of every
+  // group, narrowed so index conditions are decided.
+  Box& interior = loop.interior;
+  for (const auto& [v, c] : g0.layout) {
+    Interval& in = interior.dims["@" + v];
+    for (const auto* g : gs)
+      for (const auto& b : g->blocks) {
+        if (!b.bulk)
+          continue;
+        loop.any_bulk = true;
+        Poly d = shift_of(b, v);
+        const Interval& iv = b.domain.front().dims.at("@" + v);
+        for (const auto& p : shifted(iv.lo, d))
+          in.lo.push_back(p);
+        for (const auto& p : shifted(iv.hi, d))
+          in.hi.push_back(p);
+      }
+  }
+  for (const auto* g : gs)
+    narrow_for_selects(*g, interior);
+  interior = simplify(interior);
+
+  // The interior holds only if no narrow (edge) block reaches into it.
+  if (loop.any_bulk)
+    for (const auto* g : gs)
+      for (const auto& b : g->blocks) {
+        if (b.bulk)
+          continue;
+        std::map<std::string, Poly> fwd;
+        for (const auto& [v, c] : g->layout)
+          fwd["@" + v] = shift_of(b, v);
+        for (const auto& box : shift(b.domain, fwd)) {
+          EdgeReach reach{box, {}};
+          Box cells_box;
+          for (const auto& [v, c] : g->layout) {
+            cells_box.dims["@" + v] = box.dims.at("@" + v);
+            reach.cell_dims.insert("@" + v);
+          }
+          if (box_disjoint(cells_box, {interior}))
+            continue;
+          loop.reaches.push_back(reach);
+        }
+      }
+
+  // Where each bulk block's iteration lies for an interior cell: its domain
+  // within the interior shifted back to iteration space.
+  for (const auto* g : gs) {
+    loop.interior_boxes.emplace_back();
+    for (const auto& b : g->blocks) {
+      loop.interior_boxes.back().emplace_back();
+      if (!b.bulk)
+        continue;
+      std::map<std::string, Poly> back; // "@v" -> -shift: cell space -> iteration space
+      for (const auto& [v, c] : g->layout)
+        back["@" + v] = -shift_of(b, v);
+      Domain boxes = intersect(b.domain, shift({interior}, back));
+      if (boxes.size() != 1)
+        boxes = b.domain; // cannot happen for a bulk block; keep it exact anyway
+      loop.interior_boxes.back().back() = boxes;
+    }
+  }
+
+  // Threads only if the layout is one-to-one over the cell box (mixed radix,
+  // with the run-time extents hi - lo).
+  loop.unit_1d = g0.layout.size() == 1 && g0.layout[0].second.is_constant();
+  if (!loop.unit_1d) {
+    std::vector<std::pair<Poly, Poly>> dims;
+    for (const auto& [v, c] : g0.layout)
+      dims.push_back({c, Poly::symbol("hi_" + v) - Poly::symbol("lo_" + v)});
+    loop.radix = mixed_radix(dims);
+  }
+  return loop;
+}
+
+} // namespace
+
+LoopPlan plan_loops(const AdjointPlan& plan) {
+  LoopPlan out;
+  out.adjoint = &plan;
+  for (const auto& s : plan.stages)
+    out.stages.push_back(plan_loops(*s.plan));
+  if (!plan.stages.empty())
+    return out; // printed stage by stage
+  const Kernel& k = *plan.kernel;
+  // Gather groups of different inputs that share a loop nest, a layout and a
+  // cell box run in one fused loop.
+  std::vector<FusionKey> keys;
+  for (const auto& g : plan.gathers)
+    keys.push_back(fusion_key(k, g));
+  std::vector<bool> done(plan.gathers.size(), false);
+  for (const auto& p : k.params) {
+    if (p.kind != ParamKind::In)
+      continue;
+    InputLoops in;
+    in.array = p.name;
+    for (size_t i = 0; i < plan.gathers.size(); ++i) {
+      const GatherGroup& g = plan.gathers[i];
+      if (g.array != p.name || done[i])
+        continue;
+      std::vector<const GatherGroup*> fused = {&g};
+      for (size_t j = 0; j < plan.gathers.size(); ++j) {
+        const GatherGroup& h = plan.gathers[j];
+        if (j != i && h.array != g.array && !done[j] && !h.layout.empty() && keys[j] == keys[i] &&
+            std::none_of(fused.begin(), fused.end(),
+                         [&](const auto* f) { return f->array == h.array; }))
+          fused.push_back(&h);
+      }
+      for (const auto* f : fused)
+        done[size_t(f - plan.gathers.data())] = true;
+      GatherStep step;
+      step.loops.push_back(plan_cell_loop(fused));
+      if (fused.size() > 1)
+        for (const auto* f : fused)
+          step.loops.push_back(plan_cell_loop({f}));
+      in.gathers.push_back(std::move(step));
+    }
+    for (const auto& u : plan.scatters)
+      if (u.array == p.name)
+        in.scatters.push_back(&u);
+    out.inputs.push_back(std::move(in));
+  }
+  return out;
+}
+
+} // namespace dpgen

@@ -1,0 +1,101 @@
+// Plan (phase 5): the loops of an adjoint, decided before anything is
+// printed. For each gather group, or groups fused into one loop, the cell
+// box (per layout counter, the bounds of every block's domain shifted to cell
+// space), the branch-free interior (inside every bulk block, narrowed so the
+// index conditions of its terms are decided there), the edge boxes that may
+// reach into the interior (checked at run time), and the parallel test (the
+// mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
+// when their fusion keys, compared by fields, are equal. emit.cpp prints the
+// plan: it decides no box, bound, fusion or test; it only specializes each
+// term's expressions to the box the plan puts it in (its Specializer).
+#pragma once
+
+#include "affine.hpp"
+#include "schedule.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+/// One end of a cell range: for a lower end the minimum over `parts` of the
+/// maximum of each part (an upper end: the maximum of minima). Parts hold no
+/// duplicate bound and no two parts are equal, so two ends are equal exactly
+/// when they print the same.
+struct CellBound {
+  std::vector<std::vector<Poly>> parts;
+  bool operator==(const CellBound& o) const { return parts == o.parts; }
+};
+
+struct CellRange {
+  CellBound lo, hi;
+  bool operator==(const CellRange& o) const { return lo == o.lo && hi == o.hi; }
+};
+
+/// What gather groups of different inputs must share to run in one loop: the
+/// loop nest (its index in the kernel), the memory index of a cell and the
+/// cell box.
+struct FusionKey {
+  size_t nest = 0;
+  Poly cell;
+  std::map<std::string, CellRange> bounds; // layout counter -> cell range
+  bool operator==(const FusionKey& o) const {
+    return nest == o.nest && cell == o.cell && bounds == o.bounds;
+  }
+};
+
+/// An edge (non-bulk) block's box in cell space that may overlap the
+/// interior: unless it is empty or apart from the interior at run time, every
+/// cell is treated as an edge.
+struct EdgeReach {
+  Box box;                         // all counters of the block ("@v" keys)
+  std::set<std::string> cell_dims; // those of the layout
+};
+
+/// One cell loop over one or more gather groups (fused when more than one)
+/// that share a layout and a cell box.
+struct CellLoop {
+  std::vector<const GatherGroup*> groups;
+  std::map<std::string, CellRange> bounds; // the cell box, per layout counter
+  bool any_bulk = false;                   // some block runs in the interior
+  Box interior;                            // cell space, "@v" keys
+  std::vector<EdgeReach> reaches;
+  /// Per group and block (bulk blocks only): the boxes of its iteration
+  /// domain that an interior cell's iteration lies in.
+  std::vector<std::vector<std::vector<Box>>> interior_boxes;
+  /// The parallel test: a one-dimensional unit-stride layout needs only
+  /// enough cells; any other also the mixed-radix conditions, counters in
+  /// `radix` order (dim indexes the layout).
+  bool unit_1d = false;
+  std::vector<RadixStep> radix;
+};
+
+/// Gather groups run in one step: `loops[0]` is the loop over all of them;
+/// for fused groups, `loops[1..]` are the loops of each group alone, run when
+/// some input is inactive (a null adjoint).
+struct GatherStep {
+  std::vector<CellLoop> loops;
+  bool fused() const { return loops.size() > 1; }
+};
+
+/// The loops of one differentiable input, in order: gathers, then scatters.
+struct InputLoops {
+  std::string array;
+  std::vector<GatherStep> gathers;
+  std::vector<const ScatterUnit*> scatters;
+};
+
+/// The plan emit prints for one kernel (or one stage of a kernel with work
+/// arrays).
+struct LoopPlan {
+  const AdjointPlan* adjoint = nullptr;
+  std::vector<InputLoops> inputs;
+  std::vector<LoopPlan> stages; // a kernel with work arrays: one per stage
+};
+
+/// Phase 5: the loops of `plan` (which must outlive the result).
+LoopPlan plan_loops(const AdjointPlan& plan);
+
+} // namespace dpgen
