@@ -507,8 +507,8 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
   code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, subscript(s.index));
   for (const auto& r : u.reads) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
-              subscript(s.index), r.read->text, r.read->name, subscript(r.read->ops[0]),
-              r.read->text);
+              subscript(s.index), r.read->source, r.read->name, subscript(r.read->ops[0]),
+              r.read->source);
     bool guarded = !r.conds.empty();
     if (guarded) {
       std::map<int, LocalP> cond_locals;

@@ -77,10 +77,10 @@ ExprP int_const(long long v) {
   return e;
 }
 
-ExprP real_const(double v, Type t, std::string text) {
+ExprP real_const(double v, Type t, std::string spelling) {
   auto e = node(Op::RealConst, t);
   e->rval = v;
-  e->text = std::move(text);
+  e->spelling = std::move(spelling);
   return e;
 }
 
@@ -209,7 +209,7 @@ ExprP cast(ExprP a, Type t) {
   if (a->op == Op::IntConst && is_real(t))
     return real_const(static_cast<double>(a->ival), t);
   if (a->op == Op::RealConst && is_real(t))
-    return real_const(a->rval, t, t == Type::Double ? a->text : "");
+    return real_const(a->rval, t, t == Type::Double ? a->spelling : "");
   return node(Op::Cast, t, {std::move(a)});
 }
 

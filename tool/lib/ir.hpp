@@ -30,7 +30,7 @@ inline bool is_real(Type t) { return t == Type::Float || t == Type::Double; }
 
 enum class Op {
   IntConst,  // ival
-  RealConst, // rval, text = spelling
+  RealConst, // rval, spelling
   Param,     // scalar parameter `name`
   LoopVar,   // loop induction variable `name`
   Local,     // a named local value: `local`
@@ -79,7 +79,9 @@ struct Expr {
   long long ival = 0;
   double rval = 0;
   std::string name; // Param, LoopVar, Read (array), Call (function)
-  std::string text; // RealConst spelling
+  std::string spelling;  // RealConst: the literal as written in the kernel ("0.5", "1e-3")
+  std::string source;    // Read: the read as written ("u[i - 1]"), for comments and remarks
+  std::string cast_type; // Cast: the integer type of a widening cast as spelled ("long")
   LocalP local;     // Local
   SourcePos pos;    // Read: where it is in the source (for remarks)
 };
@@ -88,7 +90,7 @@ struct Expr {
 // derivatives come out readable; a null ExprP stands for an exact zero in the
 // derivative code (see derive.hpp).
 ExprP int_const(long long v);
-ExprP real_const(double v, Type t, std::string text = "");
+ExprP real_const(double v, Type t, std::string spelling = "");
 ExprP param(const std::string& name, Type t);
 ExprP loop_var(const std::string& name);
 ExprP local_ref(const LocalP& l);

@@ -1584,7 +1584,7 @@ private:
         return st->value;
     acc_.inout_reads.push_back({p->name, cur_key(), next_store_seq_, idx, {}, pos(loc)});
     ExprP r = read(p->name, idx, p->elem, pos(loc));
-    std::const_pointer_cast<Expr>(r)->text = text(e);
+    std::const_pointer_cast<Expr>(r)->source = text(e);
     return r;
   }
 
@@ -2110,7 +2110,7 @@ private:
           if (loops_.empty() && !path_reads_ok_)
             acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
           ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
-          std::const_pointer_cast<Expr>(r)->text = text(e);
+          std::const_pointer_cast<Expr>(r)->source = text(e);
           k_.intermediates.insert(p->name);
           acc_.work_reads.push_back(
               {p->name, cur_key(), next_store_seq_, acc->index, path_, pos(e->getBeginLoc())});
@@ -2127,7 +2127,7 @@ private:
       if (p->inout)
         return inout_value(p, acc->index, e->getBeginLoc(), e);
       ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
-      std::const_pointer_cast<Expr>(r)->text = text(e); // as written, for remarks
+      std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
       return r;
     }
     if (const auto* u = dyn_cast<UnaryOperator>(e)) {
@@ -2210,7 +2210,7 @@ private:
       w->op = Op::Cast;
       w->type = Type::Int;
       w->ops = {inner};
-      w->text = spelled(c->getType());
+      w->cast_type = spelled(c->getType());
       return w;
     }
     case CK_IntegralToFloating:

@@ -143,7 +143,7 @@ std::string print(const ExprP& e) {
   case Op::IntConst:
     return std::to_string(e->ival);
   case Op::RealConst:
-    return !e->text.empty() ? e->text : real_literal(e->rval, e->type);
+    return !e->spelling.empty() ? e->spelling : real_literal(e->rval, e->type);
   case Op::Param:
   case Op::LoopVar:
   case Op::Local:
@@ -169,8 +169,8 @@ std::string print(const ExprP& e) {
     return fmt::format("{}{}{}({})", by_value ? "dpgen_" : "std::", e->name, targs,
                        fmt::join(args, ", "));
   }
-  case Op::Cast: // text: the integer type of a widening cast ("long")
-    return fmt::format("static_cast<{}>({})", e->text.empty() ? type_spelling(e->type) : e->text,
+  case Op::Cast: // cast_type: the integer type of a widening cast ("long")
+    return fmt::format("static_cast<{}>({})", e->cast_type.empty() ? type_spelling(e->type) : e->cast_type,
                        print(e->ops[0]));
   default: {
     // Binary, left-associative: a right operand of equal precedence keeps its

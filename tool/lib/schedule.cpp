@@ -189,8 +189,8 @@ bool uses_rem(const ExprP& e) {
 }
 
 std::string describe_read(const Expr* r) {
-  if (!r->text.empty())
-    return r->text;
+  if (!r->source.empty())
+    return r->source;
   return fmt::format("{}[{}]", r->name, print(r->ops[0]));
 }
 
