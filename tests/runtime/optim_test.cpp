@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -321,6 +322,16 @@ TEST_CASE("lbfgs_minimize: termination reasons (limit, gradient, loss decrease, 
   const dpgen::LbfgsSummary bad = dpgen::lbfgs_minimize(nan_gradient, w, quiet);
   CHECK(bad.termination == dpgen::Termination::gradient_not_finite);
   CHECK(bad.message == "lbfgs: gradient is NaN (index 2) at evaluation 3");
+
+  // Errors of f itself pass through unchanged (not as a line-search failure).
+  int evaluations = 0;
+  const dpgen::LossGradient throwing = [&](const VectorXd& v, VectorXd& grad) {
+    if (++evaluations == 2)
+      throw std::domain_error("f failed");
+    return rosenbrock(v, grad);
+  };
+  VectorXd t = rosenbrock_start(6);
+  CHECK_THROWS_WITH_AS(dpgen::lbfgs_minimize(throwing, t, quiet), "f failed", std::domain_error);
 }
 
 TEST_CASE("optimizers take options structs") {

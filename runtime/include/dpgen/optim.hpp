@@ -195,8 +195,8 @@ struct LbfgsStop {
 /// loss at the start, or a NaN or Inf gradient anywhere, stops the run (loss_not_finite,
 /// gradient_not_finite); LBFGS++'s line-search errors stop it as line_search_failed ("lbfgs: "
 /// and LBFGS++'s message). Failures throw OptimizationError carrying the summary unless
-/// options.throw_on_failure is off. `iterations` counts line searches (0 when x0 already meets
-/// the gradient tolerance).
+/// options.throw_on_failure is off; errors of f propagate unchanged. `iterations` counts line
+/// searches (0 when x0 already meets the gradient tolerance).
 inline LbfgsSummary lbfgs_minimize(const LossGradient& f, Eigen::VectorXd& x,
                                    const LbfgsOptions& options = {}) {
   using clock = std::chrono::steady_clock;
@@ -204,8 +204,15 @@ inline LbfgsSummary lbfgs_minimize(const LossGradient& f, Eigen::VectorXd& x,
   LBFGSpp::LBFGSSolver<double> solver(options);
   Eigen::VectorXd grad(x.size());
   LbfgsSummary summary;
+  std::exception_ptr error_of_f; // f's own errors pass through LBFGS++ unchanged
   auto objective = [&](const Eigen::VectorXd& v, Eigen::VectorXd& g) {
-    const double fx = f(v, g);
+    double fx = 0.0;
+    try {
+      fx = f(v, g);
+    } catch (...) {
+      error_of_f = std::current_exception();
+      throw;
+    }
     ++summary.evaluations;
     summary.final_loss = fx; // x holds the last evaluated point, also when a line search fails
     if (summary.evaluations == 1) {
@@ -233,6 +240,8 @@ inline LbfgsSummary lbfgs_minimize(const LossGradient& f, Eigen::VectorXd& x,
     summary.message = stop.message;
     stopped = true;
   } catch (const std::exception& e) {
+    if (error_of_f)
+      std::rethrow_exception(error_of_f);
     summary.termination = Termination::line_search_failed;
     summary.message = detail::message("lbfgs: ", e.what());
     stopped = true;
