@@ -123,7 +123,7 @@ int main(int argc, char** argv) try {
   loss_and_gradient(u, grad); // final state for the pictures
 
   std::printf("loss %.6e -> %.6e (%.0fx lower) in %d iterations, %.2f s; %s\n", s.initial_loss,
-              s.final_loss, reduction, s.iterations, s.total_seconds, s.message.c_str());
+              s.final_loss, reduction, s.iterations, s.seconds, s.message.c_str());
   std::printf("per gradient: %lld forward steps (%lld recomputed), %d states stored, peak %zu "
               "bytes of states\n",
               last_stats.forward_steps, last_stats.recomputed_steps, last_stats.max_snapshots,

@@ -154,7 +154,7 @@ int main(int argc, char** argv) try {
   }
 
   Eigen::VectorXd u0 = Eigen::VectorXd::Zero(kCells); // the book's starting guess
-  dpgen::GradientDescent optimizer(lr);
+  dpgen::GradientDescent optimizer({lr});
   dpgen_examples::LossCurve curve;
   const auto start = std::chrono::steady_clock::now();
   const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, optimizer, u0,

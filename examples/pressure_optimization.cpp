@@ -45,6 +45,7 @@ struct Projection {
   dpgen::CgOptions cg;
   VectorXd pressure, lambda; // last solutions, warm starts
   dpgen::CgSummary forward_summary, backward_summary;
+  dpgen::CgWorkspace workspace; // CG's vectors, reused by every forward and backward solve
 
   void apply_a(const VectorXd& x, VectorXd& y) const {
     neg_laplacian_periodic(x.data(), y.data(), g.nx, g.ny, g.h);
@@ -114,12 +115,13 @@ int main(int argc, char** argv) try {
 
   const Grid g{nx, ny, 1.0 / nx};
   const int n = g.cells();
-  Projection proj{g, {}, {}, {}, {}, {}};
+  Projection proj{g, {}, {}, {}, {}, {}, {}};
   proj.cg.relative_tolerance = tol;
   proj.cg.absolute_tolerance = 1e-14;
   proj.cg.max_iterations = 20 * n;
   proj.cg.remove_null_space_mean = true; // periodic Poisson: constants are its null space
   proj.cg.name = "pressure solve";
+  proj.cg.workspace = &proj.workspace;
 
   // The target: project a field that has a jet in the left half only; its
   // right half after projection (the flow the jet induces) is what the
@@ -190,7 +192,7 @@ int main(int argc, char** argv) try {
   loss_and_gradient(x, grad); // the final projected field, for the pictures
   const double reduction = s.initial_loss / s.final_loss;
   std::printf("loss %.6e -> %.6e (%.0fx lower) in %d iterations, %.2f s; %s\n", s.initial_loss,
-              s.final_loss, reduction, s.iterations, s.total_seconds, s.message.c_str());
+              s.final_loss, reduction, s.iterations, s.seconds, s.message.c_str());
   std::printf("last CG solves: forward %d iterations (residual %.2e), backward %d iterations "
               "(residual %.2e)\n",
               proj.forward_summary.iterations, proj.forward_summary.final_residual_norm,

@@ -311,15 +311,16 @@ int main(int argc, char** argv) try {
     dpgen::Adam adam(dpgen::AdamOptions{lr});
     dpgen::TrainOptions opts;
     opts.max_iterations = iters;
-    opts.csv_path = log;
-    dpgen_examples::ensure_parent(log);
     opts.callback = [&](const dpgen::TrainProgress& p) {
       dpgen_examples::print_progress(p);
       curve.push_back(p.loss);
     };
+    dpgen_examples::ensure_parent(log);
+    const auto csv_log = dpgen_examples::attach_csv_log(opts, log);
     const dpgen::TrainSummary sum = dpgen::train(f, adam, theta, opts);
+    csv_log->close();
     std::printf("%s: loss %.6e -> %.6e (%.1fx lower), %.2f s\n", name, sum.initial_loss,
-                sum.final_loss, sum.initial_loss / sum.final_loss, sum.total_seconds);
+                sum.final_loss, sum.initial_loss / sum.final_loss, sum.seconds);
     return std::make_pair(theta, sum);
   };
   std::vector<double> dp_curve, sup_curve;

@@ -1,6 +1,7 @@
 // Progress lines and output folders shared by the examples.
 #pragma once
 
+#include "csv_log.hpp"
 #include "dpgen/optim.hpp"
 #include "dpgen/train.hpp"
 
@@ -50,7 +51,7 @@ double gradient_check(LossGradient&& f, const Eigen::VectorXd& x, int trials = 3
 inline std::unique_ptr<dpgen::Optimizer> make_optimizer(const std::string& name, double lr,
                                                         const std::string& program) {
   if (name == "gd")
-    return std::make_unique<dpgen::GradientDescent>(lr);
+    return std::make_unique<dpgen::GradientDescent>(dpgen::GradientDescentOptions{lr});
   if (name == "adam")
     return std::make_unique<dpgen::Adam>(dpgen::AdamOptions{lr});
   if (name == "lbfgs")
@@ -67,18 +68,22 @@ struct LossCurve {
 void ensure_parent(const std::string& file);
 
 /// Training options shared by the examples: at most `iters` updates, a
-/// progress line per iteration, the CSV log at `csv` (its folder created),
-/// the loss curve recorded into `curve`.
-inline dpgen::TrainOptions train_options(int iters, const std::string& csv, LossCurve& curve) {
+/// progress line per iteration and the loss curve recorded into `curve`
+/// (unless `progress` is false), and the CSV log at `csv` (its folder
+/// created; see attach_csv_log: it is published when the returned options,
+/// and their copies, are destroyed).
+inline dpgen::TrainOptions train_options(int iters, const std::string& csv, LossCurve& curve,
+                                         bool progress = true) {
   dpgen::TrainOptions opts;
   opts.max_iterations = iters;
-  opts.csv_path = csv;
+  if (progress)
+    opts.callback = [&curve](const dpgen::TrainProgress& p) {
+      print_progress(p);
+      curve.iteration.push_back(p.iteration);
+      curve.loss.push_back(p.loss);
+    };
   ensure_parent(csv);
-  opts.callback = [&curve](const dpgen::TrainProgress& p) {
-    print_progress(p);
-    curve.iteration.push_back(p.iteration);
-    curve.loss.push_back(p.loss);
-  };
+  attach_csv_log(opts, csv);
   return opts;
 }
 

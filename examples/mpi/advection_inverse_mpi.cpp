@@ -139,9 +139,8 @@ int run(int argc, char** argv) {
   VectorXd u = VectorXd::Constant(n, 0.1); // first guess
   auto optimizer = dpgen_examples::make_distributed_optimizer(method, lr, "advection_inverse_mpi");
   dpgen_examples::LossCurve curve;
-  dpgen::TrainOptions options = dpgen_examples::distributed_train_options(iters, csv, curve, dec);
-  if (quiet)
-    options.callback = nullptr;
+  dpgen::TrainOptions options =
+      dpgen_examples::distributed_train_options(iters, csv, curve, dec, quiet);
   MPI_Barrier(dec.comm());
   const auto start = std::chrono::steady_clock::now();
   const dpgen::TrainSummary s = dpgen::train(loss_and_gradient, *optimizer, u, options);

@@ -71,13 +71,13 @@ make_distributed_optimizer(const std::string& name, double lr, const std::string
 }
 
 /// train_options for a distributed run: the gradient norm reduced over the ranks; progress
-/// lines, the loss curve and the CSV log on rank 0 only.
+/// lines and the loss curve (unless `quiet`) and the CSV log on rank 0 only.
 inline dpgen::TrainOptions distributed_train_options(int iters, const std::string& csv,
                                                      LossCurve& curve,
-                                                     const dpgen::mpi::Decomposition& dec) {
-  dpgen::TrainOptions opts = train_options(iters, dec.rank() == 0 ? csv : "", curve);
-  if (dec.rank() != 0)
-    opts.callback = nullptr;
+                                                     const dpgen::mpi::Decomposition& dec,
+                                                     bool quiet = false) {
+  const bool root = dec.rank() == 0;
+  dpgen::TrainOptions opts = train_options(iters, root ? csv : "", curve, root && !quiet);
   opts.norm = [&dec](const Eigen::VectorXd& g) { return dec.norm(g); };
   return opts;
 }

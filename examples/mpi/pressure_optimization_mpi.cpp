@@ -57,7 +57,7 @@ struct Projection {
     VectorXd div = VectorXd::Zero(dec.padded_size());
     mac_divergence_halo(up.data(), vp.data(), div.data(), nx, ny, h);
     const VectorXd b = -dec.interior(div); // -laplace p = -div u
-    forward_summary = solver.solve(b, pressure, pressure.size() > 0);
+    forward_summary = solver.solve(b, pressure, pressure.size() > 0 ? &pressure : nullptr);
     pp = dec.pad(pressure);
     exchange_halos(dec, pp);
     VectorXd uo = VectorXd::Zero(dec.padded_size()), vo = uo;
@@ -77,7 +77,8 @@ struct Projection {
                                        pa.data(), uo_seed.data(), vo_seed.data(), nx, ny, h);
     exchange_halos_adjoint(dec, pa);
     // p = A^-1 b: b_adj = A^-T p_adj, one more solve (A symmetric: the same solve)
-    backward_summary = solver.solve_transpose(dec.interior(pa), lambda, lambda.size() > 0);
+    backward_summary =
+        solver.solve_transpose(dec.interior(pa), lambda, lambda.size() > 0 ? &lambda : nullptr);
     // b = -div(u, v): div_adj = -b_adj, then the generated divergence adjoint
     const VectorXd div_seed = dec.pad(-lambda);
     mac_divergence_halo_adjoint(up.data(), ua.data(), vp.data(), va.data(), div_seed.data(), nx, ny,
@@ -179,9 +180,8 @@ int run(int argc, char** argv) {
   auto optimizer =
       dpgen_examples::make_distributed_optimizer(method, lr, "pressure_optimization_mpi");
   dpgen_examples::LossCurve curve;
-  dpgen::TrainOptions train = dpgen_examples::distributed_train_options(iters, csv, curve, dec);
-  if (quiet)
-    train.callback = nullptr;
+  dpgen::TrainOptions train =
+      dpgen_examples::distributed_train_options(iters, csv, curve, dec, quiet);
   VectorXd x = VectorXd::Zero(2 * m);
   MPI_Barrier(dec.comm());
   const auto start = std::chrono::steady_clock::now();

@@ -179,6 +179,15 @@ TEST_CASE("periodic variable-coefficient Poisson: solution and implicit gradient
     CHECK(forward.residual_norm <= forward.tolerance);
     CHECK(relative_error(x, dec.local_part(x_ref)) <= 1e-10);
     CHECK(std::abs(dec.sum(x.sum())) <= 1e-12); // mean-free, as the single-process solve
+    // The initial guess is the optional pointer (here x itself, already the solution) ...
+    VectorXd warm = x;
+    const auto restarted = solver.solve(dec.local_part(b), warm, &warm);
+    CHECK(restarted.converged());
+    CHECK((restarted.iterations < forward.iterations || forward.iterations <= 1));
+    CHECK(relative_error(warm, x) <= 1e-10);
+    // ... and without it the incoming contents are ignored: the cold solve's iterations again.
+    VectorXd ignored = VectorXd::Constant(x.size(), 1e3);
+    CHECK(solver.solve(dec.local_part(b), ignored).iterations == forward.iterations);
 
     VectorXd lambda, b_bar, k_bar = VectorXd::Zero(dec.interior_size());
     const VectorXd x_bar = dec.local_part(w) + x;

@@ -148,15 +148,13 @@ TEST_CASE("cg: a general preconditioner callable and the initial guess") {
   CHECK(dpgen::conjugate_gradient(apply, b, x, exact).iterations == 1);
   CHECK((x - direct.solve(b)).norm() <= 1e-12 * x.norm());
 
-  dpgen::CgOptions warm;
-  warm.use_initial_guess = true;
   VectorXd x0 = direct.solve(b); // already the solution: no iteration needed
-  CHECK(dpgen::conjugate_gradient(apply, b, x0, warm).iterations == 0);
+  CHECK(dpgen::conjugate_gradient(apply, b, x0, {}, &x0).iterations == 0);
 
   VectorXd x_cold;
   const int cold_iterations = dpgen::conjugate_gradient(apply, b, x_cold).iterations;
   VectorXd x_near = direct.solve(b) + 1e-6 * random_vector(b.size(), 7);
-  const dpgen::CgSummary near = dpgen::conjugate_gradient(apply, b, x_near, warm);
+  const dpgen::CgSummary near = dpgen::conjugate_gradient(apply, b, x_near, {}, &x_near);
   CHECK(near.converged());
   CHECK(near.iterations < cold_iterations);
   CHECK(near.initial_residual_norm < 1e-4 * b.norm());
@@ -265,10 +263,8 @@ TEST_CASE("cg: NaN input and NaN operator output") {
 
   VectorXd x0 = VectorXd::Ones(5);
   x0[1] = std::numeric_limits<double>::infinity();
-  dpgen::CgOptions warm;
-  warm.use_initial_guess = true;
-  CHECK_THROWS_WITH_AS(dpgen::conjugate_gradient(identity, VectorXd::Ones(5), x0, warm),
-                       "cg: initial guess x contains inf at index 1", std::invalid_argument);
+  CHECK_THROWS_WITH_AS(dpgen::conjugate_gradient(identity, VectorXd::Ones(5), x, {}, &x0),
+                       "cg: initial guess contains inf at index 1", std::invalid_argument);
 
   const auto poisoned = [](const VectorXd& v, VectorXd& y) {
     y = v;
@@ -306,11 +302,9 @@ TEST_CASE("cg: size mismatches name both sizes") {
   CHECK(ok.converged());
   CHECK(x.isApproxToConstant(0.5, 1e-14));
 
-  dpgen::CgOptions warm;
-  warm.use_initial_guess = true;
   VectorXd x0 = VectorXd::Zero(3);
-  CHECK_THROWS_WITH_AS(dpgen::conjugate_gradient(kernel, VectorXd::Ones(64), x0, warm),
-                       "cg: initial guess x has size 3, expected 64", std::invalid_argument);
+  CHECK_THROWS_WITH_AS(dpgen::conjugate_gradient(kernel, VectorXd::Ones(64), x0, {}, &x0),
+                       "cg: initial guess has size 3, expected 64", std::invalid_argument);
 
   dpgen::CgOptions jacobi;
   jacobi.jacobi_diagonal = VectorXd::Ones(10);
@@ -337,4 +331,79 @@ TEST_CASE("cg: invalid options are rejected") {
   negative.max_iterations = -1;
   CHECK_THROWS_AS(dpgen::conjugate_gradient(identity, VectorXd::Ones(3), x, negative),
                   std::invalid_argument);
+}
+
+TEST_CASE("cg: the initial guess is the initial_guess argument, never x's old contents") {
+  const Poisson2d poisson = make_poisson(8, 8, 11);
+  const Eigen::SparseMatrix<double> a = poisson.matrix();
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(a);
+  const VectorXd b = random_vector(a.rows(), 12);
+  const auto apply = [&](const VectorXd& v, VectorXd& y) { poisson.apply(v, y); };
+  const VectorXd solution = direct.solve(b);
+
+  // Started at the solution (a separate vector, or x itself): 0 iterations, x unchanged.
+  VectorXd x;
+  const dpgen::CgSummary from_solution = dpgen::conjugate_gradient(apply, b, x, {}, &solution);
+  CHECK(from_solution.iterations == 0);
+  CHECK(from_solution.converged());
+  CHECK(x == solution);
+  VectorXd in_place = solution;
+  CHECK(dpgen::conjugate_gradient(apply, b, in_place, {}, &in_place).iterations == 0);
+  CHECK(in_place == solution);
+
+  // Without the argument, x holding the solution is ignored: the solve starts from zero and
+  // gives the same bits as one into an empty vector.
+  VectorXd ignored = solution, fresh;
+  const dpgen::CgSummary cold = dpgen::conjugate_gradient(apply, b, ignored);
+  const dpgen::CgSummary cold_fresh = dpgen::conjugate_gradient(apply, b, fresh);
+  CHECK(cold.iterations > 0);
+  CHECK(cold.iterations == cold_fresh.iterations);
+  CHECK(cold.initial_residual_norm == b.norm());
+  CHECK(ignored == fresh);
+}
+
+TEST_CASE("cg: a workspace gives bit-identical results and is not reallocated") {
+  const Poisson2d poisson = make_poisson(12, 10, 13);
+  const auto apply = [&](const VectorXd& v, VectorXd& y) { poisson.apply(v, y); };
+  const VectorXd b1 = random_vector(120, 14), b2 = random_vector(120, 15);
+  for (const bool jacobi : {false, true}) {
+    CAPTURE(jacobi);
+    dpgen::CgOptions plain;
+    plain.relative_tolerance = 1e-12;
+    if (jacobi)
+      plain.jacobi_diagonal = poisson.matrix().diagonal();
+    dpgen::CgWorkspace workspace;
+    dpgen::CgOptions reused = plain;
+    reused.workspace = &workspace;
+
+    VectorXd x_plain, x_reused;
+    const dpgen::CgSummary s_plain = dpgen::conjugate_gradient(apply, b1, x_plain, plain);
+    const dpgen::CgSummary s_reused = dpgen::conjugate_gradient(apply, b1, x_reused, reused);
+    CHECK(s_plain.iterations == s_reused.iterations);
+    CHECK(s_plain.final_residual_norm == s_reused.final_residual_norm);
+    REQUIRE(x_reused.size() == x_plain.size());
+    CHECK(x_reused == x_plain); // bit for bit
+    REQUIRE(workspace.r.size() == 120);
+    REQUIRE(workspace.z.size() == 120);
+    REQUIRE(workspace.p.size() == 120);
+    REQUIRE(workspace.q.size() == 120);
+    const double* r = workspace.r.data();
+    const double* z = workspace.z.data();
+    const double* p = workspace.p.data();
+    const double* q = workspace.q.data();
+    const double* x = x_reused.data();
+
+    // A second solve (another right-hand side, warm-started from x) reuses every buffer.
+    const dpgen::CgSummary second =
+        dpgen::conjugate_gradient(apply, b2, x_reused, reused, &x_reused);
+    CHECK(second.converged());
+    CHECK(workspace.r.data() == r);
+    CHECK(workspace.z.data() == z);
+    CHECK(workspace.p.data() == p);
+    CHECK(workspace.q.data() == q);
+    CHECK(x_reused.data() == x);
+    VectorXd x2_plain = x_plain;
+    dpgen::conjugate_gradient(apply, b2, x2_plain, plain, &x2_plain);
+    CHECK(x_reused == x2_plain);
+  }
 }

@@ -274,6 +274,71 @@ TEST_CASE("warm-starting the backward solve with a previous lambda") {
   CHECK(relative_error(warm.solution, cold_near.solution) < 1e-6);
 }
 
+TEST_CASE("implicit solves: initial_guess is the one way to start elsewhere than zero") {
+  const Problem1d pr;
+  const auto apply = [&](const VectorXd& v, VectorXd& y) { pr.apply(pr.k, v, y); };
+  const VectorXd b = random_vector(pr.n, 53);
+  dpgen::CgOptions options;
+  options.relative_tolerance = 1e-12;
+  const dpgen::LinearSolveResult cold = dpgen::solve_forward(apply, b, options);
+  REQUIRE(cold.summary.iterations > 0);
+  // Started at the solution: converged at once, forward and backward (A symmetric).
+  const dpgen::LinearSolveResult at_solution =
+      dpgen::solve_forward(apply, b, options, &cold.solution);
+  CHECK(at_solution.summary.iterations == 0);
+  CHECK(at_solution.solution == cold.solution);
+  const dpgen::LinearSolveResult backward_at_solution =
+      dpgen::solve_backward(apply, b, options, &cold.solution);
+  CHECK(backward_at_solution.summary.iterations == 0);
+  VectorXd b_bar, k_bar = VectorXd::Zero(33);
+  const auto adjoint = [&](const VectorXd& x, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(x, l, g);
+  };
+  CHECK(dpgen::implicit_solve_backward(apply, adjoint, cold.solution, b, b_bar, k_bar, options,
+                                       &cold.solution)
+            .summary.iterations == 0);
+  CHECK(dpgen::solve_forward_normal(apply, apply, b, options, &cold.solution)
+            .summary.initial_residual_norm < 1e-6 * b.norm());
+}
+
+TEST_CASE("implicit solves with a CgWorkspace: same bits, no reallocation across solves") {
+  const Problem1d pr;
+  const auto apply = [&](const VectorXd& v, VectorXd& y) { pr.apply(pr.k, v, y); };
+  const auto adjoint = [&](const VectorXd& x, const VectorXd& l, VectorXd& g) {
+    pr.adjoint_k(x, l, g);
+  };
+  dpgen::CgOptions plain;
+  plain.relative_tolerance = 1e-12;
+  dpgen::CgWorkspace workspace;
+  dpgen::CgOptions reused = plain;
+  reused.workspace = &workspace;
+  const double* buffers[4] = {};
+  for (int round = 0; round < 3; ++round) {
+    CAPTURE(round);
+    const VectorXd b = random_vector(pr.n, 54 + round), x_bar = random_vector(pr.n, 64 + round);
+    const dpgen::LinearSolveResult f_plain = dpgen::solve_forward(apply, b, plain);
+    const dpgen::LinearSolveResult f_reused = dpgen::solve_forward(apply, b, reused);
+    CHECK(f_plain.solution == f_reused.solution);
+    VectorXd b_bar_plain, k_bar_plain = VectorXd::Zero(33);
+    VectorXd b_bar_reused, k_bar_reused = VectorXd::Zero(33);
+    const dpgen::LinearSolveResult l_plain = dpgen::implicit_solve_backward(
+        apply, adjoint, f_plain.solution, x_bar, b_bar_plain, k_bar_plain, plain);
+    const dpgen::LinearSolveResult l_reused = dpgen::implicit_solve_backward(
+        apply, adjoint, f_reused.solution, x_bar, b_bar_reused, k_bar_reused, reused);
+    CHECK(l_plain.solution == l_reused.solution);
+    CHECK(k_bar_plain == k_bar_reused);
+    CHECK(l_plain.summary.iterations == l_reused.summary.iterations);
+    const double* now[4] = {workspace.r.data(), workspace.z.data(), workspace.p.data(),
+                            workspace.q.data()};
+    for (int i = 0; i < 4; ++i) {
+      CHECK(now[i] != nullptr);
+      if (round > 0)
+        CHECK(now[i] == buffers[i]);
+      buffers[i] = now[i];
+    }
+  }
+}
+
 TEST_CASE("periodic Poisson: gradients with null-space mean removal") {
   const int nx = 8, ny = 6, n = nx * ny;
   const double h = 1.0 / nx;

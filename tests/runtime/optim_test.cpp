@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -118,7 +119,7 @@ dpgen::HigOptions hig_options(double learning_rate, double exponent, double trun
 TEST_CASE("gradient descent: the update rule and convergence on a quadratic") {
   const Quadratic q;
   const VectorXd x0 = VectorXd::Ones(q.n);
-  dpgen::GradientDescent gd(0.05);
+  dpgen::GradientDescent gd({0.05});
   VectorXd x = x0, grad;
   double loss = q(x, grad);
   const VectorXd g0 = grad;
@@ -130,7 +131,7 @@ TEST_CASE("gradient descent: the update rule and convergence on a quadratic") {
   CHECK(grad == grad_new);
 
   // With lr = 1 / lambda_max the error contracts at least by (1 - lambda_min / lambda_max).
-  dpgen::GradientDescent tuned(1.0 / q.largest_eigenvalue());
+  dpgen::GradientDescent tuned({1.0 / q.largest_eigenvalue()});
   const VectorXd x_star = q.minimizer();
   CHECK((run(tuned, q, x0, 600) - x_star).norm() < 1e-10 * x_star.norm());
 }
@@ -203,7 +204,7 @@ TEST_CASE("L-BFGS stepwise solves a quadratic in few iterations") {
 }
 
 TEST_CASE("L-BFGS on Rosenbrock: LBFGSSolver wrapper and stepwise iterates agree bit for bit") {
-  LBFGSpp::LBFGSParam<double> param;
+  dpgen::LbfgsOptions param;
   param.epsilon = 1e-10;
   param.epsilon_rel = 0.0;
   param.max_iterations = 500;
@@ -211,8 +212,11 @@ TEST_CASE("L-BFGS on Rosenbrock: LBFGSSolver wrapper and stepwise iterates agree
   const dpgen::LbfgsSummary summary = dpgen::lbfgs_minimize(rosenbrock, x, param);
   CHECK(summary.iterations > 10);
   CHECK((x - VectorXd::Ones(10)).norm() < 1e-8);
-  CHECK(summary.grad_norm <= 1e-10);
-  CHECK(summary.loss < 1e-16);
+  CHECK(summary.final_grad_norm <= 1e-10);
+  CHECK(summary.final_loss < 1e-16);
+  CHECK(summary.termination == dpgen::Termination::gradient_tolerance);
+  CHECK(summary.converged());
+  CHECK(summary.message.rfind("lbfgs: gradient_tolerance after ", 0) == 0);
 
   dpgen::Lbfgs stepwise(param);
   const VectorXd y = run(stepwise, rosenbrock, rosenbrock_start(10), summary.iterations);
@@ -220,7 +224,7 @@ TEST_CASE("L-BFGS on Rosenbrock: LBFGSSolver wrapper and stepwise iterates agree
 }
 
 TEST_CASE("optimizer errors") {
-  CHECK_THROWS_WITH_AS(dpgen::GradientDescent(0.0), "gd: learning rate must be positive (got 0)",
+  CHECK_THROWS_WITH_AS(dpgen::GradientDescent({0.0}), "gd: learning rate must be positive (got 0)",
                        std::invalid_argument);
   dpgen::AdamOptions bad;
   bad.beta1 = 1.0;
@@ -242,6 +246,107 @@ TEST_CASE("optimizer errors") {
   CHECK_THROWS_WITH_AS(dpgen::lbfgs_minimize(wrong_sign, y),
                        "lbfgs: the line search routine reached the maximum number of iterations",
                        dpgen::OptimizationError);
+  dpgen::LbfgsOptions quiet;
+  quiet.throw_on_failure = false;
+  y = VectorXd::Ones(3);
+  const dpgen::LbfgsSummary failed = dpgen::lbfgs_minimize(wrong_sign, y, quiet);
+  CHECK(failed.termination == dpgen::Termination::line_search_failed);
+  CHECK(failed.failed());
+}
+
+TEST_CASE("lbfgs_minimize: termination reasons (limit, gradient, loss decrease, NaN)") {
+  dpgen::LbfgsOptions options;
+  options.epsilon = 1e-10;
+  options.epsilon_rel = 0.0;
+  options.max_iterations = 5;
+  VectorXd x = rosenbrock_start(6);
+  const dpgen::LbfgsSummary limit = dpgen::lbfgs_minimize(rosenbrock, x, options);
+  CHECK(limit.termination == dpgen::Termination::max_iterations);
+  CHECK(limit.iterations == 5);
+  CHECK_FALSE(limit.converged());
+  CHECK(limit.message.rfind("lbfgs: max_iterations after 5 iterations", 0) == 0);
+  VectorXd g;
+  CHECK(limit.initial_loss == rosenbrock(rosenbrock_start(6), g));
+
+  // Started at the minimizer: converged without a line search.
+  VectorXd at = VectorXd::Ones(6);
+  const dpgen::LbfgsSummary none = dpgen::lbfgs_minimize(rosenbrock, at, options);
+  CHECK(none.termination == dpgen::Termination::gradient_tolerance);
+  CHECK(none.iterations == 0);
+
+  // The relative decrease over `past` iterations below delta.
+  dpgen::LbfgsOptions stall = options;
+  stall.epsilon = 0.0;
+  stall.max_iterations = 0; // no limit
+  stall.past = 1;
+  stall.delta = 1e-3;
+  const dpgen::LossGradient bowl = [](const VectorXd& v, VectorXd& grad) {
+    const VectorXd w = VectorXd::LinSpaced(v.size(), 1.0, double(v.size()));
+    grad = w.cwiseProduct(v - VectorXd::Ones(v.size()));
+    return 1.0 + 0.5 * w.dot((v - VectorXd::Ones(v.size())).cwiseAbs2());
+  };
+  VectorXd y = VectorXd::Zero(6);
+  const dpgen::LbfgsSummary decrease = dpgen::lbfgs_minimize(bowl, y, stall);
+  CHECK(decrease.termination == dpgen::Termination::loss_decrease);
+  CHECK(decrease.converged());
+
+  // NaN at the start: loss_not_finite, thrown with the summary or returned.
+  const dpgen::LossGradient nan_loss = [](const VectorXd& v, VectorXd& grad) {
+    grad = v;
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  VectorXd z = VectorXd::Ones(3);
+  try {
+    dpgen::lbfgs_minimize(nan_loss, z);
+    FAIL("expected an OptimizationError");
+  } catch (const dpgen::OptimizationError& e) {
+    REQUIRE(e.has_summary());
+    CHECK(e.summary().termination == dpgen::Termination::loss_not_finite);
+    CHECK(std::string(e.what()) == "lbfgs: loss is NaN at the initial point");
+  }
+  dpgen::LbfgsOptions quiet;
+  quiet.throw_on_failure = false;
+  const dpgen::LbfgsSummary nan = dpgen::lbfgs_minimize(nan_loss, z, quiet);
+  CHECK(nan.termination == dpgen::Termination::loss_not_finite);
+  CHECK(nan.message == "lbfgs: loss is NaN at the initial point");
+  CHECK(std::isnan(nan.final_loss));
+  // A NaN gradient at a later evaluation.
+  int calls = 0;
+  const dpgen::LossGradient nan_gradient = [&](const VectorXd& v, VectorXd& grad) {
+    const double loss = rosenbrock(v, grad);
+    if (++calls == 3)
+      grad[2] = std::numeric_limits<double>::quiet_NaN();
+    return loss;
+  };
+  VectorXd w = rosenbrock_start(6);
+  const dpgen::LbfgsSummary bad = dpgen::lbfgs_minimize(nan_gradient, w, quiet);
+  CHECK(bad.termination == dpgen::Termination::gradient_not_finite);
+  CHECK(bad.message == "lbfgs: gradient is NaN (index 2) at evaluation 3");
+
+  // Errors of f itself pass through unchanged (not as a line-search failure).
+  int evaluations = 0;
+  const dpgen::LossGradient throwing = [&](const VectorXd& v, VectorXd& grad) {
+    if (++evaluations == 2)
+      throw std::domain_error("f failed");
+    return rosenbrock(v, grad);
+  };
+  VectorXd t = rosenbrock_start(6);
+  CHECK_THROWS_WITH_AS(dpgen::lbfgs_minimize(throwing, t, quiet), "f failed", std::domain_error);
+}
+
+TEST_CASE("optimizers take options structs") {
+  dpgen::GradientDescentOptions gd_options;
+  gd_options.learning_rate = 0.25;
+  dpgen::GradientDescent gd(gd_options);
+  VectorXd x = VectorXd::Ones(2), grad = VectorXd::Constant(2, 2.0);
+  double loss = 0.0;
+  const dpgen::LossGradient f = [](const VectorXd& v, VectorXd& g) {
+    g = v;
+    return 0.5 * v.squaredNorm();
+  };
+  gd.step(x, loss, grad, f);
+  CHECK(x == VectorXd::Constant(2, 0.5)); // 1 - 0.25 * 2
+  CHECK(loss == 0.25);
 }
 
 TEST_CASE("HIG with kappa = -1 is Gauss-Newton: one unit step solves linear least squares") {
@@ -252,7 +357,7 @@ TEST_CASE("HIG with kappa = -1 is Gauss-Newton: one unit step solves linear leas
   const VectorXd x_star = p.minimizer();
   CHECK(s.iterations == 1);
   CHECK(s.rank == 4);
-  CHECK(s.termination == dpgen::HigTermination::max_iterations);
+  CHECK(s.termination == dpgen::Termination::max_iterations);
   // x1 = x0 - J^+ (A x0 - b) = A^+ b: cond(A) = 30, so ~30 eps relative error.
   CHECK((x - x_star).norm() <= 1e-13 * x_star.norm());
   CHECK(s.final_loss < s.initial_loss);
@@ -269,7 +374,7 @@ TEST_CASE("HIG with kappa = +1 is a gradient-descent step with the same learning
   const dpgen::HigUpdate u = dpgen::hig_update(jac, r, hig_options(0.05, 1.0, 0.0, 1));
 
   const dpgen::LossGradient f = [&](const VectorXd& x, VectorXd& grad) { return p.loss(x, grad); };
-  dpgen::GradientDescent gd(0.05);
+  dpgen::GradientDescent gd({0.05});
   VectorXd x = x0, grad;
   double loss = f(x, grad);
   gd.step(x, loss, grad, f);
@@ -341,7 +446,7 @@ TEST_CASE("HIG beats GD on an ill-conditioned least-squares problem in the same 
   const double optimum = p.loss(p.minimizer(), grad);
 
   // GD at its best fixed rate 1 / sigma_max^2: direction i contracts by 1 - sigma_i^2 per step.
-  dpgen::GradientDescent gd(1.0 / (sigma[0] * sigma[0]));
+  dpgen::GradientDescent gd({1.0 / (sigma[0] * sigma[0])});
   const dpgen::LossGradient f = [&](const VectorXd& x, VectorXd& g) { return p.loss(x, g); };
   const double gd_loss = p.loss(run(gd, f, x0, iterations), grad);
 
@@ -350,7 +455,7 @@ TEST_CASE("HIG beats GD on an ill-conditioned least-squares problem in the same 
   const dpgen::HigSummary s =
       dpgen::hig_minimize(p, x, hig_options(1.0 / std::sqrt(sigma[0]), -0.5, 1e-6, iterations));
   CHECK(s.iterations == iterations);
-  CHECK(s.termination == dpgen::HigTermination::max_iterations);
+  CHECK(s.termination == dpgen::Termination::max_iterations);
   CHECK(s.final_loss == doctest::Approx(p.loss(x, grad)).epsilon(1e-14));
   // Excess losses over the optimum: HIG's slowest factor (1 - 0.0316)^(2*50) ~ 0.04 against
   // GD's (1 - 1e-6)^(2*50) ~ 1 on the smallest direction.
@@ -375,7 +480,7 @@ TEST_CASE("HIG on a nonlinear residual, with the Jacobian assembled from tangent
   o.loss_tolerance = 1e-24;
   VectorXd x = (VectorXd(2) << -1.2, 1.0).finished();
   const dpgen::HigSummary gn = dpgen::hig_minimize(f, x, o);
-  CHECK(gn.termination == dpgen::HigTermination::loss_tolerance);
+  CHECK(gn.termination == dpgen::Termination::loss_tolerance);
   CHECK(gn.iterations <= 5); // Gauss-Newton on a zero-residual problem: quadratic convergence
   CHECK((x - VectorXd::Ones(2)).norm() < 1e-10);
   CHECK(gn.message.rfind("hig: converged after ", 0) == 0);
@@ -398,7 +503,7 @@ TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad optio
   };
   VectorXd x = VectorXd::Ones(3);
   const dpgen::HigSummary s = dpgen::hig_minimize(flat, x);
-  CHECK(s.termination == dpgen::HigTermination::step_tolerance);
+  CHECK(s.termination == dpgen::Termination::step_tolerance);
   CHECK(s.iterations == 1);
   CHECK(s.rank == 0);
   CHECK(x == VectorXd::Ones(3));
@@ -412,7 +517,7 @@ TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad optio
   loose.loss_tolerance = 10.0;
   const dpgen::HigSummary none = dpgen::hig_minimize(p, at, loose);
   CHECK(none.iterations == 0);
-  CHECK(none.termination == dpgen::HigTermination::loss_tolerance);
+  CHECK(none.termination == dpgen::Termination::loss_tolerance);
 
   // The residual turns NaN at the second iterate; the Jacobian Inf at the first.
   int calls = 0;
@@ -426,6 +531,42 @@ TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad optio
   VectorXd y = VectorXd::Ones(2);
   CHECK_THROWS_WITH_AS(dpgen::hig_minimize(nan_later, y, hig_options(0.5, -0.5, 1e-6, 10)),
                        "hig: residual is NaN at index 1 in iteration 2", dpgen::OptimizationError);
+  // The same stop reported in the summary instead (throw_on_failure off).
+  calls = 0;
+  y = VectorXd::Ones(2);
+  dpgen::HigOptions quiet = hig_options(0.5, -0.5, 1e-6, 10);
+  quiet.throw_on_failure = false;
+  const dpgen::HigSummary nan = dpgen::hig_minimize(nan_later, y, quiet);
+  CHECK(nan.termination == dpgen::Termination::loss_not_finite);
+  CHECK(nan.failed());
+  CHECK(nan.iterations == 2);
+  CHECK(nan.message == "hig: residual is NaN at index 1 in iteration 2");
+  // and in the exception's summary
+  calls = 0;
+  y = VectorXd::Ones(2);
+  try {
+    dpgen::hig_minimize(nan_later, y, hig_options(0.5, -0.5, 1e-6, 10));
+    FAIL("expected an OptimizationError");
+  } catch (const dpgen::OptimizationError& e) {
+    REQUIRE(e.has_summary());
+    CHECK(e.summary().termination == dpgen::Termination::loss_not_finite);
+    CHECK(e.summary().iterations == 2);
+  }
+  // max_iterations and the time limit
+  y = VectorXd::Ones(2);
+  const dpgen::ResidualJacobian identity = [](const VectorXd& v, Eigen::MatrixXd& jac) {
+    jac = Eigen::MatrixXd::Identity(2, 2);
+    return v;
+  };
+  const dpgen::HigSummary limit = dpgen::hig_minimize(identity, y, hig_options(0.5, -0.5, 1e-6, 3));
+  CHECK(limit.termination == dpgen::Termination::max_iterations);
+  CHECK(limit.iterations == 3);
+  dpgen::HigOptions timed = hig_options(0.01, -0.5, 1e-6, 1000000000);
+  timed.time_limit = 0.0;
+  y = VectorXd::Ones(2);
+  const dpgen::HigSummary out_of_time = dpgen::hig_minimize(identity, y, timed);
+  CHECK(out_of_time.termination == dpgen::Termination::time_limit);
+  CHECK(out_of_time.iterations == 1);
   const dpgen::ResidualJacobian inf_jac = [](const VectorXd& z, Eigen::MatrixXd& jac) {
     jac = Eigen::MatrixXd::Identity(2, 2);
     jac(1, 0) = std::numeric_limits<double>::infinity();
@@ -434,6 +575,11 @@ TEST_CASE("HIG stops: zero update, loss met at the start, NaN and Inf, bad optio
   VectorXd z = VectorXd::Ones(2);
   CHECK_THROWS_WITH_AS(dpgen::hig_minimize(inf_jac, z),
                        "hig: Jacobian is Inf at (1, 0) in iteration 0", dpgen::OptimizationError);
+  z = VectorXd::Ones(2);
+  dpgen::HigOptions quiet_inf;
+  quiet_inf.throw_on_failure = false;
+  CHECK(dpgen::hig_minimize(inf_jac, z, quiet_inf).termination ==
+        dpgen::Termination::gradient_not_finite);
   CHECK_THROWS_WITH_AS(
       dpgen::hig_update(Eigen::MatrixXd::Identity(2, 2), VectorXd::Constant(2, std::nan(""))),
       "hig: residual is NaN at index 0", dpgen::OptimizationError);

@@ -10,7 +10,9 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -60,7 +62,7 @@ TEST_CASE("with an exact inverse and lr 1, one PG step solves a linear problem; 
   o.max_iterations = 5;
   o.loss_tolerance = 1e-24;
   const dpgen::PgSummary s = dpgen::pg_minimize(p, x, o);
-  CHECK(s.termination == dpgen::PgTermination::loss_tolerance);
+  CHECK(s.termination == dpgen::Termination::loss_tolerance);
   CHECK(s.iterations == 1);
   CHECK((a * x - target).norm() < 1e-12);
   CHECK(s.initial_loss > 0.1);
@@ -69,9 +71,61 @@ TEST_CASE("with an exact inverse and lr 1, one PG step solves a linear problem; 
   o.learning_rate = 0.5;
   o.loss_tolerance = -1.0;
   const dpgen::PgSummary half = dpgen::pg_minimize(p, x, o);
-  CHECK(half.termination == dpgen::PgTermination::max_iterations);
+  CHECK(half.termination == dpgen::Termination::max_iterations);
   CHECK(half.iterations == 5);
   CHECK(half.final_loss == doctest::Approx(half.initial_loss / std::pow(4.0, 5)).epsilon(1e-10));
+  CHECK(half.message.rfind("pg: max_iterations after 5 updates", 0) == 0);
+}
+
+TEST_CASE("pg_minimize: NaN loss and non-finite inverse are termination reasons") {
+  const VectorXd target = VectorXd::Ones(3);
+  dpgen::PhysicalGradientProblem p;
+  int calls = 0;
+  p.forward = [&](const VectorXd& x) -> VectorXd { return x; };
+  p.inverse = [](const VectorXd& y, const VectorXd&) -> VectorXd { return y; };
+  const auto l2 = dpgen::l2_loss_newton(target);
+  p.loss = [&](const VectorXd& y, VectorXd& newton) {
+    const double loss = l2(y, newton);
+    return ++calls == 3 ? std::numeric_limits<double>::quiet_NaN() : loss;
+  };
+  dpgen::PgOptions o;
+  o.learning_rate = 0.5;
+  o.max_iterations = 10;
+  VectorXd x = VectorXd::Zero(3);
+  try {
+    dpgen::pg_minimize(p, x, o);
+    FAIL("expected an OptimizationError");
+  } catch (const dpgen::OptimizationError& e) {
+    REQUIRE(e.has_summary());
+    CHECK(e.summary().termination == dpgen::Termination::loss_not_finite);
+    CHECK(e.summary().iterations == 2);
+    CHECK(std::string(e.what()) == "pg: loss is nan at the current x (after 2 updates)");
+  }
+  calls = 0;
+  x = VectorXd::Zero(3);
+  o.throw_on_failure = false;
+  const dpgen::PgSummary nan = dpgen::pg_minimize(p, x, o);
+  CHECK(nan.termination == dpgen::Termination::loss_not_finite);
+  CHECK(nan.failed());
+  CHECK(nan.iterations == 2);
+  CHECK(x == VectorXd::Constant(3, 0.75)); // the last finite iterate: 0 -> 0.5 -> 0.75
+
+  p.loss = l2;
+  p.inverse = [](const VectorXd& y, const VectorXd&) -> VectorXd {
+    return VectorXd::Constant(y.size(), std::numeric_limits<double>::infinity());
+  };
+  x = VectorXd::Zero(3);
+  const dpgen::PgSummary inf = dpgen::pg_minimize(p, x, o);
+  CHECK(inf.termination == dpgen::Termination::gradient_not_finite);
+  CHECK(inf.message == "pg: inverse simulator's result contains inf at index 0 (after 0 updates)");
+
+  // The time limit (0: stops after the first evaluation, before any update).
+  p.inverse = [](const VectorXd& y, const VectorXd&) -> VectorXd { return y; };
+  o.time_limit = 0.0;
+  x = VectorXd::Zero(3);
+  const dpgen::PgSummary timed = dpgen::pg_minimize(p, x, o);
+  CHECK(timed.termination == dpgen::Termination::time_limit);
+  CHECK(timed.iterations == 0);
 }
 
 TEST_CASE("regularized inverse: the dense Tikhonov solution; lambda -> 0 inverts exactly") {

@@ -42,6 +42,15 @@ inline const char* to_string(CgTermination termination) {
   return "unknown";
 }
 
+/// The work vectors of conjugate_gradient: residual r, preconditioned residual z, search
+/// direction p and q = A p. Pass one through CgOptions::workspace to reuse them across solves
+/// (a time loop's pressure solves, an implicit backward pass per training iteration): they are
+/// resized on first use and keep their storage afterwards. Their contents between solves are
+/// meaningless.
+struct CgWorkspace {
+  Eigen::VectorXd r, z, p, q;
+};
+
 /// Settings of one conjugate-gradient solve. The defaults solve to 1e-10 relative residual and
 /// throw when that is not reached.
 struct CgOptions {
@@ -52,9 +61,6 @@ struct CgOptions {
   double absolute_tolerance = 0.0;
   /// Largest number of operator applications in the iteration (must be >= 0).
   int max_iterations = 1000;
-  /// When true, the `x` passed to conjugate_gradient is the initial guess; otherwise the
-  /// iteration starts from zero and the incoming `x` is ignored.
-  bool use_initial_guess = false;
   /// Jacobi preconditioner M = diag(jacobi_diagonal): the diagonal of A, every entry positive.
   /// Empty means no Jacobi preconditioner.
   Eigen::VectorXd jacobi_diagonal;
@@ -73,6 +79,11 @@ struct CgOptions {
   /// Prefix of every message, so an error says which solve failed ("cg", "implicit solve
   /// backward (A^T lambda = x_bar)").
   std::string name = "cg";
+  /// Scratch vectors for the iteration (see CgWorkspace), owned by the caller and reused by
+  /// every solve given these options, so repeated solves of one size allocate nothing. Null:
+  /// each solve allocates its own. Results are bit-identical either way. One workspace must
+  /// not serve two solves at the same time.
+  CgWorkspace* workspace = nullptr;
 };
 
 /// What a conjugate-gradient solve did. Residuals are Euclidean norms of r = b - A x as updated
@@ -150,27 +161,47 @@ inline void check_cg_options(const CgOptions& options, Eigen::Index n) {
 
 /// Solves A x = b for a symmetric positive definite A given as a callable `apply(x, y)`
 /// computing y = A x (see VectorOperator), with optional Jacobi or general preconditioning.
-/// `x` is the initial guess when options.use_initial_guess is set and holds the last iterate
-/// on return. Throws std::invalid_argument for bad input (sizes, NaN in b or x0, options) and
-/// SolveError when the solve fails and options.throw_on_failure is set.
+///
+/// Initial guess (the one way, for every solve of the runtime: conjugate_gradient,
+/// solve_forward, solve_backward, implicit_solve_backward, solve_forward_normal and
+/// petsc::LinearSolver::solve / solve_transpose / petsc::implicit_solve_backward): the optional
+/// last argument `initial_guess`. Null (the default): the iteration starts from zero and the
+/// incoming contents of `x` are ignored. Otherwise it starts from *initial_guess, which may be
+/// `&x` itself (a warm start from the previous solution kept in x). A guess that already
+/// solves the system to the tolerance returns after 0 iterations.
+///
+/// `x` holds the last iterate on return. Throws std::invalid_argument for bad input (sizes, NaN
+/// in b or the guess, options) and SolveError when the solve fails and options.throw_on_failure
+/// is set.
 template <typename Apply>
 CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                             const CgOptions& options = {}) {
+                             const CgOptions& options = {},
+                             const Eigen::VectorXd* initial_guess = nullptr) {
   using Eigen::VectorXd;
   const std::string& where = options.name;
   const Eigen::Index n = b.size();
   detail::check_cg_options(options, n);
   detail::require_finite(b, where, "right-hand side b");
-  if (options.use_initial_guess) {
-    detail::require_size(x.size(), n, where, "initial guess x");
-    detail::require_finite(x, where, "initial guess x");
+  if (initial_guess != nullptr) {
+    detail::require_size(initial_guess->size(), n, where, "initial guess");
+    detail::require_finite(*initial_guess, where, "initial guess");
+    if (initial_guess != &x)
+      x = *initial_guess;
   } else {
     x.setZero(n);
   }
   const bool project = options.remove_null_space_mean;
+  CgWorkspace local;
+  CgWorkspace& work = options.workspace != nullptr ? *options.workspace : local;
+  VectorXd& r = work.r; // r_k = b - A x_k
+  VectorXd& z = work.z; // z_k = M^-1 r_k
+  VectorXd& p = work.p; // p_k, the search direction
+  VectorXd& q = work.q; // q_k = A p_k
+  q.resize(n);
+  z.resize(n);
+  p.resize(n);
 
   // q = A v, checked: the operator must return a vector of the input's size.
-  VectorXd q(n);
   auto apply_checked = [&](const VectorXd& v) {
     q.setZero(n);
     apply(v, q);
@@ -179,7 +210,6 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
                                                   q.size(), " for an input of size ", n));
   };
   // z = M^-1 r (then P z when projecting, so the search directions stay mean-free).
-  VectorXd z(n);
   auto precondition = [&](const VectorXd& r) {
     if (options.jacobi_diagonal.size() > 0) {
       z = r.cwiseQuotient(options.jacobi_diagonal);
@@ -198,11 +228,11 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
 
   CgSummary summary;
   // r = P b: the solvable part of the right-hand side.
-  VectorXd r = b;
+  r = b;
   if (project)
     detail::remove_mean(r);
   summary.tolerance = std::max(options.relative_tolerance * r.norm(), options.absolute_tolerance);
-  if (options.use_initial_guess) {
+  if (initial_guess != nullptr) {
     if (project)
       detail::remove_mean(x); // x0 <- P x0
     apply_checked(x);
@@ -213,7 +243,7 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
   summary.initial_residual_norm = r.norm();
 
   precondition(r);
-  VectorXd p = z;           // p0 = z0 = M^-1 r0
+  p = z;                    // p0 = z0 = M^-1 r0
   double rz = r.dot(z);     // rho0 = r0^T z0
   double r_norm = r.norm(); // ||r_k||
   int k = 0;

@@ -70,9 +70,13 @@ public:
     cg_.remove_null_space_mean = true; // walls or periodic: p is defined up to a constant
     cg_.preconditioner = multigrid_.preconditioner();
     cg_.name = "flow2d pressure";
+    cg_.workspace = &cg_workspace_; // every pressure solve of the run reuses the same vectors
+    forward_cg_ = detail::named(cg_, " forward (A x = b)");
+    backward_cg_ = detail::named(cg_, " backward (A^T lambda = x_bar)");
   }
 
-  // The CG options hold a preconditioner that points into this object: no copies or moves.
+  // The CG options hold a preconditioner and a workspace that point into this object: no copies
+  // or moves.
   Flow2d(const Flow2d&) = delete;
   Flow2d& operator=(const Flow2d&) = delete;
 
@@ -154,9 +158,10 @@ public:
                                      next_adj.data() + cells() + u_faces(), nx_, ny_, h_, py());
     // A p = -div: lambda = A^+ P p_adj (A^T = A, same V-cycle), so div_adj = -lambda. A has no
     // parameters: nothing to accumulate for theta.
-    const LinearSolveResult backward = solve_backward(multigrid_.fine_operator(), p_adj, cg_);
-    backward_summary_ = backward.summary;
-    const VectorXd div_adj = -backward.solution;
+    detail::require_finite(p_adj, backward_cg_.name, "x_bar");
+    backward_summary_ =
+        conjugate_gradient(multigrid_.fine_operator(), p_adj, lambda_, backward_cg_);
+    const VectorXd div_adj = -lambda_;
     flow_divergence_adjoint(u1_.data(), u1_adj.data(), v1_.data(), v1_adj.data(), div_adj.data(),
                             nx_, ny_, h_, px(), py());
     // v1 = v_advected + dt b s1 + dt fy,  u1 = u_advected + dt fx
@@ -195,6 +200,8 @@ public:
   /// The last forward and backward pressure solves (iterations, residuals).
   const CgSummary& forward_pressure_summary() const { return forward_summary_; }
   const CgSummary& backward_pressure_summary() const { return backward_summary_; }
+  /// The CG work vectors every pressure solve reuses (for checks that steps allocate none).
+  const CgWorkspace& pressure_workspace() const { return cg_workspace_; }
   /// The divergence of the velocity of a state (for checks: zero after a step).
   Eigen::VectorXd divergence(const Eigen::VectorXd& state) const {
     Eigen::VectorXd div(cells());
@@ -257,12 +264,11 @@ private:
     flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h, px(), py());
     flow_buoyancy(va_.data(), s1_.data(), force_.data() + cells(), v1_.data(), nx_, ny_,
                   options_.dt * options_.buoyancy, options_.dt, py());
-    Eigen::VectorXd div(cells());
-    flow_divergence(u1_.data(), v1_.data(), div.data(), nx_, ny_, h_, px(), py());
-    // No warm start: a recomputed step must give the same bits (checkpointing relies on it).
-    const LinearSolveResult r = solve_forward(multigrid_.fine_operator(), -div, cg_);
-    p_ = r.solution;
-    forward_summary_ = r.summary;
+    rhs_.resize(cells());
+    flow_divergence(u1_.data(), v1_.data(), rhs_.data(), nx_, ny_, h_, px(), py());
+    rhs_ = -rhs_; // A p = -div
+    // No initial guess: a recomputed step must give the same bits (checkpointing relies on it).
+    forward_summary_ = conjugate_gradient(multigrid_.fine_operator(), rhs_, p_, forward_cg_);
   }
 
   int nx_, ny_;
@@ -270,9 +276,11 @@ private:
   Eigen::VectorXd inflow_;
   FlowOptions options_;
   Multigrid multigrid_;
-  CgOptions cg_;
+  CgWorkspace cg_workspace_; // r, z, p, A p of the pressure solves, reused step after step
+  CgOptions cg_, forward_cg_, backward_cg_; // the last two named like solve_forward/_backward
   Eigen::VectorXd force_; // [fx, fy] per cell
   Eigen::VectorXd s1_, ua_, u1_, va_, v1_, p_, s_sl_, s_rev_, force_adj_scratch_;
+  Eigen::VectorXd rhs_, lambda_; // -div of the forward solve; lambda = A^+ P p_adj
   CgSummary forward_summary_, backward_summary_;
 };
 

@@ -47,45 +47,37 @@ inline CgOptions named(const CgOptions& options, const char* suffix) {
   return named_options;
 }
 
-inline void use_guess(CgOptions& options, Eigen::VectorXd& x, const Eigen::VectorXd* guess) {
-  if (guess != nullptr) {
-    options.use_initial_guess = true;
-    x = *guess;
-  } else if (options.use_initial_guess) {
-    throw std::invalid_argument(
-        message(options.name, ": use_initial_guess is set but no initial guess was passed"));
-  }
-}
-
 } // namespace detail
 
 /// Forward solve of A x = b by conjugate_gradient; A must be SPD (or SPD on the complement of
 /// the constants with options.remove_null_space_mean). Errors are prefixed
-/// "<options.name> forward (A x = b)". `initial_guess`, when given, starts the iteration.
+/// "<options.name> forward (A x = b)". `initial_guess`, when given, starts the iteration
+/// (otherwise it starts from zero; see conjugate_gradient). A CgWorkspace in the options is
+/// reused.
 template <typename Apply>
 LinearSolveResult solve_forward(Apply&& apply, const Eigen::VectorXd& b,
                                 const CgOptions& options = {},
                                 const Eigen::VectorXd* initial_guess = nullptr) {
-  CgOptions forward = detail::named(options, " forward (A x = b)");
+  const CgOptions forward = detail::named(options, " forward (A x = b)");
   LinearSolveResult result;
-  detail::use_guess(forward, result.solution, initial_guess);
-  result.summary = conjugate_gradient(apply, b, result.solution, forward);
+  result.summary = conjugate_gradient(apply, b, result.solution, forward, initial_guess);
   return result;
 }
 
 /// Backward solve A^T lambda = x_bar, where `apply_transpose(v, y)` computes y = A^T v (pass
-/// the forward operator for a symmetric A). `warm_start`, e.g. the previous lambda in a time
-/// loop, starts the iteration. Errors are prefixed "<options.name> backward (A^T lambda =
-/// x_bar)", so a failure says it happened in the backward pass.
+/// the forward operator for a symmetric A). `initial_guess`, e.g. the previous lambda in a
+/// time loop, starts the iteration (otherwise it starts from zero). Errors are prefixed
+/// "<options.name> backward (A^T lambda = x_bar)", so a failure says it happened in the
+/// backward pass.
 template <typename ApplyTranspose>
 LinearSolveResult solve_backward(ApplyTranspose&& apply_transpose, const Eigen::VectorXd& x_bar,
                                  const CgOptions& options = {},
-                                 const Eigen::VectorXd* warm_start = nullptr) {
-  CgOptions backward = detail::named(options, " backward (A^T lambda = x_bar)");
+                                 const Eigen::VectorXd* initial_guess = nullptr) {
+  const CgOptions backward = detail::named(options, " backward (A^T lambda = x_bar)");
   detail::require_finite(x_bar, backward.name, "x_bar");
   LinearSolveResult result;
-  detail::use_guess(backward, result.solution, warm_start);
-  result.summary = conjugate_gradient(apply_transpose, x_bar, result.solution, backward);
+  result.summary =
+      conjugate_gradient(apply_transpose, x_bar, result.solution, backward, initial_guess);
   return result;
 }
 
@@ -117,17 +109,18 @@ void accumulate_implicit_gradients(OperatorAdjoint&& operator_adjoint, const Eig
 
 /// The whole backward pass of x = A(theta)^-1 b for a loss gradient x_bar at the forward
 /// solution x: solves A^T lambda = x_bar (solve_backward), then accumulate_implicit_gradients.
-/// Returns lambda and the backward solve's summary (lambda can warm-start the next call).
+/// Returns lambda and the backward solve's summary (lambda can be the next call's
+/// `initial_guess`).
 template <typename ApplyTranspose, typename OperatorAdjoint>
 LinearSolveResult implicit_solve_backward(ApplyTranspose&& apply_transpose,
                                           OperatorAdjoint&& operator_adjoint,
                                           const Eigen::VectorXd& x, const Eigen::VectorXd& x_bar,
                                           Eigen::VectorXd& b_bar, Eigen::VectorXd& theta_bar,
                                           const CgOptions& options = {},
-                                          const Eigen::VectorXd* warm_start = nullptr) {
+                                          const Eigen::VectorXd* initial_guess = nullptr) {
   detail::require_size(x_bar.size(), x.size(), options.name + " backward (A^T lambda = x_bar)",
                        "x_bar");
-  LinearSolveResult result = solve_backward(apply_transpose, x_bar, options, warm_start);
+  LinearSolveResult result = solve_backward(apply_transpose, x_bar, options, initial_guess);
   accumulate_implicit_gradients(operator_adjoint, x, result.solution, b_bar, theta_bar);
   return result;
 }
@@ -143,7 +136,7 @@ template <typename Apply, typename ApplyTranspose>
 LinearSolveResult solve_forward_normal(Apply&& apply, ApplyTranspose&& apply_transpose,
                                        const Eigen::VectorXd& b, const CgOptions& options = {},
                                        const Eigen::VectorXd* initial_guess = nullptr) {
-  CgOptions forward = detail::named(options, " forward (A^T A x = A^T b)");
+  const CgOptions forward = detail::named(options, " forward (A^T A x = A^T b)");
   detail::require_finite(b, forward.name, "right-hand side b");
   Eigen::VectorXd atb = Eigen::VectorXd::Zero(b.size());
   apply_transpose(b, atb); // A^T b
@@ -155,22 +148,19 @@ LinearSolveResult solve_forward_normal(Apply&& apply, ApplyTranspose&& apply_tra
     apply_transpose(av, y); // A^T (A v)
   };
   LinearSolveResult result;
-  detail::use_guess(forward, result.solution, initial_guess);
-  result.summary = conjugate_gradient(normal, atb, result.solution, forward);
+  result.summary = conjugate_gradient(normal, atb, result.solution, forward, initial_guess);
   return result;
 }
 
 /// Backward solve A^T lambda = x_bar for a non-symmetric A: lambda = A mu with A^T A mu =
-/// x_bar. Errors are prefixed "<options.name> backward (A^T A mu = x_bar)".
+/// x_bar, started from zero (a guess for lambda is no guess for mu: no initial_guess here).
+/// Errors are prefixed "<options.name> backward (A^T A mu = x_bar)".
 template <typename Apply, typename ApplyTranspose>
 LinearSolveResult solve_backward_normal(Apply&& apply, ApplyTranspose&& apply_transpose,
                                         const Eigen::VectorXd& x_bar,
                                         const CgOptions& options = {}) {
-  CgOptions backward = detail::named(options, " backward (A^T A mu = x_bar)");
+  const CgOptions backward = detail::named(options, " backward (A^T A mu = x_bar)");
   detail::require_finite(x_bar, backward.name, "x_bar");
-  if (backward.use_initial_guess)
-    throw std::invalid_argument(
-        detail::message(backward.name, ": warm starts are not supported on normal equations"));
   Eigen::VectorXd av(x_bar.size());
   auto normal = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
     av.setZero(v.size());

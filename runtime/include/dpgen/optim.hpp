@@ -4,14 +4,17 @@
 #pragma once
 
 #include "dpgen/error.hpp"
+#include "dpgen/termination.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SVD>
 #include <LBFGS.h>
 
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -19,12 +22,6 @@ namespace dpgen {
 
 /// A loss with its gradient: returns L(x) and overwrites `grad` with dL/dx (sized like x).
 using LossGradient = std::function<double(const Eigen::VectorXd& x, Eigen::VectorXd& grad)>;
-
-/// Thrown when an optimizer cannot make progress (e.g. a failed line search).
-class OptimizationError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
 
 /// One update rule. The training loop (train.hpp) calls step() once per iteration.
 class Optimizer {
@@ -41,14 +38,19 @@ public:
   virtual std::string name() const = 0;
 };
 
+/// Gradient descent's settings.
+struct GradientDescentOptions {
+  double learning_rate = 1e-2; ///< lr in x <- x - lr grad (must be positive)
+};
+
 /// Gradient descent with a fixed learning rate: x <- x - lr grad.
 class GradientDescent : public Optimizer {
 public:
-  /// `learning_rate` must be positive.
-  explicit GradientDescent(double learning_rate) : learning_rate_(learning_rate) {
-    if (!(learning_rate > 0.0) || !std::isfinite(learning_rate))
+  explicit GradientDescent(const GradientDescentOptions& options = {})
+      : learning_rate_(options.learning_rate) {
+    if (!(learning_rate_ > 0.0) || !std::isfinite(learning_rate_))
       throw std::invalid_argument(
-          detail::message("gd: learning rate must be positive (got ", learning_rate, ")"));
+          detail::message("gd: learning rate must be positive (got ", learning_rate_, ")"));
   }
   int step(Eigen::VectorXd& x, double& loss, Eigen::VectorXd& grad,
            const LossGradient& f) override {
@@ -165,30 +167,106 @@ private:
   int iteration_ = 0;
 };
 
-/// What lbfgs_minimize did.
-struct LbfgsSummary {
-  int iterations = 0;    ///< L-BFGS iterations, as LBFGSSolver counts them
-  double loss = 0.0;     ///< L at the returned x
-  double grad_norm = 0.; ///< |dL/dx| at the returned x
+/// Settings of lbfgs_minimize: LBFGS++'s parameters (epsilon, epsilon_rel, past, delta,
+/// max_iterations, the line search's) plus what to do on failure.
+struct LbfgsOptions : LBFGSpp::LBFGSParam<double> {
+  /// Throw OptimizationError (carrying the summary) when the run fails (NaN/Inf loss or
+  /// gradient, failed line search); otherwise only the summary reports it.
+  bool throw_on_failure = true;
 };
 
+/// What lbfgs_minimize did.
+struct LbfgsSummary : MinimizerSummary {
+  double final_grad_norm = 0.0; ///< |dL/dx| at the returned x
+  int evaluations = 0;          ///< evaluations of f in all
+};
+
+namespace detail {
+// Thrown from inside LBFGSSolver::minimize to stop it on a non-finite loss or gradient.
+struct LbfgsStop {
+  Termination termination;
+  std::string message;
+};
+} // namespace detail
+
 /// Minimises f from x (updated in place) with LBFGSpp::LBFGSSolver<double> and its
-/// convergence tests (param.epsilon, epsilon_rel, past/delta, max_iterations), plus one
-/// evaluation at the end for the reported gradient norm. LBFGS++'s errors are rethrown as
-/// OptimizationError prefixed "lbfgs: ".
+/// convergence tests (epsilon or epsilon_rel: gradient_tolerance; past/delta: loss_decrease;
+/// max_iterations), plus one evaluation at the end for the reported gradient norm. A NaN or Inf
+/// loss at the start, or a NaN or Inf gradient anywhere, stops the run (loss_not_finite,
+/// gradient_not_finite); LBFGS++'s line-search errors stop it as line_search_failed ("lbfgs: "
+/// and LBFGS++'s message). Failures throw OptimizationError carrying the summary unless
+/// options.throw_on_failure is off; errors of f propagate unchanged. `iterations` counts line
+/// searches (0 when x0 already meets the gradient tolerance).
 inline LbfgsSummary lbfgs_minimize(const LossGradient& f, Eigen::VectorXd& x,
-                                   const LBFGSpp::LBFGSParam<double>& param = {}) {
-  LBFGSpp::LBFGSSolver<double> solver(param);
+                                   const LbfgsOptions& options = {}) {
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start = clock::now();
+  LBFGSpp::LBFGSSolver<double> solver(options);
   Eigen::VectorXd grad(x.size());
-  auto objective = [&](const Eigen::VectorXd& v, Eigen::VectorXd& g) { return f(v, g); };
   LbfgsSummary summary;
+  std::exception_ptr error_of_f; // f's own errors pass through LBFGS++ unchanged
+  auto objective = [&](const Eigen::VectorXd& v, Eigen::VectorXd& g) {
+    double fx = 0.0;
+    try {
+      fx = f(v, g);
+    } catch (...) {
+      error_of_f = std::current_exception();
+      throw;
+    }
+    ++summary.evaluations;
+    summary.final_loss = fx; // x holds the last evaluated point, also when a line search fails
+    if (summary.evaluations == 1) {
+      summary.initial_loss = fx;
+      if (!std::isfinite(fx))
+        throw detail::LbfgsStop{Termination::loss_not_finite,
+                                detail::message("lbfgs: loss is ", std::isnan(fx) ? "NaN" : "Inf",
+                                                " at the initial point")};
+    }
+    const Eigen::Index bad = detail::first_non_finite(g);
+    if (bad >= 0)
+      throw detail::LbfgsStop{Termination::gradient_not_finite,
+                              detail::message("lbfgs: gradient is ",
+                                              std::isnan(g[bad]) ? "NaN" : "Inf", " (index ", bad,
+                                              ") at evaluation ", summary.evaluations)};
+    return fx;
+  };
+  bool stopped = false;
   try {
-    summary.iterations = solver.minimize(objective, x, summary.loss);
+    double fx = 0.0;
+    const int k = solver.minimize(objective, x, fx);
+    summary.iterations = summary.evaluations == 1 ? 0 : k;
+  } catch (const detail::LbfgsStop& stop) {
+    summary.termination = stop.termination;
+    summary.message = stop.message;
+    stopped = true;
   } catch (const std::exception& e) {
-    throw OptimizationError(detail::message("lbfgs: ", e.what()));
+    if (error_of_f)
+      std::rethrow_exception(error_of_f);
+    summary.termination = Termination::line_search_failed;
+    summary.message = detail::message("lbfgs: ", e.what());
+    stopped = true;
   }
-  summary.loss = f(x, grad);
-  summary.grad_norm = grad.norm();
+  if (stopped) {
+    summary.seconds = std::chrono::duration<double>(clock::now() - start).count();
+    if (options.throw_on_failure)
+      throw OptimizationError(summary);
+    return summary;
+  }
+  summary.final_loss = f(x, grad);
+  ++summary.evaluations;
+  summary.final_grad_norm = grad.norm();
+  if (summary.final_grad_norm <= options.epsilon ||
+      summary.final_grad_norm <= options.epsilon_rel * x.norm())
+    summary.termination = Termination::gradient_tolerance;
+  else if (options.max_iterations != 0 && summary.iterations >= options.max_iterations)
+    summary.termination = Termination::max_iterations;
+  else
+    summary.termination = Termination::loss_decrease;
+  summary.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  summary.message =
+      detail::message("lbfgs: ", to_string(summary.termination), " after ", summary.iterations,
+                      " iterations (", describe(summary.termination), "), loss ",
+                      summary.final_loss, ", gradient norm ", summary.final_grad_norm);
   return summary;
 }
 
@@ -215,6 +293,13 @@ struct HigOptions {
   /// hig_minimize stops when an update has norm at most this (a zero Jacobian or residual
   /// gives a zero update).
   double step_tolerance = 0.0;
+  /// hig_minimize stops when its wall time reaches this many seconds (checked after every
+  /// update).
+  double time_limit = std::numeric_limits<double>::infinity();
+  /// hig_minimize: throw OptimizationError (carrying the summary) when r or J is not finite;
+  /// otherwise only the summary reports it (termination loss_not_finite or
+  /// gradient_not_finite).
+  bool throw_on_failure = true;
 };
 
 /// One half-inverse-gradient update, from an SVD J = U Sigma V^T.
@@ -237,19 +322,32 @@ inline void check_hig_options(const HigOptions& o) {
         message("hig: max_iterations must be >= 0 (got ", o.max_iterations, ")"));
 }
 
-// Throws OptimizationError when r or J holds a NaN or Inf, naming which and where; `when` ends
-// the message (" in iteration 7", or empty).
-inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& jac,
-                               const std::string& when) {
+// Checks r and J for NaN or Inf: returns max_iterations (meaning "all finite") or the failure
+// (loss_not_finite for r, gradient_not_finite for J) with its message in `what`; `when` ends the
+// message (" in iteration 7", or empty).
+inline Termination check_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& jac,
+                                    const std::string& when, std::string& what) {
   const Eigen::Index i = first_non_finite(r);
-  if (i >= 0)
-    throw OptimizationError(
-        message("hig: residual is ", std::isnan(r[i]) ? "NaN" : "Inf", " at index ", i, when));
+  if (i >= 0) {
+    what = message("hig: residual is ", std::isnan(r[i]) ? "NaN" : "Inf", " at index ", i, when);
+    return Termination::loss_not_finite;
+  }
   const Eigen::Map<const Eigen::VectorXd> entries(jac.data(), jac.size());
   const Eigen::Index k = first_non_finite(entries);
-  if (k >= 0)
-    throw OptimizationError(message("hig: Jacobian is ", std::isnan(entries[k]) ? "NaN" : "Inf",
-                                    " at (", k % jac.rows(), ", ", k / jac.rows(), ")", when));
+  if (k >= 0) {
+    what = message("hig: Jacobian is ", std::isnan(entries[k]) ? "NaN" : "Inf", " at (",
+                   k % jac.rows(), ", ", k / jac.rows(), ")", when);
+    return Termination::gradient_not_finite;
+  }
+  return Termination::max_iterations;
+}
+
+// Throws OptimizationError when r or J holds a NaN or Inf, naming which and where.
+inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& jac,
+                               const std::string& when) {
+  std::string what;
+  if (check_finite_hig(r, jac, when, what) != Termination::max_iterations)
+    throw OptimizationError(what);
 }
 
 } // namespace detail
@@ -292,92 +390,94 @@ inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r
   return update;
 }
 
-/// Why hig_minimize stopped.
-enum class HigTermination {
-  max_iterations, ///< the iteration limit was reached
-  loss_tolerance, ///< L <= loss_tolerance
-  step_tolerance, ///< |dx| <= step_tolerance
-};
-
-/// The enumerator's name, for messages and logs.
-inline const char* to_string(HigTermination termination) {
-  switch (termination) {
-  case HigTermination::max_iterations:
-    return "max_iterations";
-  case HigTermination::loss_tolerance:
-    return "loss_tolerance";
-  case HigTermination::step_tolerance:
-    return "step_tolerance";
-  }
-  return "unknown";
-}
-
 /// What hig_minimize did.
-struct HigSummary {
-  int iterations = 0;        ///< updates performed
-  double initial_loss = 0.0; ///< 1/2 |r(x0)|^2
-  double final_loss = 0.0;   ///< 1/2 |r(x)|^2 at the returned x
-  Eigen::Index rank = 0;     ///< singular values kept in the last update
-  HigTermination termination = HigTermination::max_iterations;
-  std::string message; ///< one line saying why it stopped
+struct HigSummary : MinimizerSummary {
+  Eigen::Index rank = 0; ///< singular values kept in the last update
 };
 
 /// Minimises L = 1/2 |r|^2 from x (updated in place) with half-inverse-gradient updates
 /// x <- x + hig_update(J(x), r(x)).step, one evaluation of f per iteration, stopping on the
 /// loss tolerance (checked before every update, so a start that meets it takes none), the
-/// step tolerance, or max_iterations. Throws OptimizationError ("hig: residual is NaN at
-/// index 3 in iteration 7") as soon as r or J is not finite (x then holds the offending
-/// iterate), std::invalid_argument on bad options or when f returns the wrong sizes.
+/// step tolerance, the time limit, or max_iterations. As soon as r or J is not finite
+/// (termination loss_not_finite or gradient_not_finite; x then holds the offending iterate) it
+/// throws OptimizationError ("hig: residual is NaN at index 3 in iteration 7") carrying the
+/// summary, or returns it when options.throw_on_failure is off. Throws std::invalid_argument on
+/// bad options or when f returns the wrong sizes.
 inline HigSummary hig_minimize(const ResidualJacobian& f, Eigen::VectorXd& x,
                                const HigOptions& options = {}) {
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start = clock::now();
   detail::check_hig_options(options);
   detail::require_finite(x, "hig", "initial parameter vector");
   Eigen::VectorXd r;
   Eigen::MatrixXd jac;
-  // Evaluates r and J at x, checks their sizes and values, and returns L = 1/2 |r|^2.
+  HigSummary summary;
+  // Evaluates r and J at x, checks their sizes and values, and sets the loss L = 1/2 |r|^2;
+  // returns false (with the summary's termination and message set) when r or J is not finite.
   auto evaluate = [&](int iteration) {
     r = f(x, jac);
     if (jac.rows() != r.size() || jac.cols() != x.size())
       throw std::invalid_argument(detail::message("hig: Jacobian is ", jac.rows(), "x", jac.cols(),
                                                   ", expected ", r.size(), "x", x.size()));
-    detail::require_finite_hig(r, jac, detail::message(" in iteration ", iteration));
-    return 0.5 * r.squaredNorm();
+    summary.final_loss = 0.5 * r.squaredNorm();
+    const Termination t = detail::check_finite_hig(
+        r, jac, detail::message(" in iteration ", iteration), summary.message);
+    if (t == Termination::max_iterations)
+      return true;
+    summary.termination = t;
+    return false;
   };
-  HigSummary summary;
-  summary.initial_loss = summary.final_loss = evaluate(0);
-  for (;;) {
+  bool finite = evaluate(0);
+  summary.initial_loss = summary.final_loss;
+  while (finite) {
     if (summary.final_loss <= options.loss_tolerance) {
-      summary.termination = HigTermination::loss_tolerance;
+      summary.termination = Termination::loss_tolerance;
       break;
     }
     if (summary.iterations >= options.max_iterations) {
-      summary.termination = HigTermination::max_iterations;
+      summary.termination = Termination::max_iterations;
       break;
     }
     const HigUpdate update = hig_update(jac, r, options);
     x += update.step;
     summary.rank = update.rank;
     ++summary.iterations;
-    summary.final_loss = evaluate(summary.iterations);
+    finite = evaluate(summary.iterations);
+    if (!finite)
+      break;
     if (update.step.norm() <= options.step_tolerance) {
-      summary.termination = HigTermination::step_tolerance;
+      summary.termination = Termination::step_tolerance;
+      break;
+    }
+    if (std::chrono::duration<double>(clock::now() - start).count() >= options.time_limit) {
+      summary.termination = Termination::time_limit;
       break;
     }
   }
+  summary.seconds = std::chrono::duration<double>(clock::now() - start).count();
   switch (summary.termination) {
-  case HigTermination::max_iterations:
+  case Termination::max_iterations:
     summary.message = detail::message("hig: stopped after ", summary.iterations,
                                       " iterations (the limit), loss ", summary.final_loss);
     break;
-  case HigTermination::loss_tolerance:
+  case Termination::loss_tolerance:
     summary.message =
         detail::message("hig: converged after ", summary.iterations, " iterations, loss ",
                         summary.final_loss, " <= tolerance ", options.loss_tolerance);
     break;
-  case HigTermination::step_tolerance:
+  case Termination::step_tolerance:
     summary.message = detail::message("hig: stopped after ", summary.iterations,
                                       " iterations, update norm <= tolerance ",
                                       options.step_tolerance, ", loss ", summary.final_loss);
+    break;
+  case Termination::time_limit:
+    summary.message =
+        detail::message("hig: stopped after ", summary.iterations, " iterations (time limit ",
+                        options.time_limit, " s reached), loss ", summary.final_loss);
+    break;
+  default: // loss_not_finite, gradient_not_finite: the message is set
+    if (options.throw_on_failure)
+      throw OptimizationError(summary);
     break;
   }
   return summary;

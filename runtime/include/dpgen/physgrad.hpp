@@ -8,9 +8,11 @@
 
 #include "dpgen/cg.hpp"
 #include "dpgen/error.hpp"
+#include "dpgen/termination.hpp"
 
 #include <Eigen/Core>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -49,6 +51,13 @@ struct PgOptions {
   int max_iterations = 100;
   /// pg_minimize: stop when the loss is at most this.
   double loss_tolerance = -std::numeric_limits<double>::infinity();
+  /// pg_minimize: stop when the wall time reaches this many seconds (checked after every
+  /// update).
+  double time_limit = std::numeric_limits<double>::infinity();
+  /// pg_minimize: throw OptimizationError (carrying the summary) when the loss, P(x) or the
+  /// inverse simulator's result is not finite; otherwise only the summary reports it
+  /// (termination loss_not_finite or gradient_not_finite).
+  bool throw_on_failure = true;
 };
 
 /// What one PG update saw and did.
@@ -57,20 +66,8 @@ struct PgStep {
   double update_norm = 0.0; ///< |x' - x|
 };
 
-/// Why pg_minimize stopped.
-enum class PgTermination {
-  max_iterations, ///< the iteration limit was reached
-  loss_tolerance, ///< L <= loss_tolerance
-};
-
 /// What pg_minimize did.
-struct PgSummary {
-  int iterations = 0;
-  double initial_loss = 0.0;
-  double final_loss = 0.0; ///< L(P(x)) at the returned x
-  PgTermination termination = PgTermination::max_iterations;
-  std::string message;
-};
+struct PgSummary : MinimizerSummary {};
 
 namespace detail {
 
@@ -87,6 +84,43 @@ inline void check_pg(const PhysicalGradientProblem& p, const PgOptions& o) {
 
 } // namespace detail
 
+namespace detail {
+
+// The PG update of x into x_new; returns max_iterations ("all finite") or loss_not_finite (the
+// loss or P(x) is NaN or Inf) or gradient_not_finite (the inverse simulator's result is), with
+// the message in `what`. Sizes are checked by throwing std::invalid_argument.
+inline Termination pg_update(const PhysicalGradientProblem& problem, const Eigen::VectorXd& x,
+                             const PgOptions& options, PgStep& step, Eigen::VectorXd& x_new,
+                             std::string& what) {
+  const Eigen::VectorXd y = problem.forward(x);
+  Eigen::Index bad = first_non_finite(y);
+  if (bad >= 0) {
+    step.loss = std::numeric_limits<double>::quiet_NaN();
+    what = message("pg: P(x) contains ", format_number(y[bad]), " at index ", bad);
+    return Termination::loss_not_finite;
+  }
+  Eigen::VectorXd newton;
+  step.loss = problem.loss(y, newton);
+  if (!std::isfinite(step.loss)) {
+    what = message("pg: loss is ", step.loss, " at the current x");
+    return Termination::loss_not_finite;
+  }
+  require_size(newton.size(), y.size(), "pg", "Newton step in y");
+  const Eigen::VectorXd y_target = y - options.learning_rate * newton; // y' = y - lr H^-1 g
+  x_new = problem.inverse(y_target, x);                                // x' = P^-1(y')
+  require_size(x_new.size(), x.size(), "pg", "inverse simulator's result");
+  bad = first_non_finite(x_new);
+  if (bad >= 0) {
+    what = message("pg: inverse simulator's result contains ", format_number(x_new[bad]),
+                   " at index ", bad);
+    return Termination::gradient_not_finite;
+  }
+  step.update_norm = (x_new - x).norm();
+  return Termination::max_iterations;
+}
+
+} // namespace detail
+
 /// The PG target x' = P^-1(P(x) - lr (d2L/dy2)^-1 dL/dy; x) for the current x. Reports L(P(x))
 /// and |x' - x| in `step`. Throws std::invalid_argument on NaN/Inf or mismatched sizes.
 inline Eigen::VectorXd physical_update(const PhysicalGradientProblem& problem,
@@ -94,49 +128,64 @@ inline Eigen::VectorXd physical_update(const PhysicalGradientProblem& problem,
                                        PgStep* step = nullptr) {
   detail::check_pg(problem, options);
   detail::require_finite(x, "pg", "x");
-  const Eigen::VectorXd y = problem.forward(x);
-  detail::require_finite(y, "pg", "P(x)");
-  Eigen::VectorXd newton;
-  const double loss = problem.loss(y, newton);
-  if (!std::isfinite(loss))
-    throw std::invalid_argument(detail::message("pg: loss is ", loss, " at the current x"));
-  detail::require_size(newton.size(), y.size(), "pg", "Newton step in y");
-  const Eigen::VectorXd y_target = y - options.learning_rate * newton; // y' = y - lr H^-1 g
-  Eigen::VectorXd x_new = problem.inverse(y_target, x);                  // x' = P^-1(y')
-  detail::require_size(x_new.size(), x.size(), "pg", "inverse simulator's result");
-  detail::require_finite(x_new, "pg", "inverse simulator's result");
-  if (step) {
-    step->loss = loss;
-    step->update_norm = (x_new - x).norm();
-  }
+  PgStep local;
+  Eigen::VectorXd x_new;
+  std::string what;
+  if (detail::pg_update(problem, x, options, local, x_new, what) != Termination::max_iterations)
+    throw std::invalid_argument(what);
+  if (step)
+    *step = local;
   return x_new;
 }
 
-/// Minimises L(P(x)) over x (updated in place) with PG updates.
+/// Minimises L(P(x)) over x (updated in place) with PG updates, stopping on the loss tolerance
+/// (checked before every update), the time limit or max_iterations. When the loss, P(x) or the
+/// inverse simulator's result is not finite it stops (loss_not_finite / gradient_not_finite,
+/// x left at the last finite iterate) and throws OptimizationError carrying the summary, or
+/// only reports it when options.throw_on_failure is off.
 inline PgSummary pg_minimize(const PhysicalGradientProblem& problem, Eigen::VectorXd& x,
                              const PgOptions& options = {}) {
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start = clock::now();
   detail::check_pg(problem, options);
+  detail::require_finite(x, "pg", "x");
   PgSummary summary;
   PgStep step;
+  Eigen::VectorXd x_new;
+  std::string what;
   for (;;) {
-    const Eigen::VectorXd x_new = physical_update(problem, x, options, &step);
+    const Termination t = detail::pg_update(problem, x, options, step, x_new, what);
     if (summary.iterations == 0)
       summary.initial_loss = step.loss;
     summary.final_loss = step.loss;
+    if (t != Termination::max_iterations) {
+      summary.termination = t;
+      summary.message = detail::message(what, " (after ", summary.iterations, " updates)");
+      break;
+    }
     if (step.loss <= options.loss_tolerance) {
-      summary.termination = PgTermination::loss_tolerance;
+      summary.termination = Termination::loss_tolerance;
       break;
     }
     if (summary.iterations == options.max_iterations) {
-      summary.termination = PgTermination::max_iterations;
+      summary.termination = Termination::max_iterations;
+      break;
+    }
+    if (std::chrono::duration<double>(clock::now() - start).count() >= options.time_limit) {
+      summary.termination = Termination::time_limit;
       break;
     }
     x = x_new;
     ++summary.iterations;
   }
-  summary.message = detail::message(
-      "pg: ", summary.termination == PgTermination::loss_tolerance ? "loss_tolerance" : "max_iterations",
-      " after ", summary.iterations, " updates, loss ", summary.final_loss);
+  summary.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  if (summary.failed()) {
+    if (options.throw_on_failure)
+      throw OptimizationError(summary);
+    return summary;
+  }
+  summary.message = detail::message("pg: ", to_string(summary.termination), " after ",
+                                    summary.iterations, " updates, loss ", summary.final_loss);
   return summary;
 }
 

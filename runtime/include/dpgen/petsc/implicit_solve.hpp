@@ -57,14 +57,16 @@ void accumulate_implicit_gradients(const mpi::Decomposition& dec,
 }
 
 /// The whole backward pass of x = A(theta)^-1 b at the forward solution x: solves A^T lambda =
-/// x_bar (warm-started from `lambda` when use_initial_guess), then accumulate_implicit_gradients.
-/// Returns the backward solve's summary; `lambda` holds its solution.
+/// x_bar (started from `initial_guess` when given, e.g. `&lambda` for the previous lambda;
+/// from zero otherwise), then accumulate_implicit_gradients. Returns the backward solve's
+/// summary; `lambda` holds its solution.
 template <typename OperatorAdjoint>
 SolveSummary implicit_solve_backward(LinearSolver& solver, OperatorAdjoint&& operator_adjoint,
                                      const Eigen::VectorXd& x, const Eigen::VectorXd& x_bar,
                                      Eigen::VectorXd& lambda, Eigen::VectorXd& b_bar,
-                                     Eigen::VectorXd& theta_bar, bool use_initial_guess = false) {
-  SolveSummary s = solver.solve_transpose(x_bar, lambda, use_initial_guess);
+                                     Eigen::VectorXd& theta_bar,
+                                     const Eigen::VectorXd* initial_guess = nullptr) {
+  SolveSummary s = solver.solve_transpose(x_bar, lambda, initial_guess);
   accumulate_implicit_gradients(solver.decomposition(),
                                 std::forward<OperatorAdjoint>(operator_adjoint), x, lambda, b_bar,
                                 theta_bar);

@@ -314,18 +314,21 @@ public:
     detail::check(KSPSetOperators(ksp_, a_, p_ ? p_ : a_), where(), "KSPSetOperators");
   }
 
-  /// Solves A x = b. `x` is the initial guess when use_initial_guess is set (otherwise zero) and
-  /// the solution on return (mean-free with a constant null space). Throws SolveError on every
-  /// rank when the solve does not converge (and options.throw_on_failure).
-  SolveSummary solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, bool use_initial_guess = false) {
-    return run(b, x, use_initial_guess, false, false);
+  /// Solves A x = b; `x` is the solution on return (mean-free with a constant null space).
+  /// The initial guess works as in dpgen::conjugate_gradient: the optional `initial_guess`
+  /// (this rank's block; it may be `&x`), or zero when null, the incoming `x` being ignored
+  /// then. Throws SolveError on every rank when the solve does not converge (and
+  /// options.throw_on_failure).
+  SolveSummary solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                     const Eigen::VectorXd* initial_guess = nullptr) {
+    return run(b, x, initial_guess, false, false);
   }
 
   /// Solves A^T lambda = x_bar: the same solve for a symmetric operator, KSPSolveTranspose
-  /// otherwise. `lambda` as `x` in solve().
+  /// otherwise. `lambda` and `initial_guess` as `x` and `initial_guess` in solve().
   SolveSummary solve_transpose(const Eigen::VectorXd& x_bar, Eigen::VectorXd& lambda,
-                               bool use_initial_guess = false) {
-    return run(x_bar, lambda, use_initial_guess, true, !options_.symmetric);
+                               const Eigen::VectorXd* initial_guess = nullptr) {
+    return run(x_bar, lambda, initial_guess, true, !options_.symmetric);
   }
 
   /// y = A x and w = A^T v on interior vectors (through the MatShell; for tests and checks).
@@ -422,8 +425,8 @@ private:
   }
 
   // The solve A x = rhs (backward: A^T lambda = x_bar, by KSPSolveTranspose when `transpose`).
-  SolveSummary run(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, bool use_initial_guess,
-                   bool backward, bool transpose) {
+  SolveSummary run(const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
+                   const Eigen::VectorXd* initial_guess, bool backward, bool transpose) {
     const std::string what =
         options_.name + (backward ? " backward (A^T lambda = x_bar)" : " forward (A x = b)");
     dec_.require_size(rhs.size(), dec_.interior_size(), what + ": right-hand side", "block");
@@ -431,9 +434,12 @@ private:
     set(b_, rhs);
     if (null_space_) // only the part of b orthogonal to the constants is solvable
       detail::check(MatNullSpaceRemove(null_space_, b_), where(), "MatNullSpaceRemove");
+    const bool use_initial_guess = initial_guess != nullptr;
     if (use_initial_guess) {
-      dec_.require_size(x.size(), dec_.interior_size(), what + ": initial guess", "block");
-      set(x_, x);
+      dec_.require_size(initial_guess->size(), dec_.interior_size(), what + ": initial guess",
+                        "block");
+      dpgen::detail::require_finite(*initial_guess, dec_.where() + ": " + what, "initial guess");
+      set(x_, *initial_guess);
     } else {
       detail::check(VecSet(x_, 0.0), where(), "VecSet");
     }
