@@ -274,6 +274,7 @@ TEST_CASE("plan: the cell loop of a three-point stencil, its interior and the pa
   // Iterations 1 .. n-2 read cells 0 .. n-1; every term is present (branch
   // free) for cells 2 .. n-3, i.e. the interior [2, n - 2).
   REQUIRE(cl.interior.dims.size() == 1);
+  CHECK(cl.interior.dims.begin()->first == "i"); // Box::dims: counters by plain name
   const Interval& in = cl.interior.dims.begin()->second;
   std::vector<std::string> lo, hi;
   for (const auto& p : in.lo)
@@ -304,4 +305,27 @@ DPGEN_KERNEL void lap(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_
   CHECK(loops.inputs[1].gathers.empty());  // b is done inside a's step
   CHECK_FALSE(step.loops[0].unit_1d);
   CHECK(step.loops[0].radix.size() == 2); // counters by coefficient: i (1), then j (nx)
+}
+
+TEST_CASE("affine: a counter and a size are different symbols; counters order first") {
+  const Poly i = Poly::counter("i"), j = Poly::counter("j");
+  const Poly n = Poly::symbol("n"), big = Poly::symbol("N"), x = Poly::symbol("_x");
+  CHECK_FALSE(Poly::counter("n") == n);
+  CHECK((Poly::counter("n") - n).degree() == 1);
+  const Poly p = j * n + i + big + x - Poly::constant(1);
+  CHECK(p.mentions_counter("i"));
+  CHECK_FALSE(p.mentions_counter("n"));
+  CHECK(p.mentions(Sym::size("n")));
+  CHECK(p.mentions_any_counter());
+  CHECK_FALSE((big + x).mentions_any_counter());
+  CHECK(p.coefficient(Sym::counter("j")) == n);
+  CHECK(p.coefficient(Sym::size("n")) == j);
+  CHECK(p.without(Sym::counter("j")) == i + big + x - Poly::constant(1));
+  // Terms print counters before sizes (upper case and '_' included), the
+  // constant last.
+  CHECK(p.str() == "j * n + i + N + _x - 1");
+  // Only a size named c_... is a cell coordinate (std::ptrdiff_t) in code().
+  CHECK((n * Poly::symbol("c_j") + i).code() == "c_j * n + i");
+  CHECK((n * Poly::counter("c_j")).code() == "static_cast<std::ptrdiff_t>(c_j) * n");
+  CHECK(Poly::term(3, {Sym::size("n"), Sym::counter("i")}) == Poly::constant(3) * i * n);
 }

@@ -18,9 +18,19 @@ Poly Poly::constant(long long c) {
   return p;
 }
 
-Poly Poly::symbol(const std::string& s) {
+Poly Poly::of(const Sym& s) {
   Poly p;
   p.terms_[{s}] = 1;
+  return p;
+}
+
+Poly Poly::term(long long c, const Monomial& m) {
+  Poly p;
+  if (c != 0) {
+    Monomial sorted = m;
+    std::sort(sorted.begin(), sorted.end());
+    p.terms_[sorted] = c;
+  }
   return p;
 }
 
@@ -59,22 +69,22 @@ long long Poly::constant_term() const {
   return it == terms_.end() ? 0 : it->second;
 }
 
-bool Poly::mentions_any(char c) const {
+bool Poly::mentions_any_counter() const {
   for (const auto& [m, k] : terms_)
     for (const auto& s : m)
-      if (!s.empty() && s[0] == c)
+      if (s.is_counter())
         return true;
   return false;
 }
 
-bool Poly::mentions(const std::string& s) const {
+bool Poly::mentions(const Sym& s) const {
   for (const auto& [m, c] : terms_)
     if (std::find(m.begin(), m.end(), s) != m.end())
       return true;
   return false;
 }
 
-Poly Poly::coefficient(const std::string& var) const {
+Poly Poly::coefficient(const Sym& var) const {
   Poly r;
   for (const auto& [m, c] : terms_) {
     auto it = std::find(m.begin(), m.end(), var);
@@ -87,7 +97,7 @@ Poly Poly::coefficient(const std::string& var) const {
   return r;
 }
 
-Poly Poly::without(const std::string& var) const {
+Poly Poly::without(const Sym& var) const {
   Poly r;
   for (const auto& [m, c] : terms_)
     if (std::find(m.begin(), m.end(), var) == m.end())
@@ -115,7 +125,7 @@ std::string Poly::str() const {
     long long mag = c < 0 ? -c : c;
     std::string body;
     for (const auto& s : m)
-      body += (body.empty() ? "" : " * ") + (s[0] == '@' ? s.substr(1) : s);
+      body += (body.empty() ? "" : " * ") + s.name;
     std::string term = body.empty() ? std::to_string(mag)
                        : mag == 1   ? body
                                     : fmt::format("{} * {}", mag, body);
@@ -130,7 +140,7 @@ std::string Poly::str() const {
 std::string Poly::code() const {
   if (terms_.empty())
     return "0";
-  auto wide = [](const std::string& s) { return s.rfind("c_", 0) == 0; };
+  auto wide = [](const Sym& s) { return !s.is_counter() && s.name.rfind("c_", 0) == 0; };
   std::vector<std::pair<Monomial, long long>> ts(terms_.begin(), terms_.end());
   std::stable_sort(ts.begin(), ts.end(), [](const auto& a, const auto& b) {
     return a.first.size() > b.first.size();
@@ -142,7 +152,7 @@ std::string Poly::code() const {
     std::stable_partition(syms.begin(), syms.end(), wide);
     std::vector<std::string> factors;
     for (const auto& s : syms)
-      factors.push_back(s[0] == '@' ? s.substr(1) : s);
+      factors.push_back(s.name);
     if (syms.size() >= 2 && !wide(syms.front()))
       factors.front() = "static_cast<std::ptrdiff_t>(" + factors.front() + ")";
     if (mag != 1 || factors.empty())
@@ -168,9 +178,10 @@ bool smaller_coefficient(const Poly& a, const Poly& b) {
     for (const auto& [m, c] : p.terms()) {
       (int(m.size()) == d ? top : rest) += c < 0 ? -c : c;
       for (const auto& sym : m)
-        rank = std::max(rank, sym.rfind("dpgen_planes_", 0) == 0 ? 2
-                              : sym.rfind("dpgen_rows_", 0) == 0 ? 1
-                                                                 : 0);
+        if (!sym.is_counter())
+          rank = std::max(rank, sym.name.rfind("dpgen_planes_", 0) == 0 ? 2
+                                : sym.name.rfind("dpgen_rows_", 0) == 0 ? 1
+                                                                        : 0);
     }
     return std::make_tuple(rank, d, top, rest, p.str());
   };
@@ -206,7 +217,7 @@ std::optional<Poly> to_poly(const ExprP& e) {
       return std::nullopt;
     return Poly::symbol(e->name);
   case Op::LoopVar:
-    return Poly::symbol("@" + e->name);
+    return Poly::counter(e->name);
   case Op::Local: {
     if (e->type != Type::Int)
       return std::nullopt;
@@ -255,10 +266,7 @@ std::optional<Poly> to_poly(const ExprP& e) {
     for (const auto& [m, c] : a->terms()) {
       if (c % d != 0)
         return std::nullopt;
-      Poly t = Poly::constant(c / d);
-      for (const auto& sym : m)
-        t = t * Poly::symbol(sym);
-      q = q + t;
+      q = q + Poly::term(c / d, m);
     }
     return q;
   }
@@ -505,7 +513,7 @@ Op flip(Op op) {
   }
 }
 
-// v op B  as a domain.
+// v op B  as a domain (v: a counter's name).
 Domain compare_domain(const std::string& v, Op op, const Poly& bound) {
   Box b;
   Interval& iv = b.dims[v];
@@ -566,23 +574,23 @@ std::optional<Domain> condition_domain(const ExprP& c) {
     if (!l || !r)
       return std::nullopt;
     Poly p = *l - *r; // condition: p op 0
-    std::string var;
+    std::optional<Sym> var;
     for (const auto& [m, coef] : p.terms())
       for (const auto& s : m)
-        if (s[0] == '@') {
-          if (!var.empty() && var != s)
-            return std::nullopt; // two loop variables: not a box
+        if (s.is_counter()) {
+          if (var && *var != s)
+            return std::nullopt; // two loop counters: not a box
           var = s;
         }
-    if (var.empty())
-      return std::nullopt; // parameters only: a run-time guard
-    Poly coef = p.coefficient(var);
+    if (!var)
+      return std::nullopt; // sizes only: a run-time guard
+    Poly coef = p.coefficient(*var);
     if (!coef.is_constant() || (coef.constant_term() != 1 && coef.constant_term() != -1))
       return std::nullopt;
-    Poly rest = p.without(var);
+    Poly rest = p.without(*var);
     if (coef.constant_term() == 1) // v + rest op 0  <=>  v op -rest
-      return compare_domain(var, c->op, -rest);
-    return compare_domain(var, flip(c->op), rest); // -v + rest op 0 <=> v op' rest
+      return compare_domain(var->name, c->op, -rest);
+    return compare_domain(var->name, flip(c->op), rest); // -v + rest op 0 <=> v op' rest
   }
   default:
     return std::nullopt;

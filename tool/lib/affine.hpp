@@ -12,19 +12,45 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dpgen {
 
-/// A polynomial with integer coefficients over named symbols (parameters and
-/// loop variables). A monomial is the sorted list of its symbols.
+/// A symbol of a polynomial: a loop counter, or a size, which is anything
+/// fixed while the loops run (a parameter, a kernel-level local, a row or
+/// plane symbol, a cell coordinate `c_i`, a cell bound `lo_i`). The kind keeps
+/// a counter apart from a size of the same name.
+struct Sym {
+  enum class Kind : unsigned char { Counter, Size };
+  Kind kind = Kind::Size;
+  std::string name;
+
+  static Sym counter(std::string name) { return {Kind::Counter, std::move(name)}; }
+  static Sym size(std::string name) { return {Kind::Size, std::move(name)}; }
+  bool is_counter() const { return kind == Kind::Counter; }
+  /// Counters first, then by name. Monomials and the terms of a polynomial
+  /// are ordered by it, which fixes the order of terms in generated code.
+  bool operator<(const Sym& o) const { return kind != o.kind ? kind < o.kind : name < o.name; }
+  bool operator==(const Sym& o) const { return kind == o.kind && name == o.name; }
+  bool operator!=(const Sym& o) const { return !(*this == o); }
+};
+
+/// A polynomial with integer coefficients over symbols (sizes and loop
+/// counters). A monomial is the sorted list of its symbols.
 class Poly {
 public:
-  using Monomial = std::vector<std::string>;
+  using Monomial = std::vector<Sym>;
 
   Poly() = default;
   static Poly constant(long long c);
-  static Poly symbol(const std::string& s);
+  /// A size (a parameter, a local, ...: see Sym).
+  static Poly symbol(const std::string& name) { return of(Sym::size(name)); }
+  /// A loop counter.
+  static Poly counter(const std::string& name) { return of(Sym::counter(name)); }
+  static Poly of(const Sym& s);
+  /// c times the product of the symbols of `m`.
+  static Poly term(long long c, const Monomial& m);
 
   Poly operator+(const Poly& o) const;
   Poly operator-(const Poly& o) const;
@@ -35,13 +61,14 @@ public:
 
   bool is_constant() const;
   long long constant_term() const;
-  bool mentions(const std::string& s) const;
-  /// Some symbol starts with `c` ('@': a loop counter).
-  bool mentions_any(char c) const;
-  /// Coefficient of `var` (which must occur with degree <= 1): a polynomial.
-  Poly coefficient(const std::string& var) const;
-  /// The polynomial without any term that mentions `var`.
-  Poly without(const std::string& var) const;
+  bool mentions(const Sym& s) const;
+  bool mentions_counter(const std::string& name) const { return mentions(Sym::counter(name)); }
+  /// Some symbol is a loop counter.
+  bool mentions_any_counter() const;
+  /// Coefficient of `s` (which must occur with degree <= 1): a polynomial.
+  Poly coefficient(const Sym& s) const;
+  /// The polynomial without any term that mentions `s`.
+  Poly without(const Sym& s) const;
   /// Highest total degree of any term (0 for constants).
   int degree() const;
   const std::map<Monomial, long long>& terms() const { return terms_; }
@@ -93,9 +120,9 @@ struct Interval {
   std::vector<Poly> lo, hi;
 };
 
-/// A box: one interval per constrained loop variable.
+/// A box: one interval per constrained loop counter.
 struct Box {
-  std::map<std::string, Interval> dims;
+  std::map<std::string, Interval> dims; // counter name (Loop::var) -> interval
 };
 
 /// A disjoint union of boxes (empty vector = empty set).
@@ -105,7 +132,7 @@ Domain universe();
 Domain intersect(const Domain& a, const Domain& b);
 Domain subtract(const Domain& a, const Domain& b);
 Domain unite(const Domain& a, const Domain& b); // a ∪ (b \ a), kept disjoint
-/// Shifts every box by +delta[v] in each variable v.
+/// Shifts every box by +delta[v] in each counter v (keyed like Box::dims).
 Domain shift(const Domain& d, const std::map<std::string, Poly>& delta);
 /// Drops bounds dominated by a constant difference and provably empty boxes.
 Box simplify(Box b);

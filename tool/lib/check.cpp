@@ -283,13 +283,11 @@ private:
     }
     std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
     for (const auto& l : nest.loops) {
-      Poly c = p->coefficient("@" + l.var);
-      for (const auto& [m, coef] : c.terms())
-        for (const auto& sym : m)
-          if (sym[0] == '@') {
-            fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
-            return false;
-          }
+      Poly c = p->coefficient(Sym::counter(l.var));
+      if (c.mentions_any_counter()) {
+        fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
+        return false;
+      }
       if (c == Poly()) {
         if (s.accumulate)
           continue; // a reduction: every iteration adds to the same element
@@ -339,7 +337,7 @@ private:
       for (const auto& [m, coef] : p->terms()) {
         bool counter = false;
         for (const auto& sym : m)
-          counter = counter || sym[0] == '@';
+          counter = counter || sym.is_counter();
         if (!counter)
           continue;
         if (m.size() != 1)
@@ -362,7 +360,7 @@ private:
   // The polynomial mentions no counter but the first `shared` loops of `nest`.
   static bool only_counters(const Poly& p, const Nest& nest, size_t shared) {
     for (size_t i = shared; i < nest.loops.size(); ++i)
-      if (p.mentions("@" + nest.loops[i].var))
+      if (p.mentions_counter(nest.loops[i].var))
         return false;
     return true;
   }
@@ -381,14 +379,14 @@ private:
       add_facts(pc, facts);
     Poly p = *to_poly(s.index), lo, hi;
     for (const auto& l : nest.loops) {
-      Poly c = p.coefficient("@" + l.var);
+      Poly c = p.coefficient(Sym::counter(l.var));
       bool up = prove_nonneg(c, facts);
       if (!up && !prove_nonneg(-c, facts))
         return std::nullopt;
       Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
       lo = lo + c * (up ? first : last);
       hi = hi + c * (up ? last : first);
-      p = p.without("@" + l.var);
+      p = p.without(Sym::counter(l.var));
     }
     return std::pair{lo + p, hi + p};
   }

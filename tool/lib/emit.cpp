@@ -160,15 +160,15 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
 // Emits one block inside a cell lambda.
 void emit_block(const BlockContext& cx, const Block& b) {
   const Nest& nest = *cx.g.nest;
-  std::map<std::string, Poly> back; // "@v" -> -shift, cell space -> iteration space
+  std::map<std::string, Poly> back; // counter -> -shift, cell space -> iteration space
   for (const auto& [v, c] : cx.g.layout) {
     auto it = b.shift.find(v);
-    back["@" + v] = it == b.shift.end() ? Poly() : -it->second;
+    back[v] = it == b.shift.end() ? Poly() : -it->second;
   }
   Code& code = cx.code;
   std::string iter_desc;
   for (const auto& [v, c] : cx.g.layout) {
-    Poly it = Poly::symbol("c_" + v) + back["@" + v];
+    Poly it = Poly::symbol("c_" + v) + back[v];
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
@@ -182,14 +182,14 @@ void emit_block(const BlockContext& cx, const Block& b) {
     code.open("");
     // Layout counters come from the cell.
     for (const auto& [v, c] : cx.g.layout) {
-      Poly it = Poly::symbol("c_" + v) + back["@" + v];
+      Poly it = Poly::symbol("c_" + v) + back[v];
       code.line("const {} {} = {};", loop_type(nest, v), v, it.code());
     }
     int opened = 0;
     if (cx.edge) {
       std::vector<std::string> conds;
       for (const auto& [v, c] : cx.g.layout) {
-        auto d = box.dims.find("@" + v);
+        auto d = box.dims.find(v);
         if (d == box.dims.end())
           continue;
         for (const auto& lo : d->second.lo)
@@ -204,7 +204,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
     }
     // Counters outside the layout are summed over inside the cell.
     for (const auto& r : cx.g.reduced) {
-      auto d = box.dims.find("@" + r);
+      auto d = box.dims.find(r);
       std::string t = loop_type(nest, r);
       code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", t, r,
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
@@ -367,12 +367,11 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     std::vector<std::string> apart;
     for (const auto& reach : plan.reaches) {
       std::vector<std::string> ors;
-      for (const auto& [key, iv] : reach.box.dims) {
-        std::string v = key.substr(1);
+      for (const auto& [v, iv] : reach.box.dims) {
         std::string t = kCellType;
         std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
         ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
-        if (reach.cell_dims.count(key)) {
+        if (reach.cell_dims.count(v)) {
           ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
           ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
         }
@@ -381,7 +380,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     }
     for (const auto& [v, c] : g0.layout) {
       std::string t = kCellType;
-      const Interval& iv = interior.dims.at("@" + v);
+      const Interval& iv = interior.dims.at(v);
       code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
                 print_max(iv.lo, t), v);
       code.line("{} in_hi_{} = std::max<{}>(in_lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,

@@ -33,10 +33,9 @@ std::string extreme(const Poly& p, const Box& box, const Nest& nest, bool larges
     add_nonempty(l, facts);
   std::vector<std::string> defs, nonempty;
   for (const auto& l : nest.loops) {
-    const std::string v = "@" + l.var;
-    Poly c = p.coefficient(v);
+    Poly c = p.coefficient(Sym::counter(l.var));
     Interval iv;
-    auto it = box.dims.find(v);
+    auto it = box.dims.find(l.var);
     if (it != box.dims.end())
       iv = it->second;
     iv.lo.push_back(*to_poly(l.lo));

@@ -150,12 +150,12 @@ std::optional<std::string> box_max(const Poly& p, const Box& b) {
   Poly rest = p;
   std::vector<std::string> terms;
   for (const auto& [v, iv] : b.dims) {
-    if (!p.mentions(v))
+    if (!p.mentions_counter(v))
       continue;
-    Poly c = p.coefficient(v);
-    if (c.mentions_any('@') || iv.lo.empty() || iv.hi.empty())
+    Poly c = p.coefficient(Sym::counter(v));
+    if (c.mentions_any_counter() || iv.lo.empty() || iv.hi.empty())
       return std::nullopt;
-    rest = rest.without(v);
+    rest = rest.without(Sym::counter(v));
     const std::string lo = print_max(iv.lo, "std::int64_t");
     const std::string last = print_min(iv.hi, "std::int64_t") + " - 1";
     if (c.is_constant() && c.constant_term() > 0)
@@ -167,7 +167,7 @@ std::optional<std::string> box_max(const Poly& p, const Box& b) {
       terms.push_back(fmt::format("std::max<std::int64_t>(({}) * ({}), ({}) * ({}))", c.code(),
                                   lo, c.code(), last));
   }
-  if (rest.mentions_any('@'))
+  if (rest.mentions_any_counter())
     return std::nullopt;
   std::string out = rest.is_constant() && rest.constant_term() == 0 && !terms.empty()
                         ? ""

@@ -48,7 +48,7 @@ void narrow_for_selects(const GatherGroup& g, Box& interior) {
           Poly width = iv.hi[0] - iv.lo[0];
           if (!width.is_constant())
             continue;
-          auto sit = b.shift.find(key.substr(1));
+          auto sit = b.shift.find(key);
           Poly d = sit == b.shift.end() ? Poly() : sit->second;
           Poly lo = iv.lo[0] + d, hi = iv.hi[0] + d; // in cell space
           auto near = [](const std::vector<Poly>& set, const Poly& p) {
@@ -135,7 +135,7 @@ std::map<std::string, CellRange> cell_bounds(const GatherGroup& g) {
     for (const auto& b : g.blocks) {
       Poly d = shift_of(b, v);
       for (const auto& box : b.domain) {
-        const Interval& iv = box.dims.at("@" + v);
+        const Interval& iv = box.dims.at(v);
         los.push_back(shifted(iv.lo, d));
         his.push_back(shifted(iv.hi, d));
       }
@@ -163,18 +163,18 @@ CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
     return loop; // a single cell: summed over the iterations that read it
   loop.bounds = cell_bounds(g0);
 
-  // Interior box (cell space, "@v" keys): inside every bulk block of every
+  // Interior box (cell space): inside every bulk block of every
   // group, narrowed so index conditions are decided.
   Box& interior = loop.interior;
   for (const auto& [v, c] : g0.layout) {
-    Interval& in = interior.dims["@" + v];
+    Interval& in = interior.dims[v];
     for (const auto* g : gs)
       for (const auto& b : g->blocks) {
         if (!b.bulk)
           continue;
         loop.any_bulk = true;
         Poly d = shift_of(b, v);
-        const Interval& iv = b.domain.front().dims.at("@" + v);
+        const Interval& iv = b.domain.front().dims.at(v);
         for (const auto& p : shifted(iv.lo, d))
           in.lo.push_back(p);
         for (const auto& p : shifted(iv.hi, d))
@@ -193,13 +193,13 @@ CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
           continue;
         std::map<std::string, Poly> fwd;
         for (const auto& [v, c] : g->layout)
-          fwd["@" + v] = shift_of(b, v);
+          fwd[v] = shift_of(b, v);
         for (const auto& box : shift(b.domain, fwd)) {
           EdgeReach reach{box, {}};
           Box cells_box;
           for (const auto& [v, c] : g->layout) {
-            cells_box.dims["@" + v] = box.dims.at("@" + v);
-            reach.cell_dims.insert("@" + v);
+            cells_box.dims[v] = box.dims.at(v);
+            reach.cell_dims.insert(v);
           }
           if (box_disjoint(cells_box, {interior}))
             continue;
@@ -215,9 +215,9 @@ CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
       loop.interior_boxes.back().emplace_back();
       if (!b.bulk)
         continue;
-      std::map<std::string, Poly> back; // "@v" -> -shift: cell space -> iteration space
+      std::map<std::string, Poly> back; // counter -> -shift: cell space -> iteration space
       for (const auto& [v, c] : g->layout)
-        back["@" + v] = -shift_of(b, v);
+        back[v] = -shift_of(b, v);
       Domain boxes = intersect(b.domain, shift({interior}, back));
       if (boxes.size() != 1)
         boxes = b.domain; // cannot happen for a bulk block; keep it exact anyway

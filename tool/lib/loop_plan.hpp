@@ -50,7 +50,7 @@ struct FusionKey {
 /// interior: unless it is empty or apart from the interior at run time, every
 /// cell is treated as an edge.
 struct EdgeReach {
-  Box box;                         // all counters of the block ("@v" keys)
+  Box box;                         // all counters of the block
   std::set<std::string> cell_dims; // those of the layout
 };
 
@@ -60,7 +60,7 @@ struct CellLoop {
   std::vector<const GatherGroup*> groups;
   std::map<std::string, CellRange> bounds; // the cell box, per layout counter
   bool any_bulk = false;                   // some block runs in the interior
-  Box interior;                            // cell space, "@v" keys
+  Box interior;                            // cell space
   std::vector<EdgeReach> reaches;
   /// Per group and block (bulk blocks only): the boxes of its iteration
   /// domain that an interior cell's iteration lies in.

@@ -1029,10 +1029,10 @@ private:
                               what, var->getNameAsString()));
       for (const auto& [m, coef] : p->terms())
         for (const auto& s : m)
-          if (s[0] == '@')
+          if (s.is_counter())
             fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}': only "
                                   "rectangular loop nests are in the subset",
-                                  what, var->getNameAsString(), s.substr(1)));
+                                  what, var->getNameAsString(), s.name));
     }
     {
       auto plo = to_poly(lo), phi = to_poly(hi);
@@ -1174,11 +1174,15 @@ private:
     const auto* lhs = dyn_cast<DeclRefExpr>(c->getLHS()->IgnoreParenImpCasts());
     if (lhs && lhs->getDecl() == var)
       return expr(c->getRHS());
-    // The counter is bound to a placeholder while the sides are lowered.
+    // The counter is bound to a placeholder counter while the sides are
+    // lowered, named apart from every counter already named.
+    std::string placeholder = "dpgen_counter";
+    for (int n = 1; loop_names_.count(placeholder); ++n)
+      placeholder = fmt::format("dpgen_counter_{}", n);
     auto saved = env_.find(var) != env_.end() ? std::optional<Binding>(env_[var]) : std::nullopt;
     Binding b;
     b.kind = Binding::LoopVar;
-    b.value = loop_var("@dpgen_counter");
+    b.value = loop_var(placeholder);
     env_[var] = b;
     ExprP l = expr(c->getLHS()), r = expr(c->getRHS());
     if (saved)
@@ -1189,10 +1193,10 @@ private:
     if (!pl || !pr)
       return nullptr;
     Poly d = *pl - *pr; // condition: d op 0
-    Poly k = d.coefficient("@@dpgen_counter");
-    Poly rest = d.without("@@dpgen_counter");
+    Poly k = d.coefficient(Sym::counter(placeholder));
+    Poly rest = d.without(Sym::counter(placeholder));
     if (!k.is_constant() || (k.constant_term() != 1 && k.constant_term() != -1) ||
-        rest.mentions_any('@'))
+        rest.mentions_any_counter())
       return nullptr;
     op = c->getOpcode();
     if (k.constant_term() == -1) { // -i + rest op 0  <=>  i (flipped op) rest
@@ -1220,13 +1224,15 @@ private:
     }
     return sum ? sum : int_const(0);
   }
-  ExprP symbol_expr(const std::string& sym) {
-    if (const Param* p = k_.find_param(sym))
+  ExprP symbol_expr(const Sym& sym) {
+    if (sym.is_counter())
+      throw std::logic_error("lower: a loop counter in a size: " + sym.name);
+    if (const Param* p = k_.find_param(sym.name))
       return param(p->name, p->elem);
     for (const auto& l : k_.kernel_locals)
-      if (l->name == sym)
+      if (l->name == sym.name)
         return local_ref(l);
-    throw std::logic_error("lower: unknown symbol " + sym);
+    throw std::logic_error("lower: unknown symbol " + sym.name);
   }
 
   // The `i = lo` of a C89-style loop, if that is its init statement.
@@ -1549,7 +1555,7 @@ private:
         Poly g1 = *pa - *pb - Poly::constant(1), g2 = *pb - *pa - Poly::constant(1);
         if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
           continue;
-        if (!(*pa - *pb).mentions_any('@') && !accumulate && !s.accumulate &&
+        if (!(*pa - *pb).mentions_any_counter() && !accumulate && !s.accumulate &&
             is_prefix(path_, s.path)) {
           // Different elements for some sizes only (u[0] and u[n - 1]): where
           // they are the same, this store overwrites the earlier one, which

@@ -2,6 +2,7 @@
 #include "print.hpp"
 
 #include <fmt/format.h>
+#include <optional>
 
 #include <set>
 
@@ -112,28 +113,27 @@ std::string real_literal(double v, Type t) {
 namespace {
 // The row or plane symbol an index mentions, if any (ir.hpp: row_symbol,
 // plane_symbol).
-std::string symbol_in(const Poly& p, const char* prefix) {
+std::optional<Sym> symbol_in(const Poly& p, const char* prefix) {
   for (const auto& [m, c] : p.terms())
     for (const auto& sym : m)
-      if (sym.rfind(prefix, 0) == 0)
+      if (!sym.is_counter() && sym.name.rfind(prefix, 0) == 0)
         return sym;
-  return "";
+  return std::nullopt;
 }
 } // namespace
 
 std::string subscript(const Poly& index) {
-  std::string planes = symbol_in(index, "dpgen_planes_");
-  if (!planes.empty())
-    return "[" + index.coefficient(planes).code() + "]" + subscript(index.without(planes));
-  std::string rows = symbol_in(index, "dpgen_rows_");
-  if (rows.empty())
+  if (auto planes = symbol_in(index, "dpgen_planes_"))
+    return "[" + index.coefficient(*planes).code() + "]" + subscript(index.without(*planes));
+  auto rows = symbol_in(index, "dpgen_rows_");
+  if (!rows)
     return "[" + index.code() + "]";
-  return "[" + index.coefficient(rows).code() + "][" + index.without(rows).code() + "]";
+  return "[" + index.coefficient(*rows).code() + "][" + index.without(*rows).code() + "]";
 }
 
 std::string subscript(const ExprP& index) {
   if (auto p = to_poly(index);
-      p && (!symbol_in(*p, "dpgen_rows_").empty() || !symbol_in(*p, "dpgen_planes_").empty()))
+      p && (symbol_in(*p, "dpgen_rows_") || symbol_in(*p, "dpgen_planes_")))
     return subscript(*p);
   return "[" + print(index) + "]";
 }

@@ -9,14 +9,6 @@ namespace dpgen {
 
 namespace {
 
-bool mentions_counter(const Poly& p) {
-  for (const auto& [m, c] : p.terms())
-    for (const auto& s : m)
-      if (s[0] == '@')
-        return true;
-  return false;
-}
-
 // a - b as a polynomial, if both sides are integer polynomials.
 std::optional<Poly> difference(const ExprP& a, const ExprP& b) {
   auto pa = to_poly(a), pb = to_poly(b);
@@ -52,7 +44,7 @@ bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) 
   if (c->ops.size() != 2 || c->ops[0]->type != Type::Int || c->ops[1]->type != Type::Int)
     return false;
   auto d = difference(c->ops[1], c->ops[0]); // b - a
-  if (!d || (!counters && mentions_counter(*d)))
+  if (!d || (!counters && d->mentions_any_counter()))
     return false;
   Poly one = Poly::constant(1);
   switch (op) {
@@ -101,7 +93,7 @@ void add_facts_with_counters(const PathCond& pc, Facts& out) {
 
 void add_counter_range(const Loop& l, Facts& out) {
   auto lo = to_poly(l.lo), hi = to_poly(l.hi);
-  Poly v = Poly::symbol("@" + l.var);
+  Poly v = Poly::counter(l.var);
   if (lo)
     out.push_back(v - *lo);
   if (hi)
@@ -144,11 +136,11 @@ bool prove_nonneg(const Poly& goal, const Facts& facts) {
   Facts all = facts;
   // Lower bounds of single symbols (s - b >= 0) give s*t >= ... for products:
   // (s - b_s)(t - b_t) >= 0 when both bounds are known.
-  std::map<std::string, long long> lower;
+  std::map<Sym, long long> lower;
   for (const auto& f : facts) {
     if (f.terms().size() > 2 || f.degree() != 1)
       continue;
-    std::string sym;
+    Sym sym;
     long long a = 0, c = 0;
     for (const auto& [m, k] : f.terms())
       if (m.empty())
@@ -173,8 +165,8 @@ bool prove_nonneg(const Poly& goal, const Facts& facts) {
   for (const auto& m : products) {
     auto a = lower.find(m[0]), b = lower.find(m[1]);
     if (a != lower.end() && b != lower.end() && a->second >= 0 && b->second >= 0)
-      all.push_back((Poly::symbol(m[0]) - Poly::constant(a->second)) *
-                    (Poly::symbol(m[1]) - Poly::constant(b->second)));
+      all.push_back((Poly::of(m[0]) - Poly::constant(a->second)) *
+                    (Poly::of(m[1]) - Poly::constant(b->second)));
   }
   std::set<Row> rows;
   for (const auto& f : all) {
@@ -238,7 +230,7 @@ Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& gua
     Interval iv;
     iv.lo.push_back(*to_poly(l.lo));
     iv.hi.push_back(*to_poly(l.hi));
-    loop_box.dims["@" + l.var] = iv;
+    loop_box.dims[l.var] = iv;
   }
   Domain d = {simplify(loop_box)};
   // A condition on the sizes that every iteration of the nest implies (an

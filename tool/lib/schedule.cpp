@@ -44,21 +44,16 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
   Decomposed out;
   Poly rest = index;
   for (const auto& l : nest.loops) {
-    std::string v = "@" + l.var;
-    Poly c = index.coefficient(v);
-    for (const auto& [m, coef] : c.terms())
-      for (const auto& s : m)
-        if (s[0] == '@')
-          return std::nullopt; // a product of counters: not affine
+    Poly c = index.coefficient(Sym::counter(l.var));
+    if (c.mentions_any_counter())
+      return std::nullopt; // a product of counters: not affine
     if (c == Poly())
       continue;
     out.layout.push_back({l.var, c});
-    rest = rest - c * Poly::symbol(v);
+    rest = rest - c * Poly::counter(l.var);
   }
-  for (const auto& [m, coef] : rest.terms())
-    for (const auto& s : m)
-      if (s[0] == '@')
-        return std::nullopt;
+  if (rest.mentions_any_counter())
+    return std::nullopt;
   // Shifts: the largest coefficient first takes the multiples of its leading
   // monomial (`+nx` with layout j*nx + i is j+1); a unit coefficient last
   // takes what is left (`+1` is i+1).
@@ -70,32 +65,32 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
   });
   // Row-pointer symbols (ir.hpp): a term with one belongs to the row (or
   // plane) dimension, never to a unit-coefficient column.
-  auto row_symbol_of = [](const Poly& p) -> std::string {
+  auto is_row_symbol = [](const Sym& s) {
+    return !s.is_counter() &&
+           (s.name.rfind("dpgen_rows_", 0) == 0 || s.name.rfind("dpgen_planes_", 0) == 0);
+  };
+  auto row_symbol_of = [&](const Poly& p) -> std::optional<Sym> {
     for (const auto& [m, coef] : p.terms())
       for (const auto& s : m)
-        if (s.rfind("dpgen_rows_", 0) == 0 || s.rfind("dpgen_planes_", 0) == 0)
+        if (is_row_symbol(s))
           return s;
-    return "";
+    return std::nullopt;
   };
   for (size_t idx : order) {
     const auto& [var, c] = out.layout[idx];
     Poly delta;
-    std::string row = row_symbol_of(c);
-    if (!row.empty() && c.terms().size() == 1 && c.terms().begin()->first.size() == 1) {
+    std::optional<Sym> row = row_symbol_of(c);
+    if (row && c.terms().size() == 1 && c.terms().begin()->first.size() == 1) {
       // c = ±R: the row shift is every multiple of R (`u[ny - 1 - j][i]`:
       // rest R*ny - R, shift -ny + 1).
       long long cc = c.terms().begin()->second;
-      Poly multiples = rest.coefficient(row);
+      Poly multiples = rest.coefficient(*row);
       bool divisible = true;
       for (const auto& [m, coef] : multiples.terms())
-        divisible = divisible && coef % cc == 0 && row_symbol_of(Poly::symbol(m.empty() ? "" : m[0])).empty();
+        divisible = divisible && coef % cc == 0 && (m.empty() || !is_row_symbol(m[0]));
       if (divisible)
-        for (const auto& [m, coef] : multiples.terms()) {
-          Poly t = Poly::constant(coef / cc);
-          for (const auto& s : m)
-            t = t * Poly::symbol(s);
-          delta = delta + t;
-        }
+        for (const auto& [m, coef] : multiples.terms())
+          delta = delta + Poly::term(coef / cc, m);
     } else if (c.is_constant()) {
       long long cc = c.constant_term();
       bool divisible = true;
@@ -103,10 +98,8 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
         divisible = divisible && coef % cc == 0;
       if (divisible) {
         for (const auto& [m, coef] : rest.terms()) {
-          Poly t = Poly::constant(coef / cc);
-          for (const auto& s : m)
-            t = t * Poly::symbol(s);
-          if (row_symbol_of(t).empty())
+          Poly t = Poly::term(coef / cc, m);
+          if (!row_symbol_of(t))
             delta = delta + t;
         }
       }
@@ -166,7 +159,7 @@ bool is_bulk(const Block& b, const GatherGroup& g) {
     return false;
   const Box& box = b.domain.front();
   for (const auto& [v, c] : g.layout) {
-    auto it = box.dims.find("@" + v);
+    auto it = box.dims.find(v);
     if (it == box.dims.end())
       return false;
     for (const auto& lo : it->second.lo)
