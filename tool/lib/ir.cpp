@@ -3,6 +3,7 @@
 #include "ir.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -82,6 +83,19 @@ ExprP real_const(double v, Type t, std::string spelling) {
   e->rval = v;
   e->spelling = std::move(spelling);
   return e;
+}
+
+ExprP zero(Type t) {
+  auto e = node(Op::RealConst, t);
+  e->exact_zero = true;
+  return e;
+}
+
+bool is_zero(const ExprP& e) {
+  if (!e)
+    throw std::logic_error("internal error: a null expression where a derivative was expected "
+                           "(an exact zero is zero(), ir.hpp)");
+  return e->op == Op::RealConst && e->exact_zero;
 }
 
 ExprP param(const std::string& name, Type t) {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -139,6 +140,9 @@ std::string subscript(const ExprP& index) {
 }
 
 std::string print(const ExprP& e) {
+  if (!e) // no ExprP is null (an exact zero is zero(), ir.hpp): a bug in the phase that made it
+    throw std::logic_error("internal error: print: a null expression (a missing value in the IR "
+                           "or plan; an exact zero is zero(), ir.hpp)");
   switch (e->op) {
   case Op::IntConst:
     return std::to_string(e->ival);
