@@ -128,6 +128,10 @@ template <typename F> ExprP map_operands(const ExprP& e, F&& f) {
   return copy;
 }
 
+/// A switch over Op with a case for every value was given a value outside
+/// the enum: an internal error (std::logic_error) naming `where`.
+[[noreturn]] void unknown_op(const char* where);
+
 bool is_const(const ExprP& e, double v);
 /// Structural equality (Locals compare by identity).
 bool same(const ExprP& a, const ExprP& b);
