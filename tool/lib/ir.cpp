@@ -59,7 +59,7 @@ Type promote(Type a, Type b) {
 
 bool const_value(const ExprP& e, double& v) {
   if (!e)
-    return false;
+    throw std::logic_error("internal error: is_const: a null expression");
   if (e->op == Op::IntConst) {
     v = static_cast<double>(e->ival);
     return true;
@@ -286,10 +286,10 @@ ExprP cast(ExprP a, Type t) {
 }
 
 bool same(const ExprP& a, const ExprP& b) {
+  if (!a || !b)
+    throw std::logic_error("internal error: same: a null expression");
   if (a == b)
     return true;
-  if (!a || !b)
-    return false;
   if (a->op != b->op || a->type != b->type || a->ops.size() != b->ops.size())
     return false;
   switch (a->op) {
