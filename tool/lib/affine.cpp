@@ -270,9 +270,23 @@ std::optional<Poly> to_poly(const ExprP& e) {
     }
     return q;
   }
-  default:
+  case Op::RealConst:
+  case Op::Read:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
     return std::nullopt;
   }
+  unknown_op("to_poly");
 }
 
 // ---- Domains -------------------------------------------------------------
@@ -508,9 +522,29 @@ Op flip(Op op) {
     return Op::Lt;
   case Op::Ge:
     return Op::Le;
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
     return op;
   }
+  unknown_op("flip");
 }
 
 // v op B  as a domain (v: a counter's name).
@@ -537,7 +571,24 @@ Domain compare_domain(const std::string& v, Op op, const Poly& bound) {
     if (op == Op::Ne)
       return subtract(universe(), {b});
     break;
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
     break;
   }
   return {b};
@@ -592,9 +643,24 @@ std::optional<Domain> condition_domain(const ExprP& c) {
       return compare_domain(var->name, c->op, -rest);
     return compare_domain(var->name, flip(c->op), rest); // -v + rest op 0 <=> v op' rest
   }
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
     return std::nullopt;
   }
+  unknown_op("condition_domain");
 }
 
 std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
@@ -653,13 +719,31 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
       }
     return out;
   }
-  default: {
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Read:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Call:
+  case Op::Cast: {
     auto p = to_poly(e);
     if (!p)
       return std::nullopt;
     return Pieces{{*p, universe()}};
   }
   }
+  unknown_op("index_pieces");
 }
 
 } // namespace dpgen

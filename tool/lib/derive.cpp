@@ -7,6 +7,7 @@
 #include "prove.hpp"
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace dpgen {
@@ -23,7 +24,7 @@ public:
 
   ExprP d(const ExprP& e) {
     if (!is_real(e->type))
-      return nullptr; // integers and booleans are not differentiable values
+      return zero(e->type); // integers and booleans are not differentiable values
     if (e->op == Op::Local) {
       auto& memo = tangents_ ? tangents_->memo : local_memo_;
       auto it = memo.find(e->local.get());
@@ -32,7 +33,7 @@ public:
       const ExprP& def = e->local->def;
       // A call's rule reuses its value (d exp(a) = exp(a)·da): use the local.
       ExprP r = def->op == Op::Call ? call_rule(def, e) : d(def);
-      if (r && tangents_ && r->op != Op::Read && r->op != Op::RealConst)
+      if (!is_zero(r) && tangents_ && r->op != Op::Read && r->op != Op::RealConst)
         r = tangent_local(*e->local, r);
       memo[e->local.get()] = r;
       return r;
@@ -42,13 +43,13 @@ public:
     case Op::RealConst:
     case Op::Param:
     case Op::LoopVar:
-      return nullptr;
+      return zero(e->type);
     case Op::Read:
       if (active_) // forward mode: d a[k] = a_dot[k]
         return active_->count(e->name) ? read(e->name + "_dot", e->ops[0], e->type, e->pos)
-                                       : nullptr;
+                                       : zero(e->type);
       // d a[k] / d a[k] = 1 for the occurrences we differentiate by
-      return reads_.count(e.get()) ? one(e) : nullptr;
+      return reads_.count(e.get()) ? one(e) : zero(e->type);
     case Op::Neg:
       // d(-a) = -da
       return neg(d(e->ops[0]));
@@ -67,22 +68,22 @@ public:
       // d(a/b) = da/b - a·db/b²
       const ExprP &a = e->ops[0], &b = e->ops[1];
       ExprP da = d(a), db = d(b);
-      ExprP t1 = da ? binary(Op::Div, da, b) : nullptr;
-      ExprP t2 = db ? binary(Op::Div, binary(Op::Mul, a, db), binary(Op::Mul, b, b)) : nullptr;
+      ExprP t1 = is_zero(da) ? da : binary(Op::Div, da, b);
+      ExprP t2 = is_zero(db) ? db : binary(Op::Div, binary(Op::Mul, a, db), binary(Op::Mul, b, b));
       return add(t1, neg(t2));
     }
     case Op::Select: {
       // d(c ? a : b) = c ? da : db   (the condition is piecewise constant)
       ExprP da = d(e->ops[1]), db = d(e->ops[2]);
-      if (!da && !db)
-        return nullptr;
-      return select(e->ops[0], da ? da : zero(e), db ? db : zero(e));
+      if (is_zero(da) && is_zero(db))
+        return zero(e->type);
+      return select(e->ops[0], arm(da, e), arm(db, e));
     }
     case Op::Cast:
       // float <-> double: the derivative converts too; int -> real: zero
-      return is_real(e->ops[0]->type) ? cast_or_null(d(e->ops[0]), e->type) : nullptr;
+      return is_real(e->ops[0]->type) ? cast_or_zero(d(e->ops[0]), e->type) : zero(e->type);
     case Op::Call:
-      return call_rule(e, nullptr);
+      return call_rule(e, std::nullopt);
     case Op::Local: // handled above
     case Op::Rem:   // integer only
     case Op::Lt:
@@ -126,27 +127,36 @@ private:
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
-  static ExprP zero(const ExprP& like) { return real_const(0, like->type); }
   static ExprP lit(double v, const ExprP& like) { return real_const(v, like->type); }
+  // A derivative as an arm of conditional `like`: an exact zero in its type.
+  static ExprP arm(const ExprP& d, const ExprP& like) { return is_zero(d) ? zero(like->type) : d; }
 
+  // The rules' arithmetic on derivatives, folding the exact zero (zero(),
+  // ir.hpp): 0 + b = b, a + 0 = a, -0 = 0, 0·b = a·0 = 0, (T)0 = 0.
   static ExprP add(ExprP a, ExprP b) {
-    if (!a)
+    if (is_zero(a))
       return b;
-    if (!b)
+    if (is_zero(b))
       return a;
     return binary(Op::Add, a, b);
   }
-  static ExprP neg(ExprP a) { return a ? unary(Op::Neg, a) : nullptr; }
-  static ExprP mul(ExprP a, ExprP b) { return a && b ? binary(Op::Mul, a, b) : nullptr; }
-  static ExprP cast_or_null(ExprP a, Type t) { return a ? cast(a, t) : nullptr; }
+  static ExprP neg(ExprP a) { return is_zero(a) ? a : unary(Op::Neg, a); }
+  static ExprP mul(ExprP a, ExprP b) {
+    if (is_zero(a))
+      return a;
+    if (is_zero(b))
+      return b;
+    return binary(Op::Mul, a, b);
+  }
+  static ExprP cast_or_zero(ExprP a, Type t) { return is_zero(a) ? zero(t) : cast(a, t); }
 
   // The value of call `e` for rules that reuse it: `self` when the call is a
   // local's definition, else a local of its own, so it is evaluated once. The
   // same call node always gets the same local, numbered in the order the
   // kernel's derivatives first need them: names depend on the kernel only.
-  ExprP named(const ExprP& e, const ExprP& self) {
+  ExprP named(const ExprP& e, const std::optional<ExprP>& self) {
     if (self)
-      return self;
+      return *self;
     auto it = names_.calls.find(e.get());
     if (it != names_.calls.end())
       return local_ref(it->second);
@@ -159,34 +169,35 @@ private:
     return local_ref(l);
   }
 
-  ExprP call_rule(const ExprP& e, const ExprP& self) {
+  ExprP call_rule(const ExprP& e, const std::optional<ExprP>& self) {
     const std::string& f = e->name;
     const ExprP& a = e->ops[0];
     if (f == "min" || f == "max") {
       // d min(a,b) = a <= b ? da : db ;  d max(a,b) = a >= b ? da : db
       const ExprP& b = e->ops[1];
       ExprP da = d(a), db = d(b);
-      if (!da && !db)
-        return nullptr;
+      if (is_zero(da) && is_zero(db))
+        return zero(e->type);
       ExprP c = binary(f == "min" ? Op::Le : Op::Ge, a, b);
-      return select(c, da ? da : zero(e), db ? db : zero(e));
+      return select(c, arm(da, e), arm(db, e));
     }
     if (f == "floor" || f == "ceil")
-      return nullptr; // piecewise constant: zero almost everywhere
+      return zero(e->type); // piecewise constant: zero almost everywhere
     ExprP da = d(a);
     if (f == "pow") {
       // d a^b = b·a^(b-1)·da + a^b·log(a)·db
       const ExprP& b = e->ops[1];
       ExprP db = d(b);
-      ExprP t1 = da ? mul(mul(b, call("pow", {a, binary(Op::Sub, b, lit(1, e))}, e->type)), da)
-                    : nullptr;
-      ExprP t2 = db ? mul(mul(named(e, self), call("log", {a}, e->type)), db) : nullptr;
+      ExprP t1 = is_zero(da)
+                     ? da
+                     : mul(mul(b, call("pow", {a, binary(Op::Sub, b, lit(1, e))}, e->type)), da);
+      ExprP t2 = is_zero(db) ? db : mul(mul(named(e, self), call("log", {a}, e->type)), db);
       return add(t1, t2);
     }
-    if (!da)
-      return nullptr;
+    if (is_zero(da))
+      return zero(e->type);
     if (f == "abs") // d|a| = sign(a)·da
-      return select(binary(Op::Lt, a, zero(a)), unary(Op::Neg, da), da);
+      return select(binary(Op::Lt, a, lit(0, a)), unary(Op::Neg, da), da);
     if (f == "sqrt") // d sqrt(a) = da / (2·sqrt(a))
       return binary(Op::Div, da, binary(Op::Mul, lit(2, e), named(e, self)));
     if (f == "exp") // d exp(a) = exp(a)·da

@@ -23,7 +23,7 @@ struct DeriveNames {
 
 /// d value / d(reads): the partial of `value` w.r.t. the Read nodes in
 /// `reads` (occurrences that all read the same cell), as an expression over
-/// the primal values. nullptr stands for an exact zero.
+/// the primal values; zero() (ir.hpp) where it vanishes, never null.
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names);
 
 /// The partials of one kernel's stores, each computed once: d store.value /
@@ -37,7 +37,7 @@ ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveN
 /// only where it applies to one of them).
 class Partials {
 public:
-  /// d s.value / d(reads); nullptr stands for an exact zero.
+  /// d s.value / d(reads); zero() where it vanishes (is_zero), never null.
   const ExprP& of(const Store& s, const std::set<const Expr*>& reads);
 
 private:
@@ -61,7 +61,7 @@ struct TangentLocals {
 
 /// Forward mode: the directional derivative of `value` when each array in
 /// `active` moves along `<array>_dot` (a read a[k] contributes a_dot[k]).
-/// nullptr stands for an exact zero. One `DeriveNames` and `TangentLocals`
+/// zero() where it vanishes (is_zero), never null. One `DeriveNames` and `TangentLocals`
 /// per kernel, so a local shared by several stores gets one tangent.
 ExprP tangent(const ExprP& value, const std::set<std::string>& active, DeriveNames& names,
               TangentLocals& tangents);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <functional>
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -27,7 +28,7 @@ public:
 
   ExprP operator()(const ExprP& e) {
     if (!e)
-      return e;
+      throw std::logic_error("internal error: emit: a null expression to specialize");
     if (e->op == Op::Local) {
       if (e->local->kernel_level)
         return e;
@@ -114,11 +115,20 @@ struct Factored {
   }
 };
 
+// A term's partial as the schedule leaves it: never null, never zero() (the
+// schedule drops the reads whose partial vanishes).
+const ExprP& nonzero_partial(const ExprP& partial) {
+  if (is_zero(partial))
+    throw std::logic_error("internal error: emit: a zero partial reached the emitter (the "
+                           "schedule drops them)");
+  return partial;
+}
+
 void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<PathCond>& guards,
                 const std::string& acc, const std::string& set_hit,
                 Factored* factored = nullptr) {
   Specializer spec(where);
-  ExprP partial = spec(t.partial);
+  ExprP partial = spec(nonzero_partial(t.partial));
   ExprP seed_index = spec(t.store->index);
   std::vector<ExprP> gs;
   for (const auto& pc : guards)
@@ -517,7 +527,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
       code.open(fmt::format("if ({})", conjunction(r.conds)));
     }
     std::map<int, LocalP> locals;
-    collect(r.partial, locals, vars);
+    collect(nonzero_partial(r.partial), locals, vars);
     collect(r.read->ops[0], locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);

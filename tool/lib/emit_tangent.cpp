@@ -24,7 +24,7 @@ constexpr int kMinParallelIterations = 8192;
 struct TangentPlan {
   const Kernel* k = nullptr;
   std::set<std::string> active;       // DPGEN_IN arrays and work arrays
-  std::vector<std::vector<ExprP>> dot; // per nest, per store: its tangent (null: 0)
+  std::vector<std::vector<ExprP>> dot; // per nest, per store: its tangent (may be zero())
   DeriveNames names;
   TangentLocals locals;
 };
@@ -158,7 +158,9 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
     std::string idx = subscript(s.index);
-    std::string dot_text = dot ? print(dot) : type_spelling(s.value->type) == "float" ? "0.0f" : "0.0";
+    std::string dot_text = !is_zero(dot)                             ? print(dot)
+                           : type_spelling(s.value->type) == "float" ? "0.0f"
+                                                                     : "0.0";
     const Param* twin = tp.k->find_param(s.array);
     if (twin && !twin->twin_of.empty()) {
       // In place: both values from the old element first, then the stores.

@@ -23,6 +23,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -101,7 +102,9 @@ using ArmPath = std::vector<std::pair<const Expr*, bool>>;
 
 void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
                    std::set<std::pair<const LocalVar*, ArmPath>>& seen, const ArmPath& path) {
-  if (!e || where.empty())
+  if (!e)
+    throw std::logic_error("internal error: torch: a null expression");
+  if (where.empty())
     return;
   switch (e->op) {
   case Op::Read:
@@ -122,7 +125,27 @@ void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
     collect_reads(e->ops[2], cd ? subtract(where, *cd) : where, out, seen, taken);
     return;
   }
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Call:
+  case Op::Cast:
     for (const auto& o : e->ops)
       collect_reads(o, where, out, seen, path);
   }
@@ -189,7 +212,7 @@ std::string box_nonempty(const Box& b) {
 
 bool params_only(const ExprP& e) {
   if (!e)
-    return true;
+    throw std::logic_error("internal error: torch: a null expression");
   if (e->op == Op::Read || e->op == Op::Local || e->op == Op::LoopVar)
     return false;
   for (const auto& o : e->ops)

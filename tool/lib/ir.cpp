@@ -3,6 +3,7 @@
 #include "ir.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -28,9 +29,24 @@ bool is_bool_op(Op op) {
   case Op::Or:
   case Op::Not:
     return true;
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
     return false;
   }
+  unknown_op("is_bool_op");
 }
 
 Type promote(Type a, Type b) {
@@ -43,7 +59,7 @@ Type promote(Type a, Type b) {
 
 bool const_value(const ExprP& e, double& v) {
   if (!e)
-    return false;
+    throw std::logic_error("internal error: is_const: a null expression");
   if (e->op == Op::IntConst) {
     v = static_cast<double>(e->ival);
     return true;
@@ -82,6 +98,23 @@ ExprP real_const(double v, Type t, std::string spelling) {
   e->rval = v;
   e->spelling = std::move(spelling);
   return e;
+}
+
+ExprP zero(Type t) {
+  auto e = node(Op::RealConst, t);
+  e->exact_zero = true;
+  return e;
+}
+
+bool is_zero(const ExprP& e) {
+  if (!e)
+    throw std::logic_error("internal error: a null expression where a derivative was expected "
+                           "(an exact zero is zero(), ir.hpp)");
+  return e->op == Op::RealConst && e->exact_zero;
+}
+
+void unknown_op(const char* where) {
+  throw std::logic_error(std::string("internal error: ") + where + ": an Op outside the enum");
 }
 
 ExprP param(const std::string& name, Type t) {
@@ -141,7 +174,27 @@ ExprP binary(Op op, ExprP a, ExprP b) {
       return int_const(x - y);
     case Op::Mul:
       return int_const(x * y);
-    default:
+    case Op::IntConst:
+    case Op::RealConst:
+    case Op::Param:
+    case Op::LoopVar:
+    case Op::Local:
+    case Op::Read:
+    case Op::Neg:
+    case Op::Div:
+    case Op::Rem:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Eq:
+    case Op::Ne:
+    case Op::And:
+    case Op::Or:
+    case Op::Not:
+    case Op::Select:
+    case Op::Call:
+    case Op::Cast:
       break;
     }
   }
@@ -184,7 +237,26 @@ ExprP binary(Op op, ExprP a, ExprP b) {
     if (a->op == Op::Neg)
       return unary(Op::Neg, binary(Op::Div, a->ops[0], b));
     break;
-  default:
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
     break;
   }
   return node(op, t, {std::move(a), std::move(b)});
@@ -214,10 +286,10 @@ ExprP cast(ExprP a, Type t) {
 }
 
 bool same(const ExprP& a, const ExprP& b) {
+  if (!a || !b)
+    throw std::logic_error("internal error: same: a null expression");
   if (a == b)
     return true;
-  if (!a || !b)
-    return false;
   if (a->op != b->op || a->type != b->type || a->ops.size() != b->ops.size())
     return false;
   switch (a->op) {
@@ -234,7 +306,23 @@ bool same(const ExprP& a, const ExprP& b) {
     if (a->name != b->name)
       return false;
     break;
-  default:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Cast:
     break;
   }
   for (size_t i = 0; i < a->ops.size(); ++i)

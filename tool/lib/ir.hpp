@@ -84,11 +84,14 @@ struct Expr {
   std::string cast_type; // Cast: the integer type of a widening cast as spelled ("long")
   LocalP local;     // Local
   SourcePos pos;    // Read: where it is in the source (for remarks)
+  /// RealConst: the exact zero of derivative code (zero()), as opposed to a
+  /// 0.0 the kernel wrote. Derivative rules fold it (0·x = 0, 0 + x = x).
+  bool exact_zero = false;
 };
 
 // Constructors. They fold the trivial cases (x*1, x+0, -(-x), constants) so
-// derivatives come out readable; a null ExprP stands for an exact zero in the
-// derivative code (see derive.hpp).
+// derivatives come out readable. No ExprP in the IR or a plan is null: an
+// exact zero in derivative code is zero() (see derive.hpp).
 ExprP int_const(long long v);
 ExprP real_const(double v, Type t, std::string spelling = "");
 ExprP param(const std::string& name, Type t);
@@ -100,6 +103,15 @@ ExprP binary(Op op, ExprP a, ExprP b);
 ExprP select(ExprP c, ExprP a, ExprP b);
 ExprP call(const std::string& fn, std::vector<ExprP> args, Type t);
 ExprP cast(ExprP a, Type t);
+
+/// The exact zero of derivative code: a RealConst 0 of type `t`, marked
+/// exact_zero. It prints as 0.0 (a conditional's arm that carries no
+/// derivative); derive.cpp folds it out of sums and products, and consumers
+/// test is_zero() where a derivative may vanish.
+ExprP zero(Type t);
+/// Whether `e` is zero() (not a 0.0 the kernel wrote). A null `e` is an
+/// internal error (std::logic_error).
+bool is_zero(const ExprP& e);
 
 /// `e` with every operand replaced by f(operand); `e` itself if none changed.
 template <typename F> ExprP map_operands(const ExprP& e, F&& f) {
@@ -115,6 +127,10 @@ template <typename F> ExprP map_operands(const ExprP& e, F&& f) {
   copy->ops = std::move(ops);
   return copy;
 }
+
+/// A switch over Op with a case for every value was given a value outside
+/// the enum: an internal error (std::logic_error) naming `where`.
+[[noreturn]] void unknown_op(const char* where);
 
 bool is_const(const ExprP& e, double v);
 /// Structural equality (Locals compare by identity).

@@ -6,6 +6,7 @@
 #include "ir.hpp"
 
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -13,11 +14,13 @@ namespace dpgen {
 /// left to right; visit returns false to skip what is below x. Below a Local
 /// is its definition: walked when enter(x) (x the Local) returns true, and
 /// then only the first time that local is met (`seen`, shared by calls that
-/// should not walk a definition twice). A null `e` (an exact zero in
-/// derivative code) is skipped.
+/// should not walk a definition twice). A null `e` is an internal error (no
+/// ExprP is null; an exact zero is zero(), ir.hpp).
 template <typename Visit, typename Enter>
 void walk(const ExprP& e, Visit&& visit, Enter&& enter, std::set<const LocalVar*>& seen) {
-  if (!e || !visit(e))
+  if (!e)
+    throw std::logic_error("internal error: walk: a null expression");
+  if (!visit(e))
     return;
   if (e->op == Op::Local) {
     if (enter(e) && seen.insert(e->local.get()).second)

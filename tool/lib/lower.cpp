@@ -27,7 +27,9 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -56,8 +58,8 @@ std::string math_function(const FunctionDecl* f) {
 // What a name in the kernel body refers to.
 struct Binding {
   enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray } kind;
-  ExprP value;              // Value: current SSA value (null: uninitialised)
-  std::vector<ExprP> elems; // LocalArray: each element's value (null: unset)
+  std::optional<ExprP> value;              // Value: current SSA value (none: uninitialised)
+  std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
   Type elem = Type::Double; // LocalArray: element type
   const Param* param = nullptr;
   bool kernel_level = false; // Value defined outside every loop
@@ -689,7 +691,8 @@ private:
 
     // Merge values assigned in the branches: v = c ? v_then : v_else. A
     // branch that escaped contributes nothing to what follows.
-    auto merge = [&](const VarDecl* decl, ExprP t, ExprP e) -> ExprP {
+    auto merge = [&](const VarDecl* decl, std::optional<ExprP> t,
+                     std::optional<ExprP> e) -> std::optional<ExprP> {
       if (then_e == Escape::Always)
         t = e;
       if (else_e == Escape::Always)
@@ -697,12 +700,12 @@ private:
       if (t == e)
         return t;
       if (!t || !e)
-        return nullptr; // assigned in one branch only: uninitialised after
+        return std::nullopt; // assigned in one branch only: uninitialised after
       // Values made inside a branch are inlined into the select, so nothing
       // of a branch is evaluated where the branch does not run.
-      t = inline_locals(t, first_local, after_then);
-      e = inline_locals(e, after_then, after_else);
-      return make_local(decl->getNameAsString(), decl, select(c, t, e));
+      ExprP then_value = inline_locals(*t, first_local, after_then);
+      ExprP else_value = inline_locals(*e, after_then, after_else);
+      return make_local(decl->getNameAsString(), decl, select(c, then_value, else_value));
     };
     for (auto& [decl, b] : env_) {
       if (b.kind == Binding::Value) {
@@ -730,7 +733,7 @@ private:
 
   ExprP inline_locals(const ExprP& e, int from, int to) {
     if (!e)
-      return e;
+      throw std::logic_error("internal error: lower: a null expression to inline");
     if (e->op == Op::Local) {
       if (e->local->id >= from && e->local->id < to)
         return inline_locals(e->local->def, from, to);
@@ -827,7 +830,7 @@ private:
     Binding b;
     b.kind = Binding::LocalArray;
     b.elem = *t;
-    b.elems.assign(n, nullptr);
+    b.elems.assign(n, std::nullopt);
     if (const clang::Expr* init = v->getInit()) {
       const auto* list = dyn_cast<InitListExpr>(init->IgnoreImplicit());
       if (!list)
@@ -1060,7 +1063,7 @@ private:
         --unrolling_;
         if (saved) {
           env_[var] = *saved;
-          env_[var].value = nullptr;
+          env_[var].value = std::nullopt;
           why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
                                         "bound instead",
                                         var->getNameAsString());
@@ -1123,9 +1126,9 @@ private:
       if (it == env_.end() ||
           (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
         continue;
-      it->second.value = nullptr;
+      it->second.value = std::nullopt;
       for (auto& el : it->second.elems)
-        el = nullptr;
+        el = std::nullopt;
       why_unset_[v] = fmt::format(
           "'{}' is declared outside the loop and assigned inside it, and read here before it is "
           "assigned in this iteration: a value carried from one iteration to the next (a running "
@@ -1151,16 +1154,16 @@ private:
       if (it == env_.end() ||
           (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
         continue;
-      it->second.value = nullptr;
+      it->second.value = std::nullopt;
       for (auto& el : it->second.elems)
-        el = nullptr;
+        el = std::nullopt;
       why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
                                   "is the last iteration's, outside the kernel subset",
                                   v->getNameAsString());
     }
     if (const auto* d = dyn_cast_or_null<DeclStmt>(f->getInit()); !d) {
       // A C89 counter is not a value after its loop either.
-      env_[var].value = nullptr;
+      env_[var].value = std::nullopt;
       why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
                                     "bound instead",
                                     var->getNameAsString());
@@ -1354,7 +1357,7 @@ private:
     }
     if (auto le = local_element(lhs)) {
       Binding& b = env_[le->first];
-      ExprP& slot = b.elems[le->second];
+      std::optional<ExprP>& slot = b.elems[le->second];
       std::string name = fmt::format("{}_{}", le->first->getNameAsString(), le->second);
       if (op == BO_Assign) {
         slot = make_local(name, nullptr, cast(expr(rhs), b.elem));
@@ -1367,7 +1370,7 @@ private:
                : op == BO_MulAssign ? Op::Mul : op == BO_DivAssign ? Op::Div : Op::Rem;
       if (bop == Op::Rem)
         fail(loc, "this compound assignment is outside the kernel subset");
-      slot = make_local(name, nullptr, cast(binary(bop, slot, r), b.elem));
+      slot = make_local(name, nullptr, cast(binary(bop, *slot, r), b.elem));
       return;
     }
     if (auto acc = element(lhs)) {
@@ -1476,7 +1479,7 @@ private:
       default:
         fail(loc, "this compound assignment is outside the kernel subset");
       }
-      value = binary(bop, b.value, r);
+      value = binary(bop, *b.value, r);
       if (bop == Op::Sub && var->getType().getNonReferenceType()->isUnsignedIntegerType())
         check_unsigned_result(value, loc,
                               fmt::format("unsigned '{}' after '-='", var->getNameAsString()),
@@ -2092,13 +2095,13 @@ private:
       const Binding& b = env_[v];
       if (!b.value)
         fail(e->getBeginLoc(), unset_message(v, "may be used before it has a value"));
-      return b.value;
+      return *b.value;
     }
     if (auto le = local_element(e)) {
-      const ExprP& v = env_[le->first].elems[le->second];
+      const std::optional<ExprP>& v = env_[le->first].elems[le->second];
       if (!v)
         fail(e->getBeginLoc(), unset_message(le->first, "may be used before it has a value"));
-      return v;
+      return *v;
     }
     if (auto acc = element(e)) {
       const Param* p = acc->param;
@@ -2270,7 +2273,7 @@ private:
                                          "read",
                                          b.param->name));
     case Binding::LoopVar:
-      return b.value;
+      return *b.value;
     case Binding::LocalArray:
       fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
                                          "can be read",
@@ -2282,9 +2285,9 @@ private:
                                            v->getNameAsString(), v->getNameAsString()));
       if (!b.value)
         fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
-      return b.value;
+      return *b.value;
     }
-    return nullptr;
+    throw std::logic_error("internal error: lower: a binding of no known kind");
   }
 
   ExprP binary_expr(const BinaryOperator* b) {

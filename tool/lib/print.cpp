@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <set>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -41,9 +42,15 @@ int precedence(const Expr& e) {
     return e.ival < 0 ? 8 : 10;
   case Op::RealConst:
     return e.rval < 0 ? 8 : 10;
-  default:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Call:
+  case Op::Cast:
     return 10;
   }
+  unknown_op("precedence");
 }
 
 const char* symbol(Op op) {
@@ -74,9 +81,21 @@ const char* symbol(Op op) {
     return "&&";
   case Op::Or:
     return "||";
-  default:
-    return "?";
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast: // not binary: print() never asks
+    throw std::logic_error("internal error: print: an operator symbol for a node that is not "
+                           "binary");
   }
+  unknown_op("symbol");
 }
 
 std::string wrap(const ExprP& e, int min_prec) {
@@ -139,6 +158,9 @@ std::string subscript(const ExprP& index) {
 }
 
 std::string print(const ExprP& e) {
+  if (!e) // no ExprP is null (an exact zero is zero(), ir.hpp): a bug in the phase that made it
+    throw std::logic_error("internal error: print: a null expression (a missing value in the IR "
+                           "or plan; an exact zero is zero(), ir.hpp)");
   switch (e->op) {
   case Op::IntConst:
     return std::to_string(e->ival);
@@ -172,13 +194,26 @@ std::string print(const ExprP& e) {
   case Op::Cast: // cast_type: the integer type of a widening cast ("long")
     return fmt::format("static_cast<{}>({})", e->cast_type.empty() ? type_spelling(e->type) : e->cast_type,
                        print(e->ops[0]));
-  default: {
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Lt:
+  case Op::Le:
+  case Op::Gt:
+  case Op::Ge:
+  case Op::Eq:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or: {
     // Binary, left-associative: a right operand of equal precedence keeps its
     // parentheses, so floating-point evaluation order is exactly the IR's.
     int p = precedence(*e);
     return fmt::format("{} {} {}", wrap(e->ops[0], p), symbol(e->op), wrap(e->ops[1], p + 1));
   }
   }
+  unknown_op("print");
 }
 
 std::string print_max(const std::vector<Poly>& set, const std::string& int_type) {

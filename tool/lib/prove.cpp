@@ -36,7 +36,25 @@ bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) 
     case Op::Ge: op = Op::Lt; break;
     case Op::Eq: op = Op::Ne; break;
     case Op::Ne: op = Op::Eq; break;
-    default: return false;
+    case Op::IntConst:
+    case Op::RealConst:
+    case Op::Param:
+    case Op::LoopVar:
+    case Op::Local:
+    case Op::Read:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Rem:
+    case Op::And:
+    case Op::Or:
+    case Op::Not:
+    case Op::Select:
+    case Op::Call:
+    case Op::Cast:
+      return false;
     }
   }
   if (op != Op::Lt && op != Op::Le && op != Op::Gt && op != Op::Ge && op != Op::Eq)
@@ -56,7 +74,26 @@ bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) 
     out.push_back(*d);
     out.push_back(-*d);
     break;
-  default: break;
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+  case Op::Neg:
+  case Op::Add:
+  case Op::Sub:
+  case Op::Mul:
+  case Op::Div:
+  case Op::Rem:
+  case Op::Ne:
+  case Op::And:
+  case Op::Or:
+  case Op::Not:
+  case Op::Select:
+  case Op::Call:
+  case Op::Cast:
+    break;
   }
   return true;
 }

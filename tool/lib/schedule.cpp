@@ -210,6 +210,9 @@ AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
   plan.kernel = &k;
   std::map<GroupKey, size_t> group_index;
   std::map<BlockKey, size_t> block_index;
+  // The store and reads of each block (group, block index); its term and the
+  // term's partial are made once every read is in.
+  std::map<std::pair<size_t, size_t>, std::pair<const Store*, std::set<const Expr*>>> merged;
 
   for (const auto& param : k.params) {
     if (param.kind != ParamKind::In)
@@ -226,7 +229,7 @@ AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
           if (r->name != param.name)
             continue;
           const ExprP& partial = partials.of(store, {r});
-          if (!partial)
+          if (is_zero(partial))
             continue; // read only through a condition or an index
           auto pieces = index_pieces(r->ops[0]);
           std::vector<std::pair<IndexPiece, Decomposed>> affine;
@@ -298,14 +301,15 @@ AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
               b.shift = dec.shift;
               b.domain = bdom;
               b.guards = rguards;
-              b.terms.push_back({&store, {}, nullptr});
               b.comment = describe_read(r);
               g.blocks.push_back(b);
               bit = block_index.emplace(bkey, g.blocks.size() - 1).first;
             } else if (g.blocks[bit->second].comment.find(describe_read(r)) == std::string::npos) {
               g.blocks[bit->second].comment += ", " + describe_read(r);
             }
-            g.blocks[bit->second].terms.front().reads.insert(r);
+            auto& block_reads = merged[{git->second, bit->second}];
+            block_reads.first = &store;
+            block_reads.second.insert(r);
           }
         }
         if (!scatter.reads.empty())
@@ -314,14 +318,17 @@ AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
     }
   }
   // Partials of the merged reads of each block, and the bulk classification.
-  for (auto& g : plan.gathers) {
-    for (auto& b : g.blocks) {
-      for (auto& t : b.terms)
-        t.partial = partials.of(*t.store, t.reads);
+  for (size_t gi = 0; gi < plan.gathers.size(); ++gi) {
+    GatherGroup& g = plan.gathers[gi];
+    for (size_t bi = 0; bi < g.blocks.size(); ++bi) {
+      Block& b = g.blocks[bi];
+      const auto& [store, reads] = merged.at({gi, bi});
+      b.terms.push_back({store, reads, partials.of(*store, reads)});
       b.bulk = is_bulk(b, g);
     }
+    // A merged partial that vanishes: emit never sees a zero term.
     g.blocks.erase(std::remove_if(g.blocks.begin(), g.blocks.end(),
-                                  [](const Block& b) { return !b.terms.front().partial; }),
+                                  [](const Block& b) { return is_zero(b.terms.front().partial); }),
                    g.blocks.end());
   }
   plan.gathers.erase(std::remove_if(plan.gathers.begin(), plan.gathers.end(),

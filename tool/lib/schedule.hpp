@@ -41,7 +41,7 @@ namespace dpgen {
 struct Term {
   const Store* store = nullptr;
   std::set<const Expr*> reads;
-  ExprP partial;
+  ExprP partial; // never zero(): the schedule drops a read whose partial vanishes
 };
 
 /// Terms evaluated at one iteration: iteration = cell - shift.
@@ -65,7 +65,7 @@ struct GatherGroup {
 
 struct ScatterRead {
   const Expr* read;
-  ExprP partial;
+  ExprP partial;               // never zero(), as Term::partial
   std::vector<PathCond> conds; // the read happens only where these hold
 };
 
