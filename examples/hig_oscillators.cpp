@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -311,13 +310,13 @@ int main(int argc, char** argv) try {
     };
 
     const std::string csv_path = dir + method + ".csv";
-    std::ofstream csv(csv_path);
-    csv << "epoch,seconds,loss\n";
+    dpgen_examples::CsvLog csv(csv_path, "epoch,seconds,loss");
     const auto record = [&](int epoch, double seconds, double loss) {
       h.epoch.push_back(epoch);
       h.seconds.push_back(seconds);
       h.loss.push_back(loss);
-      csv << epoch << ',' << seconds << ',' << loss << '\n';
+      csv.line(std::to_string(epoch) + ',' + dpgen_examples::number(seconds) + ',' +
+               dpgen_examples::number(loss));
       std::printf("%s epoch %4d  wall clock %8.3f s  loss %.6e\n", h.name.c_str(), epoch, seconds,
                   loss);
       std::fflush(stdout);

@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -166,15 +165,16 @@ int main(int argc, char** argv) try {
   std::printf("PG: %d CG iterations in all (each applies P and P^T once)\n", cg_iterations);
 
   const std::string dir = dpgen_examples::output_dir(common.out);
-  std::ofstream csv(dir + "losses.csv");
-  csv << "method,iter,loss_y,error_x\n";
+  dpgen_examples::CsvLog csv(dir + "losses.csv", "method,iter,loss_y,error_x");
   std::vector<dpgen_examples::Series> ys, xs;
   for (const Curve& c : curves) {
     for (std::size_t k = 0; k < c.iter.size(); ++k)
-      csv << c.name << ',' << k << ',' << c.loss[k] << ',' << c.x_error[k] << '\n';
+      csv.line(c.name + ',' + std::to_string(k) + ',' + dpgen_examples::number(c.loss[k]) + ',' +
+               dpgen_examples::number(c.x_error[k]));
     ys.push_back({c.name, c.iter, c.loss, c.color});
     xs.push_back({c.name, c.iter, c.x_error, c.color});
   }
+  csv.close();
   dpgen_examples::write_svg_plot(dir + "loss_y.svg", "inverse heat: |P(x) - y*|^2", "iteration",
                                  "loss in y", ys, true);
   dpgen_examples::write_svg_plot(dir + "error_x.svg", "inverse heat: |x - x*|^2", "iteration",

@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -145,8 +144,7 @@ int main(int argc, char** argv) try {
         [&](VectorXd& x) { x += dpgen::hig_update(physics_jacobian(x), 2.0 * physics(x), hig_options).step; });
 
   const std::string dir = dpgen_examples::output_dir(common.out);
-  std::ofstream csv(dir + "iterates.csv");
-  csv << "method,iter,x0,x1,loss\n";
+  dpgen_examples::CsvLog csv(dir + "iterates.csv", "method,iter,x0,x1,loss");
   std::vector<dpgen_examples::Series> loss_series, path_series;
   for (std::size_t m = 0; m < runs.size(); ++m) {
     const Run& r = runs[m];
@@ -154,7 +152,8 @@ int main(int argc, char** argv) try {
     for (std::size_t k = 0; k < r.xs.size(); ++k) {
       const VectorXd& x = r.xs[k];
       const double l = loss_of_y(physics(x));
-      csv << r.name << ',' << k << ',' << x[0] << ',' << x[1] << ',' << l << '\n';
+      csv.line(r.name + ',' + std::to_string(k) + ',' + dpgen_examples::number(x[0]) + ',' +
+               dpgen_examples::number(x[1]) + ',' + dpgen_examples::number(l));
       ls.x.push_back(double(k));
       ls.y.push_back(l);
       ps.x.push_back(x[0]);

@@ -17,7 +17,8 @@
 namespace dpgen_examples {
 
 /// A CSV log with the header `iter,loss,grad_norm,seconds` and one row per training iteration
-/// (iter 0 being the state before the first update). Rows go to `<path>.partial`, flushed line
+/// (iter 0 being the state before the first update), or with a header of the caller's and rows
+/// given as text (line()). Rows go to `<path>.partial`, flushed line
 /// by line; close() (or the destructor, e.g. while an exception unwinds) renames that file to
 /// `path`, replacing an older log. So `path` only ever holds a finished run's complete log
 /// (ending with the offending row when the run stopped on NaN/Inf), and a process killed
@@ -25,13 +26,15 @@ namespace dpgen_examples {
 /// An empty path makes a log that writes nothing.
 class CsvLog {
 public:
-  explicit CsvLog(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+  explicit CsvLog(std::string path) : CsvLog(std::move(path), "iter,loss,grad_norm,seconds") {}
+  CsvLog(std::string path, const std::string& header)
+      : path_(std::move(path)), partial_(path_ + ".partial") {
     if (path_.empty())
       return;
     out_.open(partial_, std::ios::out | std::ios::trunc);
     if (!out_)
-      throw std::runtime_error("training log: cannot open '" + partial_ + "' for writing");
-    out_ << "iter,loss,grad_norm,seconds\n" << std::flush;
+      throw std::runtime_error("csv log: cannot open '" + partial_ + "' for writing");
+    out_ << header << '\n' << std::flush;
   }
   CsvLog(const CsvLog&) = delete;
   CsvLog& operator=(const CsvLog&) = delete;
@@ -52,12 +55,20 @@ public:
   void row(const dpgen::TrainProgress& p) {
     if (!out_.is_open())
       return;
-    char line[128];
-    std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.9g\n", p.iteration, p.loss, p.grad_norm,
+    char text[128];
+    std::snprintf(text, sizeof text, "%d,%.17g,%.17g,%.9g", p.iteration, p.loss, p.grad_norm,
                   p.seconds);
-    out_ << line << std::flush;
+    line(text);
+  }
+
+  /// Appends one row given as text, without its line end (flushed at once). Throws
+  /// std::runtime_error when writing fails.
+  void line(const std::string& text) {
+    if (!out_.is_open())
+      return;
+    out_ << text << '\n' << std::flush;
     if (!out_)
-      throw std::runtime_error("training log: writing '" + partial_ + "' failed");
+      throw std::runtime_error("csv log: writing '" + partial_ + "' failed");
   }
 
   /// Finishes the log: renames `<path>.partial` to `path`. Further rows are ignored. Throws
@@ -79,6 +90,13 @@ private:
   std::string path_, partial_;
   std::ofstream out_;
 };
+
+/// A number as a CSV field: shortest text that reads back to the same double ("%.17g").
+inline std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
 
 /// Hooks a CsvLog at `path` (nothing when empty) into `options`' observer: each row is logged,
 /// then passed on to the observer already there. The log is published when the last copy of

@@ -129,6 +129,26 @@ TEST_CASE("csv log: an empty path logs nothing; an unwritable one throws") {
   CHECK_FALSE(options.callback); // nothing hooked in
   none->close();
   CHECK_THROWS_WITH_AS(dpgen_examples::CsvLog("/nonexistent-dir/log.csv"),
-                       "training log: cannot open '/nonexistent-dir/log.csv.partial' for writing",
+                       "csv log: cannot open '/nonexistent-dir/log.csv.partial' for writing",
                        std::runtime_error);
+}
+
+TEST_CASE("csv log: a header of the caller's and rows as text (the examples' other CSVs)") {
+  const fs::path dir = scratch_dir("lines");
+  const fs::path csv = dir / "iterates.csv";
+  {
+    dpgen_examples::CsvLog log(csv.string(), "method,iter,loss");
+    log.line("GD,0," + dpgen_examples::number(0.1));
+    CHECK_FALSE(fs::exists(csv)); // still <path>.partial while it is written
+    CHECK(fs::exists(csv.string() + ".partial"));
+    log.line("GD,1," + dpgen_examples::number(1.0 / 3.0));
+    log.close();
+  }
+  const std::vector<std::string> lines = read_lines(csv);
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[0] == "method,iter,loss");
+  CHECK(lines[1] == "GD,0,0.10000000000000001");
+  // number() round-trips: the field reads back to the same double.
+  CHECK(std::stod(split(lines[2])[2]) == 1.0 / 3.0);
+  fs::remove_all(dir);
 }
