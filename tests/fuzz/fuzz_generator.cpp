@@ -2,8 +2,10 @@
 // through lowering, scheduling and emission. The tool must never crash or
 // hang, and every kernel it accepts must produce code that compiles: the
 // generated file is parsed by Clang, and a failure aborts (a finding).
-#include "lib/emit.hpp"
+#include "lib/derive.hpp"
+#include "lib/emit_file.hpp"
 #include "lib/find.hpp"
+#include "lib/loop_plan.hpp"
 #include "lib/schedule.hpp"
 
 #include <clang/Frontend/FrontendActions.h>
@@ -47,6 +49,21 @@ bool compiles(const dpgen::EmittedFile& f) {
       {{"fuzz_adjoint.hpp", f.header}});
 }
 
+// The phases after lowering, as generate.cpp runs them: derive, schedule,
+// plan the loops, emit.
+dpgen::EmittedFile generate(const std::vector<dpgen::Kernel>& kernels) {
+  std::vector<dpgen::AdjointPlan> plans;
+  plans.reserve(kernels.size()); // the loop plans point into this vector
+  for (const auto& k : kernels) {
+    dpgen::Partials partials = dpgen::derive(k);
+    plans.push_back(dpgen::schedule(k, partials));
+  }
+  std::vector<dpgen::LoopPlan> loops;
+  for (const auto& p : plans)
+    loops.push_back(dpgen::plan_loops(p));
+  return dpgen::emit_file(loops, "fuzz.cpp", "fuzz");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -57,18 +74,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels,
                          {{"dpgen/annotate.hpp", annotate_header()}}))
     return 0; // rejected with a diagnostic: fine
-  std::vector<dpgen::AdjointPlan> plans;
-  for (const auto& k : kernels)
-    plans.push_back(dpgen::schedule(k));
-  dpgen::EmittedFile f = dpgen::emit_file(plans, "fuzz.cpp", "fuzz");
+  dpgen::EmittedFile f = generate(kernels);
   // The output is a function of the kernel alone: the same input again, in
   // the same process, gives the same text (no counters that survive a run).
   std::vector<dpgen::Kernel> again;
   dpgen::lower_code(code, "fuzz.cpp", options(), again, {{"dpgen/annotate.hpp", annotate_header()}});
-  std::vector<dpgen::AdjointPlan> plans2;
-  for (const auto& k : again)
-    plans2.push_back(dpgen::schedule(k));
-  dpgen::EmittedFile f2 = dpgen::emit_file(plans2, "fuzz.cpp", "fuzz");
+  dpgen::EmittedFile f2 = generate(again);
   if (f2.source != f.source || f2.header != f.header) {
     llvm::errs() << "fuzz: the same kernel generated different code on a second run:\n"
                  << code << "\n";

@@ -102,8 +102,9 @@ private:
     }
     // A work array read outside every loop into a local would be needed by
     // every nest's adjoint; only stores outside loops may read it directly.
-    for (const auto& [array, at] : a_.kernel_level_work_reads)
+    for (const auto& [array_name, at] : a_.kernel_level_work_reads)
       for (const auto& l : k_.kernel_locals) {
+        const std::string& array = array_name; // (a lambda captures no structured binding in C++17)
         if (any_node(l->def,
                      [&](const ExprP& x) { return x->op == Op::Read && x->name == array; })) {
           fail(at, fmt::format("a local outside every loop reads work array '{}'; use the "
