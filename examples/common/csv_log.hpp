@@ -1,4 +1,4 @@
-// The examples' training log: a CSV file fed by dpgen::train()'s per-iteration observer
+// The examples' CSV files: the training log fed by dpgen::train()'s per-iteration observer
 // (TrainOptions::callback). The runtime itself writes no files; this is where the examples do.
 #pragma once
 
@@ -46,7 +46,7 @@ public:
       std::error_code error;
       std::filesystem::rename(partial_, path_, error);
       if (error)
-        std::fprintf(stderr, "warning: training log: cannot rename '%s' to '%s': %s\n",
+        std::fprintf(stderr, "warning: csv log: cannot rename '%s' to '%s': %s\n",
                      partial_.c_str(), path_.c_str(), error.message().c_str());
     }
   }
@@ -80,7 +80,7 @@ public:
     std::error_code error;
     std::filesystem::rename(partial_, path_, error);
     if (error)
-      throw std::runtime_error("training log: cannot rename '" + partial_ + "' to '" + path_ +
+      throw std::runtime_error("csv log: cannot rename '" + partial_ + "' to '" + path_ +
                                "': " + error.message());
   }
 
@@ -91,7 +91,8 @@ private:
   std::ofstream out_;
 };
 
-/// A number as a CSV field: shortest text that reads back to the same double ("%.17g").
+/// A number as a CSV field that reads back to the same double ("%.17g": 0.1 is
+/// 0.10000000000000001).
 inline std::string number(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);

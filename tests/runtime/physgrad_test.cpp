@@ -128,6 +128,35 @@ TEST_CASE("pg_minimize: NaN loss and non-finite inverse are termination reasons"
   CHECK(timed.iterations == 0);
 }
 
+TEST_CASE("pg_minimize: a converged run or one at its limit stops before the inverse solve") {
+  // The inverse fails wherever it is called: a run that has converged, or has no update left,
+  // must stop with that reason and never call it.
+  const VectorXd target = VectorXd::Ones(2);
+  dpgen::PhysicalGradientProblem p;
+  int inverse_calls = 0;
+  p.forward = [](const VectorXd& x) -> VectorXd { return x; };
+  p.inverse = [&](const VectorXd& y, const VectorXd&) -> VectorXd {
+    ++inverse_calls;
+    return VectorXd::Constant(y.size(), std::numeric_limits<double>::infinity());
+  };
+  p.loss = dpgen::l2_loss_newton(target);
+  dpgen::PgOptions o;
+  o.loss_tolerance = 1e-12;
+  VectorXd x = target; // loss 0: converged at the start
+  const dpgen::PgSummary done = dpgen::pg_minimize(p, x, o);
+  CHECK(done.termination == dpgen::Termination::loss_tolerance);
+  CHECK(done.iterations == 0);
+  CHECK(inverse_calls == 0);
+
+  o.loss_tolerance = 0.0;
+  o.max_iterations = 0; // no update allowed
+  x = VectorXd::Zero(2);
+  const dpgen::PgSummary limit = dpgen::pg_minimize(p, x, o);
+  CHECK(limit.termination == dpgen::Termination::max_iterations);
+  CHECK(limit.final_loss == doctest::Approx(2.0));
+  CHECK(inverse_calls == 0);
+}
+
 TEST_CASE("regularized inverse: the dense Tikhonov solution; lambda -> 0 inverts exactly") {
   // A smoothing operator (three Jacobi-style diffusion passes), applied as a dense matrix.
   const int n = 16;

@@ -27,8 +27,7 @@ struct PhysicalGradientProblem {
   /// y = P(x).
   std::function<Eigen::VectorXd(const Eigen::VectorXd& x)> forward;
   /// An x' with P(x') = y_target (or near it), found locally around the current x.
-  std::function<Eigen::VectorXd(const Eigen::VectorXd& y_target, const Eigen::VectorXd& x)>
-      inverse;
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& y_target, const Eigen::VectorXd& x)> inverse;
   /// Returns L(y) and writes the Newton step of L in y, (d2L/dy2)^-1 dL/dy, into `newton_step`.
   std::function<double(const Eigen::VectorXd& y, Eigen::VectorXd& newton_step)> loss;
 };
@@ -82,34 +81,38 @@ inline void check_pg(const PhysicalGradientProblem& p, const PgOptions& o) {
         message("pg: max_iterations must be >= 0 (got ", o.max_iterations, ")"));
 }
 
-} // namespace detail
-
-namespace detail {
-
-// The PG update of x into x_new; returns max_iterations ("all finite") or loss_not_finite (the
-// loss or P(x) is NaN or Inf) or gradient_not_finite (the inverse simulator's result is), with
-// the message in `what`. Sizes are checked by throwing std::invalid_argument.
-inline Termination pg_update(const PhysicalGradientProblem& problem, const Eigen::VectorXd& x,
-                             const PgOptions& options, PgStep& step, Eigen::VectorXd& x_new,
-                             std::string& what) {
-  const Eigen::VectorXd y = problem.forward(x);
-  Eigen::Index bad = first_non_finite(y);
+// The first half of a PG update: P(x), the loss and its Newton step in y. Returns
+// max_iterations ("all finite") or loss_not_finite (the loss or P(x) is NaN or Inf), with the
+// message in `what`.
+inline Termination pg_loss(const PhysicalGradientProblem& problem, const Eigen::VectorXd& x,
+                           PgStep& step, Eigen::VectorXd& y, Eigen::VectorXd& newton,
+                           std::string& what) {
+  y = problem.forward(x);
+  const Eigen::Index bad = first_non_finite(y);
   if (bad >= 0) {
     step.loss = std::numeric_limits<double>::quiet_NaN();
     what = message("pg: P(x) contains ", format_number(y[bad]), " at index ", bad);
     return Termination::loss_not_finite;
   }
-  Eigen::VectorXd newton;
   step.loss = problem.loss(y, newton);
   if (!std::isfinite(step.loss)) {
     what = message("pg: loss is ", step.loss, " at the current x");
     return Termination::loss_not_finite;
   }
   require_size(newton.size(), y.size(), "pg", "Newton step in y");
+  return Termination::max_iterations;
+}
+
+// The second half: x_new = P^-1(y - lr newton; x). Returns max_iterations ("all finite") or
+// gradient_not_finite (the inverse simulator's result is NaN or Inf), with the message in `what`.
+inline Termination pg_inverse(const PhysicalGradientProblem& problem, const Eigen::VectorXd& x,
+                              const Eigen::VectorXd& y, const Eigen::VectorXd& newton,
+                              const PgOptions& options, PgStep& step, Eigen::VectorXd& x_new,
+                              std::string& what) {
   const Eigen::VectorXd y_target = y - options.learning_rate * newton; // y' = y - lr H^-1 g
   x_new = problem.inverse(y_target, x);                                // x' = P^-1(y')
   require_size(x_new.size(), x.size(), "pg", "inverse simulator's result");
-  bad = first_non_finite(x_new);
+  const Eigen::Index bad = first_non_finite(x_new);
   if (bad >= 0) {
     what = message("pg: inverse simulator's result contains ", format_number(x_new[bad]),
                    " at index ", bad);
@@ -117,6 +120,17 @@ inline Termination pg_update(const PhysicalGradientProblem& problem, const Eigen
   }
   step.update_norm = (x_new - x).norm();
   return Termination::max_iterations;
+}
+
+// The whole PG update of x into x_new (pg_loss, then pg_inverse).
+inline Termination pg_update(const PhysicalGradientProblem& problem, const Eigen::VectorXd& x,
+                             const PgOptions& options, PgStep& step, Eigen::VectorXd& x_new,
+                             std::string& what) {
+  Eigen::VectorXd y, newton;
+  const Termination t = pg_loss(problem, x, step, y, newton, what);
+  return t != Termination::max_iterations
+             ? t
+             : pg_inverse(problem, x, y, newton, options, step, x_new, what);
 }
 
 } // namespace detail
@@ -151,16 +165,21 @@ inline PgSummary pg_minimize(const PhysicalGradientProblem& problem, Eigen::Vect
   detail::require_finite(x, "pg", "x");
   PgSummary summary;
   PgStep step;
-  Eigen::VectorXd x_new;
+  Eigen::VectorXd y, newton, x_new;
   std::string what;
+  const auto fail = [&](Termination t) {
+    summary.termination = t;
+    summary.message = detail::message(what, " (after ", summary.iterations, " updates)");
+  };
   for (;;) {
-    const Termination t = detail::pg_update(problem, x, options, step, x_new, what);
+    // The loss first: a run that has converged or reached its limits stops without the
+    // inverse solve of an update it would not apply.
+    const Termination t = detail::pg_loss(problem, x, step, y, newton, what);
     if (summary.iterations == 0)
       summary.initial_loss = step.loss;
     summary.final_loss = step.loss;
     if (t != Termination::max_iterations) {
-      summary.termination = t;
-      summary.message = detail::message(what, " (after ", summary.iterations, " updates)");
+      fail(t);
       break;
     }
     if (step.loss <= options.loss_tolerance) {
@@ -173,6 +192,11 @@ inline PgSummary pg_minimize(const PhysicalGradientProblem& problem, Eigen::Vect
     }
     if (std::chrono::duration<double>(clock::now() - start).count() >= options.time_limit) {
       summary.termination = Termination::time_limit;
+      break;
+    }
+    const Termination u = detail::pg_inverse(problem, x, y, newton, options, step, x_new, what);
+    if (u != Termination::max_iterations) {
+      fail(u);
       break;
     }
     x = x_new;
