@@ -176,8 +176,11 @@ struct LbfgsOptions : LBFGSpp::LBFGSParam<double> {
 };
 
 /// What lbfgs_minimize did.
+/// When L-BFGS stops on a failure (line_search_failed, a non-finite loss or gradient), LBFGS++
+/// does not say after how many iterations: `iterations` and `final_grad_norm` stay 0 then, and
+/// `evaluations` (and the message) say when.
 struct LbfgsSummary : MinimizerSummary {
-  double final_grad_norm = 0.0; ///< |dL/dx| at the returned x
+  double final_grad_norm = 0.0; ///< |dL/dx| at the returned x (0 after a failure)
   int evaluations = 0;          ///< evaluations of f in all
 };
 

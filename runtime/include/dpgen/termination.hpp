@@ -105,7 +105,8 @@ struct MinimizerSummary {
 
 /// Thrown when an optimizer cannot go on: a failed line search, a NaN or Inf loss, gradient,
 /// residual or Jacobian. When thrown by a minimizer (rather than by one Optimizer::step), it
-/// carries the run's summary, whose termination says why and whose iterations say when.
+/// carries the run's summary, whose termination says why and whose iterations say when (for
+/// L-BFGS, its evaluations: see LbfgsSummary).
 class OptimizationError : public std::runtime_error {
 public:
   explicit OptimizationError(const std::string& what) : std::runtime_error(what) {}
