@@ -10,6 +10,6 @@ DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
       out[i] = a[i];
     else
       out[i + 1] = a[i];
-    // CHECK: two_write_indices.cpp:[[@LINE-1]]:7: error: output 'out' is written at 'i + 1' here and at 'i' on line 10 of the same loop
+    // CHECK: two_write_indices.cpp:[[@LINE-1]]:7: error: output 'out' is written at 'out[i + 1]' here and at 'out[i]' on line 10 of the same loop
   }
 }

@@ -5,6 +5,7 @@
 #include "ir_walk.hpp"
 
 #include "affine.hpp"
+#include "print.hpp"
 #include "prove.hpp"
 
 #include <fmt/format.h>
@@ -189,7 +190,8 @@ private:
             const Store &x = nest.stores[a], &y = nest.stores[b];
             if (reported.count(&y) || x.array != y.array || (x.accumulate && y.accumulate) ||
                 *to_poly(x.index) == *to_poly(y.index) ||
-                residues_differ(*to_poly(x.index), *to_poly(y.index)))
+                residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
+                rows_apart(x, nest, y, nest))
               continue;
             fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                     "line {} of the same loop: dpgen cannot prove two "
@@ -229,7 +231,7 @@ private:
                               only_counters(*to_poly(x.index), nx, shared)))
             continue;
         }
-        if (residues_differ(*to_poly(x.index), *to_poly(y.index)))
+        if (residues_differ(*to_poly(x.index), *to_poly(y.index)) || rows_apart(x, nx, y, ny))
           continue;
         Facts facts;
         for (const Nest* n : {&nx, &ny})
@@ -366,19 +368,52 @@ private:
     return true;
   }
 
-  static std::string print_index(const Store& s) { return to_poly(s.index)->str(); }
+  // The element as written in the source: "e[1][i]" for row pointers.
+  std::string print_index(const Store& s) const {
+    return s.array + subscript(s.index, k_.levels_of(s.array));
+  }
 
-  // [min, max] of a store's index over its loop box, when every counter's
-  // coefficient is a constant.
+  // Row-pointer arrays (ir.hpp: row_symbol): each row is an array of its own,
+  // so two stores whose rows (planes, for `double***`) lie apart over their
+  // loop boxes never write the same element, whatever their columns
+  // (`e[0][i]` and `e[1][i]`; rows [0, ng) and [ng, ny)).
+  bool rows_apart(const Store& x, const Nest& nx, const Store& y, const Nest& ny) const {
+    int levels = k_.levels_of(x.array);
+    if (levels == 0)
+      return false;
+    Sym outer = Sym::size(levels == 2 ? plane_symbol(x.array) : row_symbol(x.array));
+    auto row = [&](const Store& s) { return to_poly(s.index)->coefficient(outer); };
+    auto rx = index_range(row(x), x.path, nx), ry = index_range(row(y), y.path, ny);
+    if (!rx || !ry)
+      return false;
+    Facts facts;
+    for (const Nest* n : {&nx, &ny})
+      for (const auto& l : n->loops)
+        add_nonempty(l, facts);
+    for (const Store* st : {&x, &y})
+      for (const auto& pc : st->path)
+        add_facts(pc, facts);
+    Poly one = Poly::constant(1);
+    return prove_nonneg(ry->first - rx->second - one, facts) ||
+           prove_nonneg(rx->first - ry->second - one, facts);
+  }
+
+  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
+    return index_range(*to_poly(s.index), s.path, nest);
+  }
+
+  // [min, max] of an index over a loop box, when every counter's coefficient
+  // is a constant.
   // (The sign of a coefficient that is a size, like nx in j * nx + i, is
   // proved from the facts where the store runs.)
-  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
+  static std::optional<std::pair<Poly, Poly>> index_range(Poly p, const std::vector<PathCond>& path,
+                                                          const Nest& nest) {
     Facts facts;
     for (const auto& l : nest.loops)
       add_nonempty(l, facts);
-    for (const auto& pc : s.path)
+    for (const auto& pc : path)
       add_facts(pc, facts);
-    Poly p = *to_poly(s.index), lo, hi;
+    Poly lo, hi;
     for (const auto& l : nest.loops) {
       Poly c = p.coefficient(Sym::counter(l.var));
       bool up = prove_nonneg(c, facts);

@@ -124,8 +124,8 @@ const ExprP& nonzero_partial(const ExprP& partial) {
   return partial;
 }
 
-void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<PathCond>& guards,
-                const std::string& acc, const std::string& set_hit,
+void emit_terms(Code& code, const Kernel& k, const Term& t, const Box& where,
+                const std::vector<PathCond>& guards, const std::string& acc, const std::string& set_hit,
                 Factored* factored = nullptr) {
   Specializer spec(where);
   ExprP partial = spec(nonzero_partial(t.partial));
@@ -153,7 +153,8 @@ void emit_terms(Code& code, const Term& t, const Box& where, const std::vector<P
     code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
   }
   define_locals(code, locals, done);
-  ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {});
+  ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {},
+                    k.levels_of(t.store->array));
   if (factored && gs.empty() && invariant(partial)) {
     std::string sum = factored->name_for(partial);
     code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
@@ -182,10 +183,10 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
-  std::string out_cell = s.array + subscript(s.index);
+  std::string out_sub = subscript(s.index, cx.k.levels_of(s.array));
+  std::string out_cell = s.array + out_sub;
   code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
-            iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array,
-            subscript(s.index));
+            iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array, out_sub);
 
   const std::vector<Box>& boxes = cx.edge ? b.domain : *cx.interior_boxes;
   for (const Box& box : boxes) {
@@ -220,7 +221,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, b.terms.front(), box, b.guards, cx.acc,
+    emit_terms(code, cx.k, b.terms.front(), box, b.guards, cx.acc,
                cx.hit.empty() ? "" : cx.hit + " = true;", cx.factored);
     for (int i = 0; i < opened; ++i)
       code.close();
@@ -251,11 +252,11 @@ std::string print_bound(const CellBound& b, const std::string& t, bool lower) {
   return fmt::format("std::{}<{}>({{{}}})", fn, t, fmt::join(parts, ", "));
 }
 
-std::string adj_cell(const GatherGroup& g) {
+std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   Poly index = g.base;
   for (const auto& [v, c] : g.layout)
     index = index + c * Poly::symbol("c_" + v);
-  return g.array + "_adj" + subscript(index);
+  return g.array + "_adj" + subscript(index, k.levels_of(g.array));
 }
 
 // One cell loop for one or more gather groups that share a layout and a cell
@@ -272,7 +273,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     layout_desc += (layout_desc.empty() ? "" : ", ") + v;
   std::vector<std::string> cells;
   for (const auto* g : gs)
-    cells.push_back(adj_cell(*g));
+    cells.push_back(adj_cell(k, *g));
   std::vector<std::string> arrays;
   for (const auto* g : gs)
     arrays.push_back(g->array);
@@ -301,7 +302,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       for (const auto& b : g->blocks)
         emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
       code.line("{}", store_if(*g, hit_name(*g)));
-      code.line("  {} += {};", adj_cell(*g), acc_name(*g));
+      code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
     }
   };
   if (g0.layout.empty()) {
@@ -362,7 +363,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
       if (!cond.empty())
         code.line("{}", cond);
-      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(*g), acc_name(*g));
+      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(k, *g), acc_name(*g));
     }
     code.close(";");
   }
@@ -484,12 +485,13 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
 
 // ---- scatter units ---------------------------------------------------------------
 
-void emit_scatter(Code& code, const ScatterUnit& u) {
+void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
+  const std::string out_sub = subscript(s.index, k.levels_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
-            u.array, u.array, s.array, subscript(s.index));
+            u.array, u.array, s.array, out_sub);
   code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
@@ -513,10 +515,10 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
   std::map<int, LocalP> seed_locals;
   collect(s.index, seed_locals, vars);
   define_locals(code, seed_locals, done);
-  code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, subscript(s.index));
+  code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, out_sub);
   for (const auto& r : u.reads) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
-              subscript(s.index), r.read->source, r.read->name, subscript(r.read->ops[0]),
+              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->levels),
               r.read->source);
     bool guarded = !r.conds.empty();
     if (guarded) {
@@ -531,7 +533,7 @@ void emit_scatter(Code& code, const ScatterUnit& u) {
     collect(r.read->ops[0], locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0]),
+    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0], r.read->levels),
               print(binary(Op::Mul, r.partial, param("seed", s.value->type))));
     if (guarded)
       code.close();
@@ -638,7 +640,7 @@ void emit_body(Code& code, const LoopPlan& plan) {
       code.close();
     }
     for (const auto* u : in.scatters)
-      emit_scatter(code, *u);
+      emit_scatter(code, k, *u);
   }
 }
 
@@ -771,9 +773,10 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
         collect(s.index, locals, vars);
         define_locals(code, locals, done);
         if (s.path.empty())
-          code.line("{}_adj{} = 0;", p.name, subscript(s.index));
+          code.line("{}_adj{} = 0;", p.name, subscript(s.index, pointer_levels(p)));
         else
-          code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name, subscript(s.index));
+          code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name,
+                    subscript(s.index, pointer_levels(p)));
       }
       for (int i = 0; i < opened; ++i)
         code.close();

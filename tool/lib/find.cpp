@@ -123,28 +123,50 @@ bool is_c_file(const std::string& file) {
   return file.size() > 2 && file.compare(file.size() - 2, 2, ".c") == 0;
 }
 
-// A `.c` kernel is parsed as C (C11 unless a C -std= is given); C++ -std=
-// flags meant for the rest of the build are dropped for it, and the other way
-// round.
+// The language the user's flags name (`-x c`, `-xc++`, `--language=c`,
+// `--language c`; the last one wins), or "" where they name none.
+std::string language_flag(const std::vector<std::string>& flags) {
+  std::string lang;
+  for (size_t i = 0; i < flags.size(); ++i) {
+    const std::string& a = flags[i];
+    if ((a == "-x" || a == "--language") && i + 1 < flags.size())
+      lang = flags[++i];
+    else if (a.rfind("--language=", 0) == 0)
+      lang = a.substr(11);
+    else if (a.rfind("-x", 0) == 0 && a.size() > 2)
+      lang = a.substr(2);
+  }
+  return lang;
+}
+
+// The kernel file's language: what the user's flags say (they win), else C
+// for a `.c` file and C++ for any other. Its standard: the user's -std= for
+// that language, else C11 / C++17; -std= flags for the other language (meant
+// for the rest of a mixed build) are dropped. dpgen adds `-x` only where the
+// user gave none.
 std::vector<std::string> compiler_args(const FrontendOptions& opts, const std::string& file) {
-  bool c = is_c_file(file);
+  const std::string lang = language_flag(opts.compiler_args);
+  bool c = lang.empty() ? is_c_file(file) : (lang == "c" || lang == "c-header");
   std::vector<std::string> args = {opts.driver, "-fsyntax-only"};
   if (!opts.resource_dir.empty())
     args.push_back("-resource-dir=" + opts.resource_dir);
   std::vector<std::string> rest;
   bool has_std = false;
   for (const auto& a : opts.compiler_args) {
-    if (a.rfind("-std=", 0) == 0) {
+    if (a.rfind("-std=", 0) == 0 || a.rfind("--std=", 0) == 0) {
       bool cxx_std = a.find("++") != std::string::npos;
       if (cxx_std == c)
         continue; // the other language's standard
       has_std = true;
     }
+    if (a == "-ansi")
+      has_std = true; // -ansi is C89 in C, C++98 in C++: the user's choice
     rest.push_back(a);
   }
   if (!has_std)
     args.push_back(c ? "-std=c11" : "-std=c++17");
-  args.push_back(c ? "-xc" : "-xc++");
+  if (lang.empty())
+    args.push_back(c ? "-xc" : "-xc++");
   args.insert(args.end(), rest.begin(), rest.end());
   return args;
 }

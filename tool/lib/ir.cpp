@@ -136,10 +136,11 @@ ExprP local_ref(const LocalP& l) {
   return e;
 }
 
-ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos) {
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, int levels) {
   auto e = node(Op::Read, t, {std::move(index)});
   e->name = array;
   e->pos = std::move(pos);
+  e->levels = levels;
   return e;
 }
 

@@ -83,6 +83,10 @@ struct Expr {
   std::string source;    // Read: the read as written ("u[i - 1]"), for comments and remarks
   std::string cast_type; // Cast: the integer type of a widening cast as spelled ("long")
   LocalP local;     // Local
+  /// Read: the pointer levels of the array (pointer_levels(Param)): 1 for
+  /// a[j][i] of `double** a`, 2 for a[k][j][i] of `double*** a`, else 0. The
+  /// printer needs it where the flat index has no row symbol (row 0).
+  int levels = 0;
   SourcePos pos;    // Read: where it is in the source (for remarks)
   /// RealConst: the exact zero of derivative code (zero()), as opposed to a
   /// 0.0 the kernel wrote. Derivative rules fold it (0·x = 0, 0 + x = x).
@@ -97,7 +101,7 @@ ExprP real_const(double v, Type t, std::string spelling = "");
 ExprP param(const std::string& name, Type t);
 ExprP loop_var(const std::string& name);
 ExprP local_ref(const LocalP& l);
-ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos);
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, int levels = 0);
 ExprP unary(Op op, ExprP a);
 ExprP binary(Op op, ExprP a, ExprP b);
 ExprP select(ExprP c, ExprP a, ExprP b);
@@ -178,6 +182,14 @@ struct Param {
   bool is_unsigned = false;
 };
 
+/// How many pointer levels lead to an element: 0 for a flat array (or rows
+/// of fixed length), 1 for row pointers (`double** a`), 2 for planes of rows
+/// (`double*** a`). The printer writes a flat index back as that many
+/// subscripts plus one.
+inline int pointer_levels(const Param& p) {
+  return p.plane_pointers ? 2 : p.row_pointers ? 1 : 0;
+}
+
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
 inline std::string plane_symbol(const std::string& array) { return "dpgen_planes_" + array; }
@@ -255,6 +267,12 @@ struct Kernel {
   SourcePos pos;
   std::string file;       // source file as given on the command line
   bool c_linkage = false; // a C kernel: its adjoint is declared extern "C"
+
+  /// pointer_levels() of array parameter `n`; 0 if there is none of that name.
+  int levels_of(const std::string& n) const {
+    const Param* p = find_param(n);
+    return p ? pointer_levels(*p) : 0;
+  }
 
   const Param* find_param(const std::string& n) const {
     for (const auto& p : params)

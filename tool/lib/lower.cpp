@@ -1592,7 +1592,7 @@ private:
       if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
         return st->value;
     acc_.inout_reads.push_back({p->name, cur_key(), next_store_seq_, idx, {}, pos(loc)});
-    ExprP r = read(p->name, idx, p->elem, pos(loc));
+    ExprP r = read(p->name, idx, p->elem, pos(loc), pointer_levels(*p));
     std::const_pointer_cast<Expr>(r)->source = text(e);
     return r;
   }
@@ -2118,7 +2118,7 @@ private:
         if (!st && written_by_other_nest(p->name)) {
           if (loops_.empty() && !path_reads_ok_)
             acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
-          ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
+          ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
           std::const_pointer_cast<Expr>(r)->source = text(e);
           k_.intermediates.insert(p->name);
           acc_.work_reads.push_back(
@@ -2135,7 +2135,7 @@ private:
       }
       if (p->inout)
         return inout_value(p, acc->index, e->getBeginLoc(), e);
-      ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()));
+      ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
       std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
       return r;
     }

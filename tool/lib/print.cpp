@@ -141,20 +141,36 @@ std::optional<Sym> symbol_in(const Poly& p, const char* prefix) {
 }
 } // namespace
 
-std::string subscript(const Poly& index) {
-  if (auto planes = symbol_in(index, "dpgen_planes_"))
-    return "[" + index.coefficient(*planes).code() + "]" + subscript(index.without(*planes));
-  auto rows = symbol_in(index, "dpgen_rows_");
-  if (!rows)
-    return "[" + index.code() + "]";
-  return "[" + index.coefficient(*rows).code() + "][" + index.without(*rows).code() + "]";
+std::string subscript(const Poly& index, int levels) {
+  if (levels >= 2) { // planes of rows: k * P + (j * R + i); plane 0 has no P
+    auto planes = symbol_in(index, "dpgen_planes_");
+    if (!planes)
+      return "[0]" + subscript(index, 1);
+    return "[" + index.coefficient(*planes).code() + "]" + subscript(index.without(*planes), 1);
+  }
+  if (levels == 1) { // rows: j * R + i; row 0 has no R
+    auto rows = symbol_in(index, "dpgen_rows_");
+    if (!rows)
+      return "[0][" + index.code() + "]";
+    return "[" + index.coefficient(*rows).code() + "][" + index.without(*rows).code() + "]";
+  }
+  if (symbol_in(index, "dpgen_rows_") || symbol_in(index, "dpgen_planes_"))
+    throw std::logic_error("internal error: subscript: a row or plane symbol in the index of a "
+                           "flat array: " + index.code());
+  return "[" + index.code() + "]";
 }
 
-std::string subscript(const ExprP& index) {
-  if (auto p = to_poly(index);
-      p && (symbol_in(*p, "dpgen_rows_") || symbol_in(*p, "dpgen_planes_")))
-    return subscript(*p);
-  return "[" + print(index) + "]";
+std::string subscript(const ExprP& index, int levels) {
+  auto p = to_poly(index);
+  if (levels == 0) {
+    if (p)
+      (void)subscript(*p, 0); // throws on a row or plane symbol: the levels were lost
+    return "[" + print(index) + "]";
+  }
+  if (!p) // lower.cpp admits only affine indices of row-pointer arrays
+    throw std::logic_error("internal error: subscript: a non-affine index of a row-pointer "
+                           "array: " + print(index));
+  return subscript(*p, levels);
 }
 
 std::string print(const ExprP& e) {
@@ -171,7 +187,7 @@ std::string print(const ExprP& e) {
   case Op::Local:
     return e->name;
   case Op::Read:
-    return e->name + subscript(e->ops[0]);
+    return e->name + subscript(e->ops[0], e->levels);
   case Op::Neg:
     return "-" + wrap(e->ops[0], 9);
   case Op::Not:

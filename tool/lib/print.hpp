@@ -10,11 +10,13 @@
 namespace dpgen {
 
 std::string print(const ExprP& e);
-/// The subscript of an array element with this flat index: "[i + 1]", or for
-/// a row-pointer array (the index mentions its row symbol R: j * R + i)
-/// "[j][i]".
-std::string subscript(const ExprP& index);
-std::string subscript(const Poly& index);
+/// The subscript of an element of an array with `levels` pointer levels
+/// (pointer_levels(), ir.hpp) at this flat index: "[i + 1]" for a flat array;
+/// for row pointers (levels 1, the flat index j * R + i with R the row symbol)
+/// "[j][i]", and "[0][i]" where the row is 0 (no R in the index); planes
+/// (levels 2) likewise "[k][j][i]".
+std::string subscript(const ExprP& index, int levels);
+std::string subscript(const Poly& index, int levels);
 /// max(lo...) / min(hi...) of a bound set, as C++ ("std::max<int>({a, b})").
 std::string print_max(const std::vector<Poly>& set, const std::string& int_type);
 std::string print_min(const std::vector<Poly>& set, const std::string& int_type);
