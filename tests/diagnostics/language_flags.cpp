@@ -6,6 +6,7 @@
 // RUN: rm -rf %t && mkdir -p %t/a %t/b %t/c %t/d
 // RUN: %dpgen %s --out-dir %t/a -- -I%runtime_inc -x c 2>&1 | FileCheck %s --check-prefix=QUIET --allow-empty
 // RUN: FileCheck %s --check-prefix=HDR --input-file %t/a/language_flags_adjoint.hpp
+// RUN: FileCheck %s --check-prefix=LOCAL --input-file %t/a/language_flags_adjoint.cpp
 // RUN: %dpgen %s --out-dir %t/b -- -I%runtime_inc -std=c99 -xc -std=c++20 2>&1 | FileCheck %s --check-prefix=QUIET --allow-empty
 // RUN: FileCheck %s --check-prefix=HDR --input-file %t/b/language_flags_adjoint.hpp
 // RUN: %dpgen %s --out-dir %t/c -- -I%runtime_inc --language=c 2>&1 | FileCheck %s --check-prefix=QUIET --allow-empty
@@ -14,6 +15,8 @@
 // QUIET-NOT: error
 // HDR: extern "C" {
 // HDR: void scale_c_adjoint(
+// The local `new` (a C++ keyword; the adjoint is C++) is renamed.
+// LOCAL: const double new_1 = w * a[i];
 // CXX: language_flags.cpp:[[@LINE+3]]:{{[0-9]+}}: error:
 #include "dpgen/annotate.hpp"
 

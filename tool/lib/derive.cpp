@@ -163,6 +163,8 @@ private:
       return local_ref(it->second);
     auto l = std::make_shared<LocalVar>();
     l->name = e->name + "_v" + std::to_string(names_.next);
+    while (names_.taken && names_.taken->count(l->name))
+      l->name += "_";
     l->type_name = type_spelling(e->type);
     l->def = e;
     l->id = 1000000 + names_.next++; // after every user local
@@ -270,7 +272,7 @@ const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {
 }
 
 Partials derive(const Kernel& k) {
-  Partials partials;
+  Partials partials(&k.names);
   for (const auto& param : k.params) {
     if (param.kind != ParamKind::In)
       continue;

@@ -19,6 +19,8 @@ namespace dpgen {
 struct DeriveNames {
   std::map<const Expr*, LocalP> calls;
   int next = 0;
+  /// Names the locals must not take (the kernel's own, Kernel::names).
+  const std::set<std::string>* taken = nullptr;
 };
 
 /// d value / d(reads): the partial of `value` w.r.t. the Read nodes in
@@ -37,6 +39,8 @@ ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveN
 /// only where it applies to one of them).
 class Partials {
 public:
+  /// `taken`: names the rules' locals avoid (Kernel::names); must outlive this.
+  explicit Partials(const std::set<std::string>* taken = nullptr) { names_.taken = taken; }
   /// d s.value / d(reads); zero() where it vanishes (is_zero), never null.
   const ExprP& of(const Store& s, const std::set<const Expr*>& reads);
 

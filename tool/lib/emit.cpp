@@ -22,6 +22,9 @@ namespace {
 // Replaces conditional expressions whose index condition is decided inside
 // `box` (only comparisons differing by a constant are decided), so an
 // interior loop reads a[i + 1] instead of a[(i == n - 1) ? 0 : i + 1].
+// The counter of adjoint cells along loop counter `v` ("c_i").
+std::string cell_counter(const Kernel& k, const std::string& v) { return k.fresh("c_" + v); }
+
 class Specializer {
 public:
   explicit Specializer(const Box& box) : box_(box) {}
@@ -103,6 +106,7 @@ bool invariant(const ExprP& e) {
 // (one multiplication instead of one per term, and a shorter dependence
 // chain on acc; the sum is the same up to rounding).
 struct Factored {
+  const Kernel& k;
   std::string prefix;                              // the accumulator's name
   std::vector<std::pair<std::string, ExprP>> sums; // name, partial
   std::string name_for(const ExprP& partial) {
@@ -110,7 +114,7 @@ struct Factored {
     for (const auto& [name, p] : sums)
       if (print(p) == key)
         return name;
-    sums.push_back({fmt::format("{}_s{}", prefix, sums.size()), partial});
+    sums.push_back({k.fresh(fmt::format("{}_s{}", prefix, sums.size())), partial});
     return sums.back().first;
   }
 };
@@ -179,7 +183,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
   Code& code = cx.code;
   std::string iter_desc;
   for (const auto& [v, c] : cx.g.layout) {
-    Poly it = Poly::symbol("c_" + v) + back[v];
+    Poly it = Poly::symbol(cell_counter(cx.k, v)) + back[v];
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
@@ -193,7 +197,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
     code.open("");
     // Layout counters come from the cell.
     for (const auto& [v, c] : cx.g.layout) {
-      Poly it = Poly::symbol("c_" + v) + back[v];
+      Poly it = Poly::symbol(cell_counter(cx.k, v)) + back[v];
       code.line("const {} {} = {};", loop_type(nest, v), v, it.code());
     }
     int opened = 0;
@@ -255,7 +259,7 @@ std::string print_bound(const CellBound& b, const std::string& t, bool lower) {
 std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   Poly index = g.base;
   for (const auto& [v, c] : g.layout)
-    index = index + c * Poly::symbol("c_" + v);
+    index = index + c * Poly::symbol(cell_counter(k, v));
   return g.array + "_adj" + subscript(index, k.levels_of(g.array));
 }
 
@@ -265,8 +269,16 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   const std::vector<const GatherGroup*>& gs = plan.groups;
   const GatherGroup& g0 = *gs.front();
   const bool fused = gs.size() > 1;
-  auto acc_name = [&](const GatherGroup& g) { return fused ? "acc_" + g.array : std::string("acc"); };
-  auto hit_name = [&](const GatherGroup& g) { return fused ? "hit_" + g.array : std::string("hit"); };
+  // Generated names (Kernel::fresh: none is one of the kernel's own).
+  auto acc_name = [&](const GatherGroup& g) { return k.fresh(fused ? "acc_" + g.array : "acc"); };
+  auto hit_name = [&](const GatherGroup& g) { return k.fresh(fused ? "hit_" + g.array : "hit"); };
+  auto cell = [&](const std::string& v) { return cell_counter(k, v); };
+  auto lo_of = [&](const std::string& v) { return k.fresh("lo_" + v); };
+  auto hi_of = [&](const std::string& v) { return k.fresh("hi_" + v); };
+  auto in_lo = [&](const std::string& v) { return k.fresh("in_lo_" + v); };
+  auto in_hi = [&](const std::string& v) { return k.fresh("in_hi_" + v); };
+  const std::string edge_fn = k.fresh("edge"), interior_fn = k.fresh("interior");
+  const std::string parallel_ok = k.fresh("parallel_ok");
 
   std::string layout_desc;
   for (const auto& [v, c] : g0.layout)
@@ -315,18 +327,18 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
 
   std::vector<std::string> cell_params;
   for (const auto& [v, c] : g0.layout)
-    cell_params.push_back(fmt::format("const {} c_{}", kCellType, v));
+    cell_params.push_back(fmt::format("const {} {}", kCellType, cell(v)));
   std::string params = fmt::format("{}", fmt::join(cell_params, ", "));
 
   const bool any_bulk = plan.any_bulk;
   const Box& interior = plan.interior;
 
   // Edge cell: every block, each checked against its iteration domain.
-  code.open(fmt::format("auto edge = [=]({})", params));
+  code.open(fmt::format("auto {} = [=]({})", edge_fn, params));
   edge_body();
   code.close(";");
   if (any_bulk) {
-    code.open(fmt::format("auto interior = [=]({})", params));
+    code.open(fmt::format("auto {} = [=]({})", interior_fn, params));
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
       bool has_bulk = false;
@@ -346,7 +358,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
         code.line("bool {} = false;", hit_name(*g));
       // The blocks go to a buffer first: the sums they factor out are
       // declared before them.
-      Factored factored{acc_name(*g), {}};
+      Factored factored{k, acc_name(*g), {}};
       Code blocks(code.depth());
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         if (g->blocks[bi].bulk)
@@ -370,8 +382,8 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
 
   // Ranges.
   for (const auto& [v, c] : g0.layout)
-    code.line("const {} lo_{} = {}, hi_{} = {};", kCellType, v,
-              print_bound(plan.bounds.at(v).lo, kCellType, true), v,
+    code.line("const {} {} = {}, {} = {};", kCellType, lo_of(v),
+              print_bound(plan.bounds.at(v).lo, kCellType, true), hi_of(v),
               print_bound(plan.bounds.at(v).hi, kCellType, false));
   // The interior holds only if no narrow (edge) block reaches into it.
   if (any_bulk) {
@@ -383,8 +395,8 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
         std::string lo = print_max(iv.lo, t), hi = print_min(iv.hi, t);
         ors.push_back(fmt::format("{} >= {}", lo, hi)); // empty
         if (reach.cell_dims.count(v)) {
-          ors.push_back(fmt::format("{} <= in_lo_{}", hi, v));
-          ors.push_back(fmt::format("{} >= in_hi_{}", lo, v));
+          ors.push_back(fmt::format("{} <= {}", hi, in_lo(v)));
+          ors.push_back(fmt::format("{} >= {}", lo, in_hi(v)));
         }
       }
       apart.push_back("(" + fmt::format("{}", fmt::join(ors, " || ")) + ")");
@@ -392,16 +404,16 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     for (const auto& [v, c] : g0.layout) {
       std::string t = kCellType;
       const Interval& iv = interior.dims.at(v);
-      code.line("{} in_lo_{} = std::max<{}>(lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
-                print_max(iv.lo, t), v);
-      code.line("{} in_hi_{} = std::max<{}>(in_lo_{}, std::min<{}>({}, hi_{}));", t, v, t, v, t,
-                print_min(iv.hi, t), v);
+      code.line("{} {} = std::max<{}>({}, std::min<{}>({}, {}));", t, in_lo(v), t, lo_of(v), t,
+                print_max(iv.lo, t), hi_of(v));
+      code.line("{} {} = std::max<{}>({}, std::min<{}>({}, {}));", t, in_hi(v), t, in_lo(v), t,
+                print_min(iv.hi, t), hi_of(v));
     }
     if (!apart.empty()) {
       code.open(fmt::format("if (!({}))", fmt::join(apart, " && ")));
       code.line("// an edge term reaches into the interior: treat every cell as an edge");
       for (const auto& [v, c] : g0.layout)
-        code.line("in_lo_{} = in_hi_{} = hi_{};", v, v, v);
+        code.line("{} = {} = {};", in_lo(v), in_hi(v), hi_of(v));
       code.close();
     }
   }
@@ -410,7 +422,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   // the layout is one-to-one over the cell box (mixed radix): else serial.
   std::vector<std::string> extents, conds;
   for (const auto& [v, c] : g0.layout)
-    extents.push_back(fmt::format("(hi_{} - lo_{})", v, v));
+    extents.push_back(fmt::format("({} - {})", hi_of(v), lo_of(v)));
   conds.push_back(fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelCells));
   if (!plan.unit_1d) {
     // A symbolic coefficient is printed as it is: a negative one (a mirrored
@@ -425,22 +437,22 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
         conds.push_back(fmt::format("{} < {}", fmt::join(reach, " + "), coef));
       else if (!c.is_constant())
         conds.push_back(fmt::format("{} != 0", coef));
-      reach.push_back(fmt::format("({} - 1) * {}", fmt::format("(hi_{} - lo_{})", v, v),
+      reach.push_back(fmt::format("({} - 1) * {}", fmt::format("({} - {})", hi_of(v), lo_of(v)),
                                   c.is_constant() ? coef : "(" + coef + ")"));
     }
     code.line("// threads if the cells are many and distinct memory (mixed-radix test)");
   } else {
     code.line("// threads if the cells are many");
   }
-  code.line("const bool parallel_ok = {};", fmt::join(conds, " && "));
-  std::string parallel_if = " if (parallel_ok)";
+  code.line("const bool {} = {};", parallel_ok, fmt::join(conds, " && "));
+  std::string parallel_if = fmt::format(" if ({})", parallel_ok);
 
   // Loops: outer counters with a per-row interior test, the innermost split
   // into edge / interior / edge.
   size_t d = g0.layout.size();
   std::vector<std::string> all_cells;
   for (const auto& [u, c] : g0.layout)
-    all_cells.push_back("c_" + u);
+    all_cells.push_back(cell(u));
   std::string args = fmt::format("{}", fmt::join(all_cells, ", "));
   std::function<void(size_t, std::string)> loops = [&](size_t level, std::string outer_edge) {
     const std::string& v = g0.layout[level].first;
@@ -448,12 +460,15 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     if (level + 1 < d) {
       if (level == 0)
         code.line("#pragma omp parallel for{}", parallel_if);
-      code.open(fmt::format("for ({} c_{} = lo_{}; c_{} < hi_{}; ++c_{})", t, v, v, v, v, v));
-      std::string e = fmt::format("c_{} < in_lo_{} || c_{} >= in_hi_{}", v, v, v, v);
+      code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", t, cell(v), lo_of(v), cell(v),
+                            hi_of(v), cell(v)));
+      std::string e =
+          fmt::format("{} < {} || {} >= {}", cell(v), in_lo(v), cell(v), in_hi(v));
       if (!any_bulk)
         e = "true";
-      code.line("const bool edge_{} = {}{};", v, outer_edge.empty() ? "" : outer_edge + " || ", e);
-      loops(level + 1, "edge_" + v);
+      const std::string edge_v = k.fresh("edge_" + v);
+      code.line("const bool {} = {}{};", edge_v, outer_edge.empty() ? "" : outer_edge + " || ", e);
+      loops(level + 1, edge_v);
       code.close();
       return;
     }
@@ -461,23 +476,23 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
                     bool pragma) {
       if (pragma)
         code.line("#pragma omp parallel for{}", parallel_if);
-      code.line("for ({} c_{} = {}; c_{} < {}; ++c_{})", t, v, from, v, to, v);
+      code.line("for ({} {} = {}; {} < {}; ++{})", t, cell(v), from, cell(v), to, cell(v));
       code.line("  {}({});", fn, args);
     };
     bool top = level == 0;
     if (!any_bulk) {
-      loop("lo_" + v, "hi_" + v, "edge", top);
+      loop(lo_of(v), hi_of(v), edge_fn, top);
       return;
     }
     if (!outer_edge.empty()) {
       code.open(fmt::format("if ({})", outer_edge));
-      loop("lo_" + v, "hi_" + v, "edge", false);
+      loop(lo_of(v), hi_of(v), edge_fn, false);
       code.line("continue;");
       code.close();
     }
-    loop("lo_" + v, "in_lo_" + v, "edge", false);
-    loop("in_lo_" + v, "in_hi_" + v, "interior", top);
-    loop("in_hi_" + v, "hi_" + v, "edge", false);
+    loop(lo_of(v), in_lo(v), edge_fn, false);
+    loop(in_lo(v), in_hi(v), interior_fn, top);
+    loop(in_hi(v), hi_of(v), edge_fn, false);
   };
   loops(0, "");
   code.close();
@@ -515,7 +530,8 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
   std::map<int, LocalP> seed_locals;
   collect(s.index, seed_locals, vars);
   define_locals(code, seed_locals, done);
-  code.line("const {} seed = {}_adj{};", type_spelling(s.value->type), s.array, out_sub);
+  const std::string seed = k.fresh("seed");
+  code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
   for (const auto& r : u.reads) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
               out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->levels),
@@ -534,7 +550,7 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0], r.read->levels),
-              print(binary(Op::Mul, r.partial, param("seed", s.value->type))));
+              print(binary(Op::Mul, r.partial, param(seed, s.value->type))));
     if (guarded)
       code.close();
   }

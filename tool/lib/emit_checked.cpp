@@ -135,20 +135,27 @@ std::map<std::string, Range> access_ranges(const Kernel& k) {
   return ranges;
 }
 
+// The number of elements of `array` as the checked entry point names it
+// (<array>_size, or a fresh name where the kernel has one of that spelling).
+std::string size_name(const Kernel& k, const std::string& array) {
+  return k.fresh(array + "_size");
+}
+
 std::string checked_params(const Kernel& k) {
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
     std::string n = p.elem_name;
+    const std::string adj = p.name + "_adj";
     switch (p.kind) {
     case ParamKind::In:
-      ps.push_back(fmt::format("const {}* {}, size_t {}_size", n, p.name, p.name));
-      ps.push_back(fmt::format("{}* {}_adj, size_t {}_adj_size", n, p.name, p.name));
+      ps.push_back(fmt::format("const {}* {}, size_t {}", n, p.name, size_name(k, p.name)));
+      ps.push_back(fmt::format("{}* {}, size_t {}", n, adj, size_name(k, adj)));
       break;
     case ParamKind::Out:
-      ps.push_back(fmt::format("const {}* {}_adj, size_t {}_adj_size", n, p.name, p.name));
+      ps.push_back(fmt::format("const {}* {}, size_t {}", n, adj, size_name(k, adj)));
       break;
     case ParamKind::ConstArray:
-      ps.push_back(fmt::format("const {}* {}, size_t {}_size", n, p.name, p.name));
+      ps.push_back(fmt::format("const {}* {}, size_t {}", n, p.name, size_name(k, p.name)));
       break;
     case ParamKind::Scalar:
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));
@@ -201,12 +208,14 @@ void emit_checked_entry(Code& code, const Kernel& k) {
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
   // A null adjoint (an inactive input) is not checked.
   auto check = [&](const std::string& array, const std::string& range, bool nullable) {
-    code.open(fmt::format("if ({}{}_hi >= 0 && ({}_lo < 0 || std::size_t({}_hi) >= {}_size))",
-                          nullable ? array + " != nullptr && " : "", range, range, range, array));
+    const std::string lo = k.fresh(range + "_lo"), hi = k.fresh(range + "_hi");
+    const std::string size = size_name(k, array);
+    code.open(fmt::format("if ({}{} >= 0 && ({} < 0 || std::size_t({}) >= {}))",
+                          nullable ? array + " != nullptr && " : "", hi, lo, hi, size));
     code.line("throw std::invalid_argument(std::string(\"{}_adjoint_checked: '{}' has \") + "
-              "std::to_string({}_size) + \" elements, but the kernel touches elements \" + "
-              "std::to_string({}_lo) + \" to \" + std::to_string({}_hi) + \" (\" + {} + \")\");",
-              k.name, array, array, range, range, sizes);
+              "std::to_string({}) + \" elements, but the kernel touches elements \" + "
+              "std::to_string({}) + \" to \" + std::to_string({}) + \" (\" + {} + \")\");",
+              k.name, array, size, lo, hi, sizes);
     code.close();
   };
   std::vector<std::string> args;
@@ -220,10 +229,10 @@ void emit_checked_entry(Code& code, const Kernel& k) {
     if (checkable) {
       const Range& r = it->second;
       std::string range = p.name + "_range";
-      code.line("const {} {}_lo = std::min<{}>({{{}}});", kCellType, range, kCellType,
-                fmt::join(r.lows, ", "));
-      code.line("const {} {}_hi = std::max<{}>({{{}}});", kCellType, range, kCellType,
-                fmt::join(r.highs, ", "));
+      code.line("const {} {} = std::min<{}>({{{}}});", kCellType, k.fresh(range + "_lo"),
+                kCellType, fmt::join(r.lows, ", "));
+      code.line("const {} {} = std::max<{}>({{{}}});", kCellType, k.fresh(range + "_hi"),
+                kCellType, fmt::join(r.highs, ", "));
       if (p.kind != ParamKind::Out)
         check(p.name, range, false);
       if (p.kind != ParamKind::ConstArray)

@@ -47,6 +47,8 @@ TangentPlan plan_tangent(const Kernel& k) {
       p.active.insert(prm.name);
   // Names a tangent local must not take: parameters, their _dot, every local.
   std::set<const LocalVar*> seen;
+  p.names.taken = &k.names;
+  p.locals.taken = k.names;
   for (const auto& prm : k.params) {
     p.locals.taken.insert(prm.name);
     p.locals.taken.insert(prm.name + "_dot");

@@ -247,10 +247,14 @@ std::string adjoint_pointer(const Param& p, const std::string& t) {
   return fmt::format("{}.defined() ? {} : nullptr", t, pointer(p, t, false));
 }
 
-// The value the kernel gets for a scalar op argument.
-std::string scalar_value(const Param& p) {
+// The keyword argument that gives output `p`'s shape (<output>_shape).
+std::string shape_name(const Kernel& k, const Param& p) { return k.fresh(p.name + "_shape"); }
+
+// The value the kernel gets for a scalar op argument (`op`: the generated
+// variable that holds the op's name, for errors).
+std::string scalar_value(const Param& p, const std::string& op) {
   if (p.elem == Type::Int)
-    return fmt::format("dpgen::torch_ops::narrow<{}>({}, op, \"{}\")", p.elem_name, p.name,
+    return fmt::format("dpgen::torch_ops::narrow<{}>({}, {}, \"{}\")", p.elem_name, p.name, op,
                        p.name);
   if (p.elem == Type::Float)
     return fmt::format("static_cast<float>({})", p.name);
@@ -264,7 +268,7 @@ std::string op_params(const Kernel& k, bool defaults) {
     ps.push_back(is_array(*p) ? fmt::format("const torch::Tensor& {}", p->name)
                               : fmt::format("{} {}", cpp_arg_type(*p), p->name));
   for (const Param* p : outputs(k))
-    ps.push_back(fmt::format("at::OptionalIntArrayRef {}_shape{}", p->name,
+    ps.push_back(fmt::format("at::OptionalIntArrayRef {}{}", shape_name(k, *p),
                              defaults ? " = c10::nullopt" : ""));
   return fmt::format("{}", fmt::join(ps, ", "));
 }
@@ -321,21 +325,22 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
   }
   c.line("{{ // '{}': one past the largest index the kernel reaches{}", p.name,
          complete ? "" : " (some reads are data-dependent and not counted)");
-  c.line("std::int64_t needed = 0;");
+  const std::string needed = k.fresh("needed"), op = k.fresh("op");
+  c.line("std::int64_t {} = 0;", needed);
   for (const auto& [cond, mx] : terms) {
     std::string when = guard.empty() ? cond
                        : cond == "true" ? guard
                                         : guard + " && " + cond;
     if (when == "true")
-      c.line("needed = std::max<std::int64_t>(needed, {});", mx);
+      c.line("{} = std::max<std::int64_t>({}, {});", needed, needed, mx);
     else
-      c.line("if ({}) needed = std::max<std::int64_t>(needed, {});", when, mx);
+      c.line("if ({}) {} = std::max<std::int64_t>({}, {});", when, needed, needed, mx);
   }
-  c.line("TORCH_CHECK({}.numel() >= needed, op, \": {} '{}' has \", {}.numel(), \" elements "
-         "(sizes \", {}.sizes(), \") but the kernel reaches element \", needed - 1, \" for \", "
+  c.line("TORCH_CHECK({}.numel() >= {}, {}, \": {} '{}' has \", {}.numel(), \" elements "
+         "(sizes \", {}.sizes(), \") but the kernel reaches element \", {} - 1, \" for \", "
          "{});",
-         p.name, p.kind == ParamKind::Out ? "output" : "argument", p.name, p.name, p.name,
-         sizes_message(k));
+         p.name, needed, op, p.kind == ParamKind::Out ? "output" : "argument", p.name, p.name,
+         p.name, needed, sizes_message(k));
   c.line("}}");
 }
 
@@ -357,26 +362,29 @@ void emit_kernel(Code& c, const Kernel& k) {
          base_name(k.file), k.pos.line, k.name);
   c.line("struct {} : public torch::autograd::Function<{}> {{", fn, fn);
   // forward
-  std::vector<std::string> fparams = {"torch::autograd::AutogradContext* ctx"};
+  // Generated names (Kernel::fresh: none is one of the kernel's parameters).
+  const std::string ctx = k.fresh("ctx"), op = k.fresh("op"), saved_v = k.fresh("saved"),
+                    grads = k.fresh("grads");
+  std::vector<std::string> fparams = {"torch::autograd::AutogradContext* " + ctx};
   for (const Param* p : args)
     fparams.push_back(is_array(*p) ? fmt::format("const torch::Tensor& {}", p->name)
                                    : fmt::format("{} {}", cpp_arg_type(*p), p->name));
   for (const Param* p : outs)
     fparams.push_back(
-        fmt::format("const c10::optional<std::vector<std::int64_t>>& {}_shape", p->name));
+        fmt::format("const c10::optional<std::vector<std::int64_t>>& {}", shape_name(k, *p)));
   c.line("static {} forward({}) {{", outs.size() == 1 ? "torch::Tensor" : "torch::autograd::variable_list",
          fmt::join(fparams, ", "));
-  c.line("const char* op = \"dpgen::{}\";", k.name);
+  c.line("const char* {} = \"dpgen::{}\";", op, k.name);
   for (const Param* p : args)
     if (is_array(*p))
-      c.line("dpgen::torch_ops::check_array<{}>({}, op, \"{}\", \"{}\");", p->elem_name, p->name,
-             p->name, p->elem_name);
+      c.line("dpgen::torch_ops::check_array<{}>({}, {}, \"{}\", \"{}\");", p->elem_name, p->name,
+             op, p->name, p->elem_name);
   for (const Param* p : outs) {
-    c.line("// Output '{}': shape {}_shape, by default that of '{}'.", p->name, p->name,
+    c.line("// Output '{}': shape {}, by default that of '{}'.", p->name, shape_name(k, *p),
            first->name);
-    c.line("torch::Tensor {} = dpgen::torch_ops::new_output(dpgen::torch_ops::output_shape({}_shape, "
-           "{}, op, \"{}\"), {});",
-           p->name, p->name, first->name, p->name, first->name);
+    c.line("torch::Tensor {} = dpgen::torch_ops::new_output(dpgen::torch_ops::output_shape({}, "
+           "{}, {}, \"{}\"), {});",
+           p->name, shape_name(k, *p), first->name, op, p->name, first->name);
     if (p->elem_name != first->elem_name)
       c.line("{} = {}.to(dpgen::torch_ops::dtype_of<{}>());", p->name, p->name, p->elem_name);
   }
@@ -389,18 +397,19 @@ void emit_kernel(Code& c, const Kernel& k) {
       emit_extent_check(c, k, p, m, guard);
   std::vector<std::string> call;
   for (const auto& p : k.params)
-    call.push_back(is_array(p) ? pointer(p, p.name, p.kind != ParamKind::Out) : scalar_value(p));
+    call.push_back(is_array(p) ? pointer(p, p.name, p.kind != ParamKind::Out)
+                               : scalar_value(p, op));
   c.line("{}({});", qualified(k, k.name), fmt::join(call, ", "));
   std::vector<std::string> saved;
   for (const Param* p : args)
     if (is_array(*p))
       saved.push_back(p->name);
-  c.line("ctx->save_for_backward({{{}}});", fmt::join(saved, ", "));
+  c.line("{}->save_for_backward({{{}}});", ctx, fmt::join(saved, ", "));
   for (const Param* p : args)
     if (!is_array(*p))
-      c.line("ctx->saved_data[\"{}\"] = {};", p->name, p->name);
+      c.line("{}->saved_data[\"{}\"] = {};", ctx, p->name, p->name);
   for (const Param* p : outs)
-    c.line("ctx->saved_data[\"{}_shape\"] = {}.sizes().vec();", p->name, p->name);
+    c.line("{}->saved_data[\"{}_shape\"] = {}.sizes().vec();", ctx, p->name, p->name);
   if (outs.size() == 1) {
     c.line("return {};", outs[0]->name);
   } else {
@@ -413,31 +422,33 @@ void emit_kernel(Code& c, const Kernel& k) {
   c.raw("\n");
 
   // backward
-  c.line("static torch::autograd::variable_list backward(torch::autograd::AutogradContext* ctx, "
-         "torch::autograd::variable_list grads) {{");
-  c.line("const char* op = \"dpgen::{}\";", k.name);
-  c.line("dpgen::torch_ops::no_double_backward(op);");
-  c.line("const torch::autograd::variable_list saved = ctx->get_saved_variables();");
+  c.line("static torch::autograd::variable_list backward(torch::autograd::AutogradContext* {}, "
+         "torch::autograd::variable_list {}) {{",
+         ctx, grads);
+  c.line("const char* {} = \"dpgen::{}\";", op, k.name);
+  c.line("dpgen::torch_ops::no_double_backward({});", op);
+  c.line("const torch::autograd::variable_list {} = {}->get_saved_variables();", saved_v, ctx);
   size_t si = 0;
   for (const Param* p : args)
     if (is_array(*p))
-      c.line("const torch::Tensor& {} = saved[{}];", p->name, si++);
+      c.line("const torch::Tensor& {} = {}[{}];", p->name, saved_v, si++);
     else
-      c.line("const {} {} = ctx->saved_data[\"{}\"].{}();", cpp_arg_type(*p), p->name, p->name,
+      c.line("const {} {} = {}->saved_data[\"{}\"].{}();", cpp_arg_type(*p), p->name, ctx,
+             p->name,
              p->elem == Type::Int ? "toInt" : p->elem == Type::Bool ? "toBool" : "toDouble");
   for (size_t i = 0; i < outs.size(); ++i)
-    c.line("const torch::Tensor {}_adj = dpgen::torch_ops::seed(grads[{}], "
-           "ctx->saved_data[\"{}_shape\"].toIntVector(), {}.options());",
-           outs[i]->name, i, outs[i]->name, first->name);
+    c.line("const torch::Tensor {}_adj = dpgen::torch_ops::seed({}[{}], "
+           "{}->saved_data[\"{}_shape\"].toIntVector(), {}.options());",
+           outs[i]->name, grads, i, ctx, outs[i]->name, first->name);
   {
     size_t edge = 0; // the index among the tensor arguments: autograd's input edges
     for (const Param* p : args) {
       if (!is_array(*p))
         continue;
       if (p->kind == ParamKind::In)
-        c.line("const torch::Tensor {}_adj = ctx->needs_input_grad({}) ? torch::zeros_like({}) : "
+        c.line("const torch::Tensor {}_adj = {}->needs_input_grad({}) ? torch::zeros_like({}) : "
                "torch::Tensor();",
-               p->name, edge, p->name);
+               p->name, ctx, edge, p->name);
       ++edge;
     }
   }
@@ -457,7 +468,7 @@ void emit_kernel(Code& c, const Kernel& k) {
       acall.push_back(pointer(p, p.name, true));
       break;
     case ParamKind::Scalar:
-      acall.push_back(scalar_value(p));
+      acall.push_back(scalar_value(p, op));
       break;
     }
   }
@@ -479,16 +490,17 @@ void emit_entry(Code& c, const Kernel& k) {
   for (const Param* p : arguments(k))
     as.push_back(p->name);
   for (const Param* p : outs)
-    as.push_back(fmt::format("dpgen::torch_ops::shape_arg({}_shape)", p->name));
+    as.push_back(fmt::format("dpgen::torch_ops::shape_arg({})", shape_name(k, *p)));
   c.line("{} {}({}) {{", op_return(k), k.name, op_params(k, false));
   if (outs.size() == 1) {
     c.line("return {}_function::apply({});", k.name, fmt::join(as, ", "));
   } else {
-    c.line("const torch::autograd::variable_list out = {}_function::apply({});", k.name,
+    const std::string out = k.fresh("out");
+    c.line("const torch::autograd::variable_list {} = {}_function::apply({});", out, k.name,
            fmt::join(as, ", "));
     std::vector<std::string> items;
     for (size_t i = 0; i < outs.size(); ++i)
-      items.push_back(fmt::format("out[{}]", i));
+      items.push_back(fmt::format("{}[{}]", out, i));
     c.line("return {{{}}};", fmt::join(items, ", "));
   }
   c.line("}}");
@@ -510,7 +522,7 @@ std::string torch_schema(const Kernel& k) {
     as.push_back(fmt::format("{} {}", is_array(*p) ? "Tensor" : schema_type(*p), p->name));
   as.push_back("*");
   for (const Param* p : outputs(k))
-    as.push_back(fmt::format("int[]? {}_shape=None", p->name));
+    as.push_back(fmt::format("int[]? {}=None", shape_name(k, *p)));
   const size_t n = outputs(k).size();
   std::vector<std::string> rs(n, "Tensor");
   std::string ret = n == 1 ? "Tensor" : fmt::format("({})", fmt::join(rs, ", "));

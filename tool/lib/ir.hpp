@@ -264,9 +264,24 @@ struct Kernel {
   /// For each output: C++ code for how many elements its stores can reach
   /// (one past the largest index), for buffers the adjoint allocates.
   std::map<std::string, std::string> extent;
+  /// Every name the kernel brings into generated code: its parameters, loop
+  /// counters and locals (as renamed by lower), and the adjoint and tangent
+  /// parameters the signature rule derives from its arrays (<name>_adj,
+  /// <name>_dot). Identifiers that dpgen makes up avoid them (fresh()).
+  std::set<std::string> names;
   SourcePos pos;
   std::string file;       // source file as given on the command line
   bool c_linkage = false; // a C kernel: its adjoint is declared extern "C"
+
+  /// A name for an identifier of generated code (an accumulator, a cell
+  /// counter, a size): `base`, with '_' appended while the kernel has a name
+  /// of that spelling, so that no generated identifier is ever one of the
+  /// user's (or shadows it).
+  std::string fresh(std::string base) const {
+    while (names.count(base))
+      base += '_';
+    return base;
+  }
 
   /// pointer_levels() of array parameter `n`; 0 if there is none of that name.
   int levels_of(const std::string& n) const {

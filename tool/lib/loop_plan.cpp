@@ -155,7 +155,7 @@ FusionKey fusion_key(const Kernel& k, const GatherGroup& g) {
   return key;
 }
 
-CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
+CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
   CellLoop loop;
   loop.groups = gs;
   const GatherGroup& g0 = *gs.front();
@@ -231,7 +231,7 @@ CellLoop plan_cell_loop(const std::vector<const GatherGroup*>& gs) {
   if (!loop.unit_1d) {
     std::vector<std::pair<Poly, Poly>> dims;
     for (const auto& [v, c] : g0.layout)
-      dims.push_back({c, Poly::symbol("hi_" + v) - Poly::symbol("lo_" + v)});
+      dims.push_back({c, Poly::symbol(k.fresh("hi_" + v)) - Poly::symbol(k.fresh("lo_" + v))});
     loop.radix = mixed_radix(dims);
   }
   return loop;
@@ -273,10 +273,10 @@ LoopPlan plan_loops(const AdjointPlan& plan) {
       for (const auto* f : fused)
         done[size_t(f - plan.gathers.data())] = true;
       GatherStep step;
-      step.loops.push_back(plan_cell_loop(fused));
+      step.loops.push_back(plan_cell_loop(k, fused));
       if (fused.size() > 1)
         for (const auto* f : fused)
-          step.loops.push_back(plan_cell_loop({f}));
+          step.loops.push_back(plan_cell_loop(k, {f}));
       in.gathers.push_back(std::move(step));
     }
     for (const auto& u : plan.scatters)

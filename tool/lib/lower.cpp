@@ -122,6 +122,7 @@ public:
     }
     if (failed_)
       return false;
+    collect_names();
     out = std::move(k_);
     return true;
   }
@@ -205,10 +206,16 @@ private:
 
   // ---- diagnostics -------------------------------------------------------
 
-  [[noreturn]] void fail(SourceLocation loc, const std::string& msg) {
+  // An error that does not stop the lowering (the others are reported too).
+  void error(SourceLocation loc, const std::string& msg) {
     auto& d = ctx_.getDiagnostics();
     unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
     d.Report(loc, id) << msg;
+    failed_ = true;
+  }
+
+  [[noreturn]] void fail(SourceLocation loc, const std::string& msg) {
+    error(loc, msg);
     throw Rejected{};
   }
 
@@ -485,6 +492,7 @@ private:
         k_.params.push_back(*size_param);
       }
     }
+    check_parameter_names();
     if (!any_in)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                            "nothing to differentiate",
@@ -775,13 +783,96 @@ private:
     return fmt::format("'{}' {}", v->getNameAsString(), plain);
   }
 
+  // Names a local or a loop counter must not keep (it is renamed <name>_1):
+  // a parameter, an enclosing counter, a name the signature rule gives an
+  // adjoint or tangent parameter (<array>_adj, <array>_dot), the prefix
+  // dpgen_ of generated helpers, or a C++ keyword (a C kernel's `new`: the
+  // generated code is C++).
   bool is_reserved(const std::string& name) const {
-    if (k_.find_param(name))
+    if (k_.find_param(name) || contract_name_of(name) || name.rfind("dpgen_", 0) == 0 ||
+        is_cxx_only_keyword(name))
       return true;
     for (const auto& l : loops_)
       if (l->var == name)
         return true;
     return false;
+  }
+
+  // The array parameter whose adjoint or tangent the signature rule names
+  // `name` (<array>_adj, <array>_dot), or null.
+  const Param* contract_name_of(const std::string& name) const {
+    for (const char* suffix : {"_adj", "_dot"}) {
+      size_t n = std::char_traits<char>::length(suffix);
+      if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
+        if (const Param* p = k_.find_param(name.substr(0, name.size() - n));
+            p && p->kind != ParamKind::Scalar)
+          return p;
+    }
+    return nullptr;
+  }
+
+  static bool is_cxx_only_keyword(const std::string& name) {
+    static const std::set<std::string> keywords = {
+        "alignas",    "alignof",      "and",       "and_eq",      "asm",
+        "bitand",     "bitor",        "bool",      "catch",       "char8_t",
+        "char16_t",   "char32_t",     "class",     "compl",       "concept",
+        "consteval",  "constexpr",    "constinit", "const_cast",  "co_await",
+        "co_return",  "co_yield",     "decltype",  "delete",      "dynamic_cast",
+        "explicit",   "export",       "false",     "friend",      "mutable",
+        "namespace",  "new",          "noexcept",  "not",         "not_eq",
+        "nullptr",    "operator",     "or",        "or_eq",       "private",
+        "protected",  "public",       "reinterpret_cast", "requires", "static_assert",
+        "static_cast", "template",    "this",      "thread_local", "throw",
+        "true",       "try",          "typeid",    "typename",    "using",
+        "virtual",    "wchar_t",      "xor",       "xor_eq"};
+    return keywords.count(name) > 0;
+  }
+
+  // The parameters keep their names in every generated function, so a name
+  // the generated code needs for something else is an error: the adjoint or
+  // tangent of another parameter (<array>_adj, <array>_dot), the size dpgen
+  // passes for a vector, the prefix dpgen_, a C++ keyword.
+  void check_parameter_names() {
+    for (const ParmVarDecl* decl : fn_->parameters()) {
+      std::string name = decl->getNameAsString();
+      if (const Param* a = contract_name_of(name))
+        error(decl->getLocation(),
+              fmt::format("parameter '{}' has the name that the generated {} gives the {} of "
+                          "array '{}'; rename it",
+                          name, name.back() == 'j' ? "adjoint" : "tangent",
+                          name.back() == 'j' ? "adjoint" : "tangent", a->name));
+      else if (name.rfind("dpgen_", 0) == 0)
+        error(decl->getLocation(), fmt::format("parameter '{}': names starting with 'dpgen_' "
+                                               "are reserved for generated code; rename it",
+                                               name));
+      else if (is_cxx_only_keyword(name))
+        error(decl->getLocation(), fmt::format("parameter '{}' is a C++ keyword, and the "
+                                               "generated adjoint is C++; rename it",
+                                               name));
+    }
+    for (const auto& p : k_.params)
+      if (p.synthetic)
+        for (const auto& other : k_.params)
+          if (!other.synthetic && other.name == p.name)
+            for (const ParmVarDecl* decl : fn_->parameters())
+              if (decl->getNameAsString() == p.name)
+                error(decl->getLocation(),
+                      fmt::format("parameter '{}' clashes with the size dpgen passes for vector "
+                                  "'{}'; rename it",
+                                  p.name, p.name.substr(0, p.name.size() - 5)));
+  }
+
+  // Every name the generated code takes from the kernel (Kernel::names).
+  void collect_names() {
+    for (const auto& p : k_.params) {
+      k_.names.insert(p.name);
+      if (p.kind != ParamKind::Scalar) {
+        k_.names.insert(p.name + "_adj");
+        k_.names.insert(p.name + "_dot");
+      }
+    }
+    k_.names.insert(local_names_.begin(), local_names_.end());
+    k_.names.insert(loop_names_.begin(), loop_names_.end());
   }
 
   void declare(const Decl* d) {
