@@ -118,12 +118,47 @@ private:
       check_work_read(r);
   }
 
+  // A condition that has one value for the whole call: parameters, integer
+  // constants and kernel-level locals computed from them (no counter, no
+  // array element).
+  static bool invariant(const ExprP& e) {
+    return !any_node(e, [](const ExprP& x) {
+      return x->op == Op::LoopVar || x->op == Op::Read ||
+             (x->op == Op::Local && !x->local->kernel_level);
+    });
+  }
+
+  // Two paths that never both run in one call: one holds an invariant
+  // condition the other denies (the arms of `if (predict == 0) ... else ...`),
+  // or both hold `x == a` and `x == b` for different constants a and b (an
+  // `if (dir == X_DIR) ... else if (dir == Y_DIR)` chain, or two such ifs).
+  // The output rules hold for each arm alone: an arm that does not run writes
+  // nothing.
+  static bool exclusive(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
+    for (const auto& x : a)
+      for (const auto& y : b) {
+        if (!invariant(x.cond) || !invariant(y.cond))
+          continue;
+        if (x.positive != y.positive && same(x.cond, y.cond))
+          return true;
+        if (x.positive && y.positive && x.cond->op == Op::Eq && y.cond->op == Op::Eq)
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+              const ExprP &cx = x.cond->ops[1 - i], &cy = y.cond->ops[1 - j];
+              if (same(x.cond->ops[i], y.cond->ops[j]) && cx->op == Op::IntConst &&
+                  cy->op == Op::IntConst && cx->ival != cy->ival)
+                return true;
+            }
+      }
+    return false;
+  }
+
   // One read of a work array against the stores to it: the first rule it
   // breaks.
   void check_work_read(const Access& r) {
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
-        if (st.array != r.array)
+        if (st.array != r.array || exclusive(r.path, st.path))
           continue;
         size_t shared = 0;
         while (shared < n.key.size() && shared < r.nest_key.size() &&
@@ -189,6 +224,7 @@ private:
           for (size_t b = a + 1; b < nest.stores.size(); ++b) {
             const Store &x = nest.stores[a], &y = nest.stores[b];
             if (reported.count(&y) || x.array != y.array || (x.accumulate && y.accumulate) ||
+                exclusive(x.path, y.path) ||
                 *to_poly(x.index) == *to_poly(y.index) ||
                 residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
                 rows_apart(x, nest, y, nest))
@@ -219,7 +255,8 @@ private:
       for (size_t b = a + 1; b < all.size(); ++b) {
         const Nest &nx = *all[a].nest, &ny = *all[b].nest;
         const Store &x = *all[a].store, &y = *all[b].store;
-        if (x.array != y.array || &nx == &ny || reported.count(&y) || not_affine.count(x.array))
+        if (x.array != y.array || &nx == &ny || reported.count(&y) || not_affine.count(x.array) ||
+            exclusive(x.path, y.path))
           continue;
         size_t shared = shared_loops(nx, ny);
         if (y.accumulate) {
