@@ -8,5 +8,5 @@
 DPGEN_KERNEL void forward_difference(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 0; i < n; ++i)
     out[i] = a[(i + 1) % n] - a[i];
-  // CHECK: rem_wrap.cpp:[[@LINE-1]]:14: remark: read 'a[(i + 1) % n]' in kernel 'forward_difference' has an index that cannot be inverted (data-dependent or not affine): its adjoint is computed in scatter form, serially (for the gather form, write a periodic wrap as a conditional index: i == n - 1 ? 0 : i + 1)
+  // CHECK: rem_wrap.cpp:[[@LINE-1]]:14: remark: read 'a[(i + 1) % n]' in kernel 'forward_difference' has an index that dpgen cannot invert (not affine in the loop counters, or piecewise on a condition it cannot bound): its adjoint is computed in scatter form, serially (for the gather form, write a periodic wrap as a conditional index: i == n - 1 ? 0 : i + 1)
 }

@@ -668,10 +668,16 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
   if (e->type != Type::Int)
     return std::nullopt;
   switch (e->op) {
-  case Op::Local:
+  case Op::Local: {
     if (e->local->opaque)
       return Pieces{{Poly::symbol(e->local->name), universe()}};
-    return index_pieces(e->local->def);
+    auto pieces = index_pieces(e->local->def);
+    // An integer local set once before every loop (`int x_min = *xmin;`) is
+    // fixed for the whole kernel: a symbol, as in to_poly.
+    if (!pieces && e->local->kernel_level)
+      return Pieces{{Poly::symbol(e->local->name), universe()}};
+    return pieces;
+  }
   case Op::Select: {
     auto where = condition_domain(e->ops[0]);
     auto a = index_pieces(e->ops[1]);

@@ -303,7 +303,10 @@ private:
         k_.namespaces.insert(k_.namespaces.begin(), ns->getNameAsString());
 
     bool any_in = false, any_out = false;
-    for (const ParmVarDecl* p : fn_->parameters()) {
+    // One parameter; an error in it is reported, the parameter poisoned (its
+    // uses are not reported again) and the rest of the kernel still lowered,
+    // so one run reports every error of the file.
+    auto parameter = [&](const ParmVarDecl* p) {
       Param out;
       out.name = p->getNameAsString();
       if (out.name.empty())
@@ -491,13 +494,24 @@ private:
                                                other.name, out.name));
         k_.params.push_back(*size_param);
       }
+    };
+    bool params_ok = true;
+    for (const ParmVarDecl* p : fn_->parameters()) {
+      try {
+        parameter(p);
+      } catch (const Rejected&) {
+        failed_ = true;
+        params_ok = false;
+        poisoned_.insert(p);
+      }
     }
     check_parameter_names();
-    if (!any_in)
+    // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
+    if (!any_in && params_ok)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                            "nothing to differentiate",
                                            k_.name));
-    if (!any_out)
+    if (!any_out && params_ok)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
     // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
     // that is larger than any column (a symbol; its value in the generated
@@ -542,14 +556,16 @@ private:
         signed_views_[p.name] = local_ref(l);
       }
     // Bind parameters (after the vector is complete, so pointers stay valid).
-    for (size_t i = 0, decl = 0; i < k_.params.size(); ++i) {
-      const Param& p = k_.params[i];
+    // By name: a rejected parameter has no Param (and is poisoned).
+    for (const auto& p : k_.params) {
       if (p.synthetic || !p.twin_of.empty())
         continue;
       Binding b;
       b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
       b.param = &p;
-      env_[fn_->getParamDecl(unsigned(decl++))] = b;
+      for (const ParmVarDecl* decl : fn_->parameters())
+        if (decl->getNameAsString() == p.name && !poisoned_.count(decl))
+          env_[decl] = b;
     }
     // Mixed precision between inputs and outputs is almost always a mistake.
     std::optional<Type> real;
@@ -2143,6 +2159,8 @@ private:
                                   "parameter directly: a[i + 1]");
       fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
     }
+    if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && poisoned_.count(v))
+      throw Rejected{}; // its declaration's error is reported already
     auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
     if (it == env_.end() || it->second.kind != Binding::ArrayParam) {
       if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && v->hasGlobalStorage())

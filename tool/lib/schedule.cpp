@@ -171,10 +171,20 @@ bool is_bulk(const Block& b, const GatherGroup& g) {
 }
 
 // The index reads data (an array, or a real value converted to int).
+// The value depends on array elements or real numbers that vary within the
+// kernel (a kernel-level local such as `int x_min = *xmin;` is one value for
+// the call, like a parameter).
 bool data_dependent(const ExprP& e) {
-  return any_node(e, [](const ExprP& x) {
-    return x->op == Op::Read || (x->op == Op::Cast && is_real(x->ops[0]->type));
-  });
+  bool found = false;
+  std::set<const LocalVar*> seen;
+  walk(
+      e,
+      [&](const ExprP& x) {
+        found = found || x->op == Op::Read || (x->op == Op::Cast && is_real(x->ops[0]->type));
+        return !found;
+      },
+      [](const ExprP& l) { return !l->local->kernel_level; }, seen);
+  return found;
 }
 
 bool uses_rem(const ExprP& e) {
@@ -245,12 +255,16 @@ AdjointPlan schedule_reads(const Kernel& k, Partials& partials) {
             }
           if (!invertible) {
             scatter.reads.push_back({r, partial, site.conds});
-            bool has_rem = uses_rem(r->ops[0]) && !data_dependent(r->ops[0]);
+            bool dependent = data_dependent(r->ops[0]);
+            bool has_rem = uses_rem(r->ops[0]) && !dependent;
             plan.remarks.push_back(
-                {r->pos, fmt::format("read '{}' in kernel '{}' has an index that cannot be "
-                                     "inverted (data-dependent or not affine): its adjoint is "
-                                     "computed in scatter form, serially{}",
+                {r->pos, fmt::format("read '{}' in kernel '{}' has an index that {}: its "
+                                     "adjoint is computed in scatter form, serially{}",
                                      describe_read(r), k.name,
+                                     dependent ? "depends on array values (data-dependent)"
+                                               : "dpgen cannot invert (not affine in the loop "
+                                                 "counters, or piecewise on a condition it "
+                                                 "cannot bound)",
                                      has_rem ? " (for the gather form, write a periodic wrap "
                                                "as a conditional index: i == n - 1 ? 0 : i + 1)"
                                              : "")});
