@@ -34,6 +34,14 @@ CXX_DECL = re.compile(r"\b(?:const\s+)?(?:double|float|int|bool|auto|std::ptrdif
                       r"\s*\*?\s+([A-Za-z_]\w*)\b")
 
 
+# Words of the language, never a name the generated code makes up.
+KEYWORDS = {"const", "restrict", "volatile", "auto", "int", "long", "short", "unsigned", "signed",
+            "double", "float", "bool", "char", "void", "static", "inline", "return", "if", "else",
+            "for", "while", "do", "switch", "case", "break", "continue", "struct", "class",
+            "template", "typename", "namespace", "using", "new", "delete", "this", "true", "false",
+            "nullptr", "operator", "sizeof", "std", "constexpr", "extern"}
+
+
 def run(cmd, cwd=None):
     return subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           text=True)
@@ -100,7 +108,8 @@ def main():
                 # The generated code's own names: not the user's, not contract names.
                 pool = sorted(n for n in generated - user
                               if not n.endswith("_adj") and not n.endswith("_dot")
-                              and not n.startswith("dpgen_"))
+                              and not n.startswith("dpgen_") and not n.startswith("__")
+                              and n not in KEYWORDS)
                 victims = sorted(set(DECL.findall(text)) & user)
                 if pool and victims:
                     cache[src] = (victims, pool)

@@ -42,6 +42,19 @@ private:
   Diagnostics& diag_;
   bool ok_ = true;
 
+  bool hidden(const std::string& array) const {
+    return std::any_of(k_.hidden.begin(), k_.hidden.end(),
+                       [&](const Param& h) { return h.name == array; });
+  }
+
+  // A work array as the user knows it: a hidden one is their accumulator.
+  std::string work_name(const std::string& array) const {
+    for (const auto& h : k_.hidden)
+      if (h.name == array)
+        return fmt::format("the sum in '{}' (read after the loop that adds to it)", h.spelling);
+    return fmt::format("work array '{}' (an output a later loop reads)", array);
+  }
+
   void fail(const SourcePos& at, const std::string& msg) {
     diag_.error(at, msg);
     ok_ = false;
@@ -190,7 +203,9 @@ private:
                                          "update) is outside the kernel subset; write the new "
                                          "values to another array",
                                          r.array, st.pos.line));
-        if (shared > 0)
+        // (an accumulator's hidden array has an element per iteration of the
+        // shared loops: recomputing it once for the whole kernel is right)
+        if (shared > 0 && !hidden(r.array))
           return fail(r.pos, fmt::format("work array '{}' is written (line {}) and read inside "
                                          "the same outer loop: dpgen recomputes work arrays "
                                          "once for the whole kernel; write it in a loop nest of "
@@ -473,10 +488,9 @@ private:
       return;
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && p.inout)
-        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) in a "
-                                 "kernel with in-place array '{}': write the new "
+        fail(k_.pos, fmt::format("{} in a kernel with in-place array '{}': write the new "
                                  "values of '{}' to a DPGEN_OUT array",
-                                 *k_.intermediates.begin(), p.name, p.name));
+                                 work_name(*k_.intermediates.begin()), p.name, p.name));
     for (const auto& p : k_.params)
       if (k_.intermediates.count(p.name) && p.row_pointers)
         fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) has "
@@ -486,10 +500,9 @@ private:
                                  p.name, p.name));
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
-        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) in a "
-                                 "kernel with std::vector parameter '{}': pass the "
+        fail(k_.pos, fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
                                  "arrays as pointers",
-                                 *k_.intermediates.begin(), p.name));
+                                 work_name(*k_.intermediates.begin()), p.name));
     std::map<std::string, std::vector<std::string>> ends;
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {

@@ -5,6 +5,7 @@
 #include "emit.hpp"
 
 #include "emit_checked.hpp"
+#include "emit_forward.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
 
@@ -594,6 +595,11 @@ void emit_vector_checks(Code& code, const Kernel& k) {
                           [](const Param& p) { return p.kind == ParamKind::In; });
 }
 
+// The copy of an in-place array's seed (emit_inout_prologue).
+std::string seed_buffer(const Kernel& k, const std::string& array) {
+  return k.fresh(array + "_seed");
+}
+
 // The call from the shaped entry point to the flat one: rows of a
 // multi-dimensional array are contiguous, so its first element's address is
 // the flat array.
@@ -608,7 +614,7 @@ std::string flat_arguments(const Kernel& k) {
       break;
     case ParamKind::Out:
       as.push_back(p.twin_of.empty() ? array(p, true, p.name + "_adj")
-                                     : p.twin_of + "_seed.data()");
+                                     : seed_buffer(k, p.twin_of) + ".data()");
       break;
     case ParamKind::ConstArray:
       as.push_back(array(p, true, p.name));
@@ -687,10 +693,15 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     code.close();
     code.raw("\n");
   }
+  const std::string recompute = k.fresh(k.name + "_recompute");
+  if (!k.hidden.empty()) // the accumulators' sums: the user's kernel keeps them to itself
+    emit_recompute(code, k, recompute);
   code.raw("} // namespace\n\n");
-  code.line("// The forward kernel, which recomputes the work arrays.");
-  code.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, forward_params(k));
-  code.raw("\n");
+  if (k.hidden.empty()) {
+    code.line("// The forward kernel, which recomputes the work arrays.");
+    code.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, forward_params(k));
+    code.raw("\n");
+  }
   code.line("// Adjoint of {} ({}:{}): its loop nests backwards; the work arrays {} are "
             "recomputed first.",
             k.name, base_name(k.file), k.pos.line,
@@ -699,28 +710,50 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
   emit_size_checks(code, k, k.name + "_adjoint");
-  std::vector<std::string> fwd;
+  // Buffers of the outputs' recomputed values (<out>_v) and of the work
+  // arrays' adjoints (<out>_b), <out>_n elements each (Kernel::fresh names).
+  auto n_of = [&](const std::string& a) { return k.fresh(a + "_n"); };
+  auto v_of = [&](const std::string& a) { return k.fresh(a + "_v"); };
+  auto b_of = [&](const std::string& a) { return k.fresh(a + "_b"); };
+  std::vector<std::string> fwd, flat;
   for (const auto& p : k.params) {
     if (p.kind == ParamKind::Out) {
-      code.line("const std::ptrdiff_t {}_n = {};", p.name, k.extent.at(p.name));
-      code.line("std::vector<{}> {}_v(static_cast<std::size_t>({}_n), "
+      code.line("const std::ptrdiff_t {} = {};", n_of(p.name), k.extent.at(p.name));
+      code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
                 "std::numeric_limits<{}>::quiet_NaN());",
-                p.elem_name, p.name, p.name, p.elem_name);
+                p.elem_name, v_of(p.name), n_of(p.name), p.elem_name);
       if (k.intermediates.count(p.name))
-        code.line("std::vector<{}> {}_b({}_adj, {}_adj + {}_n); // its seed, then more", p.elem_name,
-                  p.name, p.name, p.name, p.name);
-      std::string data = p.name + "_v.data()";
+        code.line("std::vector<{}> {}({}_adj, {}_adj + {}); // its seed, then more", p.elem_name,
+                  b_of(p.name), p.name, p.name, n_of(p.name));
+      std::string data = v_of(p.name) + ".data()";
+      flat.push_back(data);
       fwd.push_back(p.rows.empty() ? data
                                    : fmt::format("reinterpret_cast<{} (*){}>({})", p.elem_name,
                                                  p.rows, data));
     } else if (p.kind == ParamKind::Scalar || p.rows.empty()) {
       fwd.push_back(p.name);
+      if (p.twin_of.empty())
+        flat.push_back(p.name);
     } else {
       fwd.push_back(fmt::format("reinterpret_cast<const {} (*){}>({})", p.elem_name, p.rows,
                                 p.name));
+      flat.push_back(p.name);
     }
   }
-  code.line("{}({});", k.name, fmt::join(fwd, ", "));
+  for (const auto& h : k.hidden) {
+    code.line("const std::ptrdiff_t {} = {}; // the sums of '{}'", n_of(h.name),
+              k.extent.at(h.name), h.spelling);
+    code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
+              "std::numeric_limits<{}>::quiet_NaN());",
+              h.elem_name, v_of(h.name), n_of(h.name), h.elem_name);
+    code.line("std::vector<{}> {}(static_cast<std::size_t>({})); // their adjoints", h.elem_name,
+              b_of(h.name), n_of(h.name));
+    flat.push_back(v_of(h.name) + ".data()");
+  }
+  if (k.hidden.empty())
+    code.line("{}({});", k.name, fmt::join(fwd, ", "));
+  else
+    code.line("{}({});", recompute, fmt::join(flat, ", "));
   for (size_t j = stages.size(); j-- > 0;) {
     const Kernel& s = *stages[j].kernel;
     std::vector<std::string> args;
@@ -728,11 +761,11 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       bool work = k.intermediates.count(p.name) > 0;
       switch (p.kind) {
       case ParamKind::In:
-        args.push_back(work ? p.name + "_v.data()" : p.name);
-        args.push_back(work ? p.name + "_b.data()" : p.name + "_adj");
+        args.push_back(work ? v_of(p.name) + ".data()" : p.name);
+        args.push_back(work ? b_of(p.name) + ".data()" : p.name + "_adj");
         break;
       case ParamKind::Out:
-        args.push_back(work ? p.name + "_b.data()" : p.name + "_adj");
+        args.push_back(work ? b_of(p.name) + ".data()" : p.name + "_adj");
         break;
       case ParamKind::ConstArray:
       case ParamKind::Scalar:
@@ -762,9 +795,10 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
     code.line("// '{}' is updated in place: {}_adj holds the seed of its new values on entry",
               p.name, p.name);
     code.line("// and the adjoint of its old values on return.");
-    code.line("const std::ptrdiff_t {}_n = {};", p.name, k.extent.at(twin));
-    code.line("std::vector<{}> {}_seed({}_adj, {}_adj + {}_n);", p.elem_name, p.name, p.name, p.name,
-              p.name);
+    const std::string n = k.fresh(p.name + "_n");
+    code.line("const std::ptrdiff_t {} = {};", n, k.extent.at(twin));
+    code.line("std::vector<{}> {}({}_adj, {}_adj + {});", p.elem_name, seed_buffer(k, p.name),
+              p.name, p.name, n);
     for (const auto& nest : k.nests) {
       bool writes = false;
       for (const auto& s : nest.stores)

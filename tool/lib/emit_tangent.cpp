@@ -45,6 +45,8 @@ TangentPlan plan_tangent(const Kernel& k) {
   for (const auto& prm : k.params)
     if (prm.kind == ParamKind::In || k.intermediates.count(prm.name))
       p.active.insert(prm.name);
+  for (const auto& h : k.hidden) // work arrays too
+    p.active.insert(h.name);
   // Names a tangent local must not take: parameters, their _dot, every local.
   std::set<const LocalVar*> seen;
   p.names.taken = &k.names;
@@ -167,10 +169,12 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     if (twin && !twin->twin_of.empty()) {
       // In place: both values from the old element first, then the stores.
       const std::string& u = twin->twin_of;
-      code.line("const {} {}_new_value = {};", type_spelling(s.value->type), u, print(s.value));
-      code.line("const {} {}_new_dot = {};", type_spelling(s.value->type), u, dot_text);
-      code.line("{}{} = {}_new_value;", u, idx, u);
-      code.line("{}_dot{} = {}_new_dot;", u, idx, u);
+      const std::string value = tp.k->fresh(u + "_new_value");
+      const std::string value_dot = tp.k->fresh(u + "_new_dot");
+      code.line("const {} {} = {};", type_spelling(s.value->type), value, print(s.value));
+      code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
+      code.line("{}{} = {};", u, idx, value);
+      code.line("{}_dot{} = {};", u, idx, value_dot);
     } else {
       code.line("{}{} {} {};", s.array, idx, op, print(s.value));
       code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
@@ -198,6 +202,14 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
   code.open(fmt::format("void {}({})", name, tangent_params(k, !shaped)));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  // The sums of the kernel's accumulators (Kernel::hidden) and their tangents.
+  for (const auto& h : k.hidden) {
+    const std::string buf = k.fresh(h.name + "_buf"), dot_buf = k.fresh(h.name + "_dot_buf");
+    code.line("std::vector<{}> {}(static_cast<std::size_t>({})), {}({}.size()); // '{}'",
+              h.elem_name, buf, k.extent.at(h.name), dot_buf, buf, h.spelling);
+    code.line("{}* const {} = {}.data();", h.elem_name, h.name, buf);
+    code.line("{}* const {}_dot = {}.data();", h.elem_name, h.name, dot_buf);
+  }
   // Tangents of the locals set before every loop (a0 = a[0]: a0_dot = a_dot[0]).
   std::set<int> done;
   std::set<std::string> vars;
@@ -275,6 +287,11 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
         "// kernel's own loops.\n");
   c.raw(fmt::format("#include \"{}_tangent.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n");
+  bool hidden = false;
+  for (const auto* k : kernels)
+    hidden = hidden || !k->hidden.empty();
+  if (hidden)
+    c.raw("#include <vector>\n");
   if (checks)
     c.raw("#include <stdexcept>\n#include <string>\n");
   c.raw("\n");

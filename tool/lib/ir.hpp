@@ -252,6 +252,13 @@ struct Kernel {
   std::string name;
   std::vector<std::string> namespaces;
   std::vector<Param> params;
+  /// Work arrays dpgen made from the kernel's scalar accumulators (`s += f(a[i])`
+  /// in a loop, `s` read after it): one element per iteration of the loops
+  /// around the accumulating loop, written `= init` before it, `+=` in it,
+  /// read after it. DPGEN_OUT arrays of the IR (and intermediates), but in
+  /// no signature: the adjoint recomputes them (emit_forward.hpp) into
+  /// buffers of its own. find_param finds them.
+  std::vector<Param> hidden;
   std::vector<LocalP> kernel_locals;
   /// `if (...) return;` in the kernel outside every loop, as the condition
   /// under which the kernel goes on (also on the path of every later store).
@@ -291,6 +298,9 @@ struct Kernel {
 
   const Param* find_param(const std::string& n) const {
     for (const auto& p : params)
+      if (p.name == n)
+        return &p;
+    for (const auto& p : hidden)
       if (p.name == n)
         return &p;
     return nullptr;

@@ -555,6 +555,7 @@ private:
         k_.kernel_locals.push_back(l);
         signed_views_[p.name] = local_ref(l);
       }
+    k_.hidden.reserve(kMaxAccumulators); // (start_accumulator: pointers stay valid)
     // Bind parameters (after the vector is complete, so pointers stay valid).
     // By name: a rejected parameter has no Param (and is poisoned).
     for (const auto& p : k_.params) {
@@ -775,7 +776,11 @@ private:
     l->name = name;
     l->def = def;
     l->id = next_local_id_++;
-    l->kernel_level = loops_.empty();
+    // (a value computed from an accumulator's sum, `double norm = sqrt(s);`,
+    // is needed only where that sum is: not a kernel-level local)
+    l->kernel_level = loops_.empty() && !any_node(def, [&](const ExprP& x) {
+      return x->op == Op::Read && is_hidden(x->name);
+    });
     if (def->type == Type::Int) {
       // Integers become std::ptrdiff_t in the generated code (see emit.cpp:
       // index arithmetic that vectorizes and never wraps, also for unsigned
@@ -1228,6 +1233,13 @@ private:
     // from the previous iteration.
     std::set<const VarDecl*> assigned;
     assigned_vars(f->getBody(), assigned);
+    // Scalar accumulators of this loop (`s += f(...)`, `s` read only after
+    // the loop): a hidden work array each (start_accumulator).
+    std::vector<const VarDecl*> accumulating;
+    for (const VarDecl* v : assigned)
+      if (frames_.empty() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
+          start_accumulator(v, f->getForLoc()))
+        accumulating.push_back(v);
     for (const VarDecl* v : assigned) {
       auto it = env_.find(v);
       if (it == env_.end() ||
@@ -1236,11 +1248,18 @@ private:
       it->second.value = std::nullopt;
       for (auto& el : it->second.elems)
         el = std::nullopt;
+      if (accumulators_.count(v)) {
+        why_unset_[v] = fmt::format("'{}' accumulates in this loop ('+='): its sum is known "
+                                    "after the loop, read it there",
+                                    v->getNameAsString());
+        continue;
+      }
       why_unset_[v] = fmt::format(
           "'{}' is declared outside the loop and assigned inside it, and read here before it is "
-          "assigned in this iteration: a value carried from one iteration to the next (a running "
-          "sum or a recurrence) is outside the kernel subset; assign it before each use in the "
-          "iteration, or write a reduction into an output element with '+='",
+          "assigned in this iteration: a value carried from one iteration to the next (a "
+          "recurrence, or a running sum read inside its loop) is outside the kernel subset; "
+          "assign it before each use in the iteration, or only add to it in the loop "
+          "(`s += ...`) and read the sum after the loop",
           v->getNameAsString());
     }
     loops_.push_back(loop);
@@ -1255,8 +1274,12 @@ private:
     env_ = env_before;
     why_unset_ = why_before;
     // After the loop, a variable it assigned holds what the last iteration
-    // left there: outside the subset.
+    // left there: outside the subset; an accumulator holds its sum.
     for (const VarDecl* v : assigned) {
+      if (std::find(accumulating.begin(), accumulating.end(), v) != accumulating.end()) {
+        finish_accumulator(v, f->getEndLoc());
+        continue;
+      }
       auto it = env_.find(v);
       if (it == env_.end() ||
           (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
@@ -1353,6 +1376,141 @@ private:
   }
 
   // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
+  // ---- scalar accumulators ------------------------------------------------
+  //
+  // `double s = 0; for (...) s += f(a[i]); out[0] = g(s);` and per-row sums:
+  // `s` becomes a hidden work array H (Kernel::hidden) with one element per
+  // iteration of the loops around the accumulating loop: `H[c] = <s before
+  // the loop>` there, `H[c] += f(...)` in the loop, and `s` after the loop is
+  // the work-array read H[c]. The output rules, the staged adjoint (which
+  // recomputes H) and the tangent then treat it like any work array.
+
+  static constexpr size_t kMaxAccumulators = 32;
+  bool is_hidden(const std::string& array) const {
+    return std::any_of(k_.hidden.begin(), k_.hidden.end(),
+                       [&](const Param& h) { return h.name == array; });
+  }
+  struct Accumulator {
+    std::string array; // the hidden array
+    ExprP index;       // its element: the outer loops' iteration, mixed radix
+  };
+  std::map<const VarDecl*, Accumulator> accumulators_;
+
+  // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
+  // where `e` does not mention v; null for any other form.
+  static const clang::Expr* accumulated_term(const clang::Expr* rhs, const VarDecl* v,
+                                             bool& negate) {
+    const auto* b = dyn_cast<BinaryOperator>(rhs->IgnoreParenImpCasts());
+    if (!b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
+      return nullptr;
+    auto is_v = [&](const clang::Expr* e) {
+      const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+      return r && r->getDecl() == v;
+    };
+    const clang::Expr* term = nullptr;
+    if (is_v(b->getLHS()))
+      term = b->getRHS();
+    else if (b->getOpcode() == BO_Add && is_v(b->getRHS()))
+      term = b->getLHS();
+    if (!term || mentions(term, v))
+      return nullptr;
+    negate = b->getOpcode() == BO_Sub;
+    return term;
+  }
+
+  static bool mentions(const Stmt* s, const VarDecl* v) {
+    if (!s)
+      return false;
+    if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v)
+      return true;
+    for (const Stmt* c : s->children())
+      if (mentions(c, v))
+        return true;
+    return false;
+  }
+
+  // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
+  // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+  static bool is_accumulator(const Stmt* body, const VarDecl* v) {
+    int updates = 0;
+    bool other = false;
+    std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+      if (!s || other)
+        return;
+      if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
+        const auto* r = dyn_cast<DeclRefExpr>(b->getLHS()->IgnoreParenImpCasts());
+        if (r && r->getDecl() == v) {
+          bool negate = false;
+          bool ok = b->getOpcode() == BO_AddAssign || b->getOpcode() == BO_SubAssign
+                        ? !mentions(b->getRHS(), v)
+                        : b->getOpcode() == BO_Assign &&
+                              accumulated_term(b->getRHS(), v, negate) != nullptr;
+          if (!ok)
+            other = true;
+          ++updates;
+          return;
+        }
+      }
+      if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v) {
+        other = true;
+        return;
+      }
+      for (const Stmt* c : s->children())
+        visit(c);
+    };
+    visit(body);
+    return updates > 0 && !other;
+  }
+
+  // Makes `v` (a real scalar with a value here) an accumulator of the loop
+  // about to be lowered; false (and nothing done) where it cannot be one.
+  bool start_accumulator(const VarDecl* v, SourceLocation loc) {
+    auto it = env_.find(v);
+    if (it == env_.end() || it->second.kind != Binding::Value || !it->second.value ||
+        !is_real((*it->second.value)->type) || v->getType()->isReferenceType())
+      return false;
+    // One element per iteration of the enclosing loops: (outer - lo) * extent
+    // of the inner ones + ..., which needs polynomial bounds.
+    ExprP idx = int_const(0);
+    for (size_t d = 0; d < loops_.size(); ++d) {
+      const Loop& l = *loops_[d];
+      if (!to_poly(l.lo) || !to_poly(l.hi))
+        return false;
+      ExprP here = binary(Op::Sub, loop_var(l.var), l.lo);
+      idx = d == 0 ? here
+                   : binary(Op::Add, binary(Op::Mul, idx, binary(Op::Sub, l.hi, l.lo)), here);
+    }
+    if (k_.hidden.size() == k_.hidden.capacity())
+      return false; // (pointers into it must stay valid while lowering)
+    Param h;
+    h.name = "dpgen_sum_" + v->getNameAsString();
+    for (int n = 2; k_.find_param(h.name); ++n)
+      h.name = fmt::format("dpgen_sum_{}_{}", v->getNameAsString(), n);
+    h.kind = ParamKind::Out;
+    h.elem = (*it->second.value)->type;
+    h.elem_name = type_spelling(h.elem);
+    h.spelling = v->getNameAsString(); // the user's accumulator, for messages
+    h.declaration = fmt::format("{}* {}", h.elem_name, h.name);
+    k_.hidden.push_back(h);
+    add_store(h.name, idx, *it->second.value, false, pos(loc), loc);
+    accumulators_[v] = {h.name, idx};
+    return true;
+  }
+
+  // After the accumulating loop: `v` is the sum, a read of its element.
+  void finish_accumulator(const VarDecl* v, SourceLocation loc) {
+    const Accumulator a = accumulators_.at(v);
+    accumulators_.erase(v);
+    const Param* h = k_.find_param(a.array);
+    order_after_later_stores(a.array);
+    ExprP r = read(a.array, a.index, h->elem, pos(loc), 0);
+    std::const_pointer_cast<Expr>(r)->source = v->getNameAsString();
+    k_.intermediates.insert(a.array);
+    acc_.work_reads.push_back({a.array, cur_key(), next_store_seq_, a.index, path_, pos(loc)});
+    env_[v].value = r;
+    why_unset_.erase(v);
+  }
+
   static void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
     if (!s)
       return;
@@ -1561,6 +1719,21 @@ private:
   // stands for).
   void assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
                     const clang::Expr* rhs, SourceLocation loc) {
+    if (auto acc = accumulators_.find(var); acc != accumulators_.end()) {
+      // s += e, s -= e, s = s + e, s = s - e, s = e + s: the hidden array's
+      // element for this iteration of the outer loops gets += (-)e.
+      const clang::Expr* term = rhs;
+      bool negate = op == BO_SubAssign;
+      if (op == BO_Assign)
+        term = accumulated_term(rhs, var, negate);
+      if (!term)
+        fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
+                              var->getNameAsString()));
+      ExprP e = expr(term);
+      add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t),
+                true, pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+      return;
+    }
     Binding& b = env_[var];
     ExprP value;
     if (op == BO_Assign) {
@@ -2194,7 +2367,16 @@ private:
       return int_const(static_cast<long long>(l->getValue().getSExtValue()));
     if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
       Type t = type_of(e);
-      return real_const(l->getValueAsApproximateDouble(), t, text(l));
+      // The literal as written; from a macro (`#define C 0.5` in a header the
+      // generated code does not include), its spelling in the definition.
+      SourceLocation at = l->getLocation();
+      std::string spelled_as =
+          at.isMacroID()
+              ? Lexer::getSourceText(CharSourceRange::getTokenRange(sm_.getSpellingLoc(at)), sm_,
+                                     ctx_.getLangOpts())
+                    .str()
+              : text(l);
+      return real_const(l->getValueAsApproximateDouble(), t, spelled_as);
     }
     if (const auto* l = dyn_cast<CXXBoolLiteralExpr>(e))
       return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));

@@ -361,6 +361,10 @@ AdjointPlan schedule(const Kernel& k, Partials& partials) {
       s->name = fmt::format("{}_nest{}", k.name, j + 1);
       s->nests = {k.nests[j]};
       s->size_checks.clear();
+      // The accumulators' hidden arrays are the stages' parameters like any
+      // work array (the driver passes its buffers).
+      s->params.insert(s->params.end(), s->hidden.begin(), s->hidden.end());
+      s->hidden.clear();
       for (auto& p : s->params)
         if (k.intermediates.count(p.name))
           p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;

@@ -1,0 +1,33 @@
+// A local summed in a loop is an accumulator only where the loop adds to it
+// and nothing else reads it there (issue 20): a prefix sum reads it inside
+// the loop, a product or a decaying recurrence is no sum. Those stay errors,
+// each in one run.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void prefix_sum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) {
+    s += a[i];
+    out[i] = s;
+    // CHECK: accumulator_rules.cpp:[[@LINE-1]]:14: error: 's' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+  }
+}
+
+DPGEN_KERNEL void product(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double p = 1;
+  for (int i = 0; i < n; ++i)
+    p *= a[i];
+  // CHECK: accumulator_rules.cpp:[[@LINE-1]]:5: error: 'p' is declared outside the loop and assigned inside it
+  out[0] = p;
+}
+
+DPGEN_KERNEL void decay(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i)
+    s = 0.5 * s + a[i];
+  // CHECK: accumulator_rules.cpp:[[@LINE-1]]:15: error: 's' is declared outside the loop and assigned inside it
+  out[0] = s;
+}

@@ -1,0 +1,80 @@
+// Emit (phase 6): a forward kernel printed from the IR (emit_forward.hpp).
+#include "emit_forward.hpp"
+
+#include "print.hpp"
+
+#include <fmt/format.h>
+
+namespace dpgen {
+
+namespace {
+
+// A loop bound in the counters' type (a size_t size minus one stays signed).
+std::string bound(const ExprP& e) {
+  if (e->op == Op::IntConst)
+    return print(e);
+  return fmt::format("static_cast<{}>({})", kCellType, print(e));
+}
+
+void emit_nest(Code& code, const Nest& nest, const Kernel& k) {
+  code.open("");
+  int opened = 1;
+  for (const auto& l : nest.loops) {
+    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, bound(l.lo), l.var,
+                          bound(l.hi), l.var));
+    ++opened;
+  }
+  std::set<int> done;
+  std::set<std::string> vars;
+  for (const auto& s : nest.stores) {
+    std::map<int, LocalP> cond_locals;
+    for (const auto& pc : s.path)
+      collect(pc.cond, cond_locals, vars);
+    define_locals(code, cond_locals, done);
+    bool guarded = !s.path.empty();
+    if (guarded)
+      code.open(fmt::format("if ({})", conjunction(s.path)));
+    std::map<int, LocalP> locals;
+    collect(s.index, locals, vars);
+    collect(s.value, locals, vars);
+    std::set<int> inner = done;
+    define_locals(code, locals, guarded ? inner : done);
+    code.line("{}{} {} {};", s.array, subscript(s.index, k.levels_of(s.array)),
+              s.accumulate ? "+=" : "=", print(s.value));
+    if (guarded)
+      code.close();
+  }
+  for (int i = 0; i < opened; ++i)
+    code.close();
+}
+
+} // namespace
+
+void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
+  std::vector<std::string> ps;
+  for (const auto& p : k.params) {
+    if (!p.twin_of.empty())
+      continue;
+    if (p.kind == ParamKind::Scalar)
+      ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+    else
+      ps.push_back(array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
+  }
+  for (const auto& h : k.hidden)
+    ps.push_back(fmt::format("{}* {}", h.elem_name, h.name));
+  code.line("// {} as its IR says, with the sums of its accumulators ({}) kept in arrays.",
+            k.name, [&] {
+              std::vector<std::string> names;
+              for (const auto& h : k.hidden)
+                names.push_back(h.spelling);
+              return fmt::format("{}", fmt::join(names, ", "));
+            }());
+  code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
+  for (const auto& l : k.kernel_locals)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  for (const auto& n : k.nests)
+    emit_nest(code, n, k);
+  code.close();
+}
+
+} // namespace dpgen
