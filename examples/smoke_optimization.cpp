@@ -329,9 +329,17 @@ int main(int argc, char** argv) try {
                  {"plume 1", "plume 2", "plume 3", "reference"}));
       ++frame_count;
     }
+    std::vector<dpgen_examples::Series> series = {{"dpgen", curve.iteration, curve.loss}};
+    if (book_setup) {
+      dpgen_examples::Series book{"notebook (PhiFlow), printed steps", {}, {}, "#d62728", true};
+      for (size_t b = 0; b < std::size(kBookSteps); ++b) {
+        book.x.push_back(kBookSteps[b]);
+        book.y.push_back(kBookLoss[b]);
+      }
+      series.push_back(book);
+    }
     dpgen_examples::write_svg_plot(dir + "loss.svg", "smoke_optimization: loss", "iteration",
-                                   "sum of 1/2 |s_T - s_ref|^2",
-                                   {{"loss", curve.iteration, curve.loss}}, true);
+                                   "sum of 1/2 |s_T - s_ref|^2", series, true);
     std::printf("pictures: %sfinal_before.png %sfinal_optimized.png %sframes.png (strip) "
                 "%sloss.svg, %d frames in %s\n",
                 dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), frame_count,
