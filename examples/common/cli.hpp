@@ -105,6 +105,17 @@ public:
     return false;
   }
 
+  /// The shortest text (%.{6..17}g) that reads back as exactly v: what --help shows.
+  static std::string format(double v) {
+    char buf[64];
+    for (int digits = 6; digits <= 17; ++digits) {
+      std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+      if (std::strtod(buf, nullptr) == v)
+        break;
+    }
+    return buf;
+  }
+
   /// For a condition between options, after finish(): throws "<program>: <what>".
   [[noreturn]] void fail(const std::string& what) const {
     throw std::invalid_argument(program_ + ": " + what);
@@ -113,8 +124,8 @@ public:
 private:
   // Registers the option for --help; the value given on the command line, or null (then the
   // caller returns its default as it is: never through text).
-  const std::string* get(const std::string& name, const std::string& def,
-                         const std::string& help, const std::string& range) {
+  const std::string* get(const std::string& name, const std::string& def, const std::string& help,
+                         const std::string& range) {
     known_[name] = true;
     usage_.push_back("  " + name + " (default " + (def.empty() ? "none" : def) +
                      (range.empty() ? "" : "; " + range) + ")\n      " + help);
@@ -133,20 +144,6 @@ private:
       return "at most " + format(max);
     return "";
   }
-public:
-  /// The shortest text (%.{6..17}g) that reads back as exactly v: what --help shows.
-  static std::string format(double v) {
-    char buf[64];
-    for (int digits = 6; digits <= 17; ++digits) {
-      std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-      if (std::strtod(buf, nullptr) == v)
-        break;
-    }
-    return buf;
-  }
-
-private:
-
   std::string program_, about_;
   std::map<std::string, std::string> given_;
   std::map<std::string, bool> known_;
