@@ -72,10 +72,17 @@ int main(int argc, char** argv) try {
       "--lr-adam", 0.75, "Adam step size (not in the notebook; first step ~ GD's)", 0, 1e9, true);
   const double lr_hig = args.get_double(
       "--lr-hig", 0.11, "HIG step size (not in the notebook; first step ~ GD's)", 0, 1e9, true);
+  const double notebook_match = args.get_double(
+      "--require-notebook-match", 0,
+      "exit with an error unless GD's, Newton's and PG's iterate 9 are within this relative "
+      "difference (per component) of the notebook's printed ones (0: no check)",
+      0);
   // --require-reduction applies to PG and HIG; --check-gradient also checks dy/dx.
   const auto common = dpgen_examples::common_options(args, "physgrad_comparison", false);
   if (args.finish())
     return 0;
+  if (notebook_match > 0 && iters < 10)
+    args.fail("--require-notebook-match needs --iters 10 or more (the notebook prints iterate 9)");
 
   VectorXd x0(2);
   x0 << 3.0, 3.0;
@@ -174,6 +181,30 @@ int main(int argc, char** argv) try {
                                  "x1", path_series);
   std::printf("wrote %siterates.csv %sloss.svg %strajectories.svg\n", dir.c_str(), dir.c_str(),
               dir.c_str());
+
+  // The notebook's iterate 9 (its printout, float32) for the methods it runs.
+  const struct {
+    const char* name;
+    double x0, x1;
+  } notebook[] = {{"GD", 2.4512184, 0.96171147},
+                  {"Newton", 0.05202458, 0.92383826},
+                  {"PG", 0.08474258, 0.50421}};
+  int mismatch = 0;
+  for (const auto& nb : notebook)
+    for (const Run& r : runs)
+      if (notebook_match > 0 && r.name == nb.name) {
+        const VectorXd& x = r.xs[10];
+        if (!(std::abs(x[0] - nb.x0) <= notebook_match * std::abs(nb.x0) &&
+              std::abs(x[1] - nb.x1) <= notebook_match * std::abs(nb.x1))) {
+          std::fprintf(stderr,
+                       "error: %s iterate 9 is [%.8g %.8g], the notebook's [%.8g %.8g]: more "
+                       "than %g apart (relative)\n",
+                       nb.name, x[0], x[1], nb.x0, nb.x1, notebook_match);
+          mismatch = 1;
+        }
+      }
+  if (mismatch)
+    return 1;
 
   const double l0 = loss_of_y(physics(x0));
   for (const Run& r : runs)

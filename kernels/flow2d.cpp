@@ -7,6 +7,10 @@
 // Each axis is closed or periodic (px, py: 0 or 1).
 //   closed:   the wall faces (i = 0, nx for u; j = 0, ny for v) carry zero normal
 //             velocity; traces are clamped to the grid (zero gradient at walls).
+//             The velocity's self-advection (flow_advect_u/v) clamps a trace's
+//             tangential coordinate to the first and last face rows (zt = 0), or
+//             (zt = 1) takes the tangential velocity beyond a closed wall as 0, half a
+//             cell outside (the ghost values of PhiFlow's extrapolation.ZERO).
 //   periodic: face nx of a u row is face 0 (row ny of v is row 0). The kernels
 //             write it as a bit-identical copy of face 0 (same expression, same
 //             reads) and never read it: it is there so that both layouts are the
@@ -53,10 +57,13 @@ DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const do
 }
 
 // Semi-Lagrangian self-advection of u on its own (nx+1)-by-ny face grid; the
-// velocity at an x face is u there and the mean of the 4 nearest v faces.
+// velocity at an x face is u there and the mean of the 4 nearest v faces. zt = 1
+// (closed y walls): u is 0 on ghost rows -1 and ny, so a trace ending within half a
+// cell of a wall (or beyond it) interpolates towards 0; zt = 0: the trace is clamped
+// to rows 0 and ny-1. (The ghost rows are weights m0, m1 of 0 on rows read in range.)
 DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double* v,
                                 DPGEN_OUT double* u_out, int nx, int ny, double dt_h, int px,
-                                int py) {
+                                int py, int zt) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       const int k = j * (nx + 1) + i;
@@ -72,23 +79,27 @@ DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double*
       const double xr = ce - dt_h * u[j * (nx + 1) + ce], yr = j - dt_h * vf;
       const double x =
           px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), 1.0 * nx);
+      const double ylo = zt != 0 ? -1.0 : 0.0, yhi = zt != 0 ? 1.0 * ny : ny - 1.0;
       const double y =
-          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), ny - 1.0);
+          py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, ylo), yhi);
       const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
-      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
+      const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1; // -1 with zt
       const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : nx);
-      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : j0);
+      const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : (zt != 0 ? ny : j0)); // ny: ghost
       const double fx = x - i0, fy = y - j0;
-      u_out[k] =
-          (1.0 - fy) * ((1.0 - fx) * u[j0 * (nx + 1) + i0] + fx * u[j0 * (nx + 1) + i1]) +
-          fy * ((1.0 - fx) * u[j1 * (nx + 1) + i0] + fx * u[j1 * (nx + 1) + i1]);
+      const double m0 = j0 >= 0 ? 1.0 : 0.0, m1 = j1 < ny ? 1.0 : 0.0;
+      const int r0 = j0 >= 0 ? j0 : 0, r1 = j1 < ny ? j1 : ny - 1;
+      u_out[k] = (1.0 - fy) * m0 *
+                     ((1.0 - fx) * u[r0 * (nx + 1) + i0] + fx * u[r0 * (nx + 1) + i1]) +
+                 fy * m1 * ((1.0 - fx) * u[r1 * (nx + 1) + i0] + fx * u[r1 * (nx + 1) + i1]);
     }
 }
 
-// Semi-Lagrangian self-advection of v on its nx-by-(ny+1) face grid.
+// Semi-Lagrangian self-advection of v on its nx-by-(ny+1) face grid; zt as in
+// flow_advect_u, for the ghost columns -1 and nx of closed x walls.
 DPGEN_KERNEL void flow_advect_v(DPGEN_IN const double* u, DPGEN_IN const double* v,
                                 DPGEN_OUT double* v_out, int nx, int ny, double dt_h, int px,
-                                int py) {
+                                int py, int zt) {
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int k = j * nx + i;
@@ -102,17 +113,20 @@ DPGEN_KERNEL void flow_advect_v(DPGEN_IN const double* u, DPGEN_IN const double*
       const double uf = 0.25 * (u[cs * (nx + 1) + i] + u[cs * (nx + 1) + ie] +
                                 u[cn * (nx + 1) + i] + u[cn * (nx + 1) + ie]);
       const double xr = i - dt_h * uf, yr = cn - dt_h * v[cn * nx + i];
+      const double xlo = zt != 0 ? -1.0 : 0.0, xhi = zt != 0 ? 1.0 * nx : nx - 1.0;
       const double x =
-          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, 0.0), nx - 1.0);
+          px != 0 ? xr - nx * std::floor(xr / nx) : std::min(std::max(xr, xlo), xhi);
       const double y =
           py != 0 ? yr - ny * std::floor(yr / ny) : std::min(std::max(yr, 0.0), 1.0 * ny);
-      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1;
+      const int i0 = x < nx - 1 ? static_cast<int>(std::floor(x)) : nx - 1; // -1 with zt
       const int j0 = y < ny - 1 ? static_cast<int>(std::floor(y)) : ny - 1;
-      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : i0);
+      const int i1 = i0 < nx - 1 ? i0 + 1 : (px != 0 ? 0 : (zt != 0 ? nx : i0)); // nx: ghost
       const int j1 = j0 < ny - 1 ? j0 + 1 : (py != 0 ? 0 : ny);
       const double fx = x - i0, fy = y - j0;
-      v_out[k] = (1.0 - fy) * ((1.0 - fx) * v[j0 * nx + i0] + fx * v[j0 * nx + i1]) +
-                 fy * ((1.0 - fx) * v[j1 * nx + i0] + fx * v[j1 * nx + i1]);
+      const double m0 = i0 >= 0 ? 1.0 : 0.0, m1 = i1 < nx ? 1.0 : 0.0;
+      const int c0 = i0 >= 0 ? i0 : 0, c1 = i1 < nx ? i1 : nx - 1;
+      v_out[k] = (1.0 - fy) * ((1.0 - fx) * m0 * v[j0 * nx + c0] + fx * m1 * v[j0 * nx + c1]) +
+                 fy * ((1.0 - fx) * m0 * v[j1 * nx + c0] + fx * m1 * v[j1 * nx + c1]);
     }
 }
 

@@ -34,12 +34,13 @@ DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const do
                                      DPGEN_IN const double* v, DPGEN_IN const double* inflow,
                                      DPGEN_OUT double* s_out, int nx, int ny, double dt_h, int px,
                                      int py);
+// zt: 1 = the tangential velocity is 0 beyond a closed wall (ghost faces), 0 = clamped.
 DPGEN_KERNEL void flow_advect_u(DPGEN_IN const double* u, DPGEN_IN const double* v,
                                 DPGEN_OUT double* u_out, int nx, int ny, double dt_h, int px,
-                                int py);
+                                int py, int zt);
 DPGEN_KERNEL void flow_advect_v(DPGEN_IN const double* u, DPGEN_IN const double* v,
                                 DPGEN_OUT double* v_out, int nx, int ny, double dt_h, int px,
-                                int py);
+                                int py, int zt);
 DPGEN_KERNEL void flow_buoyancy(DPGEN_IN const double* v, DPGEN_IN const double* s,
                                 DPGEN_IN const double* fy, DPGEN_OUT double* v_out, int nx,
                                 int ny, double dt_b, double dt, int py);

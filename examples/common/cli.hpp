@@ -43,7 +43,10 @@ public:
   int get_int(const std::string& name, int def, const std::string& help,
               int min = std::numeric_limits<int>::min(),
               int max = std::numeric_limits<int>::max()) {
-    const std::string v = get(name, std::to_string(def), help, range_text(min, max, false));
+    const std::string* given = get(name, std::to_string(def), help, range_text(min, max, false));
+    if (!given)
+      return def;
+    const std::string& v = *given;
     char* end = nullptr;
     errno = 0;
     const long r = std::strtol(v.c_str(), &end, 10);
@@ -63,7 +66,10 @@ public:
                     double min = -std::numeric_limits<double>::infinity(),
                     double max = std::numeric_limits<double>::infinity(),
                     bool min_excluded = false) {
-    const std::string v = get(name, format(def), help, range_text(min, max, min_excluded));
+    const std::string* given = get(name, format(def), help, range_text(min, max, min_excluded));
+    if (!given)
+      return def; // the default itself: text would round it (1/3, 0.01/pi)
+    const std::string& v = *given;
     char* end = nullptr;
     const double r = std::strtod(v.c_str(), &end);
     if (v.empty() || *end || !std::isfinite(r)) {
@@ -78,7 +84,8 @@ public:
   }
 
   std::string get_string(const std::string& name, const std::string& def, const std::string& help) {
-    return get(name, def, help, "");
+    const std::string* given = get(name, def, help, "");
+    return given ? *given : def;
   }
 
   /// Call after every get_*: prints help (returns true), or throws the first
@@ -98,19 +105,32 @@ public:
     return false;
   }
 
+  /// The shortest text (%.{6..17}g) that reads back as exactly v: what --help shows.
+  static std::string format(double v) {
+    char buf[64];
+    for (int digits = 6; digits <= 17; ++digits) {
+      std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+      if (std::strtod(buf, nullptr) == v)
+        break;
+    }
+    return buf;
+  }
+
   /// For a condition between options, after finish(): throws "<program>: <what>".
   [[noreturn]] void fail(const std::string& what) const {
     throw std::invalid_argument(program_ + ": " + what);
   }
 
 private:
-  std::string get(const std::string& name, const std::string& def, const std::string& help,
-                  const std::string& range) {
+  // Registers the option for --help; the value given on the command line, or null (then the
+  // caller returns its default as it is: never through text).
+  const std::string* get(const std::string& name, const std::string& def, const std::string& help,
+                         const std::string& range) {
     known_[name] = true;
     usage_.push_back("  " + name + " (default " + (def.empty() ? "none" : def) +
                      (range.empty() ? "" : "; " + range) + ")\n      " + help);
     auto it = given_.find(name);
-    return it == given_.end() ? def : it->second;
+    return it == given_.end() ? nullptr : &it->second;
   }
   void error(const std::string& what) { errors_.push_back(program_ + ": " + what); }
   template <typename T> static std::string range_text(T min, T max, bool min_excluded) {
@@ -124,12 +144,6 @@ private:
       return "at most " + format(max);
     return "";
   }
-  static std::string format(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-  }
-
   std::string program_, about_;
   std::map<std::string, std::string> given_;
   std::map<std::string, bool> known_;

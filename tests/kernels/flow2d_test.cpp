@@ -39,8 +39,10 @@ TEST_CASE("flow_advect_marker adjoint") {
 }
 
 TEST_CASE("flow_advect_u and flow_advect_v adjoints") {
+  for (int zt : {0, 1}) // tangential velocity beyond closed walls: clamped, zero ghosts
   for (auto [px, py] : kAxes)
   for (auto [nx, ny] : kGrids) {
+    CAPTURE(zt);
     CAPTURE(px);
     CAPTURE(py);
     CAPTURE(nx);
@@ -48,21 +50,21 @@ TEST_CASE("flow_advect_u and flow_advect_v adjoints") {
     dpgen_test::Problem<double> p;
     p.in_sizes = {size_t((nx + 1) * ny), size_t(nx * (ny + 1))};
     p.out_sizes = {size_t((nx + 1) * ny)};
-    p.forward = [&](auto in, auto out) { flow_advect_u(in[0], in[1], out[0], nx, ny, kDtH, px, py); };
+    p.forward = [&](auto in, auto out) { flow_advect_u(in[0], in[1], out[0], nx, ny, kDtH, px, py, zt); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
-      flow_advect_u_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH, px, py);
+      flow_advect_u_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH, px, py, zt);
     };
     p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
-      flow_advect_u_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH, px, py);
+      flow_advect_u_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH, px, py, zt);
     };
     dpgen_test::check_adjoint(p);
     p.out_sizes = {size_t(nx * (ny + 1))};
-    p.forward = [&](auto in, auto out) { flow_advect_v(in[0], in[1], out[0], nx, ny, kDtH, px, py); };
+    p.forward = [&](auto in, auto out) { flow_advect_v(in[0], in[1], out[0], nx, ny, kDtH, px, py, zt); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
-      flow_advect_v_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH, px, py);
+      flow_advect_v_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny, kDtH, px, py, zt);
     };
     p.checked = [&](auto in, auto adj, auto seed, auto in_n, auto out_n) {
-      flow_advect_v_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH, px, py);
+      flow_advect_v_adjoint_checked(in[0], in_n[0], adj[0], in_n[0], in[1], in_n[1], adj[1], in_n[1], seed[0], out_n[0], nx, ny, kDtH, px, py, zt);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -43,8 +43,9 @@ def cases():
                                 nx, ny, 0.3, 0, 0), {}),
         "flow_maccormack_marker": ((rand(ny, nx), rand(ny, nx), rand(ny, nx), rand(ny, nx + 1),
                                     rand(ny + 1, nx), rand(ny, nx), nx, ny, 0.3, 1, 0), {}),
-        "flow_advect_u": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 1, 0), {}),
-        "flow_advect_v": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 0, 1),
+        # (the last argument zt = 1: zero tangential velocity beyond the closed walls)
+        "flow_advect_u": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 1, 0, 1), {}),
+        "flow_advect_v": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.3, 0, 1, 1),
                           {"v_out_shape": [ny + 1, nx]}),
         "flow_divergence": ((rand(ny, nx + 1), rand(ny + 1, nx), nx, ny, 0.5, 1, 1),
                             {"div_shape": [ny, nx]}),

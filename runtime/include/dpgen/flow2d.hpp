@@ -23,11 +23,19 @@ enum class MarkerAdvection {
   maccormack,      ///< semi-Lagrangian plus the MacCormack correction with its clamp (PhiFlow's)
 };
 
+/// What the velocity's self-advection takes for the tangential velocity beyond a closed wall
+/// (u beyond the bottom and top walls, v beyond the left and right ones).
+enum class WallTangent {
+  clamped, ///< the value on the nearest face row inside: traces are clamped to it
+  zero,    ///< 0 on ghost faces half a cell outside the wall (PhiFlow's extrapolation.ZERO)
+};
+
 /// Settings of a Flow2d step.
 struct FlowOptions {
   MarkerAdvection marker_advection = MarkerAdvection::semi_lagrangian;
   double dt = 1.0;       ///< time step
   double buoyancy = 1.0; ///< v += dt * buoyancy * s (marker averaged onto the y faces)
+  WallTangent wall_tangent = WallTangent::clamped; ///< closed walls, velocity transport
   /// The pressure solves (forward and backward): relative tolerance and iteration limit.
   double pressure_tolerance = 1e-10;
   int max_pressure_iterations = 100;
@@ -177,8 +185,8 @@ public:
     double* v_adj = state_adj.data() + cells() + u_faces();
     const double* su = state.data() + cells();
     const double* sv = state.data() + cells() + u_faces();
-    flow_advect_u_adjoint(su, u_adj, sv, v_adj, ua_adj.data(), nx_, ny_, dt_h, px(), py());
-    flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h, px(), py());
+    flow_advect_u_adjoint(su, u_adj, sv, v_adj, ua_adj.data(), nx_, ny_, dt_h, px(), py(), zt());
+    flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h, px(), py(), zt());
     if (options_.marker_advection == MarkerAdvection::maccormack) {
       VectorXd sl_adj = VectorXd::Zero(cells()), rev_adj = VectorXd::Zero(cells());
       VectorXd none = VectorXd::Zero(cells()), none_adj = VectorXd::Zero(cells());
@@ -213,6 +221,7 @@ public:
 private:
   int px() const { return options_.periodic_x ? 1 : 0; }
   int py() const { return options_.periodic_y ? 1 : 0; }
+  int zt() const { return options_.wall_tangent == WallTangent::zero ? 1 : 0; }
 
   static Boundaries pressure_boundaries(const FlowOptions& o) {
     const Boundary x = o.periodic_x ? Boundary::periodic : Boundary::neumann;
@@ -259,9 +268,9 @@ private:
     } else {
       flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h, px(), py());
     }
-    flow_advect_u(su, sv, ua_.data(), nx_, ny_, dt_h, px(), py());
+    flow_advect_u(su, sv, ua_.data(), nx_, ny_, dt_h, px(), py(), zt());
     flow_force_u(ua_.data(), force_.data(), u1_.data(), nx_, ny_, options_.dt, px());
-    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h, px(), py());
+    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h, px(), py(), zt());
     flow_buoyancy(va_.data(), s1_.data(), force_.data() + cells(), v1_.data(), nx_, ny_,
                   options_.dt * options_.buoyancy, options_.dt, py());
     rhs_.resize(cells());
