@@ -202,6 +202,43 @@ class _Build:
         return p.returncode, p.stdout
 
 
+    def run_all(self, cmds):
+        """Runs cmds at once; the first to fail stops the others (a compile error in the small
+        kernel unit need not wait for the ops unit). Returns [(returncode, output)] in order,
+        returncode None for a command stopped early."""
+        outs = [tempfile.TemporaryFile("w+") for _ in cmds]
+        procs = [subprocess.Popen(c, stdout=o, stderr=subprocess.STDOUT, text=True)
+                 for c, o in zip(cmds, outs)]
+        try:
+            while any(p.poll() is None for p in procs):
+                if any(p.returncode not in (None, 0) for p in procs):
+                    for p in procs:
+                        if p.poll() is None:
+                            p.terminate()
+                    break
+                time.sleep(0.05)
+            results = []
+            for c, p, o in zip(cmds, procs, outs):
+                stopped = p.poll() is None or p.returncode < 0
+                p.wait()
+                o.seek(0)
+                out = o.read()
+                rc = None if stopped else p.returncode
+                with _lock_log:
+                    self.log.write("$ " + " ".join(c) + "\n" + out +
+                                   ("[stopped]" if rc is None else f"[exit {rc}]") + "\n\n")
+                results.append((rc, out))
+            self.log.flush()
+            return results
+        finally:
+            for p in procs:
+                if p.poll() is None:
+                    p.kill()
+                    p.wait()
+            for o in outs:
+                o.close()
+
+
 _lock_log = threading.Lock()
 
 
@@ -285,8 +322,7 @@ def _build_entry(tmp, text, kernel_path, stem, display, extra_cflags, include_di
             ([_compiler()] + ["-std=c++17", "-O2", abi] + common + torch_incs +
              list(extra_cflags) + ["-c", wrapper, "-o", os.path.join(objs, "ops.o")]),
         ]
-        with ThreadPoolExecutor(min(3, os.cpu_count() or 1)) as pool:
-            results = list(pool.map(build.run, units))
+        results = build.run_all(units)
         lib_name = f"lib{stem}-{build_id}.so"
         if all(rc == 0 for rc, _ in results):
             libdirs = cpp_extension.library_paths()
@@ -297,8 +333,10 @@ def _build_entry(tmp, text, kernel_path, stem, display, extra_cflags, include_di
                     ["-ltorch", "-ltorch_cpu", "-lc10"])
             results.append(build.run(link))
         for rc, out in results:
-            if rc != 0:
+            if rc not in (0, None):
                 first = "\n".join(l for l in out.splitlines() if "error" in l)[:2000] or out[-2000:]
+                if kernel_path is None:
+                    first = first.replace(kernel, display)
                 raise CompileError(f"dpgen_torch.load: compiling the ops of {display} failed "
                                    f"(full log: {{log}}):\n{first}", build.log_path)
 
@@ -423,7 +461,7 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
             os.rename(tmp, failed)
             if isinstance(e, CompileError):
                 e.log_path = os.path.join(failed, "build.log")
-                e.args = (e.args[0].replace("{log}", e.log_path),)
+                e.args = (e.args[0].replace("{log}", e.log_path).replace(tmp, failed),)
             raise e from None
         except BaseException:
             shutil.rmtree(tmp, ignore_errors=True)
