@@ -469,8 +469,14 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
         manifest["build_seconds"] = round(time.perf_counter() - started, 2)
         with open(os.path.join(tmp, "manifest.json"), "w") as f:
             json.dump(manifest, f, indent=1)
-        if os.path.isdir(entry):  # stale (an included header changed) or rebuild=True
-            _discard(entry)
+        if os.path.isdir(entry):
+            existing = _read_manifest(entry)
+            if existing and not rebuild and _deps_ok(existing["deps"]):
+                # another process built it meanwhile: keep theirs (others may be loading it)
+                shutil.rmtree(tmp, ignore_errors=True)
+                _loaded[entry] = _module(entry, existing)
+                return _loaded[entry]
+            _discard(entry)  # stale (an included header changed) or rebuild=True
         try:
             os.rename(tmp, entry)
         except OSError:  # another process put a whole entry there first: use it
