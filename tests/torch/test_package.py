@@ -27,11 +27,12 @@ PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.execu
 HEAT = """\
 // A user's kernels, written by tests/torch/test_package.py.
 #include "dpgen/annotate.hpp"
+#include "heat_flux.hpp" // heat_flux(): an included header, so that editing it rebuilds
 
 DPGEN_KERNEL void heat_step(DPGEN_IN const double* T, DPGEN_IN const double* k,
                             DPGEN_OUT double* T_next, int n, double dt) {
   for (int i = 1; i < n - 1; ++i)
-    T_next[i] = T[i] + dt * (k[i + 1] * (T[i + 1] - T[i]) - k[i] * (T[i] - T[i - 1]));
+    T_next[i] = T[i] + dt * (heat_flux(T[i], T[i + 1], k[i + 1]) - heat_flux(T[i - 1], T[i], k[i]));
 }
 
 DPGEN_KERNEL void neg_div_k_grad(DPGEN_IN const double* x, DPGEN_IN const double* k,
@@ -43,6 +44,8 @@ DPGEN_KERNEL void neg_div_k_grad(DPGEN_IN const double* x, DPGEN_IN const double
   }
 }
 """
+
+FLUX = "inline double heat_flux(double a, double b, double k) {{ return {} * k * (b - a); }}\n"
 
 # Outside the subset on line 6, column 28: a read of the output being written.
 BAD = """\
@@ -76,7 +79,8 @@ class Package(unittest.TestCase):
         cls.cache = os.path.join(cls.tmp, "cache")
         cls.work = os.path.join(cls.tmp, "work")
         os.makedirs(cls.work)
-        for name, text in (("heat.cpp", HEAT), ("bad.cpp", BAD), ("no_compile.cpp", NO_COMPILE)):
+        for name, text in (("heat.cpp", HEAT), ("heat_flux.hpp", FLUX.format(1.0)),
+                           ("bad.cpp", BAD), ("no_compile.cpp", NO_COMPILE)):
             with open(os.path.join(cls.work, name), "w") as f:
                 f.write(text)
         subprocess.run([PYTHON, "-m", "venv", "--system-site-packages", cls.env_dir], check=True)
@@ -231,6 +235,33 @@ class Package(unittest.TestCase):
         # a failed build leaves no cache entry, only its .failed folder
         self.assertEqual([n for n in os.listdir(self.cache) if n.startswith("no_compile")
                           and not n.endswith(".failed")], [])
+
+    def test_e_editing_an_included_header_rebuilds(self):
+        if not getattr(type(self), "library", None):
+            self.skipTest("needs test_b's build")
+        with open(os.path.join(self.work, "heat_flux.hpp"), "w") as f:
+            f.write(FLUX.format(2.0))
+        r = self.child("""
+            import json, torch, dpgen_torch
+            m = dpgen_torch.load("heat.cpp")
+            x = m.heat_step(torch.ones(5, dtype=torch.float64),
+                            torch.arange(6, dtype=torch.float64), 5, 0.1)
+            print(json.dumps({"library": m.__file__, "x": x.tolist()}))
+        """)
+        self.assertNotEqual(r["library"], type(self).library)
+        # T = 1 everywhere: the flux terms vanish; then a kernel that does read the header:
+        self.assertEqual(r["x"], [0.0, 1.0, 1.0, 1.0, 0.0])
+        r2 = self.child("""
+            import json, torch, dpgen_torch
+            m = dpgen_torch.load("heat.cpp")
+            T = torch.tensor([0.0, 1.0, 0.0], dtype=torch.float64)
+            x = m.heat_step(T, torch.ones(4, dtype=torch.float64), 3, 0.1)
+            print(json.dumps({"library": m.__file__, "x": x.tolist()}))
+        """)
+        self.assertEqual(r2["library"], r["library"])  # and that build is the cached one now
+        self.assertAlmostEqual(r2["x"][1], 1.0 + 2.0 * 0.1 * (-1.0 - 1.0), places=14)
+        heat = [n for n in os.listdir(self.cache) if n.startswith("heat-")]
+        self.assertEqual(len(heat), 1, heat)  # the stale entry was replaced
 
 
 if __name__ == "__main__":
