@@ -242,6 +242,13 @@ class _Build:
 _lock_log = threading.Lock()
 
 
+def _torch_include_dirs():
+    """libtorch's headers as torch.utils.cpp_extension.include_paths() names them (without
+    importing that module: it is slow and prints a CUDA notice)."""
+    inc = os.path.join(os.path.dirname(torch.__file__), "include")
+    return [inc, os.path.join(inc, "torch", "csrc", "api", "include")]
+
+
 def _op_schemas(torch_cpp):
     """{op name: schema} from the m.def("...") lines of a generated <stem>_torch.cpp."""
     with open(torch_cpp) as f:
@@ -307,10 +314,9 @@ def _build_entry(tmp, text, kernel_path, stem, display, extra_cflags, include_di
                     "#define TORCH_LIBRARY_FRAGMENT(ns, m) "
                     f"_TORCH_LIBRARY_FRAGMENT({namespace}, m, C10_UID)\n"
                     f'#include "{stem}_torch.cpp"\n')
-        from torch.utils import cpp_extension  # imported on a miss only (it is slow)
         abi = f"-D_GLIBCXX_USE_CXX11_ABI={int(torch._C._GLIBCXX_USE_CXX11_ABI)}"
         common = ["-fPIC", "-fopenmp", "-I" + gen, "-I" + include_dir] + incs
-        torch_incs = ["-isystem" + p for p in cpp_extension.include_paths()]
+        torch_incs = ["-isystem" + p for p in _torch_include_dirs()]
         objs = os.path.join(tmp, "obj")
         os.makedirs(objs)
         units = [
@@ -325,7 +331,7 @@ def _build_entry(tmp, text, kernel_path, stem, display, extra_cflags, include_di
         results = build.run_all(units)
         lib_name = f"lib{stem}-{build_id}.so"
         if all(rc == 0 for rc, _ in results):
-            libdirs = cpp_extension.library_paths()
+            libdirs = [os.path.join(os.path.dirname(torch.__file__), "lib")]
             link = ([_compiler(), "-shared", "-fopenmp", "-Wl,-Bsymbolic", "-o",
                      os.path.join(tmp, lib_name)] +
                     [os.path.join(objs, o) for o in ("kernel.o", "adjoint.o", "ops.o")] +
