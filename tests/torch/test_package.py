@@ -86,7 +86,7 @@ class Package(unittest.TestCase):
         subprocess.run([PYTHON, "-m", "venv", "--system-site-packages", cls.env_dir], check=True)
         started = time.perf_counter()
         p = subprocess.run([os.path.join(cls.env_dir, "bin", "pip"), "install",
-                            "--no-build-isolation", "--no-index", ROOT], cwd=cls.work,
+                            "--no-build-isolation", "--no-index", "--no-cache-dir", ROOT], cwd=cls.work,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         cls.install_seconds = time.perf_counter() - started
         if p.returncode != 0:
