@@ -32,7 +32,8 @@ HEAT = """\
 DPGEN_KERNEL void heat_step(DPGEN_IN const double* T, DPGEN_IN const double* k,
                             DPGEN_OUT double* T_next, int n, double dt) {
   for (int i = 1; i < n - 1; ++i)
-    T_next[i] = T[i] + dt * (heat_flux(T[i], T[i + 1], k[i + 1]) - heat_flux(T[i - 1], T[i], k[i]));
+    T_next[i] = T[i] + dt * (heat_flux(T[i], T[i + 1], k[i + 1]) -
+                             heat_flux(T[i - 1], T[i], k[i]));
 }
 
 DPGEN_KERNEL void neg_div_k_grad(DPGEN_IN const double* x, DPGEN_IN const double* k,
@@ -86,8 +87,8 @@ class Package(unittest.TestCase):
         subprocess.run([PYTHON, "-m", "venv", "--system-site-packages", cls.env_dir], check=True)
         started = time.perf_counter()
         p = subprocess.run([os.path.join(cls.env_dir, "bin", "pip"), "install",
-                            "--no-build-isolation", "--no-index", "--no-cache-dir", ROOT], cwd=cls.work,
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                            "--no-build-isolation", "--no-index", "--no-cache-dir", ROOT],
+                           cwd=cls.work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         cls.install_seconds = time.perf_counter() - started
         if p.returncode != 0:
             raise AssertionError(f"pip install failed:\n{p.stdout[-6000:]}")
