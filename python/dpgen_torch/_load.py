@@ -128,8 +128,9 @@ def _read_source(source, name):
                                            "DPGEN_KERNEL" not in source):
         path = os.path.abspath(os.fspath(source))
         if not os.path.isfile(path):
-            raise FileNotFoundError(f"dpgen_torch.load: no kernel file {path} (pass the kernel's "
-                                    "source text, with its DPGEN_KERNEL functions, to load a string)")
+            raise FileNotFoundError(
+                f"dpgen_torch.load: no kernel file {path} (pass the kernel's source text, with "
+                "its DPGEN_KERNEL functions, to load a string)")
         stem, ext = os.path.splitext(os.path.basename(path))
         if ext not in _KERNEL_SUFFIXES:
             raise ValueError(f"dpgen_torch.load: {path}: a kernel file ends in "

@@ -21,7 +21,8 @@ def _source_tree():
 
 
 def generator():
-    """The dpgen executable: $DPGEN_EXECUTABLE, the packaged bin/dpgen, or <tree>/build*/tool/dpgen."""
+    """The dpgen executable: $DPGEN_EXECUTABLE, the packaged bin/dpgen, or
+    <tree>/build*/tool/dpgen."""
     env = os.environ.get("DPGEN_EXECUTABLE")
     if env:
         if not os.access(env, os.X_OK):

@@ -37,7 +37,8 @@ def _step(step, states, params, t):
     out = _as_states(step(*states, **params), f"the step's result at t = {t}")
     if len(out) != len(states) or any(a.shape != b.shape for a, b in zip(out, states)):
         raise ValueError(
-            f"dpgen_torch.rollout: the step maps states of shapes {[tuple(s.shape) for s in states]}"
+            "dpgen_torch.rollout: the step maps states of shapes "
+            f"{[tuple(s.shape) for s in states]}"
             f" to {[tuple(s.shape) for s in out]} at t = {t}; a step must return the state it "
             "takes (pass the other outputs' shapes, e.g. <output>_shape=..., as parameters)")
     return out

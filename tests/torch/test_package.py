@@ -88,7 +88,8 @@ class Package(unittest.TestCase):
         started = time.perf_counter()
         p = subprocess.run([os.path.join(cls.env_dir, "bin", "pip"), "install",
                             "--no-build-isolation", "--no-index", "--no-cache-dir", ROOT],
-                           cwd=cls.work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                           cwd=cls.work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           text=True)
         cls.install_seconds = time.perf_counter() - started
         if p.returncode != 0:
             raise AssertionError(f"pip install failed:\n{p.stdout[-6000:]}")
@@ -175,7 +176,8 @@ class Package(unittest.TestCase):
             t = time.perf_counter()
             m = dpgen_torch.load("heat.cpp")
             seconds = time.perf_counter() - t
-            x = m.heat_step(torch.ones(5, dtype=torch.float64), torch.ones(6, dtype=torch.float64), 5, 0.1)
+            ones = lambda k: torch.ones(k, dtype=torch.float64)
+            x = m.heat_step(ones(5), ones(6), 5, 0.1)
             print(json.dumps({"seconds": seconds, "library": m.__file__, "sum": float(x.sum())}))
         """)
         self.assertEqual(r["library"], type(self).library)  # the same build: nothing rebuilt
