@@ -195,10 +195,13 @@ class _Build:
 
     def run(self, cmd, cwd=None):
         """Runs cmd, logs its command line and output, returns (returncode, output)."""
+        started = time.perf_counter()
         p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True)
+        sec = time.perf_counter() - started
         with _lock_log:
-            self.log.write("$ " + " ".join(cmd) + "\n" + p.stdout + f"[exit {p.returncode}]\n\n")
+            self.log.write("$ " + " ".join(cmd) + "\n" + p.stdout +
+                           f"[exit {p.returncode}, {sec:.1f} s]\n\n")
             self.log.flush()
         return p.returncode, p.stdout
 
@@ -208,10 +211,17 @@ class _Build:
         kernel unit need not wait for the ops unit). Returns [(returncode, output)] in order,
         returncode None for a command stopped early."""
         outs = [tempfile.TemporaryFile("w+") for _ in cmds]
+        started = time.perf_counter()
         procs = [subprocess.Popen(c, stdout=o, stderr=subprocess.STDOUT, text=True)
                  for c, o in zip(cmds, outs)]
+        seconds = [None] * len(procs)
         try:
-            while any(p.poll() is None for p in procs):
+            while True:
+                for i, p in enumerate(procs):
+                    if seconds[i] is None and p.poll() is not None:
+                        seconds[i] = time.perf_counter() - started
+                if all(s is not None for s in seconds):
+                    break
                 if any(p.returncode not in (None, 0) for p in procs):
                     for p in procs:
                         if p.poll() is None:
@@ -219,15 +229,17 @@ class _Build:
                     break
                 time.sleep(0.05)
             results = []
-            for c, p, o in zip(cmds, procs, outs):
+            for c, p, o, sec in zip(cmds, procs, outs, seconds):
                 stopped = p.poll() is None or p.returncode < 0
                 p.wait()
                 o.seek(0)
                 out = o.read()
                 rc = None if stopped else p.returncode
+                sec = sec if sec is not None else time.perf_counter() - started
                 with _lock_log:
                     self.log.write("$ " + " ".join(c) + "\n" + out +
-                                   ("[stopped]" if rc is None else f"[exit {rc}]") + "\n\n")
+                                   ("[stopped]" if rc is None else f"[exit {rc}, {sec:.1f} s]") +
+                                   "\n\n")
                 results.append((rc, out))
             self.log.flush()
             return results
