@@ -33,7 +33,7 @@ from . import _locate
 
 __all__ = ["load", "KernelError", "CompileError", "cache_dir"]
 
-_FORMAT = 1  # bump when the layout of a cache entry changes
+_FORMAT = 2  # bump when the layout of a cache entry changes
 _lock = threading.Lock()
 _loaded = {}  # entry folder -> module, in this process
 _KERNEL_SUFFIXES = (".cpp", ".cc", ".cxx", ".c")
@@ -123,7 +123,8 @@ def _toolchain_id(generator, include_dir):
 
 
 def _read_source(source, name):
-    """(text, kernel path or None, stem, display name) for a file path or a source string."""
+    """(text, kernel path or None, stem of the generated files, display name) for a file path
+    or a source string."""
     if isinstance(source, os.PathLike) or (isinstance(source, str) and "\n" not in source and
                                            "DPGEN_KERNEL" not in source):
         path = os.path.abspath(os.fspath(source))
@@ -137,7 +138,7 @@ def _read_source(source, name):
                              f"{', '.join(_KERNEL_SUFFIXES)}")
         with open(path, "r", encoding="utf-8") as f:
             text = f.read()
-        return text, path, name or stem, path
+        return text, path, stem, path
     if not isinstance(source, str):
         raise TypeError("dpgen_torch.load: expected a kernel file path or the kernel's source "
                         f"text, got {type(source).__name__}")
@@ -145,11 +146,10 @@ def _read_source(source, name):
     return source, None, stem, f"<{name}>" if name else "<string>"
 
 
-def _valid_stem(stem):
-    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", stem):
-        raise ValueError(f"dpgen_torch.load: name {stem!r} must be a C identifier (it names "
-                         "the generated files and the library)")
-    return stem
+def _valid_name(name):
+    if not isinstance(name, str) or not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
+        raise ValueError(f"dpgen_torch.load: name {name!r} must be a C identifier (it names "
+                         "the module, its cache entry and, for a string, its file)")
 
 
 def _parse_depfile(path):
@@ -353,7 +353,7 @@ def _build_entry(tmp, text, kernel_path, stem, display, extra_cflags, include_di
         if results[0][0] == 0 and results[1][0] == 0 and results[2][0] != 0:
             units[2].remove("-I" + shim)
             results[2] = build.run(units[2])
-        lib_name = f"lib{stem}-{build_id}.so"
+        lib_name = "lib" + re.sub(r"[^A-Za-z0-9_.-]", "_", stem) + f"-{build_id}.so"
         if all(rc == 0 for rc, _ in results):
             libdirs = [os.path.join(os.path.dirname(torch.__file__), "lib")]
             link = ([_compiler(), "-shared", "-fopenmp", "-Wl,-Bsymbolic", "-o",
@@ -398,7 +398,7 @@ def _module(entry, manifest):
     lib = os.path.join(entry, manifest["library"])
     torch.ops.load_library(lib)
     ns = getattr(torch.ops, manifest["namespace"])
-    mod = types.ModuleType(f"dpgen_torch.kernels.{manifest['stem']}",
+    mod = types.ModuleType(f"dpgen_torch.kernels.{manifest['name']}",
                            f"dpgen ops of {manifest['source']}: " + ", ".join(manifest["ops"]))
     mod.__file__ = lib
     mod.ops = tuple(manifest["ops"])
@@ -438,9 +438,9 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
     """The kernels of an annotated C++ (or C) kernel file as PyTorch ops.
 
     source: a path to a kernel file (.cpp, .cc, .cxx, .c), or the kernel's source text (a
-    string with a newline or DPGEN_KERNEL in it). name: the module's (and the generated
-    files') name, a C identifier; by default the file's stem, or "kernel" for a string (whose
-    diagnostics then say `<string>`, or `<name>` when named). extra_cflags: compiler flags for
+    string with a newline or DPGEN_KERNEL in it). name: the module's name, a C identifier (the
+    cache entry is named after it); by default the file's stem, or "kernel" for a string,
+    whose diagnostics say `<name>` when named, else `<string>`. extra_cflags: compiler flags for
     the generator and the compiler (-D..., -O...); include_dirs: more -I folders (the kernel
     file's own folder is always one). cache: the cache folder (default cache_dir()). rebuild:
     build even on a hit.
@@ -458,16 +458,19 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
     """
     if isinstance(extra_cflags, str) or isinstance(include_dirs, str):
         raise TypeError("dpgen_torch.load: extra_cflags and include_dirs are lists of strings")
+    if name is not None:
+        _valid_name(name)
     text, kernel_path, stem, display = _read_source(source, name)
-    stem = _valid_stem(stem)
+    label = re.sub(r"[^A-Za-z0-9_.-]", "_", name or stem)  # the module's and entry's name
     generator, include_dir = _locate.generator(), _locate.include_dir()
     root = os.path.abspath(cache) if cache else cache_dir()
     key = hashlib.sha256()
-    for part in (_toolchain_id(generator, include_dir), stem, display if kernel_path else "",
+    for part in (_toolchain_id(generator, include_dir), label, stem,
+                 display if kernel_path else "",
                  repr(list(extra_cflags)), repr([os.path.abspath(d) for d in include_dirs]),
                  text):
         key.update(part.encode() + b"\0")
-    entry = os.path.join(root, f"{stem}-{key.hexdigest()[:24]}")
+    entry = os.path.join(root, f"{label}-{key.hexdigest()[:24]}")
     with _lock:
         if not rebuild:
             if entry in _loaded:
@@ -477,7 +480,7 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
                 _loaded[entry] = _module(entry, manifest)
                 return _loaded[entry]
         os.makedirs(root, exist_ok=True)
-        tmp = tempfile.mkdtemp(prefix=f".{stem}-build-", dir=root)
+        tmp = tempfile.mkdtemp(prefix=f".{label}-build-", dir=root)
         started = time.perf_counter()
         if verbose:
             print(f"dpgen_torch.load: building {display} in {tmp}", file=sys.stderr)
@@ -496,6 +499,7 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
         except BaseException:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
+        manifest["name"] = label
         manifest["build_seconds"] = round(time.perf_counter() - started, 2)
         with open(os.path.join(tmp, "manifest.json"), "w") as f:
             json.dump(manifest, f, indent=1)
