@@ -54,6 +54,8 @@ def revolve_advances(steps, snapshots):
         raise ValueError(f"revolve needs at least 1 snapshot, got {snapshots}")
     if steps <= 1:
         return 0
+    if snapshots == 1:  # r = l - 1: every state recomputed from the first
+        return steps * (steps - 1) // 2
     r = 0
     while math.comb(snapshots + r, snapshots) < steps:
         r += 1
