@@ -2,13 +2,15 @@
 of this source tree into a fresh virtual environment in a temporary folder, then, in new
 processes of that environment run from another folder with no dpgen variables set:
 dpgen_torch.load of a kernel file written here (gradcheck of its ops, rollout and solve over
-them, Revolve == full tape bit for bit), the cache hit in a new process (<= 1 s), and each
-error path (dpgen's file:line:col for a file and a string, the compiler's with its log).
+them, Revolve == full tape bit for bit), the cache hit in a new process (<= 1 s), each error
+path (dpgen's file:line:col for a file and a string, the compiler's with its log), an edited
+included header (rebuilds), and the README's quick start example (a string kernel) run by two
+processes at once on one cache.
 
 The CMake build pip drives is $DPGEN_CMAKE_BUILD_DIR when set (ctest sets the build folder
 this test belongs to, whose targets are then already up to date), else build-pip/ in the
-source tree (a full build: many minutes). One cache folder serves every case: one kernel
-build (about a minute on 2 cores)."""
+source tree (a full build: many minutes). One cache folder serves every case: three kernel
+builds (10 to 25 s each on 2 cores), the README's twice at once."""
 import json
 import os
 import shutil
@@ -265,6 +267,28 @@ class Package(unittest.TestCase):
         self.assertAlmostEqual(r2["x"][1], 1.0 + 2.0 * 0.1 * (-1.0 - 1.0), places=14)
         heat = [n for n in os.listdir(self.cache) if n.startswith("heat-")]
         self.assertEqual(len(heat), 1, heat)  # the stale entry was replaced
+
+    def test_f_readme_quick_start_twice_at_once(self):
+        # The README's example as a reader pastes it (a string kernel), run by two processes at
+        # the same time on one cache: both get the op, and the cache holds one whole entry.
+        with open(os.path.join(ROOT, "README.md")) as f:
+            readme = f.read()
+        start = readme.index("```python\n", readme.index("## Python quick start")) + 10
+        snippet = readme[start:readme.index("```", start)]
+        self.assertIn("dpgen_torch.load(", snippet)
+        env = {k: v for k, v in os.environ.items()
+               if not k.startswith("DPGEN") and k != "PYTHONPATH"}
+        env["DPGEN_TORCH_CACHE"] = self.cache
+        procs = [subprocess.Popen([os.path.join(self.env_dir, "bin", "python"), "-c", snippet],
+                                  cwd=self.work, env=env, stdout=subprocess.PIPE,
+                                  stderr=subprocess.STDOUT, text=True) for _ in range(2)]
+        for p in procs:
+            out = p.communicate()[0]
+            self.assertEqual(p.returncode, 0, out)
+            self.assertEqual(out.strip().splitlines()[0], "True", out)  # gradcheck
+        entries = [n for n in os.listdir(self.cache) if "blur" in n]
+        self.assertEqual(len(entries), 1, entries)
+        self.assertTrue(os.path.isfile(os.path.join(self.cache, entries[0], "manifest.json")))
 
 
 if __name__ == "__main__":
