@@ -44,6 +44,28 @@ def _step(step, states, params, t):
     return out
 
 
+def _only_declared_leaves(outputs, wrt, what):
+    """Raises if the graph of `outputs` reaches a tensor requiring grad that is not in `wrt`:
+    a step or operator that closes over one (an nn.Module's weights, say) would silently get no
+    gradient for it, since the backward differentiates with respect to its arguments only."""
+    declared = {id(t) for t in wrt}
+    seen, stack = set(), [t.grad_fn for t in outputs if t.grad_fn is not None]
+    while stack:
+        fn = stack.pop()
+        if fn in seen:
+            continue
+        seen.add(fn)
+        leaf = getattr(fn, "variable", None)  # AccumulateGrad: a leaf requiring grad
+        if leaf is not None:
+            if id(leaf) not in declared:
+                raise ValueError(
+                    f"dpgen_torch.{what}: the callable uses a tensor that requires grad (sizes "
+                    f"{list(leaf.shape)}) but is not one of its arguments, and would get no "
+                    "gradient; pass it as a keyword parameter instead of capturing it")
+            continue
+        stack.extend(f for f, _ in fn.next_functions if f is not None)
+
+
 def revolve_advances(steps, snapshots):
     """Griewank's minimal number of forward steps ("advances") that reversing `steps` steps
     costs while holding at most `snapshots` states (the initial one included):
@@ -112,9 +134,12 @@ class _Rollout(torch.autograd.Function):
             nonlocal adj
             with torch.enable_grad():
                 x = tuple(si.detach().requires_grad_() for si in s)
-                p = [v.detach().requires_grad_() if need else v for v, need in zip(pvals, need_p)]
+                p = [v.detach().requires_grad_() if need else v.detach()
+                     for v, need in zip(pvals, need_p)]
                 y = _step(step, x, dict(zip(names, p), **consts), t)
                 wrt = list(x) + [v for v, need in zip(p, need_p) if need]
+                if t == ctx.steps - 1:  # once: the graph of every step has the same leaves
+                    _only_declared_leaves(y, list(x) + list(p), "rollout")
                 g = torch.autograd.grad(y, wrt, grad_outputs=adj, allow_unused=True)
             adj = [gi if gi is not None else torch.zeros_like(xi) for gi, xi in zip(g[:n], x)]
             k = n
@@ -302,8 +327,9 @@ class _Solve(torch.autograd.Function):
     @staticmethod
     def backward(ctx, x_bar):
         x, *pvals = ctx.saved_tensors
+        x = x.detach()  # the saved output: its graph leads back to this node
         names, consts, options = ctx.names, ctx.consts, ctx.options
-        params = dict(zip(names, pvals), **consts)
+        params = dict(zip(names, (v.detach() for v in pvals)), **consts)
         if options["symmetric"]:
             def apply_t(v):                                  # A^T = A
                 return ctx.operator(v, **params)
@@ -319,13 +345,14 @@ class _Solve(torch.autograd.Function):
                      "dpgen_torch.solve backward (A^T lambda = x_bar)")
         need = [ctx.needs_input_grad[5 + i] for i in range(len(pvals))]
         p_bars = [None] * len(pvals)
-        if any(need):
+        with torch.enable_grad():
             # params_bar = -(d(A(params) x)/d params)^T lambda: the operator's backward at x
-            with torch.enable_grad():
-                p = [v.detach().requires_grad_() if nd else v for v, nd in zip(pvals, need)]
-                y = ctx.operator(x, **dict(zip(names, p)), **consts)
-                wrt = [v for v, nd in zip(p, need) if nd]
-                g = torch.autograd.grad(y, wrt, grad_outputs=-lam, allow_unused=True)
+            p = [v.detach().requires_grad_() if nd else v.detach() for v, nd in zip(pvals, need)]
+            y = ctx.operator(x, **dict(zip(names, p)), **consts)
+            _only_declared_leaves([y], p, "solve")
+            wrt = [v for v, nd in zip(p, need) if nd]
+            g = torch.autograd.grad(y, wrt, grad_outputs=-lam, allow_unused=True) if wrt else ()
+        if any(need):
             it = iter(g)
             for i, nd in enumerate(need):
                 if nd:

@@ -139,6 +139,11 @@ class Rollout(unittest.TestCase):
             dpgen_torch.rollout(up, d0, 3, u=d0, n=5, dt=0.1, dx=1.0, d_next_shape=[10])
         with self.assertRaisesRegex(RuntimeError, "argument 'u' has 3 elements"):
             dpgen_torch.rollout(up, d0, 3, u=torch.rand(3, dtype=D), n=5, dt=0.1, dx=1.0)
+        # a tensor requiring grad captured by the step instead of passed: refused, not ignored
+        u = rand(5)
+        x = dpgen_torch.rollout(lambda d: up(d, u, 5, 0.1, 1.0), d0, 3)
+        with self.assertRaisesRegex(ValueError, r"uses a tensor that requires grad \(sizes \[5\]"):
+            x.sum().backward()
 
 
 class Solve(unittest.TestCase):
@@ -197,6 +202,10 @@ class Solve(unittest.TestCase):
             dpgen_torch.diffusion_solve(b, k[:n], 0.1)
         with self.assertRaisesRegex(ValueError, "diagonal"):
             dpgen_torch.solve(lap, b, k=k, n=n, h=0.1, diagonal=torch.zeros(n, dtype=D))
+        kk = k.clone().requires_grad_()
+        x = dpgen_torch.solve(lambda v: lap(v, kk, n, 0.1), b.clone().requires_grad_())
+        with self.assertRaisesRegex(ValueError, r"solve: the callable uses a tensor"):
+            x.sum().backward()
 
 
 if __name__ == "__main__":
