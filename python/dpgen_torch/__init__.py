@@ -70,6 +70,8 @@ def diffusion_solve(b, k, h, rtol=1e-10, max_iterations=10000):
     if k.dim() != 1 or k.numel() != b.numel() + 1:
         raise ValueError(f"diffusion_solve: k (face coefficients) needs {b.numel() + 1} "
                          f"elements for {b.numel()} cells, got {k.numel()}")
+    if not h > 0:
+        raise ValueError(f"diffusion_solve: h must be positive, got {h}")
     kd = k.detach()
     if not bool((kd > 0).all()):
         raise ValueError("diffusion_solve: every face coefficient k must be positive (A(k) is "

@@ -200,6 +200,10 @@ class Solve(unittest.TestCase):
             dpgen_torch.solve(lap, b, k=k, n=n, h=0.1, out_shape=[n + 1])
         with self.assertRaisesRegex(ValueError, "needs 21 elements"):
             dpgen_torch.diffusion_solve(b, k[:n], 0.1)
+        with self.assertRaisesRegex(ValueError, "h must be positive"):
+            dpgen_torch.diffusion_solve(b, k, 0.0)
+        with self.assertRaisesRegex(ValueError, "must be positive"):
+            dpgen_torch.diffusion_solve(b, -k, 0.1)
         with self.assertRaisesRegex(ValueError, "diagonal"):
             dpgen_torch.solve(lap, b, k=k, n=n, h=0.1, diagonal=torch.zeros(n, dtype=D))
         kk = k.clone().requires_grad_()
