@@ -10,6 +10,7 @@ packages=(
   # distributed runs (DPGEN_WITH_MPI, DPGEN_WITH_PETSC): OpenMPI 4.1, PETSc 3.18 (with hypre)
   openmpi-bin libopenmpi-dev libpetsc-real-dev pkg-config
   python3-torch libtorch-dev pybind11-dev # the PyTorch ops (DPGEN_WITH_TORCH)
+  python3-venv python3-pip python3-setuptools python3-wheel # pip install of dpgen_torch
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -6,8 +6,11 @@
 #      dpgen installed, as add_subdirectory and via FetchContent, and the
 #      distributed runtime and examples (DPGEN_WITH_MPI, DPGEN_WITH_PETSC:
 #      under mpirun with 1, 2 and 4 ranks, oversubscribed on 2 cores), and the
-#      PyTorch ops (DPGEN_WITH_TORCH: gradcheck of every op, the PyTorch
-#      solver-in-the-loop examples) with Debian's own Python (/usr/bin/python3);
+#      PyTorch ops (DPGEN_WITH_TORCH: gradcheck of every op, the generic
+#      rollout and solve, the PyTorch solver-in-the-loop examples, and
+#      torch.package: pip install into a fresh venv, dpgen_torch.load of a
+#      kernel written on the fly, its cache and its errors) with Debian's own
+#      Python (/usr/bin/python3);
 #   2. the same suite built with AddressSanitizer and UBSan (build-asan/),
 #      MPI tests included, with ASAN_OPTIONS=detect_leaks=0 for them only
 #      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay),

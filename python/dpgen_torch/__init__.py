@@ -1,25 +1,29 @@
-"""dpgen's PyTorch ops: generated kernel ops and whole-solver ops as torch.ops.dpgen.*.
-
-Importing this package loads the ops library built with -DDPGEN_WITH_TORCH=ON
-(libdpgen_torch.so): the path in $DPGEN_TORCH_LIBRARY (several separated by os.pathsep), else
-the first build*/torch/libdpgen_torch.so of this source tree. More libraries made with the CMake
-function dpgen_add_torch_ops (your own kernels) load with load_library(path).
+"""dpgen's PyTorch ops: your annotated C++ kernels as autograd ops, and solvers built on them.
 
     import torch, dpgen_torch
-    d1 = torch.ops.dpgen.upwind_step(d, u, n, dt, dx)        # one kernel, backward = adjoint
-    dT = dpgen_torch.upwind_rollout(d0, u, 100, dt, dx, checkpoints=8)
-    x = dpgen_torch.diffusion_solve(b, k, h)                 # CG, implicit-gradient backward
+    m = dpgen_torch.load("my_kernels.cpp")       # generate, compile, cache: one op per kernel
+    y = m.my_kernel(x, n, h)                     # backward = the generated adjoint
+    xT = dpgen_torch.rollout(m.step, x0, 100, checkpoints=8, u=u, n=n, dt=0.1)
+    x = dpgen_torch.solve(m.apply_a, b, k=k, n=n)   # CG forward, implicit-gradient backward
 
-Every generated op takes the kernel's parameters in order without its outputs (arrays as
-contiguous CPU tensors of the kernel's dtype, scalars as numbers) and, as keyword arguments,
-`<output>_shape` for each output (default: the shape of the first array argument).
+Importing the package also loads the shipped kernels' ops (libdpgen_torch.so) as
+torch.ops.dpgen.<kernel>; see _locate for where everything is found. Every generated op takes
+the kernel's parameters in order without its outputs (arrays as contiguous CPU tensors of the
+kernel's dtype, scalars as numbers) and, as keyword arguments, `<output>_shape` for each output
+(default: the shape of the first array argument).
 """
-import glob
 import os
 
 import torch
 
-__all__ = ["load_library", "loaded", "ops", "upwind_rollout", "diffusion_solve"]
+from . import _locate
+from ._load import CompileError, KernelError, cache_dir, load
+from .solvers import ConvergenceError, rollout, solve
+
+__all__ = ["load", "KernelError", "CompileError", "cache_dir", "rollout", "solve",
+           "ConvergenceError", "load_library", "loaded", "ops", "upwind_rollout",
+           "diffusion_solve", "generator"]
+__version__ = "0.1.0"
 
 _loaded = []
 
@@ -36,37 +40,41 @@ def load_library(path):
 
 
 def loaded():
-    """The ops libraries loaded so far."""
+    """The ops libraries loaded so far with load_library (load()'s are in its modules)."""
     return list(_loaded)
 
 
-def _default_libraries():
-    env = os.environ.get("DPGEN_TORCH_LIBRARY")
-    if env:
-        return [p for p in env.split(os.pathsep) if p]
-    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    found = sorted(glob.glob(os.path.join(root, "build*", "torch", "libdpgen_torch.so")))
-    if not found:
-        raise ImportError(
-            "dpgen_torch: libdpgen_torch.so not found; build with -DDPGEN_WITH_TORCH=ON and set "
-            "DPGEN_TORCH_LIBRARY to its path")
-    return found[:1]
+def generator():
+    """The path of the dpgen executable load() runs."""
+    return _locate.generator()
 
 
-for _path in _default_libraries():
+for _path in _locate.shipped_libraries():
     load_library(_path)
 
 ops = torch.ops.dpgen
 
 
 def upwind_rollout(d0, u, steps, dt, dx, checkpoints=0):
-    """`steps` upwind steps from d0 with velocity u as one op; backward is the adjoint rollout
-    (every state kept with checkpoints=0, else binomial checkpointing with that many
-    snapshots: the same gradient)."""
-    return torch.ops.dpgen.upwind_rollout(d0, u, steps, dt, dx, checkpoints)
+    """`steps` upwind steps (kernels/upwind_step.cpp) from d0 with velocity u: rollout() of the
+    shipped op torch.ops.dpgen.upwind_step (checkpoints=0 keeps every state, K >= 1 holds at
+    most K states, Revolve; the gradients are the same bit for bit)."""
+    return rollout(torch.ops.dpgen.upwind_step, d0, steps, checkpoints=checkpoints, u=u,
+                   n=d0.numel(), dt=dt, dx=dx)
 
 
 def diffusion_solve(b, k, h, rtol=1e-10, max_iterations=10000):
     """x with -d/dx(k dx/dx) = b on len(b) cells (Dirichlet walls, k: len(b) + 1 positive face
-    coefficients) by CG; backward is the transposed solve (implicit function rule)."""
-    return torch.ops.dpgen.diffusion_solve(b, k, h, rtol, max_iterations)
+    coefficients): solve() of the shipped operator op torch.ops.dpgen.neg_div_k_grad_1d, Jacobi
+    preconditioned; backward is the one transposed solve of the implicit function rule."""
+    if k.dim() != 1 or k.numel() != b.numel() + 1:
+        raise ValueError(f"diffusion_solve: k (face coefficients) needs {b.numel() + 1} "
+                         f"elements for {b.numel()} cells, got {k.numel()}")
+    if not h > 0:
+        raise ValueError(f"diffusion_solve: h must be positive, got {h}")
+    kd = k.detach()
+    if not bool((kd > 0).all()):
+        raise ValueError("diffusion_solve: every face coefficient k must be positive (A(k) is "
+                         "then symmetric positive definite)")
+    return solve(torch.ops.dpgen.neg_div_k_grad_1d, b, rtol=rtol, max_iterations=max_iterations,
+                 diagonal=(kd[:-1] + kd[1:]) / (h * h), k=k, n=b.numel(), h=h)

@@ -225,11 +225,19 @@ class SolverOps(unittest.TestCase):
         k = torch.rand(n + 1, dtype=D) + 0.5
         x = dpgen_torch.diffusion_solve(b, k, 0.1)
         torch.testing.assert_close(torch.ops.dpgen.neg_div_k_grad_1d(x, k, n, 0.1), b)
-        with self.assertRaises(RuntimeError) as cm:
+        # dpgen_torch.diffusion_solve is dpgen_torch.solve of neg_div_k_grad_1d
+        with self.assertRaises(ValueError) as cm:
             dpgen_torch.diffusion_solve(b, k[:n], 0.1)
         self.assertIn("needs 21 elements", str(cm.exception))
-        with self.assertRaises(RuntimeError) as cm:
+        with self.assertRaises(dpgen_torch.ConvergenceError) as cm:
             dpgen_torch.diffusion_solve(b, k, 0.1, 1e-14, 2)
+        self.assertIn("solve forward: CG did not converge", str(cm.exception))
+        # the C++ op of torch/solver_ops.cpp
+        with self.assertRaises(RuntimeError) as cm:
+            torch.ops.dpgen.diffusion_solve(b, k[:n], 0.1)
+        self.assertIn("needs 21 elements", str(cm.exception))
+        with self.assertRaises(RuntimeError) as cm:
+            torch.ops.dpgen.diffusion_solve(b, k, 0.1, 1e-14, 2)
         self.assertIn("diffusion_solve forward", str(cm.exception))
 
 
