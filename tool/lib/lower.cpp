@@ -1055,7 +1055,12 @@ private:
     ExprP init_value = expr(init);
     // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`; also `i + 1 < n` or
     // `n > i`: any comparison whose sides differ by +-i plus a bound.
-    const auto* c = dyn_cast_or_null<BinaryOperator>(f->getCond());
+    // (a bound such as std::min(n, i + w + 1) binds temporaries to const
+    // references: the condition comes wrapped in ExprWithCleanups)
+    const clang::Expr* cond_expr = f->getCond();
+    if (const auto* cleanups = dyn_cast_or_null<ExprWithCleanups>(cond_expr))
+      cond_expr = cleanups->getSubExpr();
+    const auto* c = dyn_cast_or_null<BinaryOperator>(cond_expr);
     BinaryOperatorKind cond_op = c ? c->getOpcode() : BO_Comma;
     // `for (unsigned i = n; i-- > lo;)`, the way to count an unsigned counter
     // down: the body sees i = n - 1, ..., lo.
@@ -1115,6 +1120,51 @@ private:
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()));
+    // Triangular nests (`for (j = 0; j <= i; ++j)`, `for (j = i + 1; j < n;
+    // ++j)`, `j < std::min(n, i + 3)`): a bound affine in outer counters, with
+    // constant coefficients, becomes its extreme over the outer loops' ranges
+    // and the bound itself a condition on the body's path (`j < i + 1`), so
+    // the box stays rectangular and the iterations are the same. In a min
+    // (upper) or max (lower) bound each such term is treated so; the others
+    // stay in the bound.
+    std::vector<std::pair<ExprP, bool>> triangle; // (original bound, is the upper one)
+    for (ExprP* b : {&lo, &hi}) {
+      const bool upper = b == &hi;
+      if (!any_node(*b, [](const ExprP& x) { return x->op == Op::LoopVar; }))
+        continue;
+      if (!upper && step != 1 && step != -1)
+        continue; // (a strided loop's start fixes its parity: not moved)
+      std::vector<ExprP> terms;
+      std::function<void(const ExprP&)> flatten = [&](const ExprP& x) {
+        if (x->op == Op::Call && x->name == (upper ? "min" : "max"))
+          for (const auto& a : x->ops)
+            flatten(a);
+        else
+          terms.push_back(x);
+      };
+      flatten(*b);
+      std::vector<ExprP> hulled;
+      std::vector<std::pair<ExprP, bool>> sides;
+      bool ok = true;
+      for (const auto& t : terms) {
+        auto p = to_poly(t);
+        if (!p || !p->mentions_any_counter()) {
+          hulled.push_back(t);
+          continue;
+        }
+        auto h = hull(t, *p, upper);
+        if (!h) {
+          ok = false;
+          break;
+        }
+        hulled.push_back(*h);
+        sides.push_back({t, upper});
+      }
+      if (!ok || sides.empty())
+        continue; // reported below
+      triangle.insert(triangle.end(), sides.begin(), sides.end());
+      *b = hulled.size() == 1 ? hulled[0] : call(upper ? "min" : "max", hulled, Type::Int);
+    }
     // A bound that is not a polynomial but depends on the sizes only
     // (`i < n / 2`, `i < (n + 1) / 2`) is fixed for the whole kernel: a
     // symbol, like `int half = n / 2;` set before the loops.
@@ -1145,13 +1195,16 @@ private:
       for (const auto& [m, coef] : p->terms())
         for (const auto& s : m)
           if (s.is_counter())
-            fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}': only "
-                                  "rectangular loop nests are in the subset",
+            fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}' in a way dpgen "
+                                  "cannot make rectangular: a bound may move with outer "
+                                  "counters by constant multiples (j <= i, j < i + 3, "
+                                  "std::min(n, i + w + 1)), but the start of a strided loop "
+                                  "may not",
                                   what, var->getNameAsString(), s.name));
     }
     {
       auto plo = to_poly(lo), phi = to_poly(hi);
-      if (plo->is_constant() && phi->is_constant() &&
+      if (plo->is_constant() && phi->is_constant() && triangle.empty() &&
           should_unroll(f, plo->constant_term(), phi->constant_term())) {
         check_not_assigned(f->getBody(), var);
         auto saved = env_.count(var) ? std::optional<Binding>(env_[var]) : std::nullopt;
@@ -1262,6 +1315,9 @@ private:
           "(`s += ...`) and read the sum after the loop",
           v->getNameAsString());
     }
+    // (after the accumulators' initial stores, which are outside the loop)
+    for (const auto& [bound_at, upper] : triangle) // the triangle's side(s)
+      path_.push_back({binary(upper ? Op::Lt : Op::Ge, counter, bound_at), true});
     loops_.push_back(loop);
     loop_ids_.push_back(next_loop_id_++);
     segments_.push_back(--next_segment_);
@@ -1376,6 +1432,38 @@ private:
   }
 
   // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
+  // The extreme (the largest if `upper`, else the smallest) of loop bound `e`
+  // (`p` as a polynomial) over the enclosing loops' ranges: each outer counter
+  // replaced by its first or last value, by the sign of its coefficient. Null
+  // where a coefficient is not a constant.
+  std::optional<ExprP> hull(const ExprP& e, const Poly& p, bool upper) const {
+    std::map<std::string, ExprP> at;
+    for (const auto& l : loops_) {
+      Poly c = p.coefficient(Sym::counter(l->var));
+      if (c == Poly())
+        continue;
+      if (!c.is_constant() || !to_poly(l->lo) || !to_poly(l->hi) ||
+          to_poly(l->lo)->mentions_any_counter() || to_poly(l->hi)->mentions_any_counter())
+        return std::nullopt;
+      bool last = (c.constant_term() > 0) == upper;
+      at[l->var] = last ? binary(Op::Sub, l->hi, int_const(1)) : l->lo;
+    }
+    std::function<ExprP(const ExprP&)> sub = [&](const ExprP& x) -> ExprP {
+      if (x->op == Op::LoopVar)
+        if (auto it = at.find(x->name); it != at.end())
+          return it->second;
+      if (x->op == Op::Local) // an integer local of the counters: its definition
+        if (any_node(x, [](const ExprP& y) { return y->op == Op::LoopVar; }))
+          return sub(x->local->def);
+      return map_operands(x, sub);
+    };
+    ExprP out = sub(e);
+    auto q = to_poly(out);
+    if (!q || q->mentions_any_counter())
+      return std::nullopt;
+    return out;
+  }
+
   // ---- scalar accumulators ------------------------------------------------
   //
   // `double s = 0; for (...) s += f(a[i]); out[0] = g(s);` and per-row sums:
