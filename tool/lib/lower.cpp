@@ -1120,6 +1120,20 @@ private:
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()));
+    // A strided loop whose start moves with outer counters (red-black:
+    // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`)
+    // runs as a unit-step loop from the smallest start over the outer ranges,
+    // its body under `i >= start && (i - start) % step == 0`: the same
+    // iterations, with a box the rules and the gather can range over.
+    ExprP parity_start; // the moving start, and the original step
+    int parity_step = 0;
+    if (step > 1 && any_node(lo, [](const ExprP& x) { return x->op == Op::LoopVar; }))
+      if (auto least = smallest(lo)) {
+        parity_start = lo;
+        parity_step = step;
+        lo = *least;
+        step = 1;
+      }
     // Triangular nests (`for (j = 0; j <= i; ++j)`, `for (j = i + 1; j < n;
     // ++j)`, `j < std::min(n, i + 3)`): a bound affine in outer counters, with
     // constant coefficients, becomes its extreme over the outer loops' ranges
@@ -1204,13 +1218,15 @@ private:
     }
     {
       auto plo = to_poly(lo), phi = to_poly(hi);
-      if (plo->is_constant() && phi->is_constant() && triangle.empty() &&
+      if (plo->is_constant() && phi->is_constant() && triangle.empty() && !parity_start &&
           should_unroll(f, plo->constant_term(), phi->constant_term())) {
         check_not_assigned(f->getBody(), var);
         auto saved = env_.count(var) ? std::optional<Binding>(env_[var]) : std::nullopt;
         size_t depth = path_.size();
         ++unrolling_;
-        for (long long k = plo->constant_term(); k < phi->constant_term(); ++k) {
+        // every step-th value from lo up (i += s), or each from hi - 1 down
+        const long long stride = step > 0 ? step : 1;
+        for (long long k = plo->constant_term(); k < phi->constant_term(); k += stride) {
           long long v = step > 0 ? k : plo->constant_term() + phi->constant_term() - 1 - k;
           Binding b;
           b.kind = Binding::Value;
@@ -1318,6 +1334,14 @@ private:
     // (after the accumulators' initial stores, which are outside the loop)
     for (const auto& [bound_at, upper] : triangle) // the triangle's side(s)
       path_.push_back({binary(upper ? Op::Lt : Op::Ge, counter, bound_at), true});
+    if (parity_start) { // the strided loop's own iterations
+      path_.push_back({binary(Op::Ge, counter, parity_start), true});
+      path_.push_back({binary(Op::Eq,
+                              binary(Op::Rem, binary(Op::Sub, counter, parity_start),
+                                     int_const(parity_step)),
+                              int_const(0)),
+                       true});
+    }
     loops_.push_back(loop);
     loop_ids_.push_back(next_loop_id_++);
     segments_.push_back(--next_segment_);
@@ -1462,6 +1486,29 @@ private:
     if (!q || q->mentions_any_counter())
       return std::nullopt;
     return out;
+  }
+
+  // A lower bound of integer `e` over the enclosing loops that depends on the
+  // sizes only: `e` itself where it mentions no counter, the hull of an
+  // affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
+  // remainder of a non-negative value), sums of those. Null otherwise.
+  std::optional<ExprP> smallest(const ExprP& e) const {
+    if (!any_node(e, [](const ExprP& x) { return x->op == Op::LoopVar; }))
+      return e;
+    if (auto p = to_poly(e))
+      return hull(e, *p, false);
+    if (e->op == Op::Add) {
+      auto a = smallest(e->ops[0]), b = smallest(e->ops[1]);
+      if (a && b)
+        return binary(Op::Add, *a, *b);
+      return std::nullopt;
+    }
+    if (e->op == Op::Rem && e->ops[1]->op == Op::IntConst && e->ops[1]->ival > 0 &&
+        provably_nonneg(e->ops[0]))
+      return int_const(0);
+    if (e->op == Op::Local)
+      return smallest(e->local->def);
+    return std::nullopt;
   }
 
   // ---- scalar accumulators ------------------------------------------------
