@@ -1212,8 +1212,7 @@ private:
             fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}' in a way dpgen "
                                   "cannot make rectangular: a bound may move with outer "
                                   "counters by constant multiples (j <= i, j < i + 3, "
-                                  "std::min(n, i + w + 1)), but the start of a strided loop "
-                                  "may not",
+                                  "std::min(n, i + w + 1), a strided start 1 + (j + 1) % 2)",
                                   what, var->getNameAsString(), s.name));
     }
     {
