@@ -251,6 +251,18 @@ private:
     return spec->getTemplateArgs()[0].getAsType();
   }
 
+  // std::array<T, N>: (T, N); nullopt for any other type.
+  std::optional<std::pair<QualType, uint64_t>> std_array(QualType q) const {
+    const auto* rd = q.getNonReferenceType().getCanonicalType()->getAsCXXRecordDecl();
+    const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(rd);
+    if (!spec || spec->getName() != "array" || !spec->isInStdNamespace() ||
+        spec->getTemplateArgs().size() != 2 ||
+        spec->getTemplateArgs()[1].getKind() != TemplateArgument::Integral)
+      return std::nullopt;
+    return std::pair{spec->getTemplateArgs()[0].getAsType(),
+                     spec->getTemplateArgs()[1].getAsIntegral().getZExtValue()};
+  }
+
   // A type as the generated code spells it: canonical, so a typedef of the
   // user's (`FLOAT`, `real_t`) or a library alias (`size_t`) never appears in
   // a generated file that does not declare it.
@@ -908,6 +920,12 @@ private:
       declare_array(v, at);
       return;
     }
+    if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
+      declare_array(v, ctx_.getAsConstantArrayType(
+                           ctx_.getConstantArrayType(sa->first, llvm::APInt(64, sa->second),
+                                                     nullptr, ArraySizeModifier::Normal, 0)));
+      return;
+    }
     auto t = scalar_type(v->getType());
     if (!t || v->getType()->isReferenceType())
       fail(v->getLocation(), fmt::format("local '{}' of type '{}' is outside the kernel subset "
@@ -945,13 +963,23 @@ private:
     b.elems.assign(n, std::nullopt);
     if (const clang::Expr* init = v->getInit()) {
       const auto* list = dyn_cast<InitListExpr>(init->IgnoreImplicit());
+      // std::array<T, N> a = {...}: the list of its one member, the C array
+      bool all_zero = false; // `std::array<double, 3> d{};`
+      if (list && std_array(v->getType()) && list->getNumInits() == 1) {
+        if (const auto* inner = dyn_cast<InitListExpr>(list->getInit(0)->IgnoreImplicit()))
+          list = inner;
+        else if (isa<ImplicitValueInitExpr>(list->getInit(0)))
+          all_zero = true;
+      }
       if (!list)
         fail(init->getBeginLoc(), "a local array is initialised with a braced list");
-      for (unsigned i = 0; i < list->getNumInits() && i < n; ++i)
-        b.elems[i] = make_local(fmt::format("{}_{}", v->getNameAsString(), i), nullptr,
-                                cast(expr(list->getInit(i)), *t));
+      for (unsigned i = 0; !all_zero && i < list->getNumInits() && i < n; ++i)
+        b.elems[i] = isa<ImplicitValueInitExpr>(list->getInit(i))
+                         ? cast(int_const(0), *t)
+                         : make_local(fmt::format("{}_{}", v->getNameAsString(), i), nullptr,
+                                      cast(expr(list->getInit(i)), *t));
       // Elements the list leaves out are zero, as in C.
-      for (uint64_t i = list->getNumInits(); i < n; ++i)
+      for (uint64_t i = all_zero ? 0 : list->getNumInits(); i < n; ++i)
         b.elems[i] = cast(int_const(0), *t);
     }
     env_[v] = b;
@@ -976,6 +1004,16 @@ private:
 
   // `a[k]` of a local array: its binding and element, if that is what `e` is.
   std::optional<std::pair<const VarDecl*, size_t>> local_element(const clang::Expr* e) {
+    if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e->IgnoreParens());
+        oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
+      // t[m] of a std::array local
+      const auto* ref = dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts());
+      const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+      auto it = v ? env_.find(v) : env_.end();
+      if (it == env_.end() || it->second.kind != Binding::LocalArray)
+        return std::nullopt;
+      return std::pair{v, local_index(oc->getArg(1), v, it->second.elems.size())};
+    }
     const auto* sub = dyn_cast<ArraySubscriptExpr>(e->IgnoreParens());
     if (!sub)
       return std::nullopt;
