@@ -57,7 +57,11 @@ std::string math_function(const FunctionDecl* f) {
 
 // What a name in the kernel body refers to.
 struct Binding {
-  enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray } kind;
+  enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray, Lambda } kind;
+  // Lambda: the closure's class, and the value each variable captured by copy
+  // had when the lambda was made (a call checks it has not changed since).
+  const clang::CXXRecordDecl* closure = nullptr;
+  std::vector<std::pair<const clang::VarDecl*, std::optional<ExprP>>> captured;
   std::optional<ExprP> value;              // Value: current SSA value (none: uninitialised)
   std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
   Type elem = Type::Double; // LocalArray: element type
@@ -920,6 +924,11 @@ private:
       declare_array(v, at);
       return;
     }
+    if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
+        rd && rd->isLambda()) {
+      declare_lambda(v, rd);
+      return;
+    }
     if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
       declare_array(v, ctx_.getAsConstantArrayType(
                            ctx_.getConstantArrayType(sa->first, llvm::APInt(64, sa->second),
@@ -981,6 +990,34 @@ private:
       // Elements the list leaves out are zero, as in C.
       for (uint64_t i = all_zero ? 0 : list->getNumInits(); i < n; ++i)
         b.elems[i] = cast(int_const(0), *t);
+    }
+    env_[v] = b;
+  }
+
+  // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
+  // variable captured by copy must still have the value it had here when the
+  // lambda is called; init-captures and `this` are outside the subset.
+  void declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
+    const clang::Expr* init = v->getInit();
+    const auto* le = init ? dyn_cast<LambdaExpr>(init->IgnoreImplicit()) : nullptr;
+    if (!le)
+      fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
+                                         "expression",
+                                         v->getNameAsString()));
+    Binding b;
+    b.kind = Binding::Lambda;
+    b.closure = rd;
+    for (const LambdaCapture& c : le->captures()) {
+      if (!c.capturesVariable() || le->isInitCapture(&c))
+        fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
+                                          "kernel's variables (this, or an init-capture)",
+                                          v->getNameAsString()));
+      if (c.getCaptureKind() != LCK_ByCopy)
+        continue;
+      const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
+      auto it = cv ? env_.find(cv) : env_.end();
+      if (it != env_.end() && it->second.kind == Binding::Value)
+        b.captured.push_back({cv, it->second.value});
     }
     env_[v] = b;
   }
@@ -2251,10 +2288,32 @@ private:
                                            def->getNameAsString()));
     if (frames_.size() == 16)
       fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
-    if (isa<CXXMethodDecl>(def) || def->isVariadic())
+    // A lambda of the kernel: its call operator, the closure object first.
+    unsigned first = 0;
+    if (const auto* m = dyn_cast<CXXMethodDecl>(def); m && m->getParent()->isLambda()) {
+      const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
+      const auto* ref =
+          oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
+      const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+      if (lv && poisoned_.count(lv))
+        throw Rejected{}; // its declaration's error is reported already
+      auto it = lv ? env_.find(lv) : env_.end();
+      if (it == env_.end() || it->second.kind != Binding::Lambda)
+        fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
+                               "(auto f = [&](...) {...}; f(...))");
+      for (const auto& [cv, was] : it->second.captured)
+        if (env_[cv].value != was)
+          fail(c->getBeginLoc(), fmt::format("lambda '{}' captured '{}' by copy, and '{}' "
+                                             "changed before this call; capture it by "
+                                             "reference, or make the lambda after the change",
+                                             lv->getNameAsString(), cv->getNameAsString(),
+                                             cv->getNameAsString()));
+      first = 1;
+    } else if (isa<CXXMethodDecl>(def) || def->isVariadic()) {
       fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
                                          "free helper functions only",
                                          def->getNameAsString()));
+    }
     const bool is_void = def->getReturnType()->isVoidType();
     auto rt = is_void ? std::optional<Type>(Type::Double) : scalar_type(def->getReturnType());
     if (!rt || def->getReturnType()->isReferenceType())
@@ -2263,7 +2322,7 @@ private:
                                          "void, with its results in out-parameters)",
                                          def->getNameAsString(),
                                          def->getReturnType().getAsString()));
-    if (c->getNumArgs() != def->getNumParams())
+    if (c->getNumArgs() != def->getNumParams() + first)
       fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
     // Bind the parameters (arguments are evaluated in the caller's scope).
     std::vector<std::pair<const VarDecl*, Binding>> binds;
@@ -2302,7 +2361,7 @@ private:
     };
     for (unsigned i = 0; i < def->getNumParams(); ++i) {
       const ParmVarDecl* pd = def->getParamDecl(i);
-      const clang::Expr* arg = c->getArg(i);
+      const clang::Expr* arg = c->getArg(i + first);
       QualType pt = pd->getType();
       if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
           scalar_type(pt->getPointeeType()) && [&] {
@@ -2740,6 +2799,10 @@ private:
     case Binding::LocalArray:
       fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
                                          "can be read",
+                                         v->getNameAsString()));
+    case Binding::Lambda:
+      fail(r->getLocation(), fmt::format("lambda '{}' is used other than called; a kernel calls "
+                                         "its lambdas, which dpgen inlines",
                                          v->getNameAsString()));
     case Binding::Value:
       if (b.deref_only)
