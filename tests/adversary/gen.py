@@ -5,7 +5,8 @@
 import os, re, sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-from specs import SPECS
+import importlib
+SPECS = importlib.import_module(os.environ.get("ADV_SPECS", "specs")).SPECS
 
 def cst(c, const):
     if not c: return ""
@@ -22,10 +23,26 @@ def emit(s):
         return
     protos = re.findall(r"DPGEN_KERNEL[^{;]*?\)(?=\s*\{)", src, re.S)
     P = s["params"]; fname = s.get("kernel", name)
-    ins = [p for p in P if p[0] == "in"]; outs = [p for p in P if p[0] == "out"]
+    ins = [p for p in P if p[0] in ("in", "inr")]; outs = [p for p in P if p[0] in ("out", "outr")]
     fw, ad, tg = [], [], []
+    pf, pa, pt = [], [], []  # row-pointer tables built inside each lambda
     ki = ko = 0
     for p in P:
+        if p[0] in ("inr", "outr"):
+            # ("inr"/"outr", name, rows, cols): double** over a flat rows x cols buffer
+            R, C = p[2], p[3]
+            def rw(v, src): return "auto %s = styles::rows(%s, size_t(%s), size_t(%s));" % (v, src, R, C)
+            if p[0] == "inr":
+                pf.append(rw("ri%d" % ki, "in[%d]" % ki)); fw.append("ri%d.data()" % ki)
+                pa += [rw("ri%d" % ki, "in[%d]" % ki), rw("ai%d" % ki, "adj[%d]" % ki)]; ad += ["ri%d.data()" % ki, "ai%d.data()" % ki]
+                pt += [rw("ri%d" % ki, "in[%d]" % ki), rw("di%d" % ki, "dir[%d]" % ki)]; tg += ["ri%d.data()" % ki, "di%d.data()" % ki]
+                ki += 1
+            else:
+                pf.append(rw("ro%d" % ko, "out[%d]" % ko)); fw.append("ro%d.data()" % ko)
+                pa.append(rw("so%d" % ko, "seed[%d]" % ko)); ad.append("so%d.data()" % ko)
+                pt += [rw("ro%d" % ko, "out[%d]" % ko), rw("do%d" % ko, "outd[%d]" % ko)]; tg += ["ro%d.data()" % ko, "do%d.data()" % ko]
+                ko += 1
+            continue
         if p[0] == "in":
             c = p[3] if len(p) > 3 else None
             fw.append("%sin[%d]" % (cst(c, 1), ki)); ad += ["%sin[%d]" % (cst(c, 1), ki), "%sadj[%d]" % (cst(c, 0), ki)]
@@ -38,20 +55,21 @@ def emit(s):
             fw.append(p[1]); ad.append(p[1]); tg.append(p[1])
     T = s.get("T", "double")
     rng = s.get("ranges", "")
-    t = ['#include "support/adjoint_check.hpp"', '#include <algorithm>', '#include <stdexcept>', head.strip(),
+    sz = lambda p: "size_t(%s) * size_t(%s)" % (p[2], p[3]) if p[0] in ("inr", "outr") else "size_t(%s)" % p[2]
+    t = ['#include "support/adjoint_check.hpp"', '#include "styles/styles_support.hpp"', '#include <algorithm>', '#include <stdexcept>', head.strip(),
          '#include "%s_adjoint.hpp"' % name, '#include "%s_tangent.hpp"' % name, ""]
     t += [p + ";" for p in protos]
     t += ['TEST_CASE("adversary: %s") {' % name, "  %s {" % s.get("loop", "for (int n : {0, 1, 2, 3, 4, 7, 16})")]
     t += ["    " + l for l in s.get("pre", "").splitlines()]
     t += ["    CAPTURE(n);", "    dpgen_test::Problem<%s> p;" % T,
-          "    p.in_sizes = {%s};" % ", ".join("size_t(%s)" % p[2] for p in ins),
-          "    p.out_sizes = {%s};" % ", ".join("size_t(%s)" % p[2] for p in outs)]
+          "    p.in_sizes = {%s};" % ", ".join(sz(p) for p in ins),
+          "    p.out_sizes = {%s};" % ", ".join(sz(p) for p in outs)]
     if rng: t.append("    p.in_ranges = {%s};" % rng)
     if s.get("linear"): t.append("    p.linear = true;")
-    t += ["    p.forward = [&](auto in, auto out) { %s(%s); };" % (fname, ", ".join(fw)),
-          "    p.adjoint = [&](auto in, auto adj, auto seed) { %s_adjoint(%s); };" % (fname, ", ".join(ad))]
+    t += ["    p.forward = [&](auto in, auto out) { %s%s(%s); };" % (" ".join(pf + [""]), fname, ", ".join(fw)),
+          "    p.adjoint = [&](auto in, auto adj, auto seed) { %s%s_adjoint(%s); };" % (" ".join(pa + [""]), fname, ", ".join(ad))]
     if not s.get("notangent"):
-        t.append("    p.tangent = [&](auto in, auto dir, auto out, auto outd) { %s_tangent(%s); };" % (fname, ", ".join(tg)))
+        t.append("    p.tangent = [&](auto in, auto dir, auto out, auto outd) { %s%s_tangent(%s); };" % (" ".join(pt + [""]), fname, ", ".join(tg)))
     t += ["    dpgen_test::check_adjoint(p);", "  }"]
     t += ["  " + l for l in s.get("extra", "").splitlines()]
     t += ["}", ""]

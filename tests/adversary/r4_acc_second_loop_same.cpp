@@ -1,0 +1,10 @@
+// adversary: a second loop accumulates the same local again
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void r4_acc_second_loop_same(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                          DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * b[i];
+  for (int i = 0; i < n; ++i) s += a[i] * a[i] * s;
+  out[0] = s * s;
+}

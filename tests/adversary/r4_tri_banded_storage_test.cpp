@@ -1,0 +1,24 @@
+#include "support/adjoint_check.hpp"
+#include "styles/styles_support.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+#include "r4_tri_banded_storage_adjoint.hpp"
+#include "r4_tri_banded_storage_tangent.hpp"
+
+DPGEN_KERNEL void r4_tri_banded_storage(DPGEN_IN const double* A, DPGEN_IN const double* x,
+                                        DPGEN_OUT double* y, int n);
+TEST_CASE("adversary: r4_tri_banded_storage") {
+  for (int n : {0, 1, 2, 3, 4, 7, 16}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(3*n), size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { r4_tri_banded_storage(in[0], in[1], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { r4_tri_banded_storage_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n); };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { r4_tri_banded_storage_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n); };
+    dpgen_test::check_adjoint(p);
+  }
+}

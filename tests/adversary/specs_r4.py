@@ -1,0 +1,999 @@
+# Round r4 (issue 20): kernels aimed at accumulators, triangular/banded loops,
+# moving strided starts, lambdas, std::array, exclusive branches on parameters,
+# double** constant rows, index macros with locals, generated-name clashes.
+# ADV_SPECS=specs_r4 python3 gen.py [names...]
+N = "n"
+SPECS = []
+def K(**kw):
+    kw["name"] = "r4_" + kw["name"]
+    SPECS.append(kw)
+L1 = "for (int n : {0, 1, 2, 3, 4, 7, 16})"
+L1p = "for (int n : {1, 2, 3, 4, 7, 16})"
+L2 = "for (auto [n, m] : {std::pair{0, 0}, {1, 1}, {1, 3}, {3, 1}, {2, 2}, {4, 3}, {5, 6}})"
+L2p = "for (auto [n, m] : {std::pair{1, 1}, {1, 3}, {3, 1}, {2, 2}, {4, 3}, {5, 6}})"
+LF = "for (int flag : {0, 1, 2, -1}) for (int n : {0, 1, 2, 3, 7})"
+PF = "CAPTURE(flag);"
+LW = "for (int w : {0, 1, 2, 5}) for (int n : {0, 1, 2, 3, 7})"
+PW = "CAPTURE(w);"
+def io1(*outs, n=N): return [("in","a",n),("in","b",n)] + [("out",o,s) for o,s in outs] + [("val","n")]
+CM = "#include <cmath>\n#include <algorithm>\n"
+
+# ---------------------------------------------------------------- accumulators
+K(name="acc_in_if_arm", why="accumulator inside an if arm on a parameter", includes=CM, loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_acc_in_if_arm(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  if (flag == 0) {
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) s += a[i] * a[i];
+    out[0] = std::sqrt(1.0 + s);
+  } else {
+    double s = 1.0;
+    for (int i = 0; i < n; ++i) s += a[i];
+    out[0] = s * s;
+  }
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="acc_two_share_store", why="two accumulators sharing a loop with a store", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_acc_two_share_store(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                         DPGEN_OUT double* u, DPGEN_OUT double* out, int n) {
+  double s = 0, t = 0;
+  for (int i = 0; i < n; ++i) {
+    s += a[i] * b[i];
+    u[i] = a[i] * a[i] - b[i];
+    t += std::sin(b[i]) * a[i];
+  }
+  out[0] = s * t;
+  out[1] = s - t * t;
+}""", params=[("in","a",N),("in","b",N),("out","u",N),("out","out","2"),("val","n")])
+
+K(name="acc_triangular", why="accumulator in a triangular loop (cumulative sums)",
+  src="""
+DPGEN_KERNEL void r4_acc_triangular(DPGEN_IN const double* a, DPGEN_OUT double* y, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = 0; j <= i; ++j) s += a[j] * a[i - j];
+    y[i] = s * s;
+  }
+}""", params=[("in","a",N),("out","y",N),("val","n")])
+
+K(name="acc_second_loop_same", why="a second loop accumulates the same local again",
+  src="""
+DPGEN_KERNEL void r4_acc_second_loop_same(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                          DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * b[i];
+  for (int i = 0; i < n; ++i) s += a[i] * a[i] * s;
+  out[0] = s * s;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_second_loop_linear", why="a second loop accumulates the same local (no self read)",
+  src="""
+DPGEN_KERNEL void r4_acc_second_loop_linear(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                            DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * b[i];
+  out[1] = s;
+  for (int i = 0; i < n; ++i) s += b[i] * b[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("in","b",N),("out","out","2"),("val","n")])
+
+K(name="acc_reset_reuse", why="accumulator, used, reset, reused by a second loop",
+  src="""
+DPGEN_KERNEL void r4_acc_reset_reuse(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                     DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  const double first = s;
+  s = 0.0;
+  for (int i = 0; i < n; ++i) s += b[i] * a[i];
+  out[0] = first * s;
+  out[1] = s + first * first;
+}""", params=[("in","a",N),("in","b",N),("out","out","2"),("val","n")])
+
+K(name="acc_index_branch", why="sum used in an index-dependent branch later",
+  src="""
+DPGEN_KERNEL void r4_acc_index_branch(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  for (int i = 0; i < n; ++i) {
+    if (i % 2 == 0) u[i] = a[i] * s;
+    else if (i == n - 1) u[i] = s * s;
+    else u[i] = a[i] - s;
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="acc_float", why="float accumulator", T="float",
+  src="""
+DPGEN_KERNEL void r4_acc_float(DPGEN_IN const float* a, DPGEN_OUT float* out, int n) {
+  float s = 0.0f;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = s * s + 0.5f * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_float_double_mix", why="float accumulator of a double product", T="double",
+  src="""
+DPGEN_KERNEL void r4_acc_float_double_mix(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  float s = 0.0f;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = 2.0 * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_minus_eq", why="s -= ... with a nonzero init",
+  src="""
+DPGEN_KERNEL void r4_acc_minus_eq(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                  DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i) s -= a[i] * b[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_init_reads_input", why="accumulator whose init reads an input", loop=L1p,
+  src="""
+DPGEN_KERNEL void r4_acc_init_reads_input(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                          DPGEN_OUT double* out, int n) {
+  double s = a[0] * b[0];
+  for (int i = 1; i < n; ++i) s += a[i] * a[i - 1];
+  out[0] = s * a[0];
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_guard_return", why="guard return before the accumulator",
+  src="""
+DPGEN_KERNEL void r4_acc_guard_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  out[0] = 0.0;
+  if (n < 3) return;
+  double s = 0;
+  for (int i = 1; i < n - 1; ++i) s += a[i] * (a[i + 1] - a[i - 1]);
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_guard_return_noinit", why="guard return, output written only after it",
+  src="""
+DPGEN_KERNEL void r4_acc_guard_return_noinit(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  if (n < 3) return;
+  double s = 0;
+  for (int i = 1; i < n - 1; ++i) s += a[i] * (a[i + 1] - a[i - 1]);
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_nested_rowsums", why="sum of squared row sums (nested accumulators)", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_acc_nested_rowsums(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int m) {
+  double tot = 0.0;
+  for (int j = 0; j < m; ++j) {
+    double r = 0.0;
+    for (int i = 0; i < n; ++i) r += a[j * n + i];
+    tot += r * r;
+  }
+  out[0] = tot * tot;
+}""", params=[("in","a","n*m"),("out","out","1"),("val","n"),("val","m")])
+
+K(name="acc_later_nest_and_local", why="accumulator read in a later nest and in a kernel-level local", loop=L1p,
+  src="""
+DPGEN_KERNEL void r4_acc_later_nest_and_local(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  const double mean = s / n;
+  for (int i = 0; i < n; ++i) u[i] = a[i] * s - mean * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="acc_product", why="multiplicative accumulator s *= a[i]",
+  src="""
+DPGEN_KERNEL void r4_acc_product(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i) s *= a[i];
+  out[0] = s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_max", why="max reduction s = std::max(s, a[i]*a[i])", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_acc_max(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = -1.0;
+  for (int i = 0; i < n; ++i) s = std::max(s, a[i] * (1.0 + 0.01 * i));
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_cond_data", why="conditional accumulation on data",
+  src="""
+DPGEN_KERNEL void r4_acc_cond_data(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                   DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    if (a[i] > 0.1) s += a[i] * b[i];
+    else s -= b[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_prefix_read_in_loop", why="accumulator read inside its own loop (prefix sum)",
+  src="""
+DPGEN_KERNEL void r4_acc_prefix_read_in_loop(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) {
+    s += a[i];
+    u[i] = s * s;
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="acc_linear_recurrence", why="s = 0.5 * s + a[i]",
+  src="""
+DPGEN_KERNEL void r4_acc_linear_recurrence(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s = 0.5 * s + a[i] * a[i];
+  out[0] = s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_sum_then_weighted", why="t = f(s); second loop accumulates into s with t",
+  src="""
+DPGEN_KERNEL void r4_acc_sum_then_weighted(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                           DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i];
+  const double t = s * s;
+  for (int i = 0; i < n; ++i) s += t * b[i];
+  out[0] = s;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_bias_param", why="accumulator initialised from a double parameter", loop="for (int n : {0, 1, 2, 5}) for (double bias : {0.0, 0.7})", pre="CAPTURE(bias);",
+  src="""
+DPGEN_KERNEL void r4_acc_bias_param(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, double bias) {
+  double s = bias;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","bias")])
+
+K(name="acc_count_and_sum", why="int counter and a double sum in one loop, divided after", loop=L1,
+  src="""
+DPGEN_KERNEL void r4_acc_count_and_sum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int cnt = 0;
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    if (a[i] > 0.0) { cnt++; s += a[i] * a[i]; }
+  out[0] = cnt > 0 ? s / cnt : 0.0;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_normalise_output", why="u[i] = a[i] / (1 + s*s) after the sum",
+  src="""
+DPGEN_KERNEL void r4_acc_normalise_output(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                          DPGEN_OUT double* u, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] / (1.0 + b[i] * b[i]);
+  for (int i = 0; i < n; ++i) u[i] = a[i] / (1.0 + s * s);
+}""", params=[("in","a",N),("in","b",N),("out","u",N),("val","n")])
+
+K(name="acc_strided", why="accumulator over a step-2 loop",
+  src="""
+DPGEN_KERNEL void r4_acc_strided(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 1; i < n; i += 2) s += a[i] * a[i - 1];
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_tri_down", why="accumulator in a triangle counting down",
+  src="""
+DPGEN_KERNEL void r4_acc_tri_down(DPGEN_IN const double* a, DPGEN_OUT double* y, int n) {
+  for (int i = n - 1; i >= 0; --i) {
+    double s = 0.0;
+    for (int j = n - 1; j >= i; --j) s += a[j] * a[j - i];
+    y[i] = s;
+  }
+}""", params=[("in","a",N),("out","y",N),("val","n")])
+
+K(name="acc_param_branch_in_loop", why="else-if chain of 3 on a parameter inside the accumulating loop", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_acc_param_branch_in_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  double s = 0.5;
+  for (int i = 0; i < n; ++i) {
+    if (flag == 0) s += a[i];
+    else if (flag == 1) s += a[i] * a[i];
+    else s -= a[i] * a[i] * a[i];
+  }
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="acc_row_normalise", why="row sum then row store in the same outer loop", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_acc_row_normalise(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int m) {
+  for (int j = 0; j < m; ++j) {
+    double s = 1.0;
+    for (int i = 0; i < n; ++i) s += a[j * n + i] * a[j * n + i];
+    for (int i = 0; i < n; ++i) u[j * n + i] = a[j * n + i] / s;
+  }
+}""", params=[("in","a","n*m"),("out","u","n*m"),("val","n"),("val","m")])
+
+K(name="acc_readback_output", why="accumulates the output it just stored",
+  src="""
+DPGEN_KERNEL void r4_acc_readback_output(DPGEN_IN const double* a, DPGEN_OUT double* u,
+                                         DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) {
+    u[i] = a[i] * a[i];
+    s += u[i] * a[i];
+  }
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","u",N),("out","out","1"),("val","n")])
+
+K(name="acc_reset_in_if", why="accumulator reset under an index condition inside the loop",
+  src="""
+DPGEN_KERNEL void r4_acc_reset_in_if(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  double s = 0.0;
+  for (int j = 0; j < n; ++j) {
+    if (j % 2 == 0) s = 0.0;
+    s += a[j] * a[j];
+    u[j] = s;
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="acc_int_bound", why="int accumulator used as a later loop bound",
+  src="""
+DPGEN_KERNEL void r4_acc_int_bound(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  int k = 0;
+  for (int i = 0; i < n; ++i) k += 2;
+  for (int i = 0; i < k / 2; ++i) u[i] = a[i] * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+K(name="acc_two_phase_product", why="t = s, s reset, s re-accumulated; out = t*s",
+  src="""
+DPGEN_KERNEL void r4_acc_two_phase_product(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                           DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i];
+  double t = s;
+  s = 0;
+  for (int i = 0; i < n; ++i) s += b[i] * b[i];
+  out[0] = t * s + t;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="acc_two_outputs_sqrt", why="one sum read by two outputs after", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_acc_two_outputs_sqrt(DPGEN_IN const double* a, DPGEN_OUT double* o1,
+                                          DPGEN_OUT double* o2, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  o1[0] = std::sqrt(1.0 + s);
+  o2[0] = s * s;
+}""", params=[("in","a",N),("out","o1","1"),("out","o2","1"),("val","n")])
+
+K(name="acc_col_then_row", why="sum over columns inside j, reused by i loop and a kernel-level total", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_acc_col_then_row(DPGEN_IN const double* a, DPGEN_OUT double* u,
+                                      DPGEN_OUT double* tot, int n, int m) {
+  double all = 0.0;
+  for (int j = 0; j < m; ++j) {
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) s += a[j * n + i];
+    all += s;
+    for (int i = 0; i < n; ++i) u[j * n + i] = s * a[j * n + i];
+  }
+  tot[0] = all * all;
+}""", params=[("in","a","n*m"),("out","u","n*m"),("out","tot","1"),("val","n"),("val","m")])
+
+K(name="acc_compound_div_eq", why="s /= (1 + a[i]^2)",
+  src="""
+DPGEN_KERNEL void r4_acc_compound_div_eq(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 2.0;
+  for (int i = 0; i < n; ++i) s /= (1.0 + a[i] * a[i]);
+  out[0] = s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_s_eq_s_plus", why="s = s + a[i]*a[i] in a C89 style with declaration at top",
+  src="""
+DPGEN_KERNEL void r4_acc_s_eq_s_plus(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  int i;
+  double s, t;
+  s = 0.0;
+  t = 1.0;
+  for (i = 0; i < n; i++) {
+    s = s + a[i] * a[i];
+    t = t - a[i];
+  }
+  for (i = 0; i < n; i++) u[i] = s * a[i] + t;
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+# ---------------------------------------------------------------- triangular / banded
+NN = "n*n"
+K(name="tri_countdown_inner", why="inner loop j = i down to 0",
+  src="""
+DPGEN_KERNEL void r4_tri_countdown_inner(DPGEN_IN const double* L, DPGEN_IN const double* x,
+                                         DPGEN_OUT double* y, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = i; j >= 0; --j) s += L[i * n + j] * x[j] * x[j];
+    y[i] = s;
+  }
+}""", params=[("in","L",NN),("in","x",N),("out","y",N),("val","n")])
+
+K(name="tri_strict_lower", why="j < i (empty row 0) stores into the triangle",
+  src="""
+DPGEN_KERNEL void r4_tri_strict_lower(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < i; ++j)
+      e[i * n + j] = a[i] * a[j] - a[i - j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_le_i_store", why="j <= i stores, diagonal included",
+  src="""
+DPGEN_KERNEL void r4_tri_le_i_store(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j)
+      e[i * n + j] = a[i] * a[j] * a[i - j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_bound_i_plus_2", why="bound std::min(n, i + 2)", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_bound_i_plus_2(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < std::min(n, i + 2); ++j)
+      e[i * n + j] = a[j] * a[j] + a[i];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_bound_i_plus_2_noclip", why="bound i + 2 on an (n+1)-wide output, no clip",
+  src="""
+DPGEN_KERNEL void r4_tri_bound_i_plus_2_noclip(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < i + 2; ++j)
+      e[i * (n + 1) + j] = a[j] * a[i] + a[j];
+}""", params=[("in","a","n+1"),("out","e","n*(n+1)"),("val","n")])
+
+K(name="tri_n_minus_i", why="bound n - i (anti-triangle), a[i+j]",
+  src="""
+DPGEN_KERNEL void r4_tri_n_minus_i(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n - i; ++j)
+      e[i * n + j] = a[i + j] * a[j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_window_moving", why="window max(0,i-1)..min(n,i+2), both sides moving", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_window_moving(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = std::max(0, i - 1); j < std::min(n, i + 2); ++j) s += a[j] * a[i];
+    out[i] = s;
+  }
+}""", params=[("in","a",N),("out","out",N),("val","n")])
+
+K(name="tri_window_inclusive_w", why="window max(0,i-w)..min(n-1,i+w) inclusive, param w", includes=CM, loop=LW, pre=PW,
+  src="""
+DPGEN_KERNEL void r4_tri_window_inclusive_w(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int w) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = std::max(0, i - w); j <= std::min(n - 1, i + w); ++j) s += a[j] * a[j] * (j - i + 0.5);
+    out[i] = s;
+  }
+}""", params=[("in","a",N),("out","out",N),("val","n"),("val","w")])
+
+K(name="tri_window_store", why="banded stores e[i][j] for |i-j|<=1 via min/max", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_window_store(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = std::max(0, i - 1); j <= std::min(n - 1, i + 1); ++j)
+      e[i * n + j] = a[i] * a[j] + (i - j);
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_outer_countdown", why="outer i counts down, inner j <= i",
+  src="""
+DPGEN_KERNEL void r4_tri_outer_countdown(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = n - 1; i >= 0; --i)
+    for (int j = 0; j <= i; ++j)
+      e[i * n + j] = a[i] * a[j] * a[j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_symmetric_fill", why="fills both triangles (diagonal stored twice, same value)",
+  src="""
+DPGEN_KERNEL void r4_tri_symmetric_fill(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const double v = a[i] * a[j] + a[i] - a[j];
+      e[i * n + j] = v;
+      e[j * n + i] = v * v;
+    }
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_forward_subst", why="forward substitution: x[i] reads x[j<i] (own output)", linear=False,
+  ranges="{2.0, 3.0}, {-1.0, 1.0}",
+  src="""
+DPGEN_KERNEL void r4_tri_forward_subst(DPGEN_IN const double* L, DPGEN_IN const double* b,
+                                       DPGEN_OUT double* x, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = b[i];
+    for (int j = 0; j < i; ++j) s -= L[i * n + j] * x[j];
+    x[i] = s / L[i * n + i];
+  }
+}""", params=[("in","L",NN),("in","b",N),("out","x",N),("val","n")])
+
+K(name="tri_3d", why="tetrahedral nest k, j<=k, i<=j",
+  src="""
+DPGEN_KERNEL void r4_tri_3d(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j <= k; ++j)
+      for (int i = 0; i <= j; ++i)
+        e[(k * n + j) * n + i] = a[i] * a[j] * a[k];
+}""", params=[("in","a",N),("out","e","n*n*n"),("val","n")])
+
+K(name="tri_start1_lt_i", why="i from 1, j from 1 to i-1 (i-1 bound written as j <= i - 1)",
+  src="""
+DPGEN_KERNEL void r4_tri_start1_lt_i(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 1; i < n; ++i) {
+    double s = a[i];
+    for (int j = 1; j <= i - 1; ++j) s += a[j] * a[i - j];
+    out[i] = s * s;
+  }
+}""", params=[("in","a",N),("out","out",N),("val","n")])
+
+K(name="tri_minmax_reverse", why="for (j = min(n-1,i+1); j >= max(0,i-1); --j)", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_minmax_reverse(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = std::min(n - 1, i + 1); j >= std::max(0, i - 1); --j) s = s * 0.5 + a[j] * a[j];
+    out[i] = s;
+  }
+}""", params=[("in","a",N),("out","out",N),("val","n")])
+
+K(name="tri_two_outer_bounds", why="k in [i, j] for j >= i",
+  src="""
+DPGEN_KERNEL void r4_tri_two_outer_bounds(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = i; j < n; ++j) {
+      double s = 0;
+      for (int k = i; k <= j; ++k) s += a[k];
+      e[i * n + j] = s * s;
+    }
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_banded_storage", why="banded matvec with band storage A[i*3 + (j-i+1)]", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_banded_storage(DPGEN_IN const double* A, DPGEN_IN const double* x,
+                                        DPGEN_OUT double* y, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = std::max(0, i - 1); j < std::min(n, i + 2); ++j) s += A[i * 3 + (j - i + 1)] * x[j] * x[i];
+    y[i] = s;
+  }
+}""", params=[("in","A","3*n"),("in","x",N),("out","y",N),("val","n")])
+
+K(name="tri_step2_outer", why="outer step 2, inner j <= i",
+  src="""
+DPGEN_KERNEL void r4_tri_step2_outer(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; i += 2)
+    for (int j = 0; j <= i; ++j)
+      e[i * n + j] = a[i] * a[j] + a[j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_max_i_half", why="lower bound std::max(i, n / 2)", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_tri_max_i_half(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = std::max(i, n / 2); j < n; ++j)
+      e[i * n + j] = a[i] * a[j] * a[j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="tri_accum_output", why="y[i] += in a triangle after y[i] = 0",
+  src="""
+DPGEN_KERNEL void r4_tri_accum_output(DPGEN_IN const double* L, DPGEN_IN const double* x,
+                                      DPGEN_OUT double* y, int n) {
+  for (int i = 0; i < n; ++i) {
+    y[i] = 0.0;
+    for (int j = 0; j <= i; ++j) y[i] += L[i * n + j] * x[j] * x[i];
+  }
+}""", params=[("in","L",NN),("in","x",N),("out","y",N),("val","n")])
+
+K(name="tri_colsum_scatter", why="c[j] += over a triangle (scatter into the inner index)",
+  src="""
+DPGEN_KERNEL void r4_tri_colsum_scatter(DPGEN_IN const double* a, DPGEN_OUT double* c, int n) {
+  for (int j = 0; j < n; ++j) c[j] = 0.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j)
+      c[j] += a[i * n + j] * a[i * n + j];
+}""", params=[("in","a",NN),("out","c",N),("val","n")])
+
+K(name="tri_upper_countdown_gt", why="for (j = n - 1; j > i; --j) stores",
+  src="""
+DPGEN_KERNEL void r4_tri_upper_countdown_gt(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = n - 1; j > i; --j)
+      e[i * n + j] = a[i] - a[j] * a[j - i];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+# ---------------------------------------------------------------- strided / parity
+K(name="par_j_mod2", why="start j % 2, step 2", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_j_mod2(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = j % 2; i < n; i += 2)
+      e[j * n + i] = a[j * n + i] * a[j * n + i] + a[i];
+}""", params=[("in","a","n*m"),("out","e","n*m"),("val","n"),("val","m")])
+
+K(name="par_ij_mod3", why="start (j + k) % 3, step 3 (3D)", loop="for (int n : {0, 1, 2, 3, 4, 7})",
+  src="""
+DPGEN_KERNEL void r4_par_ij_mod3(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = (j + k) % 3; i < n; i += 3)
+        e[(k * n + j) * n + i] = a[(k * n + j) * n + i] * a[i];
+}""", params=[("in","a","n*n*n"),("out","e","n*n*n"),("val","n")])
+
+K(name="par_rb3d", why="3D red-black start 1 + (j + k) % 2",
+  loop="for (int n : {0, 1, 2, 3, 4, 5})",
+  src="""
+DPGEN_KERNEL void r4_par_rb3d(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
+  for (int k = 1; k < n - 1; ++k)
+    for (int j = 1; j < n - 1; ++j)
+      for (int i = 1 + (j + k) % 2; i < n - 1; i += 2) {
+        const int c = (k * n + j) * n + i;
+        v[c] = (u[c - 1] + u[c + 1] + u[c - n] + u[c + n] + u[c - n * n] + u[c + n * n]) * u[c];
+      }
+}""", params=[("in","u","n*n*n"),("out","v","n*n*n"),("val","n")])
+
+K(name="par_red_then_black", why="red sweep writes v, black sweep reads v (the output) at red points", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_red_then_black(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int m) {
+  for (int j = 1; j < m - 1; ++j)
+    for (int i = 1 + (j + 1) % 2; i < n - 1; i += 2)
+      v[j * n + i] = 0.25 * (u[j * n + i - 1] + u[j * n + i + 1]) * u[j * n + i];
+  for (int j = 1; j < m - 1; ++j)
+    for (int i = 1 + j % 2; i < n - 1; i += 2)
+      v[j * n + i] = 0.25 * (v[j * n + i - 1] * v[j * n + i + 1] + u[j * n + i]);
+}""", params=[("in","u","n*m"),("out","v","n*m"),("val","n"),("val","m")])
+
+K(name="par_unroll_step3", why="constant loop m = 0..8 step 3 over a table",
+  src="""
+DPGEN_KERNEL void r4_par_unroll_step3(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const double w[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int m = 0; m < 9; m += 3) s += w[m] * u[i + m] * u[i + m];
+    out[i] = s;
+  }
+}""", params=[("in","u","n+9"),("out","out",N),("val","n")])
+
+K(name="par_unroll_down2", why="constant loop m = 4 down to 0 step 2",
+  src="""
+DPGEN_KERNEL void r4_par_unroll_down2(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const double w[5] = {1, 2, 3, 4, 5};
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int m = 4; m >= 0; m -= 2) s = s * 0.5 + w[m] * u[i + m];
+    out[i] = s * s;
+  }
+}""", params=[("in","u","n+5"),("out","out",N),("val","n")])
+
+K(name="par_unroll_odd", why="constant loop m = 1, 3, 5 (m < 6, step 2)",
+  src="""
+DPGEN_KERNEL void r4_par_unroll_odd(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int m = 1; m < 6; m += 2) s += m * u[i + m] * u[i + m - 1];
+    out[i] = s;
+  }
+}""", params=[("in","u","n+6"),("out","out",N),("val","n")])
+
+K(name="par_unroll_le", why="constant loop m <= 6 step 3 (0, 3, 6)",
+  src="""
+DPGEN_KERNEL void r4_par_unroll_le(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int m = 0; m <= 6; m += 3) s += (m + 1) * u[i + m] * u[i];
+    out[i] = s;
+  }
+}""", params=[("in","u","n+7"),("out","out",N),("val","n")])
+
+K(name="par_neighbours_step2", why="v[i] = u[i-1]*u[i+1] on a moving-parity row", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_neighbours_step2(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = 1 + j % 2; i < n - 1; i += 2)
+      v[j * n + i] = u[j * n + i - 1] * u[j * n + i + 1] + u[j * n + i];
+}""", params=[("in","u","n*m"),("out","v","n*m"),("val","n"),("val","m")])
+
+K(name="par_start_j_step3", why="start = j, step 3",
+  src="""
+DPGEN_KERNEL void r4_par_start_j_step3(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = j; i < n; i += 3)
+      e[j * n + i] = a[i] * a[j] + a[i - j];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+K(name="par_countdown_step2", why="for (i = n - 1 - j % 2; i >= 0; i -= 2)", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_countdown_step2(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = n - 1 - j % 2; i >= 0; i -= 2)
+      e[j * n + i] = a[j * n + i] * a[i];
+}""", params=[("in","a","n*m"),("out","e","n*m"),("val","n"),("val","m")])
+
+K(name="par_accum_step2", why="accumulator over a parity loop, start j % 2", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_accum_step2(DPGEN_IN const double* a, DPGEN_OUT double* r, int n, int m) {
+  for (int j = 0; j < m; ++j) {
+    double s = 0;
+    for (int i = j % 2; i < n; i += 2) s += a[j * n + i] * a[j * n + i];
+    r[j] = s;
+  }
+}""", params=[("in","a","n*m"),("out","r","m"),("val","n"),("val","m")])
+
+K(name="par_start_2j_mod3", why="start (2 * j) % 3, step 3", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_start_2j_mod3(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = (2 * j) % 3; i < n; i += 3)
+      e[j * n + i] = a[j * n + i] * a[j * n + i] * (j + 1);
+}""", params=[("in","a","n*m"),("out","e","n*m"),("val","n"),("val","m")])
+
+K(name="par_two_halves_two_outs", why="red half into v, black half into w, both reading u", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_two_halves_two_outs(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                             DPGEN_OUT double* w, int n, int m) {
+  for (int j = 0; j < m; ++j) {
+    for (int i = j % 2; i < n; i += 2) v[j * n + i] = u[j * n + i] * u[j * n + i];
+    for (int i = 1 + j % 2; i < n; i += 2) w[j * n + i] = u[j * n + i] * v[j * n + i - 1];
+  }
+}""", params=[("in","u","n*m"),("out","v","n*m"),("out","w","n*m"),("val","n"),("val","m")])
+
+K(name="par_start_mod2_plus_j", why="start j + j % 2 (moving by 1 or 2 per row), step 2",
+  src="""
+DPGEN_KERNEL void r4_par_start_mod2_plus_j(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = j + j % 2; i < n; i += 2)
+      e[j * n + i] = a[i] * a[j] * a[i];
+}""", params=[("in","a",N),("out","e",NN),("val","n")])
+
+# ---------------------------------------------------------------- lambdas
+K(name="lam_calls_helper", why="lambda calling a static helper", includes=CM,
+  src="""
+static inline double r4_sq(double x) { return x * x; }
+DPGEN_KERNEL void r4_lam_calls_helper(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto energy = [&](int i) { return r4_sq(u[i]) + r4_sq(u[i + 1] - u[i]); };
+  for (int i = 0; i + 1 < n; ++i) out[i] = energy(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_calls_lambda", why="lambda calling a lambda",
+  src="""
+DPGEN_KERNEL void r4_lam_calls_lambda(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto grad = [&](int i) { return u[i + 1] - u[i]; };
+  auto flux = [&](int i) { return grad(i) * 0.5 * (u[i] + u[i + 1]); };
+  for (int i = 1; i + 1 < n; ++i) out[i] = flux(i) - flux(i - 1);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_capture_carray_copy", why="lambda [=] capturing a local C array by copy",
+  src="""
+DPGEN_KERNEL void r4_lam_capture_carray_copy(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[3] = {0.25, 0.5, 0.25};
+  auto smooth = [=](int i) { return w[0] * u[i] + w[1] * u[i + 1] * u[i + 1] + w[2] * u[i + 2]; };
+  for (int i = 0; i + 2 < n; ++i) out[i] = smooth(i);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_capture_carray_copy_stale", why="lambda [=] copies a C array that changes afterwards",
+  src="""
+DPGEN_KERNEL void r4_lam_capture_carray_copy_stale(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[2] = {1.0, 2.0};
+  auto f = [=](int i) { return w[0] * u[i] + w[1] * u[i] * u[i]; };
+  w[0] = 5.0;
+  for (int i = 0; i < n; ++i) out[i] = f(i) + w[0] * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_loop_inside", why="lambda with a loop inside (stencil sum)",
+  src="""
+DPGEN_KERNEL void r4_lam_loop_inside(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto box = [&](int i) {
+    double s = 0;
+    for (int m = 0; m < 3; ++m) s += u[i + m] * u[i + m];
+    return s;
+  };
+  for (int i = 0; i + 2 < n; ++i) out[i] = box(i);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_generic_auto", why="generic lambda [](auto x)",
+  src="""
+DPGEN_KERNEL void r4_lam_generic_auto(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto cube = [](auto x) { return x * x * x; };
+  for (int i = 0; i < n; ++i) out[i] = cube(u[i]) + cube(2.0) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_mutable", why="mutable lambda with a counter (should be rejected or right)",
+  src="""
+DPGEN_KERNEL void r4_lam_mutable(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double c = 1.0;
+  auto f = [c](int i) mutable { c = c * 2.0; return c * u[i]; };
+  for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_ref_local_changes", why="[&] capture of a local that changes each iteration",
+  src="""
+DPGEN_KERNEL void r4_lam_ref_local_changes(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double c = 0.0;
+  auto f = [&](int i) { return c * u[i]; };
+  for (int i = 0; i < n; ++i) {
+    c = u[i] * u[i];
+    out[i] = f(i) + c;
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_copy_local_changes", why="[=] capture of a local that changes later (stale copy)",
+  src="""
+DPGEN_KERNEL void r4_lam_copy_local_changes(DPGEN_IN const double* u, DPGEN_OUT double* out, int n, double h) {
+  double c = h;
+  auto f = [=](int i) { return c * u[i] * u[i]; };
+  c = 2.0 * h;
+  for (int i = 0; i < n; ++i) out[i] = f(i) + c * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n"),("val","0.5")])
+
+K(name="lam_bool_predicate", why="lambda returning bool used in a condition",
+  src="""
+DPGEN_KERNEL void r4_lam_bool_predicate(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto up = [&](int i) -> bool { return u[i] > 0.0; };
+  for (int i = 0; i < n; ++i) out[i] = up(i) ? u[i] * u[i] : -u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_stores_output", why="lambda that stores into the output",
+  src="""
+DPGEN_KERNEL void r4_lam_stores_output(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto put = [&](int i, double v) { out[i] = v * u[i]; };
+  for (int i = 0; i < n; ++i) put(i, u[i] + 1.0);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_param_names_generated", why="lambda params named i_adj, u_adj, dpgen_t0",
+  src="""
+DPGEN_KERNEL void r4_lam_param_names_generated(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto f = [&](int i_adj, double u_adj) { const double dpgen_t0 = u[i_adj] * u_adj; return dpgen_t0 + u_adj; };
+  for (int i = 0; i < n; ++i) out[i] = f(i, u[i] * u[i]);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_in_loop_calls_outer", why="lambda defined in the loop calls a lambda defined outside",
+  src="""
+DPGEN_KERNEL void r4_lam_in_loop_calls_outer(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto g = [&](int k) { return u[k] * u[k]; };
+  for (int i = 1; i < n; ++i) {
+    auto h = [&](int d) { return g(i - d) + g(i); };
+    out[i] = h(1) * h(0);
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_multi_return", why="lambda with three return arms", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_lam_multi_return(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto lim = [](double a, double b) -> double {
+    if (a > b) return a * b;
+    if (a < -b) return -a;
+    return std::sin(a) + b;
+  };
+  for (int i = 1; i < n; ++i) out[i] = lim(u[i], u[i - 1]);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_captures_accumulator", why="lambda [&] reading an accumulator",
+  src="""
+DPGEN_KERNEL void r4_lam_captures_accumulator(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += u[i] * u[i];
+  auto scale = [&](int i) { return u[i] * s; };
+  for (int i = 0; i < n; ++i) out[i] = scale(i) + s;
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_copies_accumulator", why="lambda [=] copying an accumulator after its loop",
+  src="""
+DPGEN_KERNEL void r4_lam_copies_accumulator(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i) s += u[i] * u[i];
+  auto scale = [=](int i) { return u[i] / s; };
+  for (int i = 0; i < n; ++i) out[i] = scale(i);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_explicit_list", why="explicit capture list [u, h]",
+  src="""
+DPGEN_KERNEL void r4_lam_explicit_list(DPGEN_IN const double* u, DPGEN_OUT double* out, int n, double h) {
+  auto d = [u, h](int i) { return (u[i + 1] - u[i]) * h * u[i]; };
+  for (int i = 0; i + 1 < n; ++i) out[i] = d(i);
+}""", params=[("in","u",N),("out","out",N),("val","n"),("val","0.7")])
+
+K(name="lam_const_ref_param", why="lambda taking const double& and const auto",
+  src="""
+DPGEN_KERNEL void r4_lam_const_ref_param(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const auto f = [](const double& x, const double& y) { return x * y + x; };
+  for (int i = 1; i < n; ++i) out[i] = f(u[i], u[i - 1]) * f(u[i - 1], 1.0);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_returns_index", why="lambda computing an index, used in a subscript",
+  src="""
+DPGEN_KERNEL void r4_lam_returns_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto wrap = [n](int i) { return (i + n) % n; };
+  for (int i = 0; i < n; ++i) out[i] = u[wrap(i - 1)] * u[wrap(i + 1)];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_called_in_bound", why="lambda used in a loop bound",
+  src="""
+DPGEN_KERNEL void r4_lam_called_in_bound(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto last = [n]() { return n - 1; };
+  for (int i = 0; i < last(); ++i) out[i] = u[i] * u[i + 1];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+# ---------------------------------------------------------------- std::array
+AR = "#include <array>\n#include <cmath>\n"
+K(name="arr_in_lambda", why="std::array table captured by a lambda", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_in_lambda(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  constexpr std::array<double, 3> c = {-0.5, 0.0, 0.5};
+  auto d = [&](int i) { return c[0] * u[i - 1] + c[1] * u[i] + c[2] * u[i + 1]; };
+  for (int i = 1; i + 1 < n; ++i) out[i] = d(i) * d(i);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="arr_constexpr_size", why="std::array<double, K> with constexpr int K", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_constexpr_size(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  constexpr int K = 4;
+  const std::array<double, K> w{1.0, -1.0, 2.0, -2.0};
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int m = 0; m < K; ++m) s += w[m] * u[i + m] * u[i];
+    out[i] = s;
+  }
+}""", params=[("in","u","n+4"),("out","out",N),("val","n")])
+
+K(name="arr_accum_buffer", why="std::array buffer accumulated with += then read", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_accum_buffer(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 2> b{};
+    for (int m = 0; m < 4; ++m) b[m % 2] += u[i + m] * u[i + m];
+    out[i] = b[0] * b[1];
+  }
+}""", params=[("in","u","n+4"),("out","out",N),("val","n")])
+
+K(name="arr_copy_assign", why="std::array copied by assignment", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_copy_assign(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 2> a{u[i], u[i] * u[i]};
+    std::array<double, 2> b = a;
+    b[0] = 3.0;
+    out[i] = a[0] * b[1] + b[0] * a[1];
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="arr_at", why="std::array::at (rejected or right)", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_at(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const std::array<double, 2> w{0.5, 1.5};
+  for (int i = 0; i < n; ++i) out[i] = w.at(i % 2) * u[i] * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="arr_float", why="std::array<float, 3> table in a float kernel", includes=AR, T="float",
+  src="""
+DPGEN_KERNEL void r4_arr_float(DPGEN_IN const float* u, DPGEN_OUT float* out, int n) {
+  const std::array<float, 3> w{0.25f, 0.5f, 0.25f};
+  for (int i = 1; i + 1 < n; ++i) out[i] = w[0] * u[i - 1] + w[1] * u[i] * u[i] + w[2] * u[i + 1];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="arr_size_bound", why="loop bound t.size()", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_size_bound(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const std::array<double, 3> w{1.0, 2.0, 3.0};
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (std::size_t m = 0; m < w.size(); ++m) s += w[m] * u[i + m];
+    out[i] = s * s;
+  }
+}""", params=[("in","u","n+3"),("out","out",N),("val","n")])
+
+K(name="arr_2d", why="std::array of std::array", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_2d(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const std::array<std::array<double, 2>, 2> M{{{1.0, 2.0}, {3.0, 4.0}}};
+  for (int i = 0; i < n; ++i) out[i] = M[0][1] * u[i] * u[i] + M[1][0] * u[i + 1];
+}""", params=[("in","u","n+1"),("out","out",N),("val","n")])
+
+K(name="arr_data_index", why="std::array subscript chosen by data", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_data_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const std::array<double, 2> w{0.5, 2.0};
+  for (int i = 0; i < n; ++i) out[i] = w[u[i] > 0.0 ? 1 : 0] * u[i] * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="arr_buffer_then_reverse", why="std::array buffer filled forward, read reversed", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_buffer_then_reverse(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 3> d;
+    for (int m = 0; m < 3; ++m) d[m] = u[i + m] * (m + 1);
+    out[i] = d[2] * d[0] - d[1] * d[1];
+  }
+}""", params=[("in","u","n+3"),("out","out",N),("val","n")])
