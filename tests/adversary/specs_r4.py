@@ -997,3 +997,400 @@ DPGEN_KERNEL void r4_arr_buffer_then_reverse(DPGEN_IN const double* u, DPGEN_OUT
     out[i] = d[2] * d[0] - d[1] * d[1];
   }
 }""", params=[("in","u","n+3"),("out","out",N),("val","n")])
+
+# ---------------------------------------------------------------- exclusive branches on parameters
+K(name="br_elseif3", why="else-if chain of 3 loop nests on a parameter", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_elseif3(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  } else if (flag == 1) {
+    for (int i = 1; i < n; ++i) u[i] = a[i] - a[i - 1] * a[i];
+    if (n > 0) u[0] = 0.0;
+  } else {
+    for (int i = 0; i < n; ++i) u[i] = 3.0 * a[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_ne_vs_eq", why="if (flag != 0) nest; if (flag == 0) nest", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_ne_vs_eq(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag != 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i] * a[i];
+  if (flag == 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] + a[i] * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_arm_output_as_work", why="one arm writes w then reads it as a work array, the other writes w only", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_arm_output_as_work(DPGEN_IN const double* a, DPGEN_OUT double* w,
+                                           DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 1) {
+    for (int i = 0; i < n; ++i) w[i] = a[i] * a[i];
+    for (int i = 1; i < n; ++i) u[i] = w[i] * w[i - 1];
+    if (n > 0) u[0] = w[0];
+  } else {
+    for (int i = 0; i < n; ++i) w[i] = 2.0 * a[i];
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i] * a[i];
+  }
+}""", params=[("in","a",N),("out","w",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_overlapping_conds", why="if (flag > 0) nest; if (flag > 1) nest overwrites (not exclusive)", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_overlapping_conds(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  for (int i = 0; i < n; ++i) u[i] = a[i];
+  if (flag > 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  if (flag > 1)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i] * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_double_param", why="branch on a double parameter", loop="for (double dt : {0.1, 0.9}) for (int n : {0, 1, 2, 5})", pre="CAPTURE(dt);",
+  src="""
+DPGEN_KERNEL void r4_br_double_param(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, double dt) {
+  if (dt > 0.5) {
+    for (int i = 0; i < n; ++i) u[i] = dt * a[i] * a[i];
+  } else {
+    for (int i = 0; i < n; ++i) u[i] = a[i] - dt;
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","dt")])
+
+K(name="br_one_arm_writes", why="only one arm writes the second output", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_one_arm_writes(DPGEN_IN const double* a, DPGEN_OUT double* u,
+                                       DPGEN_OUT double* v, int n, int flag) {
+  for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) v[i] = a[i] * u[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("out","v",N),("val","n"),("val","flag")])
+
+K(name="br_arm_accum", why="accumulator computed differently per arm, read after the if", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_arm_accum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  double s = 0.0;
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  } else {
+    for (int i = 0; i < n; ++i) s += a[i];
+  }
+  out[0] = s * s + s;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="br_switch", why="switch on a parameter with loop nests in cases", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_switch(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  switch (flag) {
+  case 0:
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+    break;
+  case 1:
+    for (int i = 0; i < n; ++i) u[i] = a[i];
+    break;
+  default:
+    for (int i = 0; i < n; ++i) u[i] = -a[i] * a[i] * a[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_ternary_lo", why="loop start chosen by a ternary on a parameter", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_ternary_lo(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  const int lo = flag != 0 ? 1 : 0;
+  for (int i = 0; i < n; ++i) u[i] = 0.0;
+  for (int i = lo; i < n; ++i) u[i] = a[i] * a[i - lo];
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_arm_return", why="if (flag == 0) { nest; return; } second nest", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_arm_return(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+    return;
+  }
+  for (int i = 0; i < n; ++i) u[i] = a[i] + 1.0;
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_nested_flags", why="nested if on two parameters", loop="for (int f1 : {0, 1}) for (int f2 : {0, 1}) for (int n : {0, 1, 3, 6})", pre="CAPTURE(f1); CAPTURE(f2);",
+  src="""
+DPGEN_KERNEL void r4_br_nested_flags(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int f1, int f2) {
+  if (f1 == 1) {
+    if (f2 == 1) {
+      for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+    } else {
+      for (int i = 0; i < n; ++i) u[i] = a[i] * 2.0;
+    }
+  } else {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i] * a[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","f1"),("val","f2")])
+
+K(name="br_arms_different_extent", why="arms write different extents of the same output, other entries set first", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_arms_different_extent(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  } else {
+    for (int i = 0; i < n; ++i) u[i] = a[i];
+    for (int i = 1; i + 1 < n; ++i) u[i] = a[i - 1] * a[i + 1];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_flag_local", why="branch on a local copied from the parameter", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_flag_local(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  const bool predict = flag == 0;
+  if (predict) {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  } else {
+    for (int i = 0; i < n; ++i) u[i] = 0.5 * a[i];
+  }
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_else_reads_other_output", why="else arm's second output reads the first output (work array) written by both arms", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_else_reads_other_output(DPGEN_IN const double* a, DPGEN_OUT double* w,
+                                                DPGEN_OUT double* v, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) w[i] = a[i] + 1.0;
+    for (int i = 0; i < n; ++i) v[i] = a[i] * a[i];
+  } else {
+    for (int i = 0; i < n; ++i) w[i] = a[i] * a[i];
+    for (int i = 0; i + 1 < n; ++i) v[i] = w[i] * w[i + 1];
+    if (n > 0) v[n - 1] = w[n - 1];
+  }
+}""", params=[("in","a",N),("out","w",N),("out","v",N),("val","n"),("val","flag")])
+
+# ---------------------------------------------------------------- double** constant rows
+LR = "for (auto [n, m] : {std::pair{1, 2}, {1, 3}, {3, 2}, {2, 4}, {4, 3}, {5, 6}})"
+K(name="rp_ghost_both", why="ghost rows 0 and m-1 copied from rows 1 and m-2, interior squared", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_ghost_both(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int j = 1; j < m - 1; ++j)
+    for (int i = 0; i < n; ++i) b[j][i] = a[j][i] * a[j][i];
+  for (int i = 0; i < n; ++i) {
+    b[0][i] = a[1][i] * a[0][i];
+    b[m - 1][i] = a[m - 2][i] + a[m - 1][i] * a[m - 1][i];
+  }
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_store_then_read_row", why="b[0][i] stored, then b[1][i] reads b[0][i] (work row)", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_store_then_read_row(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 0; i < n; ++i) b[0][i] = a[0][i] * a[1][i];
+  for (int i = 0; i < n; ++i) b[1][i] = b[0][i] * b[0][i] + a[m - 1][i];
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_colsum_into_row0", why="b[0][i] += a[j][i] over all rows after b[0][i] = 0", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_colsum_into_row0(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 0; i < n; ++i) b[0][i] = 0.0;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) b[0][i] += a[j][i] * a[j][i];
+}""", params=[("inr","a","m","n"),("outr","b","1","n"),("val","n"),("val","m")])
+
+K(name="rp_const_row_neighbours", why="row 0 read at i-1, i+1; stored to row m-1", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_const_row_neighbours(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 1; i + 1 < n; ++i) b[m - 1][i] = a[0][i + 1] * a[0][i - 1] - a[m - 1][i];
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_row_overwrite", why="all rows written, then row m-1 overwritten", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_row_overwrite(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) b[j][i] = a[j][i] * a[j][i];
+  for (int i = 0; i < n; ++i) b[m - 1][i] = a[0][i] * 3.0;
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_ghost_ng", why="ng ghost rows on both sides copied from the nearest interior row",
+  loop="for (auto [n, m] : {std::pair{1, 3}, {3, 4}, {2, 6}, {4, 7}}) for (int ng : {1, 2})", pre="if (m < 2 * ng + 1) continue; CAPTURE(ng);",
+  src="""
+DPGEN_KERNEL void r4_rp_ghost_ng(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m, int ng) {
+  for (int j = ng; j < m - ng; ++j)
+    for (int i = 0; i < n; ++i) b[j][i] = a[j][i] * a[j][i];
+  for (int j = 0; j < ng; ++j)
+    for (int i = 0; i < n; ++i) {
+      b[j][i] = a[ng][i];
+      b[m - 1 - j][i] = a[m - 1 - ng][i] * 2.0;
+    }
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m"),("val","ng")])
+
+K(name="rp_row_from_local", why="constant row through a kernel-level local const int top = m - 1", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_row_from_local(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  const int top = m - 1;
+  for (int i = 0; i < n; ++i) {
+    b[top][i] = a[top][i] * a[0][i];
+    b[0][i] = a[top][i];
+  }
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_const_column", why="constant column a[j][0] and a[j][n-1]", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_const_column(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) b[j][i] = a[j][0] * a[j][n - 1] + a[j][i];
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_mixed_flat", why="double** input and a flat weight input", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_mixed_flat(DPGEN_IN double** a, DPGEN_IN const double* w, DPGEN_OUT double* r,
+                                   int n, int m) {
+  for (int i = 0; i < n; ++i) r[i] = w[i] * a[0][i] * a[m - 1][i];
+}""", params=[("inr","a","m","n"),("in","w","n"),("out","r","n"),("val","n"),("val","m")])
+
+K(name="rp_rows_in_branch", why="constant rows stored in param-branch arms",
+  loop="for (int flag : {0, 1}) for (auto [n, m] : {std::pair{1, 2}, {3, 2}, {4, 3}})", pre="CAPTURE(flag);",
+  src="""
+DPGEN_KERNEL void r4_rp_rows_in_branch(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) { b[0][i] = a[1][i]; b[1][i] = a[0][i] * a[0][i]; }
+  } else {
+    for (int i = 0; i < n; ++i) { b[0][i] = a[m - 1][i] * a[0][i]; b[1][i] = 0.0; }
+  }
+}""", params=[("inr","a","m","n"),("outr","b","2","n"),("val","n"),("val","m"),("val","flag")])
+
+K(name="rp_row_read_and_accum", why="row 0 of the output read back while accumulating into row 1", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_rp_row_read_and_accum(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 0; i < n; ++i) { b[0][i] = a[0][i] * a[0][i]; b[1][i] = 0.0; }
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) b[1][i] += b[0][i] * a[j][i];
+}""", params=[("inr","a","m","n"),("outr","b","2","n"),("val","n"),("val","m")])
+
+# ---------------------------------------------------------------- index macros with kernel-level locals
+K(name="mac_ptr_locals_stencil", why="IDX with locals from pointers, 5-point stencil",
+  loop="for (int n : {1, 2, 3, 5})",
+  pre="int lo = 2, hi = lo + n - 1; const int* xmin = &lo; const int* xmax = &hi;",
+  includes="#define IDX(i, j) ((i) - (x_min - 1) + ((j) - (x_min - 1)) * (x_max - x_min + 3))\n",
+  src="""
+DPGEN_KERNEL void r4_mac_ptr_locals_stencil(const int* xmin, const int* xmax, DPGEN_IN const double* u,
+                                            DPGEN_OUT double* v) {
+  int x_min = *xmin, x_max = *xmax;
+  for (int k = x_min; k <= x_max; k++)
+    for (int j = x_min; j <= x_max; j++)
+      v[IDX(j, k)] = u[IDX(j - 1, k)] * u[IDX(j + 1, k)] + u[IDX(j, k - 1)] - u[IDX(j, k + 1)] * u[IDX(j, k)];
+}""", params=[("val","xmin"),("val","xmax"),("in","u","(n+2)*(n+2)"),("out","v","(n+2)*(n+2)")])
+
+K(name="mac_ld_local", why="IDX uses const int ld = nx + 2 * ng", loop=L2p,
+  includes="#define IDX(i, j) ((i) + ng + ((j) + ng) * ld)\n",
+  src="""
+DPGEN_KERNEL void r4_mac_ld_local(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int m) {
+  const int ng = 1;
+  const int ld = n + 2 * ng;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i)
+      v[IDX(i, j)] = u[IDX(i - 1, j)] * u[IDX(i + 1, j)] + u[IDX(i, j - 1)] * u[IDX(i, j + 1)];
+}""", params=[("in","u","(n+2)*(m+2)"),("out","v","(n+2)*(m+2)"),("val","n"),("val","m")])
+
+K(name="mac_local_changes", why="macro's local offset changes between the nests",
+  includes="#define AT(i) ((i) + off)\n",
+  src="""
+DPGEN_KERNEL void r4_mac_local_changes(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  int off = 0;
+  for (int i = 0; i < n; ++i) u[AT(i)] = a[AT(i)] * a[AT(i)];
+  off = n;
+  for (int i = 0; i < n; ++i) u[AT(i)] = a[i] * 3.0 + a[AT(i)];
+}""", params=[("in","a","2*n"),("out","u","2*n"),("val","n")])
+
+K(name="mac_nested", why="macro using another macro with a local", loop=L2p,
+  includes="#define LD (nx + 2)\n#define IDX(i, j) ((i) + 1 + ((j) + 1) * LD)\n",
+  src="""
+DPGEN_KERNEL void r4_mac_nested(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int m) {
+  const int nx = n;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i)
+      v[IDX(i, j)] = u[IDX(i - 1, j)] - u[IDX(i, j)] * u[IDX(i, j - 1)];
+}""", params=[("in","u","(n+2)*(m+2)"),("out","v","(n+2)*(m+2)"),("val","n"),("val","m")])
+
+K(name="mac_local_from_n", why="kernel-level local int h = n / 2 used in macro and bounds",
+  includes="#define MIR(i) (h - 1 - (i))\n",
+  src="""
+DPGEN_KERNEL void r4_mac_local_from_n(DPGEN_IN const double* a, DPGEN_OUT double* u, int n) {
+  const int h = n / 2;
+  for (int i = 0; i < h; ++i) u[i] = a[MIR(i)] * a[i + h];
+}""", params=[("in","a",N),("out","u",N),("val","n")])
+
+# ---------------------------------------------------------------- generated-name clashes
+K(name="nm_dpgen_sum_s", why="an accumulator named dpgen_sum_s and one named s",
+  src="""
+DPGEN_KERNEL void r4_nm_dpgen_sum_s(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0, dpgen_sum_s = 1.0;
+  for (int i = 0; i < n; ++i) {
+    s += a[i] * a[i];
+    dpgen_sum_s += a[i];
+  }
+  out[0] = s * dpgen_sum_s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="nm_s_dot", why="accumulator s next to a local s_dot and s_adj",
+  src="""
+DPGEN_KERNEL void r4_nm_s_dot(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  const double s_dot = 2.0 * s;
+  const double s_adj = s_dot * s;
+  out[0] = s_adj + s_dot;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="nm_params_adj_dot", why="inputs named u, u_adj, u_dot",
+  src="""
+DPGEN_KERNEL void r4_nm_params_adj_dot(DPGEN_IN const double* u, DPGEN_IN const double* u_adj,
+                                       DPGEN_IN const double* u_dot, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = u[i] * u_adj[i] + u_dot[i] * u_dot[i];
+}""", params=[("in","u",N),("in","u_adj",N),("in","u_dot",N),("out","out",N),("val","n")])
+
+K(name="nm_out_adj_param", why="output out and an input named out_adj",
+  src="""
+DPGEN_KERNEL void r4_nm_out_adj_param(DPGEN_IN const double* out_adj, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = out_adj[i] * out_adj[i];
+}""", params=[("in","out_adj",N),("out","out",N),("val","n")])
+
+K(name="nm_lambda_acc_names", why="lambda named edge/interior, local named acc/hit",
+  src="""
+DPGEN_KERNEL void r4_nm_lambda_acc_names(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto edge = [&](int i) { return u[i] * u[i]; };
+  auto interior = [&](int i) { return edge(i) + u[i]; };
+  double acc = 0.0;
+  for (int i = 0; i < n; ++i) acc += interior(i);
+  for (int i = 0; i < n; ++i) {
+    const double hit = acc * u[i];
+    out[i] = hit + edge(i);
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_array_dpgen", why="std::array named dpgen_sum_s_v and a local c_i", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_nm_array_dpgen(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const std::array<double, 2> dpgen_sum_s_v{0.5, 1.5};
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += dpgen_sum_s_v[i % 2] * u[i];
+  for (int c_i = 0; c_i < n; ++c_i) out[c_i] = s * u[c_i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_counter_names", why="loop counters named lo_i, hi_i, in_lo_i, parallel_ok",
+  src="""
+DPGEN_KERNEL void r4_nm_counter_names(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const int lo_i = 1, hi_i = n - 1;
+  const bool parallel_ok = true;
+  for (int in_lo_i = lo_i; in_lo_i < hi_i; ++in_lo_i)
+    out[in_lo_i] = parallel_ok ? u[in_lo_i - 1] * u[in_lo_i + 1] : 0.0;
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_recompute_name", why="a helper named like the generated recompute/nest functions",
+  src="""
+static inline double r4_nm_recompute_name_recompute(double x) { return x * x; }
+static inline double r4_nm_recompute_name_nest1_adjoint(double x) { return 2.0 * x; }
+DPGEN_KERNEL void r4_nm_recompute_name(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += r4_nm_recompute_name_recompute(u[i]);
+  for (int i = 0; i < n; ++i) out[i] = s * r4_nm_recompute_name_nest1_adjoint(u[i]);
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_local_out_v", why="a local named out_v / dpgen_sum_s_b while the output is out",
+  src="""
+DPGEN_KERNEL void r4_nm_local_out_v(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double out_v = 0.0, dpgen_sum_s_b = 1.0;
+  for (int i = 0; i < n; ++i) { out_v += u[i]; dpgen_sum_s_b += u[i] * u[i]; }
+  out[0] = out_v * dpgen_sum_s_b;
+}""", params=[("in","u",N),("out","out","1"),("val","n")])
