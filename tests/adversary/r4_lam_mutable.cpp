@@ -3,6 +3,6 @@
 
 DPGEN_KERNEL void r4_lam_mutable(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
   double c = 1.0;
-  auto f = [c](int i) mutable { c = c * 2.0; return c * u[i]; };
+  auto f = [c, u](int i) mutable { c = c * 2.0; return c * u[i]; };
   for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
 }

@@ -794,7 +794,7 @@ K(name="lam_mutable", why="mutable lambda with a counter (should be rejected or 
   src="""
 DPGEN_KERNEL void r4_lam_mutable(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
   double c = 1.0;
-  auto f = [c](int i) mutable { c = c * 2.0; return c * u[i]; };
+  auto f = [c, u](int i) mutable { c = c * 2.0; return c * u[i]; };
   for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
 }""", params=[("in","u",N),("out","out",N),("val","n")])
 
@@ -1394,3 +1394,163 @@ DPGEN_KERNEL void r4_nm_local_out_v(DPGEN_IN const double* u, DPGEN_OUT double* 
   for (int i = 0; i < n; ++i) { out_v += u[i]; dpgen_sum_s_b += u[i] * u[i]; }
   out[0] = out_v * dpgen_sum_s_b;
 }""", params=[("in","u",N),("out","out","1"),("val","n")])
+
+# ---------------------------------------------------------------- minimal repros of the defects found
+K(name="min_lam_array_copy_stale", why="WRONG: [=] copies a local C array, the array changes before the call; the inlined call reads the new value",
+  src="""
+DPGEN_KERNEL void r4_min_lam_array_copy_stale(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[1] = {1.0};
+  auto f = [=](int i) { return w[0] * u[i]; };
+  w[0] = 5.0;
+  for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="min_local_dpgen_prefix_hang", why="CRASH (hang): a local named dpgen_<x>; the renaming loop keeps the reserved prefix forever",
+  src="""
+DPGEN_KERNEL void r4_min_local_dpgen_prefix_hang(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    const double dpgen_x = u[i] * u[i];
+    out[i] = dpgen_x + u[i];
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+# ---------------------------------------------------------------- second wave: around the defects
+K(name="lam_stdarray_copy_stale", why="[=] copies a std::array that changes before the call", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_lam_stdarray_copy_stale(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::array<double, 2> w{1.0, 2.0};
+  auto f = [=](int i) { return w[0] * u[i] + w[1]; };
+  w[0] = 4.0;
+  for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_array_ref_changes", why="[&] captures a local array that changes before the call (must see the new value)",
+  src="""
+DPGEN_KERNEL void r4_lam_array_ref_changes(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[2] = {1.0, 2.0};
+  auto f = [&](int i) { return w[0] * u[i] + w[1]; };
+  w[0] = 4.0;
+  for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_array_copy_in_loop_changes", why="[=] copy of a local array changed inside the loop before each call",
+  src="""
+DPGEN_KERNEL void r4_lam_array_copy_in_loop_changes(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[1] = {1.0};
+  auto f = [=](int i) { return w[0] * u[i]; };
+  for (int i = 0; i < n; ++i) {
+    w[0] = u[i];
+    out[i] = f(i) + w[0];
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="lam_scalar_copy_in_loop_changes", why="[=] copy of a scalar changed inside the loop before each call",
+  src="""
+DPGEN_KERNEL void r4_lam_scalar_copy_in_loop_changes(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double c = 1.0;
+  auto f = [=](int i) { return c * u[i]; };
+  for (int i = 0; i < n; ++i) {
+    c = u[i];
+    out[i] = f(i) + c;
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_scalarised_array_clash", why="local array w[2] next to user locals w_0 and w_0_1",
+  src="""
+DPGEN_KERNEL void r4_nm_scalarised_array_clash(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double w[2] = {1.0, 2.0};
+  const double w_0 = 7.0, w_1 = 11.0;
+  w[0] = 3.0;
+  const double w_0_1 = 13.0;
+  for (int i = 0; i < n; ++i) out[i] = (w[0] + w_0 * w_0_1) * u[i] * u[i] + w[1] * w_1 * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="nm_counter_i_1", why="a local i_1 while the lambda call renames its counter i to i_1",
+  src="""
+DPGEN_KERNEL void r4_nm_counter_i_1(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  auto f = [&](int i) { return u[i] * u[i]; };
+  for (int i = 0; i < n; ++i) {
+    const int i_1 = n - 1 - i;
+    out[i] = f(i) + u[i_1];
+  }
+}""", params=[("in","u",N),("out","out",N),("val","n")])
+
+K(name="acc_same_name_two_blocks", why="two accumulators named s in separate blocks, both read after their loops",
+  src="""
+DPGEN_KERNEL void r4_acc_same_name_two_blocks(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  {
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += a[i] * a[i];
+    out[0] = s;
+  }
+  {
+    double s = 1;
+    for (int i = 0; i < n; ++i) s += a[i];
+    out[1] = s * s;
+  }
+}""", params=[("in","a",N),("out","out","2"),("val","n")])
+
+K(name="acc_two_kernels_one_file", why="two kernels with an accumulator s in one file", kernel="r4_acc_two_kernels_one_file",
+  src="""
+DPGEN_KERNEL void r4_acc_two_kernels_one_file_b(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 2.0;
+  for (int i = 0; i < n; ++i) s += a[i];
+  out[0] = s;
+}
+DPGEN_KERNEL void r4_acc_two_kernels_one_file(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_in_elseif_arms_shared", why="one accumulator s accumulated in 3 else-if arms then read", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_acc_in_elseif_arms_shared(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  double s = 1.0;
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) s += a[i];
+  } else if (flag == 1) {
+    for (int i = 0; i < n; ++i) s -= a[i] * a[i];
+  } else {
+    for (int i = 1; i < n; ++i) s += a[i] * a[i - 1];
+  }
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="acc_cond_after_loop", why="accumulator, then an if on data reading it, then accumulated again",
+  src="""
+DPGEN_KERNEL void r4_acc_cond_after_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i];
+  if (s > 0) s = s * s;
+  out[0] = s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_used_in_loop_bound_expr", why="accumulator read in a later loop together with a triangular bound",
+  src="""
+DPGEN_KERNEL void r4_acc_used_in_loop_bound_expr(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j) e[i * n + j] = s * a[j] - a[i];
+}""", params=[("in","a",N),("out","e","n*n"),("val","n")])
+
+K(name="acc_inner_tri_outer_sum", why="triangular inner accumulator feeding an outer accumulator",
+  src="""
+DPGEN_KERNEL void r4_acc_inner_tri_outer_sum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double tot = 0;
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = i; j < n; ++j) s += a[j];
+    tot += s * s;
+  }
+  out[0] = tot;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_float_pure", why="float kernel: two float accumulators with -=", T="float",
+  src="""
+DPGEN_KERNEL void r4_acc_float_pure(DPGEN_IN const float* a, DPGEN_IN const float* b, DPGEN_OUT float* out, int n) {
+  float s = 0.0f, t = 1.0f;
+  for (int i = 0; i < n; ++i) { s += a[i] * b[i]; t -= b[i] * b[i]; }
+  out[0] = s * t;
+}""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
