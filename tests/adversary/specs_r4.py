@@ -1554,3 +1554,21 @@ DPGEN_KERNEL void r4_acc_float_pure(DPGEN_IN const float* a, DPGEN_IN const floa
   for (int i = 0; i < n; ++i) { s += a[i] * b[i]; t -= b[i] * b[i]; }
   out[0] = s * t;
 }""", params=[("in","a",N),("in","b",N),("out","out","1"),("val","n")])
+
+K(name="min_le_min_bound", why="REJECTED, should be accepted: inclusive upper bound j <= std::min(n - 1, i + 1) (the exclusive j < std::min(n, i + 2) is accepted)", includes=CM,
+  src="""
+DPGEN_KERNEL void r4_min_le_min_bound(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = i; j <= std::min(n - 1, i + 1); ++j) s += a[j] * a[j];
+    out[i] = s;
+  }
+}""", params=[("in","a",N),("out","out",N),("val","n")])
+
+K(name="min_lam_mutable_state", why="WRONG: a mutable lambda's by-copy capture persists across calls (c = 2, 4, 8, ...); the inlined call restarts from the kernel's c every iteration",
+  src="""
+DPGEN_KERNEL void r4_min_lam_mutable_state(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double c = 1.0;
+  auto f = [c, u](int i) mutable { c = c * 2.0; return c * u[i]; };
+  for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
+}""", params=[("in","u",N),("out","out",N),("val","n")])
