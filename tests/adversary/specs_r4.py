@@ -1572,3 +1572,171 @@ DPGEN_KERNEL void r4_min_lam_mutable_state(DPGEN_IN const double* u, DPGEN_OUT d
   auto f = [c, u](int i) mutable { c = c * 2.0; return c * u[i]; };
   for (int i = 0; i < n; ++i) out[i] = f(i) * u[i];
 }""", params=[("in","u",N),("out","out",N),("val","n")])
+
+# ---------------------------------------------------------------- third wave
+K(name="acc_running_across_rows", why="accumulator declared outside the outer loop, not reset per row (a running sum across rows)", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_acc_running_across_rows(DPGEN_IN const double* a, DPGEN_OUT double* r, int n, int m) {
+  double s = 0;
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < n; ++i) s += a[j * n + i] * a[j * n + i];
+    r[j] = s;
+  }
+}""", params=[("in","a","n*m"),("out","r","m"),("val","n"),("val","m")])
+
+K(name="acc_continue", why="accumulating loop with continue",
+  src="""
+DPGEN_KERNEL void r4_acc_continue(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) {
+    if (i % 3 == 1) continue;
+    s += a[i] * a[i];
+  }
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_read_before_and_after", why="accumulator init read by an output before the loop, read again after", loop=L1p,
+  src="""
+DPGEN_KERNEL void r4_acc_read_before_and_after(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = a[0] * a[0];
+  out[0] = s;
+  for (int i = 1; i < n; ++i) s += a[i];
+  out[1] = s * s;
+}""", params=[("in","a",N),("out","out","2"),("val","n")])
+
+K(name="acc_mixed_forms", why="s = s + x in one arm, s += y in the other",
+  src="""
+DPGEN_KERNEL void r4_acc_mixed_forms(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) {
+    if (i % 2 == 0) s = s + a[i] * a[i];
+    else s += 2.0 * a[i];
+  }
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="acc_parity_start", why="accumulator over a moving parity loop inside a triangle", loop=L1,
+  src="""
+DPGEN_KERNEL void r4_acc_parity_start(DPGEN_IN const double* a, DPGEN_OUT double* r, int n) {
+  for (int j = 0; j < n; ++j) {
+    double s = 0;
+    for (int i = j % 2; i <= j; i += 2) s += a[i] * a[j - i];
+    r[j] = s;
+  }
+}""", params=[("in","a",N),("out","r",N),("val","n")])
+
+K(name="lam_copy_acc_before_loop", why="[=] lambda made before the accumulation loop copies s = 0, called after (stale)",
+  src="""
+DPGEN_KERNEL void r4_lam_copy_acc_before_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  auto f = [=](double x) { return s * x; };
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = f(s);
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="lam_ref_acc_before_loop", why="[&] lambda made before the accumulation loop, called after (sees the sum)",
+  src="""
+DPGEN_KERNEL void r4_lam_ref_acc_before_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  auto f = [&](double x) { return s * x; };
+  for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = f(a[0 * n]) + f(2.0);
+}""", params=[("in","a","n+1"),("out","out","1"),("val","n")])
+
+K(name="lam_ref_acc_in_loop", why="[&] lambda reading the accumulator inside its loop (a recurrence)",
+  src="""
+DPGEN_KERNEL void r4_lam_ref_acc_in_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  auto g = [&]() { return 0.5 * s; };
+  for (int i = 0; i < n; ++i) s += g() * a[i];
+  out[0] = s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="br_same_cond_twice", why="if (flag == 0) nest; if (flag == 0) nest: not exclusive, both write u", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_same_cond_twice(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  if (flag == 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * 3.0;
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_local_changes_between", why="int d = dir; if (d == 1) nest; d = 2; if (d == 2) nest: both run", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_local_changes_between(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  int d = flag;
+  if (d == 1)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  d = 2;
+  if (d == 2)
+    for (int i = 0; i < n; ++i) u[i] = a[i] + u[i] * 0.0 + 1.0;
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_local_changes_between_w", why="int d = dir; if (d == 1) nest; d = 2; if (d == 2) nest (overwrite, no readback)", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_local_changes_between_w(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  int d = flag;
+  if (d == 1)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  d = 2;
+  if (d == 2)
+    for (int i = 0; i < n; ++i) u[i] = 3.0 * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_param_assigned_in_arm", why="if (flag == 0) { nest; flag = 1; } if (flag == 1) nest: both run for flag 0", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_param_assigned_in_arm(DPGEN_IN const double* a, DPGEN_OUT double* u, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+    flag = 1;
+  }
+  if (flag == 1)
+    for (int i = 0; i < n; ++i) u[i] = 3.0 * a[i];
+}""", params=[("in","a",N),("out","u",N),("val","n"),("val","flag")])
+
+K(name="br_param_assigned_before", why="flag = 1 - flag before two exclusive ifs", loop="for (int flag : {0, 1}) for (int n : {0, 1, 2, 3, 7})", pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_param_assigned_before(DPGEN_IN const double* a, DPGEN_OUT double* u, DPGEN_OUT double* v, int n, int flag) {
+  flag = 1 - flag;
+  if (flag == 0)
+    for (int i = 0; i < n; ++i) u[i] = a[i] * a[i];
+  else
+    for (int i = 0; i < n; ++i) u[i] = 2.0 * a[i];
+  for (int i = 0; i < n; ++i) v[i] = flag * a[i] * a[i];
+}""", params=[("in","a",N),("out","u",N),("out","v",N),("val","n"),("val","flag")])
+
+K(name="par_negative_mod_start", why="start 1 + (j - 1) % 2: C++ % is -1 at j = 0, so the start is 0, 1, 2, 1, 2, ...", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_negative_mod_start(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int m) {
+  for (int j = 0; j < m; ++j)
+    for (int i = 1 + (j - 1) % 2; i < n; i += 2)
+      e[j * n + i] = a[j * n + i] * a[j * n + i] + 1.0;
+}""", params=[("in","a","n*m"),("out","e","n*m"),("val","n"),("val","m")])
+
+K(name="par_negative_mod_start_acc", why="accumulator over i = 1 + (j - 2) % 3, step 3 (start -1 +1 = 0 at j = 1)", loop=L2,
+  src="""
+DPGEN_KERNEL void r4_par_negative_mod_start_acc(DPGEN_IN const double* a, DPGEN_OUT double* r, int n, int m) {
+  for (int j = 0; j < m; ++j) {
+    double s = 0;
+    for (int i = 2 + (j - 2) % 3; i < n; i += 3) s += a[j * n + i] * a[j * n + i];
+    r[j] = s;
+  }
+}""", params=[("in","a","n*m"),("out","r","m"),("val","n"),("val","m")])
+
+K(name="tri_half_bound", why="bound j <= i / 2",
+  src="""
+DPGEN_KERNEL void r4_tri_half_bound(DPGEN_IN const double* a, DPGEN_OUT double* r, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = 0; j <= i / 2; ++j) s += a[j] * a[i - j];
+    r[i] = s;
+  }
+}""", params=[("in","a",N),("out","r",N),("val","n")])
+
+K(name="tri_n_minus_2i", why="bound j < n - 2 * i (negative trip counts)",
+  src="""
+DPGEN_KERNEL void r4_tri_n_minus_2i(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n - 2 * i; ++j)
+      e[i * n + j] = a[j + i] * a[j + 2 * i];
+}""", params=[("in","a",N),("out","e","n*n"),("val","n")])
