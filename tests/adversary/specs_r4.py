@@ -1740,3 +1740,101 @@ DPGEN_KERNEL void r4_tri_n_minus_2i(DPGEN_IN const double* a, DPGEN_OUT double* 
     for (int j = 0; j < n - 2 * i; ++j)
       e[i * n + j] = a[j + i] * a[j + 2 * i];
 }""", params=[("in","a",N),("out","e","n*n"),("val","n")])
+
+# ---------------------------------------------------------------- fourth wave
+K(name="acc_one_arm_only", why="accumulator updated only in one if arm on a parameter, read after the if", loop=LF, pre=PF,
+  src="""
+DPGEN_KERNEL void r4_acc_one_arm_only(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  double s = 1.0;
+  if (flag == 0)
+    for (int i = 0; i < n; ++i) s += a[i] * a[i];
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="acc_per_row_read_later_nest", why="per-row accumulator in a triangle, stored, and the stored value read in a later nest", 
+  src="""
+DPGEN_KERNEL void r4_acc_per_row_read_later_nest(DPGEN_IN const double* a, DPGEN_OUT double* r,
+                                                 DPGEN_OUT double* q, int n) {
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int j = 0; j <= i; ++j) s += a[j];
+    r[i] = s * s;
+  }
+  for (int i = 0; i < n; ++i) q[i] = r[i] * a[i];
+}""", params=[("in","a",N),("out","r",N),("out","q",N),("val","n")])
+
+K(name="acc_rowptr", why="accumulator over a constant row of a double** input", loop=LR,
+  src="""
+DPGEN_KERNEL void r4_acc_rowptr(DPGEN_IN double** a, DPGEN_OUT double* out, int n, int m) {
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += a[0][i] * a[m - 1][i];
+  out[0] = s * s;
+}""", params=[("inr","a","m","n"),("out","out","1"),("val","n"),("val","m")])
+
+K(name="acc_macro_locals", why="accumulator over an index macro with kernel-level locals", loop=L2p,
+  includes="#define IDX(i, j) ((i) + (j) * ld)\n",
+  src="""
+DPGEN_KERNEL void r4_acc_macro_locals(DPGEN_IN const double* a, DPGEN_OUT double* r, int n, int m) {
+  const int ld = n;
+  for (int j = 0; j < m; ++j) {
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += a[IDX(i, j)] * a[IDX(i, j)];
+    r[j] = s;
+  }
+}""", params=[("in","a","n*m"),("out","r","m"),("val","n"),("val","m")])
+
+K(name="acc_lambda_term", why="accumulating a lambda's value",
+  src="""
+DPGEN_KERNEL void r4_acc_lambda_term(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  auto e = [&](int i) { return a[i] * a[i + 1]; };
+  double s = 0;
+  for (int i = 0; i + 1 < n; ++i) s += e(i);
+  out[0] = s * s;
+}""", params=[("in","a",N),("out","out","1"),("val","n")])
+
+K(name="arr_parity_table", why="std::array table read at a moving-parity counter", includes=AR, loop=L2,
+  src="""
+DPGEN_KERNEL void r4_arr_parity_table(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int m) {
+  const std::array<double, 2> w{0.5, 2.0};
+  for (int j = 0; j < m; ++j)
+    for (int i = j % 2; i < n; i += 2)
+      e[j * n + i] = w[j % 2] * a[j * n + i] * a[j * n + i];
+}""", params=[("in","a","n*m"),("out","e","n*m"),("val","n"),("val","m")])
+
+K(name="arr_unroll_strided_store", why="std::array filled by an unrolled step-2 loop, read after", includes=AR,
+  src="""
+DPGEN_KERNEL void r4_arr_unroll_strided_store(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 4> b{};
+    for (int m = 0; m < 4; m += 2) b[m] = u[i + m] * u[i + m];
+    out[i] = b[0] + b[1] + b[2] * b[0] + b[3];
+  }
+}""", params=[("in","u","n+4"),("out","out",N),("val","n")])
+
+K(name="br_elseif_accum_rows", why="exclusive arms: one a triangular nest, the other a parity nest, same output", loop="for (int flag : {0, 1, 2}) for (int n : {0, 1, 2, 3, 6})", pre=PF,
+  src="""
+DPGEN_KERNEL void r4_br_elseif_accum_rows(DPGEN_IN const double* a, DPGEN_OUT double* e, int n, int flag) {
+  if (flag == 0) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j <= i; ++j) e[i * n + j] = a[i] * a[j];
+  } else if (flag == 1) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i % 2; j < n; j += 2) e[i * n + j] = a[j] * a[j] * a[i];
+  }
+}""", params=[("in","a",N),("out","e","n*n"),("val","n"),("val","flag")])
+
+K(name="rp_ghost_rows_triangle", why="double** with a triangular interior and constant ghost rows", loop="for (auto [n, m] : {std::pair{1, 2}, {3, 3}, {4, 5}})",
+  src="""
+DPGEN_KERNEL void r4_rp_ghost_rows_triangle(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 0; i < n; ++i) b[0][i] = a[m - 1][i] * a[0][i];
+  for (int j = 1; j < m; ++j)
+    for (int i = 0; i < n && i < j; ++i) b[j][i] = a[j][i] * a[j - 1][i];
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
+
+K(name="rp_ghost_rows_triangle_min", why="double** with a std::min triangular interior and constant row 0", includes=CM, loop="for (auto [n, m] : {std::pair{1, 2}, {3, 3}, {4, 5}})",
+  src="""
+DPGEN_KERNEL void r4_rp_ghost_rows_triangle_min(DPGEN_IN double** a, DPGEN_OUT double** b, int n, int m) {
+  for (int i = 0; i < n; ++i) b[0][i] = a[m - 1][i] * a[0][i];
+  for (int j = 1; j < m; ++j)
+    for (int i = 0; i < std::min(n, j); ++i) b[j][i] = a[j][i] * a[j - 1][i];
+}""", params=[("inr","a","m","n"),("outr","b","m","n"),("val","n"),("val","m")])
