@@ -154,6 +154,18 @@ private:
           continue;
         if (x.positive != y.positive && same(x.cond, y.cond))
           return true;
+        // `flag != 0` against `flag == 0`: one holds where the other fails
+        auto equality = [](const PathCond& pc) -> std::optional<bool> {
+          if (pc.cond->op == Op::Eq)
+            return pc.positive;
+          if (pc.cond->op == Op::Ne)
+            return !pc.positive;
+          return std::nullopt;
+        };
+        auto ex = equality(x), ey = equality(y);
+        if (ex && ey && *ex != *ey && same(x.cond->ops[0], y.cond->ops[0]) &&
+            same(x.cond->ops[1], y.cond->ops[1]))
+          return true;
         if (x.positive && y.positive && x.cond->op == Op::Eq && y.cond->op == Op::Eq)
           for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) {
@@ -242,7 +254,8 @@ private:
                 exclusive(x.path, y.path) ||
                 *to_poly(x.index) == *to_poly(y.index) ||
                 residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
-                rows_apart(x, nest, y, nest))
+                rows_apart(x, nest, y, nest) ||
+                (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)))
               continue;
             fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                     "line {} of the same loop: dpgen cannot prove two "
@@ -283,7 +296,8 @@ private:
                               only_counters(*to_poly(x.index), nx, shared)))
             continue;
         }
-        if (residues_differ(*to_poly(x.index), *to_poly(y.index)) || rows_apart(x, nx, y, ny))
+        if (residues_differ(*to_poly(x.index), *to_poly(y.index)) || rows_apart(x, nx, y, ny) ||
+            (shared == 1 && apart_in_rows(x, nx, y, ny, shared)))
           continue;
         Facts facts;
         for (const Nest* n : {&nx, &ny})
@@ -448,6 +462,66 @@ private:
     Poly one = Poly::constant(1);
     return prove_nonneg(ry->first - rx->second - one, facts) ||
            prove_nonneg(rx->first - ry->second - one, facts);
+  }
+
+  // Two stores inside one shared loop over j whose indices are c * j + r
+  // with the same c (a row of length c, `f[j * nx + 0]`, `f[j * nx + i]` for
+  // i in 1..nx-2, `f[j * nx + nx - 1]`): they never write the same element
+  // when both remainders stay in [0, c - 1] (rows apart for different j) and
+  // their ranges are apart (in one row). What the sizes must satisfy for
+  // that and cannot be proved becomes a run-time SizeCheck (nx >= 2 for
+  // the two end columns); false where the form does not fit or a condition
+  // fails for every size.
+  bool apart_in_rows(const Store& x, const Nest& nx, const Store& y, const Nest& ny,
+                     size_t shared) {
+    // (rows reached through pointers are rows_apart's: their row symbol is
+    // no size a run-time check could test)
+    if (shared != 1 || nx.loops.empty() || k_.levels_of(x.array) > 0)
+      return false;
+    Sym j = Sym::counter(nx.loops[0].var);
+    Poly px = *to_poly(x.index), py = *to_poly(y.index);
+    Poly c = px.coefficient(j);
+    if (c == Poly() || !(c == py.coefficient(j)) || c.mentions_any_counter())
+      return false;
+    auto rx = index_range(px.without(j), x.path, nx), ry = index_range(py.without(j), y.path, ny);
+    if (!rx || !ry)
+      return false;
+    Facts facts;
+    for (const Nest* n : {&nx, &ny})
+      for (const auto& l : n->loops)
+        add_nonempty(l, facts);
+    for (const Store* st : {&x, &y})
+      for (const auto& pc : st->path)
+        add_facts(pc, facts);
+    const Poly one = Poly::constant(1);
+    // in the row: r >= 0 and c - 1 - r >= 0, for both
+    std::vector<Poly> all = {rx->first, c - one - rx->second, ry->first, c - one - ry->second};
+    // apart in a row: one of these >= 0
+    Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
+    std::vector<std::string> must;
+    for (const Poly& g : all)
+      if (!prove_nonneg(g, facts)) {
+        if (prove_nonneg(-g - one, facts))
+          return false; // never holds
+        must.push_back(fmt::format("({}) >= 0", g.code()));
+      }
+    if (!prove_nonneg(g1, facts) && !prove_nonneg(g2, facts)) {
+      if (prove_nonneg(-g1 - one, facts) && prove_nonneg(-g2 - one, facts))
+        return false;
+      must.push_back(fmt::format("(({}) >= 0 || ({}) >= 0)", g1.code(), g2.code()));
+    }
+    if (!must.empty()) {
+      SizeCheck chk;
+      chk.premises = premises(facts_premises(nx, x, ny, y));
+      chk.must_hold = fmt::format("{}", fmt::join(must, " && "));
+      chk.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
+                             "elements {} and {} of rows of length {}, which must not overlap",
+                             y.array, x.pos.line, y.pos.line, print_index(x), print_index(y),
+                             c.str());
+      chk.pos = y.pos;
+      k_.size_checks.push_back(chk);
+    }
+    return true;
   }
 
   static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {

@@ -62,6 +62,8 @@ struct Binding {
   // had when the lambda was made (a call checks it has not changed since).
   const clang::CXXRecordDecl* closure = nullptr;
   std::vector<std::pair<const clang::VarDecl*, std::optional<ExprP>>> captured;
+  std::vector<std::pair<const clang::VarDecl*, std::vector<std::optional<ExprP>>>>
+      captured_arrays; // local arrays captured by copy: their elements then
   std::optional<ExprP> value;              // Value: current SSA value (none: uninitialised)
   std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
   Type elem = Type::Double; // LocalArray: element type
@@ -561,7 +563,7 @@ private:
         auto l = std::make_shared<LocalVar>();
         l->name = p.name + "_signed";
         for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
-          l->name = fmt::format("{}_signed_{}", p.name, n);
+          l->name = fmt::format("{}_signed_{}", unprefixed(p.name), n);
         l->type_name = "std::ptrdiff_t";
         l->def = param(p.name, Type::Int);
         l->id = next_local_id_++;
@@ -787,7 +789,7 @@ private:
     auto l = std::make_shared<LocalVar>();
     std::string name = base;
     for (int n = 1; local_names_.count(name) || loop_names_.count(name) || is_reserved(name); ++n)
-      name = fmt::format("{}_{}", base, n);
+      name = fmt::format("{}_{}", unprefixed(base), n);
     local_names_.insert(name);
     l->name = name;
     l->def = def;
@@ -818,6 +820,13 @@ private:
     if (it != why_unset_.end())
       return it->second;
     return fmt::format("'{}' {}", v->getNameAsString(), plain);
+  }
+
+  // The stem of a renamed name: without the reserved prefix dpgen_ (a user's
+  // local `dpgen_x` becomes `user_x_1`; appending alone never leaves the
+  // prefix, and the renaming would not end).
+  static std::string unprefixed(const std::string& base) {
+    return base.rfind("dpgen_", 0) == 0 ? "user_" + base.substr(6) : base;
   }
 
   // Names a local or a loop counter must not keep (it is renamed <name>_1):
@@ -970,7 +979,11 @@ private:
     b.kind = Binding::LocalArray;
     b.elem = *t;
     b.elems.assign(n, std::nullopt);
-    if (const clang::Expr* init = v->getInit()) {
+    const clang::Expr* init = v->getInit();
+    if (const auto* ctor = dyn_cast_or_null<CXXConstructExpr>(init);
+        ctor && ctor->getNumArgs() == 0 && !ctor->requiresZeroInitialization())
+      init = nullptr; // `std::array<double, 3> d;`: no values yet
+    if (init) {
       const auto* list = dyn_cast<InitListExpr>(init->IgnoreImplicit());
       // std::array<T, N> a = {...}: the list of its one member, the C array
       bool all_zero = false; // `std::array<double, 3> d{};`
@@ -1018,6 +1031,8 @@ private:
       auto it = cv ? env_.find(cv) : env_.end();
       if (it != env_.end() && it->second.kind == Binding::Value)
         b.captured.push_back({cv, it->second.value});
+      if (it != env_.end() && it->second.kind == Binding::LocalArray)
+        b.captured_arrays.push_back({cv, it->second.elems});
     }
     env_[v] = b;
   }
@@ -1225,11 +1240,18 @@ private:
         continue; // (a strided loop's start fixes its parity: not moved)
       std::vector<ExprP> terms;
       std::function<void(const ExprP&)> flatten = [&](const ExprP& x) {
-        if (x->op == Op::Call && x->name == (upper ? "min" : "max"))
+        const char* fn = upper ? "min" : "max";
+        if (x->op == Op::Call && x->name == fn) {
           for (const auto& a : x->ops)
             flatten(a);
-        else
+        } else if ((x->op == Op::Add || x->op == Op::Sub) && x->ops[1]->op == Op::IntConst &&
+                   x->ops[0]->op == Op::Call && x->ops[0]->name == fn) {
+          // `j <= std::min(n - 1, i + 1)`: min(a, b) + 1 is min(a + 1, b + 1)
+          for (const auto& a : x->ops[0]->ops)
+            flatten(binary(x->op, a, x->ops[1]));
+        } else {
           terms.push_back(x);
+        }
       };
       flatten(*b);
       std::vector<ExprP> hulled;
@@ -1264,7 +1286,8 @@ private:
         auto l = std::make_shared<LocalVar>();
         l->name = var->getNameAsString() + (b == &lo ? "_lo" : "_hi");
         for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
-          l->name = fmt::format("{}_{}_{}", var->getNameAsString(), b == &lo ? "lo" : "hi", n);
+          l->name = fmt::format("{}_{}_{}", unprefixed(var->getNameAsString()),
+                                b == &lo ? "lo" : "hi", n);
         local_names_.insert(l->name);
         l->type_name = "std::ptrdiff_t";
         l->def = *b;
@@ -1337,7 +1360,7 @@ private:
     std::string base = var->getNameAsString() + (step > 1 ? "_step" : "");
     loop->var = base;
     for (int n = 1; is_reserved(loop->var) || local_names_.count(loop->var); ++n)
-      loop->var = fmt::format("{}_{}", base, n);
+      loop->var = fmt::format("{}_{}", unprefixed(base), n);
     loop_names_.insert(loop->var);
     loop->type_name = spelled(var->getType());
     loop->lo = lo;
@@ -1349,7 +1372,7 @@ private:
       auto trips = std::make_shared<LocalVar>();
       trips->name = loop->var + "_count";
       for (int n = 1; local_names_.count(trips->name) || is_reserved(trips->name); ++n)
-        trips->name = fmt::format("{}_count_{}", loop->var, n);
+        trips->name = fmt::format("{}_count_{}", unprefixed(loop->var), n);
       local_names_.insert(trips->name);
       trips->type_name = "std::ptrdiff_t";
       trips->def = binary(Op::Div, binary(Op::Add, binary(Op::Sub, hi, lo), int_const(step - 1)),
@@ -2301,6 +2324,18 @@ private:
       if (it == env_.end() || it->second.kind != Binding::Lambda)
         fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
                                "(auto f = [&](...) {...}; f(...))");
+      if (!m->isConst())
+        fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
+                                           "changes from one call to the next, which inlining "
+                                           "does not; make it a plain lambda",
+                                           lv->getNameAsString()));
+      for (const auto& [cv, was] : it->second.captured_arrays)
+        if (env_[cv].elems != was)
+          fail(c->getBeginLoc(), fmt::format("lambda '{}' captured local array '{}' by copy, "
+                                             "and '{}' changed before this call; capture it by "
+                                             "reference, or make the lambda after the change",
+                                             lv->getNameAsString(), cv->getNameAsString(),
+                                             cv->getNameAsString()));
       for (const auto& [cv, was] : it->second.captured)
         if (env_[cv].value != was)
           fail(c->getBeginLoc(), fmt::format("lambda '{}' captured '{}' by copy, and '{}' "
