@@ -299,13 +299,7 @@ private:
         if (residues_differ(*to_poly(x.index), *to_poly(y.index)) || rows_apart(x, nx, y, ny) ||
             (shared == 1 && apart_in_rows(x, nx, y, ny, shared)))
           continue;
-        Facts facts;
-        for (const Nest* n : {&nx, &ny})
-          for (const auto& l : n->loops)
-            add_nonempty(l, facts);
-        for (const Store* st : {&x, &y})
-          for (const auto& pc : st->path)
-            add_facts(pc, facts);
+        Facts facts = pair_facts(nx, x, ny, y);
         auto rx = index_range(x, nx), ry = index_range(y, ny);
         if (rx && ry) {
           // apart: max x < min y, or max y < min x
@@ -439,6 +433,18 @@ private:
     return s.array + subscript(s.index, k_.levels_of(s.array));
   }
 
+  // What holds where two stores run: their loops run, their paths hold.
+  static Facts pair_facts(const Nest& nx, const Store& x, const Nest& ny, const Store& y) {
+    Facts facts;
+    for (const Nest* n : {&nx, &ny})
+      for (const auto& l : n->loops)
+        add_nonempty(l, facts);
+    for (const Store* st : {&x, &y})
+      for (const auto& pc : st->path)
+        add_facts(pc, facts);
+    return facts;
+  }
+
   // Row-pointer arrays (ir.hpp: row_symbol): each row is an array of its own,
   // so two stores whose rows (planes, for `double***`) lie apart over their
   // loop boxes never write the same element, whatever their columns
@@ -452,13 +458,7 @@ private:
     auto rx = index_range(row(x), x.path, nx), ry = index_range(row(y), y.path, ny);
     if (!rx || !ry)
       return false;
-    Facts facts;
-    for (const Nest* n : {&nx, &ny})
-      for (const auto& l : n->loops)
-        add_nonempty(l, facts);
-    for (const Store* st : {&x, &y})
-      for (const auto& pc : st->path)
-        add_facts(pc, facts);
+    Facts facts = pair_facts(nx, x, ny, y);
     Poly one = Poly::constant(1);
     return prove_nonneg(ry->first - rx->second - one, facts) ||
            prove_nonneg(rx->first - ry->second - one, facts);
@@ -486,13 +486,7 @@ private:
     auto rx = index_range(px.without(j), x.path, nx), ry = index_range(py.without(j), y.path, ny);
     if (!rx || !ry)
       return false;
-    Facts facts;
-    for (const Nest* n : {&nx, &ny})
-      for (const auto& l : n->loops)
-        add_nonempty(l, facts);
-    for (const Store* st : {&x, &y})
-      for (const auto& pc : st->path)
-        add_facts(pc, facts);
+    Facts facts = pair_facts(nx, x, ny, y);
     const Poly one = Poly::constant(1);
     // in the row: r >= 0 and c - 1 - r >= 0, for both
     std::vector<Poly> all = {rx->first, c - one - rx->second, ry->first, c - one - ry->second};
