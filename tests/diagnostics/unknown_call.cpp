@@ -11,12 +11,19 @@ double helper(double x);
 
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 0; i < n; ++i)
-    out[i] = std::erf(a[i]);
-  // CHECK: unknown_call.cpp:[[@LINE-1]]:14: error: call to 'erf', which dpgen cannot differentiate; the kernel subset calls only std::min
+    out[i] = std::tgamma(a[i]);
+  // CHECK: unknown_call.cpp:[[@LINE-1]]:14: error: call to 'tgamma', which dpgen cannot differentiate; the kernel subset calls only std::min/fmin, std::max/fmax, std::abs/fabs, std::sqrt, std::exp, std::log, std::sin, std::cos, std::tanh, std::pow, std::floor, std::ceil, std::atan2, std::hypot, std::erf, std::cbrt, std::copysign, std::fma, std::log1p, std::expm1{{$}}
 }
 
 DPGEN_KERNEL void k2(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 0; i < n; ++i)
     out[i] = helper(a[i]);
   // CHECK: unknown_call.cpp:[[@LINE-1]]:14: error: call to 'helper', whose body dpgen cannot see: helper functions are inlined, so define 'helper' in the kernel's file or a header it includes
+}
+
+// std::hypot has a three-argument overload (C++17); the table's row has two.
+DPGEN_KERNEL void k3(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    out[i] = std::hypot(a[i], 1.0, 2.0);
+  // CHECK: unknown_call.cpp:[[@LINE-1]]:14: error: 'hypot' takes 2 argument(s) in the kernel subset
 }

@@ -9,12 +9,16 @@
 #include "lib/emit_file.hpp"
 #include "lib/find.hpp"
 #include "lib/loop_plan.hpp"
+#include "lib/ops.hpp"
 #include "lib/print.hpp"
 #include "lib/schedule.hpp"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -328,4 +332,136 @@ TEST_CASE("affine: a counter and a size are different symbols; counters order fi
   CHECK((n * Poly::symbol("c_j") + i).code() == "c_j * n + i");
   CHECK((n * Poly::counter("c_j")).code() == "static_cast<std::ptrdiff_t>(c_j) * n");
   CHECK(Poly::term(3, {Sym::size("n"), Sym::counter("i")}) == Poly::constant(3) * i * n);
+}
+
+// The operation table (ops.hpp): its rows follow the enum, and every math
+// function has a rule for each argument (a missing one would silently drop
+// a derivative).
+TEST_CASE("ops table: rows in enum order, a rule per argument, aliases") {
+  const auto& ops = op_table();
+  for (size_t i = 0; i < ops.size(); ++i) {
+    CAPTURE(ops[i].name);
+    CHECK(static_cast<size_t>(ops[i].op) == i);
+    CHECK(&op_info(ops[i].op) == &ops[i]);
+    if (ops[i].comparison) {
+      CHECK(op_info(ops[i].mirror).mirror == ops[i].op);
+      CHECK(op_info(ops[i].negated).negated == ops[i].op);
+    }
+  }
+  CHECK(op_info(Op::Lt).negated == Op::Ge);
+  CHECK(op_info(Op::Le).mirror == Op::Ge);
+  for (const auto& f : math_functions()) {
+    CAPTURE(f.name);
+    bool rule = f.piecewise_constant || f.whole;
+    CHECK((rule || f.partials.size() == f.arity));
+    CHECK(find_math_function(f.name) == &f);
+    CHECK(find_math_function(f.name + "f") == &f); // float variant
+    CHECK(&math_function(f.name) == &f);
+  }
+  CHECK(find_math_function("fmin")->name == "min");
+  CHECK(find_math_function("fabsf")->name == "abs");
+  CHECK(find_math_function("tgamma") == nullptr);
+  CHECK_THROWS_AS(math_function("tgamma"), std::logic_error);
+}
+
+// A tiny interpreter of real-valued IR expressions (reads by array name,
+// every read at the same cell): enough to evaluate a derivative at a point.
+static double evaluate(const ExprP& e, const std::map<std::string, double>& at) {
+  auto arg = [&](size_t i) { return evaluate(e->ops[i], at); };
+  switch (e->op) {
+  case Op::IntConst:
+    return double(e->ival);
+  case Op::RealConst:
+    return e->rval;
+  case Op::Read:
+    return at.at(e->name);
+  case Op::Local:
+    return evaluate(e->local->def, at);
+  case Op::Neg:
+    return -arg(0);
+  case Op::Add:
+    return arg(0) + arg(1);
+  case Op::Sub:
+    return arg(0) - arg(1);
+  case Op::Mul:
+    return arg(0) * arg(1);
+  case Op::Div:
+    return arg(0) / arg(1);
+  case Op::Lt:
+    return arg(0) < arg(1);
+  case Op::Le:
+    return arg(0) <= arg(1);
+  case Op::Gt:
+    return arg(0) > arg(1);
+  case Op::Ge:
+    return arg(0) >= arg(1);
+  case Op::Select:
+    return arg(0) != 0 ? arg(1) : arg(2);
+  case Op::Cast:
+    return arg(0);
+  case Op::Call: {
+    static const std::map<std::string, std::function<double(const std::vector<double>&)>> fns = {
+        {"exp", [](const std::vector<double>& v) { return std::exp(v[0]); }},
+        {"cos", [](const std::vector<double>& v) { return std::cos(v[0]); }},
+        {"sin", [](const std::vector<double>& v) { return std::sin(v[0]); }},
+        {"log", [](const std::vector<double>& v) { return std::log(v[0]); }},
+        {"atan2", [](const std::vector<double>& v) { return std::atan2(v[0], v[1]); }},
+        {"hypot", [](const std::vector<double>& v) { return std::hypot(v[0], v[1]); }},
+        {"erf", [](const std::vector<double>& v) { return std::erf(v[0]); }},
+        {"cbrt", [](const std::vector<double>& v) { return std::cbrt(v[0]); }},
+        {"copysign", [](const std::vector<double>& v) { return std::copysign(v[0], v[1]); }},
+        {"fma", [](const std::vector<double>& v) { return std::fma(v[0], v[1], v[2]); }},
+        {"log1p", [](const std::vector<double>& v) { return std::log1p(v[0]); }},
+        {"expm1", [](const std::vector<double>& v) { return std::expm1(v[0]); }},
+    };
+    std::vector<double> v;
+    for (size_t i = 0; i < e->ops.size(); ++i)
+      v.push_back(arg(i));
+    return fns.at(e->name)(v);
+  }
+  default:
+    throw std::logic_error(std::string("evaluate: no value for ") + op_info(e->op).name);
+  }
+}
+
+// Each added function's rule, by value: the derivative that derive() builds
+// for f(x) (f(x, y)) at a point, against a central difference.
+TEST_CASE("ops table: the added functions' rules against finite differences") {
+  struct Case {
+    const char* code;
+    double (*f)(double, double);
+  };
+  const Case cases[] = {
+      {"std::atan2(a[i], b[i])", [](double x, double y) { return std::atan2(x, y); }},
+      {"std::hypot(a[i], b[i])", [](double x, double y) { return std::hypot(x, y); }},
+      {"std::erf(a[i]) + b[i]", [](double x, double y) { return std::erf(x) + y; }},
+      {"std::cbrt(a[i] * b[i])", [](double x, double y) { return std::cbrt(x * y); }},
+      {"std::copysign(a[i], b[i] - 2.0)", [](double x, double y) { return std::copysign(x, y - 2.0); }},
+      {"std::fma(a[i], b[i], a[i] * b[i])", [](double x, double y) { return std::fma(x, y, x * y); }},
+      {"std::log1p(a[i] * b[i])", [](double x, double y) { return std::log1p(x * y); }},
+      {"std::expm1(a[i] - b[i])", [](double x, double y) { return std::expm1(x - y); }},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(std::string(c.code));
+    std::vector<Kernel> ks;
+    REQUIRE(lower(annotate_header() + "\n#include <cmath>\nDPGEN_KERNEL void k(DPGEN_IN const "
+                  "double* a, DPGEN_IN const double* b, DPGEN_OUT double* out, int n) {\n"
+                  "  for (int i = 0; i < n; ++i) out[i] = " + std::string(c.code) + ";\n}\n",
+                  ks));
+    // Evaluates the partial of the store w.r.t. each read at a = 0.7, b = 1.3
+    // by printing it into a tiny interpreter: the IR's own evaluator.
+    // (an array read twice, as a[i] * b[i] next to fma(a[i], ...), gets the
+    // sum of its reads' partials).
+    const Store& st = ks[0].nests[0].stores[0];
+    const double x = 0.7, y = 1.3, h = 1e-6;
+    std::map<std::string, double> total;
+    for (const auto& site : reads_in(st.value)) {
+      DeriveNames names;
+      ExprP d = derivative(st.value, {site.read}, names);
+      CAPTURE(print(d));
+      total[site.read->name] += evaluate(d, {{"a", x}, {"b", y}});
+    }
+    CHECK(total["a"] == doctest::Approx((c.f(x + h, y) - c.f(x - h, y)) / (2 * h)).epsilon(1e-6));
+    CHECK(total["b"] == doctest::Approx((c.f(x, y + h) - c.f(x, y - h)) / (2 * h)).epsilon(1e-6));
+  }
 }

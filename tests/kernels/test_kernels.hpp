@@ -42,3 +42,7 @@ DPGEN_KERNEL void react_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* ra
                                 double dt);
 DPGEN_KERNEL void relax_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* target, int n,
                                 double w);
+DPGEN_KERNEL void special_math(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                               DPGEN_IN const double* c, DPGEN_OUT double* out, int n);
+DPGEN_KERNEL void special_math_f(DPGEN_IN const float* a, DPGEN_IN const float* b,
+                                 DPGEN_IN const float* c, DPGEN_OUT float* out, int n);

@@ -2,6 +2,8 @@
 // pieces, box domains (see affine.hpp).
 #include "affine.hpp"
 
+#include "ops.hpp"
+
 #include <tuple>
 
 #include <algorithm>
@@ -270,20 +272,7 @@ std::optional<Poly> to_poly(const ExprP& e) {
     }
     return q;
   }
-  case Op::RealConst:
-  case Op::Read:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
+  default:
     return std::nullopt;
   }
   unknown_op("to_poly");
@@ -512,41 +501,6 @@ bool box_disjoint(const Box& b, const Domain& d) {
 
 namespace {
 
-Op flip(Op op) {
-  switch (op) {
-  case Op::Lt:
-    return Op::Gt;
-  case Op::Le:
-    return Op::Ge;
-  case Op::Gt:
-    return Op::Lt;
-  case Op::Ge:
-    return Op::Le;
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
-    return op;
-  }
-  unknown_op("flip");
-}
-
 // v op B  as a domain (v: a counter's name).
 Domain compare_domain(const std::string& v, Op op, const Poly& bound) {
   Box b;
@@ -571,24 +525,7 @@ Domain compare_domain(const std::string& v, Op op, const Poly& bound) {
     if (op == Op::Ne)
       return subtract(universe(), {b});
     break;
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
+  default:
     break;
   }
   return {b};
@@ -641,23 +578,9 @@ std::optional<Domain> condition_domain(const ExprP& c) {
     Poly rest = p.without(*var);
     if (coef.constant_term() == 1) // v + rest op 0  <=>  v op -rest
       return compare_domain(var->name, c->op, -rest);
-    return compare_domain(var->name, flip(c->op), rest); // -v + rest op 0 <=> v op' rest
+    return compare_domain(var->name, op_info(c->op).mirror, rest); // -v + rest op 0 <=> v op' rest
   }
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
+  default:
     return std::nullopt;
   }
   unknown_op("condition_domain");
@@ -725,24 +648,7 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
       }
     return out;
   }
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Read:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Call:
-  case Op::Cast: {
+  default: {
     auto p = to_poly(e);
     if (!p)
       return std::nullopt;

@@ -4,6 +4,7 @@
 // the lowering.
 #include "derive.hpp"
 
+#include "ops.hpp"
 #include "prove.hpp"
 
 #include <map>
@@ -85,17 +86,7 @@ public:
       return is_real(e->ops[0]->type) ? cast_or_zero(d(e->ops[0]), e->type) : zero(e->type);
     case Op::Call:
       return call_rule(e, std::nullopt);
-    case Op::Local: // handled above
-    case Op::Rem:   // integer only
-    case Op::Lt:
-    case Op::Le:
-    case Op::Gt:
-    case Op::Ge:
-    case Op::Eq:
-    case Op::Ne:
-    case Op::And:
-    case Op::Or:
-    case Op::Not: // comparisons and logic are boolean: returned above
+    default:
       // Cannot occur: an internal error, never a silent zero derivative.
       throw std::logic_error("derive: a local, integer or boolean node reached the rules");
     }
@@ -128,7 +119,6 @@ private:
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
-  static ExprP lit(double v, const ExprP& like) { return real_const(v, like->type); }
   // A derivative as an arm of conditional `like`: an exact zero in its type.
   static ExprP arm(const ExprP& d, const ExprP& like) { return is_zero(d) ? zero(like->type) : d; }
 
@@ -172,50 +162,31 @@ private:
     return local_ref(l);
   }
 
+  // d f(a_1..a_n) = sum_i df/da_i · da_i, each term from the function's row
+  // of the table (ops.hpp); an argument without a derivative adds nothing.
   ExprP call_rule(const ExprP& e, const std::optional<ExprP>& self) {
-    const std::string& f = e->name;
-    const ExprP& a = e->ops[0];
-    if (f == "min" || f == "max") {
-      // d min(a,b) = a <= b ? da : db ;  d max(a,b) = a >= b ? da : db
-      const ExprP& b = e->ops[1];
-      ExprP da = d(a), db = d(b);
-      if (is_zero(da) && is_zero(db))
-        return zero(e->type);
-      ExprP c = binary(f == "min" ? Op::Le : Op::Ge, a, b);
-      return select(c, arm(da, e), arm(db, e));
-    }
-    if (f == "floor" || f == "ceil")
-      return zero(e->type); // piecewise constant: zero almost everywhere
-    ExprP da = d(a);
-    if (f == "pow") {
-      // d a^b = b·a^(b-1)·da + a^b·log(a)·db
-      const ExprP& b = e->ops[1];
-      ExprP db = d(b);
-      ExprP t1 = is_zero(da)
-                     ? da
-                     : mul(mul(b, call("pow", {a, binary(Op::Sub, b, lit(1, e))}, e->type)), da);
-      ExprP t2 = is_zero(db) ? db : mul(mul(named(e, self), call("log", {a}, e->type)), db);
-      return add(t1, t2);
-    }
-    if (is_zero(da))
+    const MathFn& f = math_function(e->name);
+    if (f.piecewise_constant)
+      return zero(e->type); // zero almost everywhere
+    std::vector<ExprP> ds;
+    for (const auto& a : e->ops)
+      ds.push_back(d(a));
+    bool none = true;
+    for (const auto& di : ds)
+      none = none && is_zero(di);
+    if (none)
       return zero(e->type);
-    if (f == "abs") // d|a| = sign(a)·da
-      return select(binary(Op::Lt, a, lit(0, a)), unary(Op::Neg, da), da);
-    if (f == "sqrt") // d sqrt(a) = da / (2·sqrt(a))
-      return binary(Op::Div, da, binary(Op::Mul, lit(2, e), named(e, self)));
-    if (f == "exp") // d exp(a) = exp(a)·da
-      return mul(named(e, self), da);
-    if (f == "log") // d log(a) = da / a
-      return binary(Op::Div, da, a);
-    if (f == "sin") // d sin(a) = cos(a)·da
-      return mul(call("cos", {a}, e->type), da);
-    if (f == "cos") // d cos(a) = -sin(a)·da
-      return neg(mul(call("sin", {a}, e->type), da));
-    if (f == "tanh") { // d tanh(a) = (1 - tanh²(a))·da
-      ExprP t = named(e, self);
-      return mul(binary(Op::Sub, lit(1, e), binary(Op::Mul, t, t)), da);
-    }
-    throw std::logic_error("derive: no rule for call to " + f);
+    CallRule r{e, ds, [&] { return named(e, self); }};
+    if (f.whole)
+      return f.whole(r);
+    if (f.partials.size() != ds.size())
+      throw std::logic_error("derive: '" + f.name + "' has " + std::to_string(f.partials.size()) +
+                             " partial rule(s) for " + std::to_string(ds.size()) + " argument(s)");
+    ExprP sum = zero(e->type);
+    for (size_t i = 0; i < ds.size(); ++i)
+      if (!is_zero(ds[i]))
+        sum = add(sum, f.partials[i](r, ds[i]));
+    return sum;
   }
 };
 

@@ -125,27 +125,7 @@ void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
     collect_reads(e->ops[2], cd ? subtract(where, *cd) : where, out, seen, taken);
     return;
   }
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Call:
-  case Op::Cast:
+  default:
     for (const auto& o : e->ops)
       collect_reads(o, where, out, seen, path);
   }

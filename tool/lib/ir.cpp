@@ -2,6 +2,8 @@
 // generated derivatives readable.
 #include "ir.hpp"
 
+#include "ops.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -17,37 +19,7 @@ std::shared_ptr<Expr> node(Op op, Type t, std::vector<ExprP> ops = {}) {
   return e;
 }
 
-bool is_bool_op(Op op) {
-  switch (op) {
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-    return true;
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
-    return false;
-  }
-  unknown_op("is_bool_op");
-}
+bool is_bool_op(Op op) { return op_info(op).boolean; }
 
 Type promote(Type a, Type b) {
   if (a == Type::Double || b == Type::Double)
@@ -175,27 +147,7 @@ ExprP binary(Op op, ExprP a, ExprP b) {
       return int_const(x - y);
     case Op::Mul:
       return int_const(x * y);
-    case Op::IntConst:
-    case Op::RealConst:
-    case Op::Param:
-    case Op::LoopVar:
-    case Op::Local:
-    case Op::Read:
-    case Op::Neg:
-    case Op::Div:
-    case Op::Rem:
-    case Op::Lt:
-    case Op::Le:
-    case Op::Gt:
-    case Op::Ge:
-    case Op::Eq:
-    case Op::Ne:
-    case Op::And:
-    case Op::Or:
-    case Op::Not:
-    case Op::Select:
-    case Op::Call:
-    case Op::Cast:
+    default:
       break;
     }
   }
@@ -238,26 +190,7 @@ ExprP binary(Op op, ExprP a, ExprP b) {
     if (a->op == Op::Neg)
       return unary(Op::Neg, binary(Op::Div, a->ops[0], b));
     break;
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
+  default:
     break;
   }
   return node(op, t, {std::move(a), std::move(b)});
@@ -307,23 +240,7 @@ bool same(const ExprP& a, const ExprP& b) {
     if (a->name != b->name)
       return false;
     break;
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Cast:
+  default:
     break;
   }
   for (size_t i = 0; i < a->ops.size(); ++i)

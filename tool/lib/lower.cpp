@@ -5,8 +5,10 @@
 // is dropped; nothing is guessed. The lowered kernel then goes through the
 // output rules (check.hpp). find.cpp hands it the functions to lower.
 #include "lower.hpp"
+
 #include "check.hpp"
 #include "ir_walk.hpp"
+#include "ops.hpp"
 
 #include "affine.hpp"
 #include "prove.hpp"
@@ -36,24 +38,6 @@ namespace dpgen {
 namespace {
 
 using namespace clang;
-
-constexpr const char* kSupportedCalls =
-    "std::min, std::max, std::abs/fabs, sqrt, exp, log, sin, cos, tanh, pow, "
-    "floor, ceil";
-
-// The math functions the subset accepts, by their unqualified name; float
-// variants (sqrtf, ...) map to the same rule.
-std::string math_function(const FunctionDecl* f) {
-  std::string n = f->getNameAsString();
-  static const std::set<std::string> known = {
-      "min", "max", "fmin", "fmax", "abs", "fabs", "sqrt", "exp", "log",
-      "sin", "cos", "tanh", "pow", "floor", "ceil"};
-  if (known.count(n))
-    return n;
-  if (!n.empty() && n.back() == 'f' && known.count(n.substr(0, n.size() - 1)))
-    return n.substr(0, n.size() - 1);
-  return "";
-}
 
 // What a name in the kernel body refers to.
 struct Binding {
@@ -2899,7 +2883,7 @@ private:
     if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
       fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
                                          f->getNameAsString()));
-    std::string fnname = math_function(f);
+    const MathFn* math = find_math_function(f->getNameAsString());
     bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                         f->getBuiltinID() != 0;
     if (!from_library && f->hasBody())
@@ -2909,24 +2893,18 @@ private:
                                          "functions are inlined, so define '{}' in the kernel's "
                                          "file or a header it includes",
                                          f->getQualifiedNameAsString(), f->getNameAsString()));
-    if (fnname.empty() || !from_library)
+    if (!math)
       fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
                                          "kernel subset calls only {}",
-                                         f->getQualifiedNameAsString(), kSupportedCalls));
+                                         f->getQualifiedNameAsString(), supported_calls()));
     Type t = type_of(c);
     std::vector<ExprP> args;
     for (const clang::Expr* a : c->arguments())
       args.push_back(cast(expr(a), t == Type::Int ? type_of(a) : t));
-    if (fnname == "fmin")
-      fnname = "min";
-    if (fnname == "fmax")
-      fnname = "max";
-    if (fnname == "fabs")
-      fnname = "abs";
-    size_t want = (fnname == "min" || fnname == "max" || fnname == "pow") ? 2 : 1;
-    if (args.size() != want)
+    std::string fnname = math->name;
+    if (args.size() != math->arity)
       fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
-                                         fnname, want));
+                                         fnname, math->arity));
     return call(fnname, args, t);
   }
 };

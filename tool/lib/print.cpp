@@ -1,6 +1,8 @@
 // Expression printer: C++ precedence levels, minimal parentheses.
 #include "print.hpp"
 
+#include "ops.hpp"
+
 #include <fmt/format.h>
 #include <optional>
 
@@ -11,91 +13,12 @@ namespace dpgen {
 
 namespace {
 
-// Larger binds tighter (C++ precedence).
+// Larger binds tighter (C++ precedence; the table's column, ops.hpp). A
+// negative literal binds as a unary minus.
 int precedence(const Expr& e) {
-  switch (e.op) {
-  case Op::Select:
-    return 1;
-  case Op::Or:
-    return 2;
-  case Op::And:
-    return 3;
-  case Op::Eq:
-  case Op::Ne:
-    return 4;
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-    return 5;
-  case Op::Add:
-  case Op::Sub:
-    return 6;
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-    return 7;
-  case Op::Neg:
-  case Op::Not:
-    return 8;
-  case Op::IntConst:
-    return e.ival < 0 ? 8 : 10;
-  case Op::RealConst:
-    return e.rval < 0 ? 8 : 10;
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Call:
-  case Op::Cast:
-    return 10;
-  }
-  unknown_op("precedence");
-}
-
-const char* symbol(Op op) {
-  switch (op) {
-  case Op::Add:
-    return "+";
-  case Op::Sub:
-    return "-";
-  case Op::Mul:
-    return "*";
-  case Op::Div:
-    return "/";
-  case Op::Rem:
-    return "%";
-  case Op::Lt:
-    return "<";
-  case Op::Le:
-    return "<=";
-  case Op::Gt:
-    return ">";
-  case Op::Ge:
-    return ">=";
-  case Op::Eq:
-    return "==";
-  case Op::Ne:
-    return "!=";
-  case Op::And:
-    return "&&";
-  case Op::Or:
-    return "||";
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast: // not binary: print() never asks
-    throw std::logic_error("internal error: print: an operator symbol for a node that is not "
-                           "binary");
-  }
-  unknown_op("symbol");
+  if ((e.op == Op::IntConst && e.ival < 0) || (e.op == Op::RealConst && e.rval < 0))
+    return op_info(Op::Neg).precedence;
+  return op_info(e.op).precedence;
 }
 
 std::string wrap(const ExprP& e, int min_prec) {
@@ -198,35 +121,26 @@ std::string print(const ExprP& e) {
     std::vector<std::string> args;
     for (const auto& a : e->ops)
       args.push_back(print(a));
-    // min/max by value (see kMinMaxHelpers): std::min returns a reference,
-    // which keeps GCC from vectorizing the loop around it.
-    bool by_value = e->name == "min" || e->name == "max";
+    // As the table prints it (ops.hpp): std::sqrt(a), or min/max by value
+    // (dpgen_min, see kMinMaxHelpers): std::min returns a reference, which
+    // keeps GCC from vectorizing the loop around it.
+    const std::string& printed = math_function(e->name).printed;
+    bool by_value = printed.rfind("dpgen_", 0) == 0;
     // Integer arguments may differ in width (a widened local and an int
     // parameter): name the type, as std::min's deduction would fail too.
     std::string targs = by_value && e->type == Type::Int ? "<std::ptrdiff_t>" : "";
-    return fmt::format("{}{}{}({})", by_value ? "dpgen_" : "std::", e->name, targs,
-                       fmt::join(args, ", "));
+    return fmt::format("{}{}({})", printed, targs, fmt::join(args, ", "));
   }
   case Op::Cast: // cast_type: the integer type of a widening cast ("long")
     return fmt::format("static_cast<{}>({})", e->cast_type.empty() ? type_spelling(e->type) : e->cast_type,
                        print(e->ops[0]));
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Lt:
-  case Op::Le:
-  case Op::Gt:
-  case Op::Ge:
-  case Op::Eq:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or: {
+  default: {
+    if (op_info(e->op).arity != 2)
+      unknown_op("print");
     // Binary, left-associative: a right operand of equal precedence keeps its
     // parentheses, so floating-point evaluation order is exactly the IR's.
     int p = precedence(*e);
-    return fmt::format("{} {} {}", wrap(e->ops[0], p), symbol(e->op), wrap(e->ops[1], p + 1));
+    return fmt::format("{} {} {}", wrap(e->ops[0], p), op_info(e->op).symbol, wrap(e->ops[1], p + 1));
   }
   }
   unknown_op("print");

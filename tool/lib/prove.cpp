@@ -1,6 +1,8 @@
 // Prove: see prove.hpp.
 #include "prove.hpp"
 
+#include "ops.hpp"
+
 #include <map>
 #include <numeric>
 #include <set>
@@ -29,33 +31,9 @@ bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) 
   }
   Op op = c->op;
   if (!positive) { // !(a < b) is a >= b, ...
-    switch (op) {
-    case Op::Lt: op = Op::Ge; break;
-    case Op::Le: op = Op::Gt; break;
-    case Op::Gt: op = Op::Le; break;
-    case Op::Ge: op = Op::Lt; break;
-    case Op::Eq: op = Op::Ne; break;
-    case Op::Ne: op = Op::Eq; break;
-    case Op::IntConst:
-    case Op::RealConst:
-    case Op::Param:
-    case Op::LoopVar:
-    case Op::Local:
-    case Op::Read:
-    case Op::Neg:
-    case Op::Add:
-    case Op::Sub:
-    case Op::Mul:
-    case Op::Div:
-    case Op::Rem:
-    case Op::And:
-    case Op::Or:
-    case Op::Not:
-    case Op::Select:
-    case Op::Call:
-    case Op::Cast:
+    if (!op_info(op).comparison)
       return false;
-    }
+    op = op_info(op).negated;
   }
   if (op != Op::Lt && op != Op::Le && op != Op::Gt && op != Op::Ge && op != Op::Eq)
     return false;
@@ -74,25 +52,7 @@ bool facts_of(const ExprP& c, bool positive, Facts& out, bool counters = false) 
     out.push_back(*d);
     out.push_back(-*d);
     break;
-  case Op::IntConst:
-  case Op::RealConst:
-  case Op::Param:
-  case Op::LoopVar:
-  case Op::Local:
-  case Op::Read:
-  case Op::Neg:
-  case Op::Add:
-  case Op::Sub:
-  case Op::Mul:
-  case Op::Div:
-  case Op::Rem:
-  case Op::Ne:
-  case Op::And:
-  case Op::Or:
-  case Op::Not:
-  case Op::Select:
-  case Op::Call:
-  case Op::Cast:
+  default:
     break;
   }
   return true;
