@@ -3,11 +3,14 @@
 //
 //   dpgen [options] <kernel.cpp>... --out-dir <dir> [-- <compiler flags>]
 #include "lib/generate.hpp"
+#include "lib/ir_text.hpp"
 
 #include <llvm/Support/CommandLine.h>
 #include <llvm/Support/FileSystem.h>
 #include <llvm/Support/Path.h>
 #include <llvm/Support/raw_ostream.h>
+
+#include <algorithm>
 
 namespace cl = llvm::cl;
 
@@ -66,13 +69,44 @@ int main(int argc, const char** argv) {
         compiler_args.push_back(argv[j]);
       break;
     }
+  // --print-after=<pass>[,<pass>] is read here, not by llvm::cl: LLVM's own
+  // libraries register an option of that name (for its pass manager).
+  std::vector<std::string> print_after;
+  std::vector<const char*> tool_argv(argv, argv + tool_argc);
+  for (size_t i = 1; i < tool_argv.size();) {
+    std::string a = tool_argv[i];
+    std::string value;
+    size_t erase = 0;
+    for (const char* flag : {"--print-after", "-print-after"})
+      if (a == flag && i + 1 < tool_argv.size()) {
+        value = tool_argv[i + 1];
+        erase = 2;
+      } else if (a.rfind(std::string(flag) + "=", 0) == 0) {
+        value = a.substr(std::string(flag).size() + 1);
+        erase = 1;
+      }
+    if (!erase) {
+      ++i;
+      continue;
+    }
+    for (size_t from = 0, to; from <= value.size(); from = to + 1) {
+      to = value.find(',', from);
+      if (to == std::string::npos)
+        to = value.size();
+      print_after.push_back(value.substr(from, to - from));
+    }
+    tool_argv.erase(tool_argv.begin() + i, tool_argv.begin() + i + erase);
+  }
+  tool_argc = int(tool_argv.size());
   cl::HideUnrelatedOptions(category);
   cl::SetVersionPrinter([](llvm::raw_ostream& os) { os << "dpgen " DPGEN_VERSION "\n"; });
-  if (!cl::ParseCommandLineOptions(tool_argc, argv,
+  if (!cl::ParseCommandLineOptions(tool_argc, tool_argv.data(),
                                    "dpgen: adjoint (reverse-mode) kernels for annotated C++ "
                                    "stencil kernels\n\n"
                                    "  dpgen [options] <kernel.cpp>... --out-dir <dir> "
-                                   "[-- <compiler flags>]\n",
+                                   "[-- <compiler flags>]\n\n"
+                                   "  --print-after=<pass>[,<pass>...]: print the IR after "
+                                   "the passes lower, derive, schedule, plan (stdout)\n",
                                    &llvm::errs()))
     return 2;
   if (!llvm::sys::fs::is_directory(resource_dir + "/include")) {
@@ -88,6 +122,15 @@ int main(int argc, const char** argv) {
     llvm::errs() << "dpgen: dpgen/annotate.hpp from "
                  << (runtime_include.empty() ? "the compiler flags only" : runtime_include) << "\n";
   dpgen::GenerateOptions opts;
+  for (const auto& p : print_after) {
+    const auto& known = dpgen::pass_names();
+    if (std::find(known.begin(), known.end(), p) == known.end()) {
+      llvm::errs() << "dpgen: error: --print-after: no pass '" << p << "' (the passes: lower, "
+                   << "derive, schedule, plan)\n";
+      return 2;
+    }
+    opts.print_after.insert(p);
+  }
   opts.frontend.compiler_args = compiler_args;
   opts.frontend.resource_dir = resource_dir;
   opts.frontend.driver = DPGEN_CLANG_DRIVER;

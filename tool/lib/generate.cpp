@@ -1,12 +1,14 @@
-// The pipeline driver: the phases by name, for every input file: lower (with
+// The pipeline driver: the passes by name, for every input file: lower (with
 // its checks) -> derive -> schedule -> plan -> emit -> output. All inputs are
-// analysed before anything is written.
+// analysed before anything is written. `--print-after=<pass>` prints the IR
+// a pass hands on (ir_text.hpp).
 #include "generate.hpp"
 
 #include "derive.hpp"
 #include "emit_file.hpp"
 #include "emit_tangent.hpp"
 #include "emit_torch.hpp"
+#include "ir_text.hpp"
 #include "loop_plan.hpp"
 #include "output.hpp"
 #include "schedule.hpp"
@@ -37,10 +39,20 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = false;
       continue;
     }
+    // The passes, each a function over the IR (ir_text.hpp prints what each
+    // hands on): lower (with its checks) -> derive -> schedule -> plan.
+    auto print_after = [&](const char* pass, const std::string& text) {
+      if (opts.print_after.count(pass))
+        llvm::outs() << "// -- IR after " << pass << "\n" << text;
+    };
     std::vector<AdjointPlan> plans;
     for (const auto& k : kernels) {
-      Partials partials = derive(k);          // 3. derive: each partial once
+      print_after("lower", print_ir(k));
+      Partials partials = derive(k); // 3. derive: each partial once
+      if (opts.print_after.count("derive"))
+        print_after("derive", print_partials(k, partials));
       plans.push_back(schedule(k, partials)); // 4. schedule
+      print_after("schedule", print_schedule(plans.back()));
       for (const auto& r : plans.back().remarks)
         llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,
                                     r.text);
@@ -57,8 +69,10 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       continue;
     }
     std::vector<LoopPlan> loops; // 5. plan the loops
-    for (const auto& p : plans)
+    for (const auto& p : plans) {
       loops.push_back(plan_loops(p));
+      print_after("plan", print_plan(loops.back()));
+    }
     EmittedFile f = emit_file(loops, llvm::sys::path::filename(input).str(), stem); // 6. emit
     llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
     llvm::sys::path::append(hpp, stem + "_adjoint.hpp");

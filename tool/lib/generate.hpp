@@ -4,6 +4,7 @@
 
 #include "find.hpp"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct GenerateOptions {
   /// a make-style dependency file listing every file the kernels include.
   std::string stamp;
   bool torch = false; // write <stem>_torch.{hpp,cpp} (PyTorch ops) instead of the adjoints
+  /// Passes (pass_names(), ir_text.hpp) after which the IR is printed to
+  /// stdout in its text form.
+  std::set<std::string> print_after;
 };
 
 /// Generates <out_dir>/<stem>_adjoint.{hpp,cpp} (and, with `tangent`,

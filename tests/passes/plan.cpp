@@ -1,0 +1,43 @@
+// --print-after=plan: the loops of the adjoint before anything is printed:
+// per input, the cell box, the branch-free interior, edges that may reach
+// into it, fusion of inputs with the same cell box, and the parallel test.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %dpgen --print-after=plan %s --out-dir %t -- -I%runtime_inc | FileCheck %s
+#include "dpgen/annotate.hpp"
+
+// Two inputs with different cell boxes: a loop each (a fused loop needs
+// the same box, tests/passes/fused.test); the interior of a's 3-point reads
+// leaves two cells at each end to the edge code.
+// CHECK-LABEL: plan of blend
+// CHECK-NEXT: input a
+// CHECK-NEXT: step
+// CHECK-NEXT: cells of [a]
+// CHECK-NEXT: i in [0, n)
+// CHECK-NEXT: interior {i: [2, n - 2)}
+// CHECK-NEXT: parallel: unit stride
+// CHECK-NEXT: input b
+// CHECK-NEXT: step
+// CHECK-NEXT: cells of [b]
+// CHECK-NEXT: i in [1, n - 1)
+DPGEN_KERNEL void blend(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* c,
+                        int n) {
+  for (int i = 1; i < n - 1; ++i)
+    c[i] = a[i - 1] + a[i + 1] - 2.0 * b[i];
+}
+
+// A 2D layout: the parallel test is the mixed-radix one (columns step 1 and
+// reach nx - 1, rows step nx).
+// CHECK-LABEL: plan of grad2d
+// CHECK-NEXT: input p
+// CHECK-NEXT: step
+// CHECK-NEXT: cells of [p]
+// CHECK-NEXT: i in [0, nx)
+// CHECK-NEXT: j in [0, ny)
+// CHECK-NEXT: interior {i: [0, nx); j: [2, ny - 2)}
+// CHECK-NEXT: parallel: radix dim 1 step 1 reach 0
+// CHECK-NEXT: parallel: radix dim 0 step nx reach hi_i - lo_i - 1
+DPGEN_KERNEL void grad2d(DPGEN_IN const double* p, DPGEN_OUT double* g, int nx, int ny) {
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 0; i < nx; ++i)
+      g[j * nx + i] = p[(j + 1) * nx + i] - p[(j - 1) * nx + i];
+}

@@ -1,0 +1,280 @@
+// The IR's text form (ir_text.hpp).
+#include "ir_text.hpp"
+
+#include "ir_walk.hpp"
+#include "ops.hpp"
+#include "print.hpp"
+#include "prove.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace dpgen {
+
+namespace {
+
+const char* kind_text(ParamKind k) {
+  switch (k) {
+  case ParamKind::In:
+    return "in";
+  case ParamKind::Out:
+    return "out";
+  case ParamKind::ConstArray:
+    return "const-array";
+  case ParamKind::Scalar:
+    return "scalar";
+  }
+  return "?";
+}
+
+std::string pos_text(const SourcePos& p) { return fmt::format("{}:{}", p.line, p.col); }
+
+std::string polys(const std::vector<Poly>& ps, const char* fn) {
+  std::vector<std::string> s;
+  for (const auto& p : ps)
+    s.push_back(p.code());
+  if (s.empty())
+    return "*";
+  return s.size() == 1 ? s[0] : fmt::format("{}({})", fn, fmt::join(s, ", "));
+}
+
+std::string box_text(const Box& b) {
+  std::vector<std::string> dims;
+  for (const auto& [v, iv] : b.dims)
+    dims.push_back(fmt::format("{}: [{}, {})", v, polys(iv.lo, "max"), polys(iv.hi, "min")));
+  return "{" + fmt::format("{}", fmt::join(dims, "; ")) + "}";
+}
+
+std::string path_text(const std::vector<PathCond>& path) {
+  std::vector<std::string> s;
+  for (const auto& c : path)
+    s.push_back((c.positive ? "" : "!") + std::string("(") + print(c.cond) + ")");
+  return fmt::format("{}", fmt::join(s, " && "));
+}
+
+std::string bound_text(const CellBound& b, const char* outer, const char* inner) {
+  std::vector<std::string> parts;
+  for (const auto& p : b.parts)
+    parts.push_back(polys(p, inner));
+  if (parts.empty())
+    return "*";
+  return parts.size() == 1 ? parts[0] : fmt::format("{}({})", outer, fmt::join(parts, ", "));
+}
+
+// The locals an expression uses that derive or a pass made (not the kernel's
+// own, which print_ir lists), with their definitions, in id order.
+void made_locals(const ExprP& e, std::string& out, const std::string& indent) {
+  std::set<const LocalVar*> seen;
+  std::map<int, const LocalVar*> found;
+  walk(
+      e,
+      [&](const ExprP& x) {
+        if (x->op == Op::Local && x->local->id >= 1000000)
+          found[x->local->id] = x->local.get();
+        return true;
+      },
+      [](const ExprP&) { return true; }, seen);
+  for (const auto& [id, l] : found)
+    out += fmt::format("{}where {} = {}\n", indent, l->name, print(l->def));
+}
+
+} // namespace
+
+const std::vector<std::string>& pass_names() {
+  static const std::vector<std::string> names = {"lower", "derive", "schedule", "plan"};
+  return names;
+}
+
+std::string domain_text(const Domain& d) {
+  if (d.empty())
+    return "{}  (empty)";
+  std::vector<std::string> boxes;
+  for (const auto& b : d)
+    boxes.push_back(box_text(b));
+  return fmt::format("{}", fmt::join(boxes, " | "));
+}
+
+std::string print_ir(const Kernel& k) {
+  std::string out = fmt::format("kernel {} at {}\n", k.name, pos_text(k.pos));
+  for (const auto& p : k.params) {
+    std::string flags;
+    if (p.inout)
+      flags += " inout";
+    if (!p.twin_of.empty())
+      flags += " twin-of=" + p.twin_of;
+    if (p.synthetic)
+      flags += " synthetic";
+    if (pointer_levels(p))
+      flags += fmt::format(" levels={}", pointer_levels(p));
+    if (!p.rows.empty())
+      flags += " rows=" + p.rows;
+    out += fmt::format("  param {} {} : {}{}\n", kind_text(p.kind), p.name, p.elem_name, flags);
+  }
+  for (const auto& p : k.hidden)
+    out += fmt::format("  hidden {} : {}\n", p.name, p.elem_name);
+  for (const auto& l : k.kernel_locals)
+    out += fmt::format("  local {} : {} = {}\n", l->name, l->type_name, print(l->def));
+  if (!k.guards.empty())
+    out += fmt::format("  guard {}\n", path_text(k.guards));
+  for (size_t n = 0; n < k.nests.size(); ++n) {
+    const Nest& nest = k.nests[n];
+    out += fmt::format("  nest {} key [{}]\n", n, fmt::join(nest.key, ", "));
+    std::string indent = "    ";
+    for (const auto& l : nest.loops) {
+      out += fmt::format("{}for {} : {} in [{}, {})\n", indent, l.var, l.type_name, print(l.lo),
+                         print(l.hi));
+      indent += "  ";
+    }
+    for (const auto& s : nest.stores) {
+      out += fmt::format("{}store #{} {}[{}] {} {}", indent, s.seq, s.array, print(s.index),
+                         s.accumulate ? "+=" : "=", print(s.value));
+      if (!s.path.empty())
+        out += "  if " + path_text(s.path);
+      out += fmt::format("  at {}\n", pos_text(s.pos));
+      // The locals the store needs, defined inside the loops.
+      std::set<const LocalVar*> seen;
+      std::map<int, const LocalVar*> locals;
+      for (const ExprP& e : {s.index, s.value})
+        walk(
+            e,
+            [&](const ExprP& x) {
+              if (x->op == Op::Local && !x->local->kernel_level)
+                locals[x->local->id] = x->local.get();
+              return true;
+            },
+            [](const ExprP&) { return true; }, seen);
+      for (const auto& [id, l] : locals)
+        out += fmt::format("{}  where {} = {}\n", indent, l->name, print(l->def));
+    }
+  }
+  for (const auto& c : k.size_checks)
+    out += fmt::format("  size-check {}{}  ({})\n",
+                       c.premises.empty() ? ""
+                                          : fmt::format("{} => ", fmt::join(c.premises, " && ")),
+                       c.must_hold, c.what);
+  for (const auto& w : k.intermediates)
+    out += fmt::format("  intermediate {}\n", w);
+  for (const auto& [a, e] : k.extent)
+    out += fmt::format("  extent {} = {}\n", a, e);
+  return out;
+}
+
+std::string print_partials(const Kernel& k, Partials& partials) {
+  std::string out = fmt::format("partials of {}\n", k.name);
+  for (const auto& param : k.params) {
+    if (param.kind != ParamKind::In)
+      continue;
+    for (size_t n = 0; n < k.nests.size(); ++n)
+      for (const auto& store : k.nests[n].stores) {
+        std::vector<PathCond> guards;
+        if (store_domain(k.nests[n], store, guards).empty())
+          continue;
+        for (const auto& site : reads_in(store.value)) {
+          if (site.read->name != param.name)
+            continue;
+          const ExprP& d = partials.of(store, {site.read});
+          std::string read = site.read->name + subscript(site.read->ops[0], site.read->levels);
+          out += fmt::format("  d {}[{}] / d {} = {}\n", store.array, print(store.index), read,
+                             is_zero(d) ? "0 (exact)" : print(d));
+          if (!site.conds.empty())
+            out += "    when " + path_text(site.conds) + "\n";
+          made_locals(d, out, "    ");
+        }
+      }
+  }
+  return out;
+}
+
+std::string print_schedule(const AdjointPlan& plan) {
+  const Kernel& k = *plan.kernel;
+  std::string out = fmt::format("schedule of {}\n", k.name);
+  for (const auto& g : plan.gathers) {
+    std::vector<std::string> layout;
+    for (const auto& [v, c] : g.layout)
+      layout.push_back(fmt::format("{}*{}", c.code(), v));
+    out += fmt::format("  gather {} layout [{}] base {}", g.array, fmt::join(layout, ", "),
+                       g.base.code());
+    if (!g.reduced.empty())
+      out += fmt::format(" reduced [{}]", fmt::join(g.reduced, ", "));
+    out += "\n";
+    for (const auto& b : g.blocks) {
+      std::vector<std::string> shift;
+      for (const auto& [v, p] : b.shift)
+        shift.push_back(fmt::format("{} = {}", v, (Poly::symbol("c_" + v) - p).code()));
+      out += fmt::format("    block{} iteration {}\n", b.bulk ? " bulk" : "",
+                         shift.empty() ? "= cell" : fmt::format("[{}]", fmt::join(shift, ", ")));
+      out += "      domain " + domain_text(b.domain) + "\n";
+      if (!b.guards.empty())
+        out += "      guard " + path_text(b.guards) + "\n";
+      for (const auto& t : b.terms) {
+        std::vector<std::string> reads;
+        for (const Expr* r : t.reads)
+          reads.push_back(r->source.empty() ? r->name : r->source);
+        std::sort(reads.begin(), reads.end());
+        out += fmt::format("      term store #{} reads {{{}}}: {}\n", t.store->seq,
+                           fmt::join(reads, ", "), print(t.partial));
+      }
+    }
+  }
+  for (const auto& s : plan.scatters) {
+    out += fmt::format("  scatter {} from store #{}\n", s.array, s.store->seq);
+    for (const auto& r : s.reads)
+      out += fmt::format("    {}[{}]: {}\n", r.read->name, print(r.read->ops[0]),
+                         print(r.partial));
+  }
+  for (const auto& r : plan.remarks)
+    out += fmt::format("  remark at {}: {}\n", pos_text(r.pos), r.text);
+  for (size_t i = 0; i < plan.stages.size(); ++i) {
+    out += fmt::format("  stage {}\n", i);
+    std::string inner = print_schedule(*plan.stages[i].plan);
+    for (size_t a = 0, b; a < inner.size(); a = b + 1) {
+      b = inner.find('\n', a);
+      out += "    " + inner.substr(a, b - a) + "\n";
+    }
+  }
+  return out;
+}
+
+std::string print_plan(const LoopPlan& plan) {
+  std::string out = fmt::format("plan of {}\n", plan.adjoint->kernel->name);
+  for (const auto& in : plan.inputs) {
+    out += fmt::format("  input {}\n", in.array);
+    for (const auto& step : in.gathers) {
+      out += fmt::format("    step{}\n", step.fused() ? " fused" : "");
+      for (const auto& loop : step.loops) {
+        std::vector<std::string> arrays;
+        for (const auto* g : loop.groups)
+          arrays.push_back(g->array);
+        out += fmt::format("      cells of [{}]\n", fmt::join(arrays, ", "));
+        for (const auto& [v, r] : loop.bounds)
+          out += fmt::format("        {} in [{}, {})\n", v, bound_text(r.lo, "min", "max"),
+                             bound_text(r.hi, "max", "min"));
+        if (loop.any_bulk)
+          out += "        interior " + box_text(loop.interior) + "\n";
+        for (const auto& r : loop.reaches)
+          out += "        edge may reach " + box_text(r.box) + "\n";
+        if (loop.unit_1d)
+          out += "        parallel: unit stride\n";
+        for (const auto& s : loop.radix)
+          out += fmt::format("        parallel: radix dim {} step {} reach {}\n", s.dim,
+                             s.step.code(), s.reach.code());
+      }
+    }
+    for (const auto* s : in.scatters)
+      out += fmt::format("    scatter from store #{} (serial)\n", s->store->seq);
+  }
+  for (size_t i = 0; i < plan.stages.size(); ++i) {
+    std::string inner = print_plan(plan.stages[i]);
+    out += fmt::format("  stage {}\n", i);
+    for (size_t a = 0, b; a < inner.size(); a = b + 1) {
+      b = inner.find('\n', a);
+      out += "    " + inner.substr(a, b - a) + "\n";
+    }
+  }
+  return out;
+}
+
+} // namespace dpgen
