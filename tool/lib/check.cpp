@@ -55,8 +55,11 @@ private:
     return fmt::format("work array '{}' (an output a later loop reads)", array);
   }
 
-  void fail(const SourcePos& at, const std::string& msg) {
-    diag_.error(at, msg);
+  // `id`, the rule broken (printed after the message): dpgen-write-once,
+  // dpgen-read-after-write, dpgen-work-array, dpgen-inplace,
+  // dpgen-output-index.
+  void fail(const SourcePos& at, const char* id, const std::string& msg) {
+    diag_.error(at, id, msg);
     ok_ = false;
   }
 
@@ -83,7 +86,7 @@ private:
         auto ps = to_poly(s.index), pr = to_poly(r.index);
         bool same_cell = ps && pr && *ps == *pr;
         if ((same_nest && !same_cell) || (!same_nest && (shared > 0 || r.seq > s.seq))) {
-          fail(r.pos, fmt::format("in-place array '{}' is read here at an element another "
+          fail(r.pos, "dpgen-inplace", fmt::format("in-place array '{}' is read here at an element another "
                                   "iteration or loop may already have updated: a value carried "
                                   "through the array (Gauss-Seidel, an in-place stencil) is "
                                   "outside the kernel subset; read only the element each "
@@ -109,7 +112,7 @@ private:
           if (st.array == w && (!first || st.seq < first->seq))
             first = &st;
       if (first && first->accumulate)
-        fail(first->pos, fmt::format("work array '{}' (read by a later loop) is first written "
+        fail(first->pos, "dpgen-work-array", fmt::format("work array '{}' (read by a later loop) is first written "
                                      "with '+=': it adds to the caller's contents, which the "
                                      "adjoint cannot recompute; set it with '=' first",
                                      w));
@@ -121,7 +124,7 @@ private:
         const std::string& array = array_name; // (a lambda captures no structured binding in C++17)
         if (any_node(l->def,
                      [&](const ExprP& x) { return x->op == Op::Read && x->name == array; })) {
-          fail(at, fmt::format("a local outside every loop reads work array '{}'; use the "
+          fail(at, "dpgen-work-array", fmt::format("a local outside every loop reads work array '{}'; use the "
                                "element directly in the store, or read it inside a loop",
                                array));
           break;
@@ -199,7 +202,7 @@ private:
               if (e.array == r.array && e.seq < r.seq && (!before || e.seq > before->seq))
                 before = &e;
           if (before)
-            return fail(r.pos, fmt::format("output '{}' is read here after line {} wrote it, "
+            return fail(r.pos, "dpgen-read-after-write", fmt::format("output '{}' is read here after line {} wrote it, "
                                            "and written again on line {}: an output holds one "
                                            "value per element, and the adjoint cannot tell the "
                                            "two apart; put the first value in a DPGEN_OUT work "
@@ -208,7 +211,7 @@ private:
                                            r.array, before->pos.line, st.pos.line, r.array));
         }
         if (st.seq >= r.seq || n.key == r.nest_key)
-          return fail(r.pos, fmt::format("output '{}' is read here and written on line {}, in "
+          return fail(r.pos, "dpgen-read-after-write", fmt::format("output '{}' is read here and written on line {}, in "
                                          "the same loop or later: a value carried from one "
                                          "iteration to the next through an output (a "
                                          "recurrence, like a prefix sum, or an in-place "
@@ -218,7 +221,7 @@ private:
         // (an accumulator's hidden array has an element per iteration of the
         // shared loops: recomputing it once for the whole kernel is right)
         if (shared > 0 && !hidden(r.array))
-          return fail(r.pos, fmt::format("work array '{}' is written (line {}) and read inside "
+          return fail(r.pos, "dpgen-work-array", fmt::format("work array '{}' is written (line {}) and read inside "
                                          "the same outer loop: dpgen recomputes work arrays "
                                          "once for the whole kernel; write it in a loop nest of "
                                          "its own, or use a local array",
@@ -257,7 +260,7 @@ private:
                 rows_apart(x, nest, y, nest) ||
                 (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)))
               continue;
-            fail(y.pos, fmt::format("output '{}' is written at '{}' here and at '{}' on "
+            fail(y.pos, "dpgen-write-once", fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                     "line {} of the same loop: dpgen cannot prove two "
                                     "iterations never write the same element",
                                     y.array, print_index(y), print_index(x), x.pos.line));
@@ -322,7 +325,7 @@ private:
             continue;
           }
         }
-        fail(y.pos, fmt::format("output '{}' is also written on line {} in another loop "
+        fail(y.pos, "dpgen-write-once", fmt::format("output '{}' is also written on line {} in another loop "
                                 "nest, and dpgen cannot prove the two write different "
                                 "elements (the adjoint would count an overwritten "
                                 "element twice); write each element in one loop, with "
@@ -339,7 +342,7 @@ private:
   bool check_store(const Nest& nest, const Store& s) {
     auto p = to_poly(s.index);
     if (!p) {
-      fail(s.pos, fmt::format("index of output '{}' must be an affine function of the "
+      fail(s.pos, "dpgen-output-index", fmt::format("index of output '{}' must be an affine function of the "
                               "loop counters (no conditional or data-dependent writes)",
                               s.array));
       return false;
@@ -348,13 +351,13 @@ private:
     for (const auto& l : nest.loops) {
       Poly c = p->coefficient(Sym::counter(l.var));
       if (c.mentions_any_counter()) {
-        fail(s.pos, fmt::format("index of output '{}' multiplies loop counters", s.array));
+        fail(s.pos, "dpgen-output-index", fmt::format("index of output '{}' multiplies loop counters", s.array));
         return false;
       }
       if (c == Poly()) {
         if (s.accumulate)
           continue; // a reduction: every iteration adds to the same element
-        fail(s.pos, fmt::format("output '{}' is written at the same index by every "
+        fail(s.pos, "dpgen-write-once", fmt::format("output '{}' is written at the same index by every "
                                 "iteration of loop '{}' (a reduction or a loop-carried "
                                 "dependence); each element must be written once with "
                                 "'=', or summed into with '+='",
@@ -556,19 +559,19 @@ private:
       return;
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && p.inout)
-        fail(k_.pos, fmt::format("{} in a kernel with in-place array '{}': write the new "
+        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with in-place array '{}': write the new "
                                  "values of '{}' to a DPGEN_OUT array",
                                  work_name(*k_.intermediates.begin()), p.name, p.name));
     for (const auto& p : k_.params)
       if (k_.intermediates.count(p.name) && p.row_pointers)
-        fail(k_.pos, fmt::format("work array '{}' (an output a later loop reads) has "
+        fail(k_.pos, "dpgen-work-array", fmt::format("work array '{}' (an output a later loop reads) has "
                                  "row pointers: the adjoint recomputes work arrays "
                                  "into flat buffers; pass it as a flat pointer or "
                                  "'double (*{})[N]'",
                                  p.name, p.name));
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
-        fail(k_.pos, fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
+        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
                                  "arrays as pointers",
                                  work_name(*k_.intermediates.begin()), p.name));
     std::map<std::string, std::vector<std::string>> ends;
@@ -576,7 +579,7 @@ private:
       for (const auto& st : n.stores) {
         auto r = index_range(st, n);
         if (!r) {
-          fail(st.pos, fmt::format("cannot bound the indices of output '{}', which the "
+          fail(st.pos, "dpgen-output-index", fmt::format("cannot bound the indices of output '{}', which the "
                                    "adjoint needs buffers for (a work array or an in-place "
                                    "array)",
                                    st.array));
@@ -594,7 +597,7 @@ private:
       Store probe{r.array, r.index, r.index, r.path, {}};
       auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;
       if (!range) {
-        fail(r.pos, fmt::format("cannot bound this read of work array '{}', which the adjoint "
+        fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the adjoint "
                                 "recomputes into a buffer",
                                 r.array));
         continue;
@@ -620,7 +623,7 @@ private:
           outside_all = outside_all && outside;
         }
       if (any_store && outside_all)
-        fail(r.pos, fmt::format("reads work array '{}' at elements no earlier loop writes (their "
+        fail(r.pos, "dpgen-work-array", fmt::format("reads work array '{}' at elements no earlier loop writes (their "
                                 "values are the caller's, which the adjoint cannot recompute); "
                                 "write every element a later loop reads",
                                 r.array));
@@ -649,7 +652,7 @@ private:
         Poly slack = c - reach - Poly::constant(1); // must be >= 0
         if (!prove_nonneg(slack, facts)) {
           if (prove_nonneg(-slack - Poly::constant(1), facts))
-            return fail(s.pos, fmt::format("output '{}' is written twice per element: index "
+            return fail(s.pos, "dpgen-write-once", fmt::format("output '{}' is written twice per element: index "
                                            "coefficient '{}' against a reach of '{}'",
                                            s.array, c.str(), reach.str()));
           SizeCheck chk;

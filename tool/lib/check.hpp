@@ -20,7 +20,9 @@ namespace dpgen {
 class Diagnostics {
 public:
   virtual ~Diagnostics() = default;
-  virtual void error(const SourcePos& at, const std::string& message) = 0;
+  /// `id`: the rule, clang-tidy style ("dpgen-write-once"), printed after
+  /// the message.
+  virtual void error(const SourcePos& at, const std::string& id, const std::string& message) = 0;
 };
 
 /// An access lowering recorded for the checks: a read of a work array or of

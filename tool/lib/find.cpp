@@ -87,7 +87,7 @@ public:
       const auto& sm = ctx.getSourceManager();
       unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error,
                                       "no DPGEN_KERNEL function in this file (mark a kernel "
-                                      "with DPGEN_KERNEL from dpgen/annotate.hpp)");
+                                      "with DPGEN_KERNEL from dpgen/annotate.hpp) [dpgen-no-kernel]");
       d.Report(sm.getLocForStartOfFile(sm.getMainFileID()), id);
       ok_ = false;
     }

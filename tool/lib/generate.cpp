@@ -45,17 +45,38 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       if (opts.print_after.count(pass))
         llvm::outs() << "// -- IR after " << pass << "\n" << text;
     };
+    // A broken invariant in a pass (an exception) is reported at the kernel,
+    // as a bug in dpgen; nothing is written.
+    std::string pass;
+    const Kernel* current = nullptr;
+    auto internal = [&](const std::exception& e) {
+      SourcePos at = current ? current->pos : SourcePos{input, 1, 1};
+      llvm::errs() << fmt::format("{}:{}:{}: error: {} [dpgen-internal]\n", at.file, at.line,
+                                  at.col,
+                                  internal_error_message(current ? current->name : "in " + input, pass,
+                                                         e.what()));
+      ok = false;
+    };
     std::vector<AdjointPlan> plans;
-    for (const auto& k : kernels) {
-      print_after("lower", print_ir(k));
-      Partials partials = derive(k); // 3. derive: each partial once
-      if (opts.print_after.count("derive"))
-        print_after("derive", print_partials(k, partials));
-      plans.push_back(schedule(k, partials)); // 4. schedule
-      print_after("schedule", print_schedule(plans.back()));
-      for (const auto& r : plans.back().remarks)
-        llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line, r.pos.col,
-                                    r.text);
+    try {
+      for (const auto& k : kernels) {
+        current = &k;
+        print_after("lower", print_ir(k));
+        pass = "derive";
+        test_internal_error("derive");
+        Partials partials = derive(k); // 3. derive: each partial once
+        if (opts.print_after.count("derive"))
+          print_after("derive", print_partials(k, partials));
+        pass = "schedule";
+        plans.push_back(schedule(k, partials)); // 4. schedule
+        print_after("schedule", print_schedule(plans.back()));
+        for (const auto& r : plans.back().remarks)
+          llvm::errs() << fmt::format("{}:{}:{}: remark: {}\n", r.pos.file, r.pos.line,
+                                      r.pos.col, r.text);
+      }
+    } catch (const std::exception& e) {
+      internal(e);
+      continue;
     }
     std::string stem = llvm::sys::path::stem(input).str();
     if (!stems.insert(stem).second) {
@@ -64,34 +85,47 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = false;
       continue;
     }
-    if (opts.torch) { // PyTorch ops instead of the adjoints (emit_torch.hpp)
-      ok = add_torch_files(plans, input, opts.out_dir, pending) && ok;
-      continue;
-    }
-    std::vector<LoopPlan> loops; // 5. plan the loops
-    for (const auto& p : plans) {
-      loops.push_back(plan_loops(p));
-      print_after("plan", print_plan(loops.back()));
-    }
-    EmittedFile f = emit_file(loops, llvm::sys::path::filename(input).str(), stem); // 6. emit
-    llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
-    llvm::sys::path::append(hpp, stem + "_adjoint.hpp");
-    llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
-    pending.push_back({std::string(hpp), f.header});
-    pending.push_back({std::string(cpp), f.source});
-    llvm::SmallString<256> khpp(opts.out_dir);
-    llvm::sys::path::append(khpp, stem + "_kernels.hpp");
-    pending.push_back({std::string(khpp), f.kernels});
-    if (opts.tangent) {
-      std::vector<const Kernel*> ks;
-      for (const auto& k : kernels)
-        ks.push_back(&k);
-      EmittedFile t = emit_tangent_file(ks, llvm::sys::path::filename(input).str(), stem);
-      llvm::SmallString<256> thpp(opts.out_dir), tcpp(opts.out_dir);
-      llvm::sys::path::append(thpp, stem + "_tangent.hpp");
-      llvm::sys::path::append(tcpp, stem + "_tangent.cpp");
-      pending.push_back({std::string(thpp), t.header});
-      pending.push_back({std::string(tcpp), t.source});
+    try {
+      current = nullptr; // the passes below work on all of the file's kernels
+      pass = "emit";
+      if (opts.torch) { // PyTorch ops instead of the adjoints (emit_torch.hpp)
+        pass = "torch";
+        ok = add_torch_files(plans, input, opts.out_dir, pending) && ok;
+        continue;
+      }
+      std::vector<LoopPlan> loops; // 5. plan the loops
+      for (const auto& p : plans) {
+        current = p.kernel;
+        pass = "plan";
+        test_internal_error("plan");
+        loops.push_back(plan_loops(p));
+        print_after("plan", print_plan(loops.back()));
+      }
+      current = nullptr;
+      pass = "emit";
+      EmittedFile f = emit_file(loops, llvm::sys::path::filename(input).str(), stem); // 6. emit
+      llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
+      llvm::sys::path::append(hpp, stem + "_adjoint.hpp");
+      llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
+      pending.push_back({std::string(hpp), f.header});
+      pending.push_back({std::string(cpp), f.source});
+      llvm::SmallString<256> khpp(opts.out_dir);
+      llvm::sys::path::append(khpp, stem + "_kernels.hpp");
+      pending.push_back({std::string(khpp), f.kernels});
+      if (opts.tangent) {
+        std::vector<const Kernel*> ks;
+        for (const auto& k : kernels)
+          ks.push_back(&k);
+        pass = "tangent";
+        EmittedFile t = emit_tangent_file(ks, llvm::sys::path::filename(input).str(), stem);
+        llvm::SmallString<256> thpp(opts.out_dir), tcpp(opts.out_dir);
+        llvm::sys::path::append(thpp, stem + "_tangent.hpp");
+        llvm::sys::path::append(tcpp, stem + "_tangent.cpp");
+        pending.push_back({std::string(thpp), t.header});
+        pending.push_back({std::string(tcpp), t.source});
+      }
+    } catch (const std::exception& e) {
+      internal(e);
     }
   }
   if (!ok) {

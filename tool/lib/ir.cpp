@@ -5,6 +5,7 @@
 #include "ops.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace dpgen {
@@ -247,6 +248,18 @@ bool same(const ExprP& a, const ExprP& b) {
     if (!same(a->ops[i], b->ops[i]))
       return false;
   return true;
+}
+
+std::string internal_error_message(const std::string& kernel, const std::string& pass,
+                                   const std::string& what) {
+  return "internal error in dpgen (pass '" + pass + "' on kernel '" + kernel + "'): " + what +
+         ". This is a bug in dpgen, not in your kernel: please report it with the kernel";
+}
+
+void test_internal_error(const char* pass) {
+  const char* want = std::getenv("DPGEN_TEST_INTERNAL_ERROR");
+  if (want && std::string(want) == pass)
+    throw std::logic_error(std::string("DPGEN_TEST_INTERNAL_ERROR=") + pass);
 }
 
 } // namespace dpgen

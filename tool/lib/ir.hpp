@@ -136,6 +136,15 @@ template <typename F> ExprP map_operands(const ExprP& e, F&& f) {
 /// the enum: an internal error (std::logic_error) naming `where`.
 [[noreturn]] void unknown_op(const char* where);
 
+/// The message of an internal error (an exception from a broken invariant)
+/// caught while pass `pass` ran on kernel `kernel`: says that it is a bug in
+/// dpgen, not in the user's kernel. Reported with the id dpgen-internal.
+std::string internal_error_message(const std::string& kernel, const std::string& pass,
+                                   const std::string& what);
+/// For the tests of that report: throws std::logic_error when the environment
+/// variable DPGEN_TEST_INTERNAL_ERROR names `pass`.
+void test_internal_error(const char* pass);
+
 bool is_const(const ExprP& e, double v);
 /// Structural equality (Locals compare by identity).
 bool same(const ExprP& a, const ExprP& b);

@@ -58,6 +58,15 @@ struct Binding {
   bool deref_only = false;
 };
 
+// An error at `loc` through Clang (which shows the line and any macro
+// expansion behind it), ending with its id: "message [dpgen-loop]".
+void report_error(ASTContext& ctx, SourceLocation loc, const std::string& msg,
+                  const std::string& id) {
+  auto& d = ctx.getDiagnostics();
+  unsigned diag = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
+  d.Report(loc, diag) << msg + " [" + id + "]";
+}
+
 // Thrown to abandon a kernel after its diagnostic has been reported.
 struct Rejected {};
 
@@ -68,10 +77,8 @@ class ClangDiagnostics : public Diagnostics {
 public:
   ClangDiagnostics(ASTContext& ctx, SourceLocation fallback) : ctx_(ctx), fallback_(fallback) {}
 
-  void error(const SourcePos& at, const std::string& message) override {
-    auto& d = ctx_.getDiagnostics();
-    unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
-    d.Report(location(at), id) << message;
+  void error(const SourcePos& at, const std::string& id, const std::string& message) override {
+    report_error(ctx_, location(at), message, id);
   }
 
 private:
@@ -197,15 +204,21 @@ private:
   // ---- diagnostics -------------------------------------------------------
 
   // An error that does not stop the lowering (the others are reported too).
-  void error(SourceLocation loc, const std::string& msg) {
-    auto& d = ctx_.getDiagnostics();
-    unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error, "%0");
-    d.Report(loc, id) << msg;
+  // Every diagnostic ends with its id, clang-tidy style ("[dpgen-loop]"): the
+  // rule of the kernel subset it is about, which tests match instead of the
+  // sentence. The ids: dpgen-signature (parameters and annotations),
+  // dpgen-name (names the generated code needs), dpgen-loop (loop headers),
+  // dpgen-call (math functions and helpers), dpgen-lambda, and
+  // dpgen-unsupported (any other construct outside the subset); the output
+  // rules have theirs (check.cpp).
+  void error(SourceLocation loc, const std::string& msg, const char* id = "dpgen-unsupported") {
+    report_error(ctx_, loc, msg, id);
     failed_ = true;
   }
 
-  [[noreturn]] void fail(SourceLocation loc, const std::string& msg) {
-    error(loc, msg);
+  [[noreturn]] void fail(SourceLocation loc, const std::string& msg,
+                         const char* id = "dpgen-unsupported") {
+    error(loc, msg, id);
     throw Rejected{};
   }
 
@@ -289,14 +302,14 @@ private:
 
   void header() {
     if (isa<CXXMethodDecl>(fn_))
-      fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function");
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
     if (fn_->isTemplated() || fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate)
       fail(fn_->getLocation(), "a DPGEN_KERNEL must not be a template; write one kernel per "
-                               "element type");
+                               "element type", "dpgen-signature");
     if (!fn_->getReturnType()->isVoidType())
-      fail(fn_->getLocation(), "a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays");
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays", "dpgen-signature");
     if (fn_->isVariadic())
-      fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic");
+      fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
 
     k_.name = fn_->getNameAsString();
     k_.pos = pos(fn_->getLocation());
@@ -312,7 +325,7 @@ private:
       Param out;
       out.name = p->getNameAsString();
       if (out.name.empty())
-        fail(p->getLocation(), "every kernel parameter needs a name");
+        fail(p->getLocation(), "every kernel parameter needs a name", "dpgen-signature");
       std::string ann = annotation(p);
       QualType q = p->getType();
       std::optional<Param> size_param;
@@ -325,7 +338,7 @@ private:
           fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
                                              "and arrays as pointers, std::vector<T>& or "
                                              "std::span<T>",
-                                             out.name));
+                                             out.name), "dpgen-signature");
         // std::vector<T>& u (or std::span<T> u): elements u[i], size u.size();
         // the generated entry point takes the vectors (spans), its flat twin
         // u.data() and u.size().
@@ -337,28 +350,28 @@ private:
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
                                              "float, double or an integer type",
-                                             out.name, elem.getAsString()));
+                                             out.name, elem.getAsString()), "dpgen-signature");
         out.elem = *et;
         out.elem_name = spelled(elem);
         out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
         if (ann == "dpgen.inout")
           fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
                                              "to non-const float or double (pass {}.data())",
-                                             out.name, out.name));
+                                             out.name, out.name), "dpgen-signature");
         if (ann == "dpgen.in" || ann == "dpgen.out") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
                                                ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
-                                               out.name));
+                                               out.name), "dpgen-signature");
           if (ann == "dpgen.out" && is_const)
-            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name));
+            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
           out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
           (ann == "dpgen.in" ? any_in : any_out) = true;
         } else {
           if (!is_const)
             fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
                                                "mark it DPGEN_OUT, or make it const",
-                                               out.name));
+                                               out.name), "dpgen-signature");
           out.kind = ParamKind::ConstArray;
         }
         Param sz;
@@ -381,7 +394,7 @@ private:
           else if (!isa<VariableArrayType>(at))
             fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
                                                "kernel subset",
-                                               out.name));
+                                               out.name), "dpgen-signature");
           elem = at->getElementType();
           const_rows = const_rows || elem.isConstQualified();
         }
@@ -400,36 +413,36 @@ private:
                  fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
                              "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
                              "flat pointer indexed {}[(k * ny + j) * nx + i]",
-                             out.name, q.getAsString(), out.name, out.name, out.name));
+                             out.name, q.getAsString(), out.name, out.name, out.name), "dpgen-signature");
           if (ann == "dpgen.inout")
             fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
                                                "pointer to non-const float or double",
-                                               out.name));
+                                               out.name), "dpgen-signature");
           out.row_pointers = true;
         } else if (elem->isPointerType()) {
           fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
                                              "row pointers, outside the kernel subset",
-                                             out.name, q.getAsString()));
+                                             out.name, q.getAsString()), "dpgen-signature");
         }
         auto et = scalar_type(elem);
         if (!et || *et == Type::Bool)
           fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
                                              "float, double or an integer type",
-                                             out.name, elem.getAsString()));
+                                             out.name, elem.getAsString()), "dpgen-signature");
         out.elem = *et;
         out.elem_name = spelled(elem);
         if (ann == "dpgen.in") {
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
                                                "double, not '{}'",
-                                               out.name, elem.getAsString()));
+                                               out.name, elem.getAsString()), "dpgen-signature");
           out.kind = ParamKind::In;
           any_in = true;
         } else if (ann == "dpgen.inout") {
           if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
             fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
                                                "to non-const float or double",
-                                               out.name));
+                                               out.name), "dpgen-signature");
           out.kind = ParamKind::In;
           out.inout = true;
           any_in = any_out = true;
@@ -445,9 +458,9 @@ private:
           if (!is_real(*et))
             fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
                                                "double, not '{}'",
-                                               out.name, elem.getAsString()));
+                                               out.name, elem.getAsString()), "dpgen-signature");
           if (elem.isConstQualified())
-            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name));
+            fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
           out.kind = ParamKind::Out;
           any_out = true;
         } else {
@@ -458,12 +471,12 @@ private:
         if (!t)
           fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
                                              "subset",
-                                             out.name, q.getAsString()));
+                                             out.name, q.getAsString()), "dpgen-signature");
         if (!ann.empty() && ann != "dpgen.const")
           fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
                                              "parameters (pass a one-element array to "
                                              "differentiate a scalar)",
-                                             out.name));
+                                             out.name), "dpgen-signature");
         out.kind = ParamKind::Scalar;
         out.elem = *t;
         out.elem_name = spelled(q);
@@ -484,7 +497,7 @@ private:
           if (other.name == inout_twin->name)
             fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
                                                "for the new values of in-place array '{}'",
-                                               other.name, out.name));
+                                               other.name, out.name), "dpgen-signature");
         k_.params.push_back(*inout_twin);
         inout_twin.reset();
       }
@@ -493,7 +506,7 @@ private:
           if (other.name == size_param->name)
             fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
                                                "for vector '{}'",
-                                               other.name, out.name));
+                                               other.name, out.name), "dpgen-signature");
         k_.params.push_back(*size_param);
       }
     };
@@ -512,9 +525,9 @@ private:
     if (!any_in && params_ok)
       fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                            "nothing to differentiate",
-                                           k_.name));
+                                           k_.name), "dpgen-signature");
     if (!any_out && params_ok)
-      fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name));
+      fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name), "dpgen-signature");
     // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
     // that is larger than any column (a symbol; its value in the generated
     // code, kRowSymbolValue, is only ever compared, never used as an address).
@@ -578,7 +591,7 @@ private:
           fail(fn_->getLocation(), fmt::format("kernel '{}' mixes float and double arrays "
                                                "('{}' is {}); use one precision for all "
                                                "DPGEN_IN and DPGEN_OUT arrays",
-                                               k_.name, p.name, type_spelling(p.elem)));
+                                               k_.name, p.name, type_spelling(p.elem)), "dpgen-signature");
         real = p.elem;
       }
   }
@@ -870,15 +883,15 @@ private:
               fmt::format("parameter '{}' has the name that the generated {} gives the {} of "
                           "array '{}'; rename it",
                           name, name.back() == 'j' ? "adjoint" : "tangent",
-                          name.back() == 'j' ? "adjoint" : "tangent", a->name));
+                          name.back() == 'j' ? "adjoint" : "tangent", a->name), "dpgen-name");
       else if (name.rfind("dpgen_", 0) == 0)
         error(decl->getLocation(), fmt::format("parameter '{}': names starting with 'dpgen_' "
                                                "are reserved for generated code; rename it",
-                                               name));
+                                               name), "dpgen-name");
       else if (is_cxx_only_keyword(name))
         error(decl->getLocation(), fmt::format("parameter '{}' is a C++ keyword, and the "
                                                "generated adjoint is C++; rename it",
-                                               name));
+                                               name), "dpgen-name");
     }
     for (const auto& p : k_.params)
       if (p.synthetic)
@@ -889,7 +902,7 @@ private:
                 error(decl->getLocation(),
                       fmt::format("parameter '{}' clashes with the size dpgen passes for vector "
                                   "'{}'; rename it",
-                                  p.name, p.name.substr(0, p.name.size() - 5)));
+                                  p.name, p.name.substr(0, p.name.size() - 5)), "dpgen-name");
   }
 
   // Every name the generated code takes from the kernel (Kernel::names).
@@ -1000,7 +1013,7 @@ private:
     if (!le)
       fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
                                          "expression",
-                                         v->getNameAsString()));
+                                         v->getNameAsString()), "dpgen-lambda");
     Binding b;
     b.kind = Binding::Lambda;
     b.closure = rd;
@@ -1008,7 +1021,7 @@ private:
       if (!c.capturesVariable() || le->isInitCapture(&c))
         fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
                                           "kernel's variables (this, or an init-capture)",
-                                          v->getNameAsString()));
+                                          v->getNameAsString()), "dpgen-lambda");
       if (c.getCaptureKind() != LCK_ByCopy)
         continue;
       const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
@@ -1093,17 +1106,17 @@ private:
       fail(f->getBeginLoc(), fmt::format("a loop in helper '{}': helpers called from a kernel "
                                          "compute a value without loops; write the loop in the "
                                          "kernel",
-                                         frames_.back().fn->getNameAsString()));
+                                         frames_.back().fn->getNameAsString()), "dpgen-loop");
     // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
     const VarDecl* var = nullptr;
     const clang::Expr* init = nullptr;
     if (const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit())) {
       if (!ds->isSingleDecl())
         fail(f->getBeginLoc(), "a kernel loop declares one counter: 'for (int i = lo; i < hi; "
-                               "++i)'");
+                               "++i)'", "dpgen-loop");
       var = dyn_cast<VarDecl>(ds->getSingleDecl());
       if (!var || !var->getInit())
-        fail(f->getBeginLoc(), "loop counter needs an initial value");
+        fail(f->getBeginLoc(), "loop counter needs an initial value", "dpgen-loop");
       init = var->getInit();
     } else if (const auto* a = init_assignment(f); a) {
       const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
@@ -1111,16 +1124,16 @@ private:
       auto it = var ? env_.find(var) : env_.end();
       if (!var || it == env_.end() || it->second.kind != Binding::Value)
         fail(a->getLHS()->getBeginLoc(), "the loop counter must be a local variable of the "
-                                         "kernel: 'for (i = lo; i < hi; ++i)'");
+                                         "kernel: 'for (i = lo; i < hi; ++i)'", "dpgen-loop");
       init = a->getRHS();
     } else {
       fail(f->getBeginLoc(), "a kernel loop must set its counter: 'for (int i = lo; i < hi; ++i)' "
-                             "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'");
+                             "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'", "dpgen-loop");
     }
     QualType vt = var->getType().getCanonicalType();
     if (!vt->isIntegerType() || vt->isBooleanType())
       fail(var->getLocation(), fmt::format("loop counter '{}' must have an integer type",
-                                           var->getNameAsString()));
+                                           var->getNameAsString()), "dpgen-loop");
     in_loop_bounds_ = true; // (reset below, also when lowering them fails)
     struct Reset {
       bool& flag;
@@ -1153,15 +1166,15 @@ private:
       fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
            fmt::format("loop condition must compare the counter '{}' with a bound: "
                        "'{} < hi'",
-                       var->getNameAsString(), var->getNameAsString()));
+                       var->getNameAsString(), var->getNameAsString()), "dpgen-loop");
     // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
     int step = post_decrement ? -1 : loop_step(f->getInc(), var);
     if (step == 0)
       fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
            "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
-           "counting down)");
+           "counting down)", "dpgen-loop");
     if (step < -1)
-      fail(f->getInc()->getBeginLoc(), "a loop counting down steps by 1; count a strided loop up");
+      fail(f->getInc()->getBeginLoc(), "a loop counting down steps by 1; count a strided loop up", "dpgen-loop");
     ExprP lo, hi;
     ExprP one = int_const(1);
     switch (cond_op) {
@@ -1181,10 +1194,10 @@ private:
       lo = bound, hi = binary(Op::Add, init_value, one);
       break;
     default:
-      fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=");
+      fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=", "dpgen-loop");
     }
     if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
-      fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition");
+      fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition", "dpgen-loop");
     // Counting an unsigned counter down is safe when the counter stays above
     // zero: `i > b` (b >= 0), or `i >= b` with b >= 1; `i >= 0` wraps.
     bool stays_positive = cond_op == BO_GT ||
@@ -1193,7 +1206,7 @@ private:
       fail(f->getInc()->getBeginLoc(),
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
-                       var->getNameAsString(), var->getNameAsString(), var->getNameAsString()));
+                       var->getNameAsString(), var->getNameAsString(), var->getNameAsString()), "dpgen-loop");
     // A strided loop whose start moves with outer counters (red-black:
     // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`)
     // runs as a unit-step loop from the smallest start over the outer ranges,
@@ -1287,7 +1300,7 @@ private:
       if (!p)
         fail(loc, fmt::format("{} bound of loop '{}' must be a polynomial in the integer "
                               "parameters",
-                              what, var->getNameAsString()));
+                              what, var->getNameAsString()), "dpgen-loop");
       for (const auto& [m, coef] : p->terms())
         for (const auto& s : m)
           if (s.is_counter())
@@ -1295,7 +1308,7 @@ private:
                                   "cannot make rectangular: a bound may move with outer "
                                   "counters by constant multiples (j <= i, j < i + 3, "
                                   "std::min(n, i + w + 1), a strided start 1 + (j + 1) % 2)",
-                                  what, var->getNameAsString(), s.name));
+                                  what, var->getNameAsString(), s.name), "dpgen-loop");
     }
     {
       auto plo = to_poly(lo), phi = to_poly(hi);
@@ -1336,7 +1349,7 @@ private:
       }
     }
     if (loops_.size() == 3)
-      fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset");
+      fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset", "dpgen-loop");
 
     auto loop = std::make_shared<Loop>();
     // The counter keeps its name unless that would collide with a parameter,
@@ -1780,11 +1793,11 @@ private:
     };
     if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp() && refers(b->getLHS()))
       fail(b->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
-                                            var->getNameAsString()));
+                                            var->getNameAsString()), "dpgen-loop");
     if (const auto* u = dyn_cast<UnaryOperator>(s);
         u && u->isIncrementDecrementOp() && refers(u->getSubExpr()))
       fail(u->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
-                                            var->getNameAsString()));
+                                            var->getNameAsString()), "dpgen-loop");
     for (const Stmt* c : s->children())
       check_not_assigned(c, var);
   }
@@ -2262,7 +2275,7 @@ private:
         << fmt::format("index of '{}' is computed in the {}-bit type '{}' but multiplies {} sizes "
                        "and counters ('{}'): past 2^31 elements it overflows in this kernel (the "
                        "generated adjoint computes it in 64 bits); compute it in std::ptrdiff_t "
-                       "or long",
+                       "or long [dpgen-index-width]",
                        array, ctx_.getTypeSize(t), t.getAsString(), p->degree(), p->str());
   }
   bool warned_width_ = false;
@@ -2879,10 +2892,10 @@ private:
   ExprP call_expr(const CallExpr* c) {
     const FunctionDecl* f = c->getDirectCallee();
     if (!f)
-      fail(c->getBeginLoc(), "indirect call is outside the kernel subset");
+      fail(c->getBeginLoc(), "indirect call is outside the kernel subset", "dpgen-call");
     if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
       fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
-                                         f->getNameAsString()));
+                                         f->getNameAsString()), "dpgen-call");
     const MathFn* math = find_math_function(f->getNameAsString());
     bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                         f->getBuiltinID() != 0;
@@ -2892,11 +2905,11 @@ private:
       fail(c->getBeginLoc(), fmt::format("call to '{}', whose body dpgen cannot see: helper "
                                          "functions are inlined, so define '{}' in the kernel's "
                                          "file or a header it includes",
-                                         f->getQualifiedNameAsString(), f->getNameAsString()));
+                                         f->getQualifiedNameAsString(), f->getNameAsString()), "dpgen-call");
     if (!math)
       fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
                                          "kernel subset calls only {}",
-                                         f->getQualifiedNameAsString(), supported_calls()));
+                                         f->getQualifiedNameAsString(), supported_calls()), "dpgen-call");
     Type t = type_of(c);
     std::vector<ExprP> args;
     for (const clang::Expr* a : c->arguments())
@@ -2904,7 +2917,7 @@ private:
     std::string fnname = math->name;
     if (args.size() != math->arity)
       fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
-                                         fnname, math->arity));
+                                         fnname, math->arity), "dpgen-call");
     return call(fnname, args, t);
   }
 };
@@ -2921,7 +2934,14 @@ std::string annotation(const clang::Decl* d) {
 }
 
 bool lower_kernel(clang::ASTContext& ctx, const clang::FunctionDecl* fn, Kernel& out) {
-  return Lowerer(ctx, fn).run(out);
+  try {
+    test_internal_error("lower");
+    return Lowerer(ctx, fn).run(out);
+  } catch (const std::exception& e) { // a broken invariant: a bug in dpgen, not in the kernel
+    report_error(ctx, fn->getLocation(), internal_error_message(fn->getNameAsString(), "lower", e.what()),
+                 "dpgen-internal");
+    return false;
+  }
 }
 
 } // namespace dpgen
