@@ -6,6 +6,8 @@
 # refactoring of the generator that is meant to change nothing must print
 # "0 differ". Usage:
 #   scripts/compare_generated.sh OLD_DPGEN NEW_DPGEN [file...]
+# With COMPARE_IGNORE_IDS=1 the diagnostics' ids (" [dpgen-...]") are removed
+# from both sides first: for comparing with a dpgen from before they existed.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=$(realpath "$1") new=$(realpath "$2")
@@ -37,6 +39,9 @@ for f in "${files[@]}"; do
       echo "exit $?" >>"$d.out"
       # Paths of the temporary folders differ between the two runs.
       sed -i "s|$work/$side|OUT|g" "$d.out"
+      if [ "${COMPARE_IGNORE_IDS:-0}" = 1 ]; then
+        sed -i -E 's/ \[dpgen-[a-z-]+\]//' "$d.out"
+      fi
     done
     if diff -r "$work/old" "$work/new" >"$work/diff" 2>&1 && diff "$work/old.out" "$work/new.out" >>"$work/diff" 2>&1; then
       same=$((same + 1))

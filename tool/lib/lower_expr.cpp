@@ -1,0 +1,760 @@
+// Lowering, expressions: values, index facts, helper calls inlined, array
+// elements, casts, names, operators and math calls (lower_impl.hpp).
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+// `e >= 0` wherever this statement runs: its loops run, the counters are
+// in range, the conditions on its path hold, unsigned sizes are >= 0.
+bool Lowerer::provably_nonneg(const ExprP& e, const std::vector<PathCond>& more) const {
+  auto p = to_poly(e);
+  if (!p)
+    return false;
+  Facts f;
+  for (const auto& pc : more)
+    add_facts_with_counters(pc, f);
+  for (const auto& l : loops_) {
+    add_nonempty(*l, f);
+    add_counter_range(*l, f);
+  }
+  for (const auto& pc : path_)
+    add_facts_with_counters(pc, f);
+  for (const auto& [name, v] : signed_views_)
+    f.push_back(*to_poly(v));
+  // `a != b` (`i == 0 ? ... : i - 1` in its else arm) is a case split:
+  // a - b >= 1 or b - a >= 1; the goal must hold in both.
+  std::vector<Poly> ne;
+  auto collect_ne = [&](const PathCond& pc) {
+    const ExprP& c = pc.cond;
+    bool is_ne = (c->op == Op::Ne && pc.positive) || (c->op == Op::Eq && !pc.positive);
+    if (is_ne && c->ops.size() == 2 && c->ops[0]->type == Type::Int)
+      if (auto pa = to_poly(c->ops[0]), pb = to_poly(c->ops[1]); pa && pb)
+        ne.push_back(*pa - *pb);
+  };
+  for (const auto& pc : more)
+    collect_ne(pc);
+  for (const auto& pc : path_)
+    collect_ne(pc);
+  if (ne.size() > 3)
+    ne.resize(3);
+  std::function<bool(size_t, Facts&)> split = [&](size_t k, Facts& facts) {
+    if (k == ne.size())
+      return prove_nonneg(*p, facts);
+    for (const Poly& side : {ne[k] - Poly::constant(1), -ne[k] - Poly::constant(1)}) {
+      facts.push_back(side);
+      bool ok = split(k + 1, facts);
+      facts.pop_back();
+      if (!ok)
+        return false;
+    }
+    return true;
+  };
+  return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
+}
+
+// The value of `e` only goes into an array index (through + - * and
+// conversions): if it wraps, the kernel itself reads out of bounds.
+bool Lowerer::feeds_index_only(const clang::Expr* e) {
+  const clang::Stmt* child = e;
+  for (int depth = 0; depth < 32; ++depth) {
+    auto parents = ctx_.getParents(*child);
+    if (parents.size() != 1)
+      return false;
+    const clang::Stmt* up = parents[0].get<clang::Stmt>();
+    if (!up)
+      return false;
+    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(up))
+      return sub->getIdx()->IgnoreParenImpCasts() == child ||
+             sub->getIdx() == child;
+    if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(up))
+      return oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2 &&
+             oc->getArg(1)->IgnoreParenImpCasts() == static_cast<const clang::Expr*>(child)->IgnoreParens();
+    if (const auto* b = dyn_cast<BinaryOperator>(up)) {
+      if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub && b->getOpcode() != BO_Mul)
+        return false;
+    } else if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
+      // an arm (`i == 0 ? n - 1 : i - 1`): taken only where it is the index
+      if (c->getCond() == child || c->getCond()->IgnoreParenImpCasts() == child)
+        return false;
+    } else if (!isa<ParenExpr>(up) && !isa<ImplicitCastExpr>(up)) {
+      return false;
+    }
+    child = up;
+  }
+  return false;
+}
+
+// The conditions of the ternaries `e` is an arm of (`i == 0 ? n - 1 : i - 1`).
+std::vector<PathCond> Lowerer::arm_conditions(const clang::Expr* e) {
+  std::vector<PathCond> out;
+  const clang::Stmt* child = e;
+  for (int depth = 0; depth < 32; ++depth) {
+    auto parents = ctx_.getParents(*child);
+    if (parents.size() != 1)
+      break;
+    const clang::Stmt* up = parents[0].get<clang::Stmt>();
+    if (!up || !isa<clang::Expr>(up))
+      break;
+    if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
+      bool in_true = c->getTrueExpr() == child, in_false = c->getFalseExpr() == child;
+      if (in_true || in_false)
+        out.push_back({cond(c->getCond()), in_true});
+    }
+    child = up;
+  }
+  return out;
+}
+
+void Lowerer::check_unsigned_result(const ExprP& value, SourceLocation loc, const std::string& what, const clang::Expr* node) {
+  if (in_loop_bounds_ || feeds_index_only(node) || provably_nonneg(value) ||
+      provably_nonneg(value, arm_conditions(node)))
+    return;
+  fail(loc, fmt::format("{} may go below zero here, where the kernel's unsigned arithmetic "
+                        "wraps around but dpgen's index arithmetic (signed, 64 bits) does not: "
+                        "compute it in a signed type, or guard it so that it stays >= 0 (dpgen "
+                        "proves that from the loop bounds and the conditions around it)",
+                        what));
+}
+
+bool Lowerer::paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
+  for (const auto& x : a)
+    for (const auto& y : b)
+      if (x.cond == y.cond && x.positive != y.positive)
+        return true;
+  return false;
+}
+
+// An index that multiplies three or more sizes and counters (a 3D
+// `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
+// 32-bit type it overflows, in the forward kernel and in its adjoint alike.
+void Lowerer::check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array) {
+  QualType t = e->IgnoreImpCasts()->getType();
+  if (ctx_.getTypeSize(t) >= 64)
+    return;
+  auto p = to_poly(idx);
+  if (!p || p->degree() < 3)
+    return;
+  // The forward kernel has the same limit; the adjoint computes its indices
+  // in 64 bits, so this is a warning about the user's code, not an error.
+  if (warned_width_)
+    return; // once per kernel
+  warned_width_ = true;
+  auto& d = ctx_.getDiagnostics();
+  unsigned id = d.getCustomDiagID(DiagnosticsEngine::Warning, "%0");
+  d.Report(e->getBeginLoc(), id)
+      << fmt::format("index of '{}' is computed in the {}-bit type '{}' but multiplies {} sizes "
+                     "and counters ('{}'): past 2^31 elements it overflows in this kernel (the "
+                     "generated adjoint computes it in 64 bits); compute it in std::ptrdiff_t "
+                     "or long [dpgen-index-width]",
+                     array, ctx_.getTypeSize(t), t.getAsString(), p->degree(), p->str());
+}
+
+ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
+  const FunctionDecl* def = nullptr;
+  f->hasBody(def);
+  for (const auto& fr : frames_)
+    if (fr.fn->getCanonicalDecl() == def->getCanonicalDecl())
+      fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
+                                         def->getNameAsString()));
+  if (frames_.size() == 16)
+    fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
+  // A lambda of the kernel: its call operator, the closure object first.
+  unsigned first = 0;
+  if (const auto* m = dyn_cast<CXXMethodDecl>(def); m && m->getParent()->isLambda()) {
+    const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
+    const auto* ref =
+        oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
+    const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+    if (lv && poisoned_.count(lv))
+      throw Rejected{}; // its declaration's error is reported already
+    auto it = lv ? env_.find(lv) : env_.end();
+    if (it == env_.end() || it->second.kind != Binding::Lambda)
+      fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
+                             "(auto f = [&](...) {...}; f(...))");
+    if (!m->isConst())
+      fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
+                                         "changes from one call to the next, which inlining "
+                                         "does not; make it a plain lambda",
+                                         lv->getNameAsString()));
+    for (const auto& [cv, was] : it->second.captured_arrays)
+      if (env_[cv].elems != was)
+        fail(c->getBeginLoc(), fmt::format("lambda '{}' captured local array '{}' by copy, "
+                                           "and '{}' changed before this call; capture it by "
+                                           "reference, or make the lambda after the change",
+                                           lv->getNameAsString(), cv->getNameAsString(),
+                                           cv->getNameAsString()));
+    for (const auto& [cv, was] : it->second.captured)
+      if (env_[cv].value != was)
+        fail(c->getBeginLoc(), fmt::format("lambda '{}' captured '{}' by copy, and '{}' "
+                                           "changed before this call; capture it by "
+                                           "reference, or make the lambda after the change",
+                                           lv->getNameAsString(), cv->getNameAsString(),
+                                           cv->getNameAsString()));
+    first = 1;
+  } else if (isa<CXXMethodDecl>(def) || def->isVariadic()) {
+    fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
+                                       "free helper functions only",
+                                       def->getNameAsString()));
+  }
+  const bool is_void = def->getReturnType()->isVoidType();
+  auto rt = is_void ? std::optional<Type>(Type::Double) : scalar_type(def->getReturnType());
+  if (!rt || def->getReturnType()->isReferenceType())
+    fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
+                                       "returns an int, float, double or bool value (or "
+                                       "void, with its results in out-parameters)",
+                                       def->getNameAsString(),
+                                       def->getReturnType().getAsString()));
+  if (c->getNumArgs() != def->getNumParams() + first)
+    fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
+  // Bind the parameters (arguments are evaluated in the caller's scope).
+  std::vector<std::pair<const VarDecl*, Binding>> binds;
+  // Out-parameters: `double& f` and `double* f` (called with `&x`) bound to
+  // a local x of the caller: copied in, and copied back after the body
+  // (the same as a reference while no two of them name one local).
+  std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
+  auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
+    const clang::Expr* a = arg->IgnoreParenImpCasts();
+    if (pointer) {
+      const auto* u = dyn_cast<UnaryOperator>(a);
+      a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
+    }
+    const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? env_.find(v) : env_.end();
+    if (it == env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
+      fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
+                                           "be {}a local variable of the caller",
+                                           pd->getNameAsString(), def->getNameAsString(),
+                                           pointer ? "the address of " : ""));
+    for (const auto& [q, w] : outs)
+      if (w == v)
+        fail(arg->getBeginLoc(), fmt::format("local '{}' is passed to two out-parameters of "
+                                             "helper '{}'",
+                                             v->getNameAsString(), def->getNameAsString()));
+    if (!is_void)
+      fail(pd->getLocation(), fmt::format("helper '{}' returns a value and has out-parameter "
+                                          "'{}': return void and put every result in an "
+                                          "out-parameter, or return the one result",
+                                          def->getNameAsString(), pd->getNameAsString()));
+    Binding b = it->second;
+    b.deref_only = pointer;
+    binds.push_back({pd, b});
+    outs.push_back({pd, v});
+  };
+  for (unsigned i = 0; i < def->getNumParams(); ++i) {
+    const ParmVarDecl* pd = def->getParamDecl(i);
+    const clang::Expr* arg = c->getArg(i + first);
+    QualType pt = pd->getType();
+    if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
+        scalar_type(pt->getPointeeType()) && [&] {
+          const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
+          return u && u->getOpcode() == UO_AddrOf;
+        }()) {
+      out_param(pd, arg, true);
+      continue;
+    }
+    if (pt->isPointerType()) {
+      const clang::Expr* base = arg->IgnoreParenImpCasts();
+      const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
+      if (!ap)
+        fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
+                                             "'{}' must be an array parameter of the kernel "
+                                             "itself (no pointer arithmetic)",
+                                             pd->getNameAsString(), def->getNameAsString()));
+      Binding b;
+      b.kind = Binding::ArrayParam;
+      b.param = ap;
+      binds.push_back({pd, b});
+      continue;
+    }
+    if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) {
+      if (!scalar_type(pt.getNonReferenceType()))
+        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', "
+                                            "outside the kernel subset",
+                                            pd->getNameAsString(), def->getNameAsString(),
+                                            pt.getAsString()));
+      out_param(pd, arg, false);
+      continue;
+    }
+    auto t = scalar_type(pt.getNonReferenceType());
+    if (!t)
+      fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
+                                          "the kernel subset",
+                                          pd->getNameAsString(), def->getNameAsString(),
+                                          pt.getAsString()));
+    Binding b;
+    b.kind = Binding::Value;
+    b.value = make_local(pd->getNameAsString(), pd, cast(expr(arg), *t));
+    binds.push_back({pd, b});
+  }
+  for (const auto& [pd, b] : binds)
+    env_[pd] = b;
+  frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
+  Escape e;
+  try {
+    e = lower(def->getBody());
+  } catch (const Rejected&) {
+    path_.resize(frames_.back().path_depth);
+    frames_.pop_back();
+    throw;
+  }
+  InlineFrame fr = frames_.back();
+  frames_.pop_back();
+  path_.resize(fr.path_depth);
+  if (is_void) {
+    for (const auto& [pd, v] : outs)
+      env_[v].value = env_[pd].value;
+    return nullptr;
+  }
+  if (e != Escape::Always || fr.returns.empty())
+    fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
+                                                  "returning a value",
+                                                  def->getNameAsString()));
+  // The last return is reached when no earlier one was.
+  ExprP v = fr.returns.back().second;
+  for (size_t i = fr.returns.size() - 1; i-- > 0;) {
+    ExprP cond;
+    for (const auto& pc : fr.returns[i].first) {
+      ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
+      cond = cond ? binary(Op::And, cond, c1) : c1;
+    }
+    v = cond ? select(cond, fr.returns[i].second, v) : fr.returns[i].second;
+  }
+  return v;
+}
+
+auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
+  e = e->IgnoreParens();
+  if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
+    const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
+    if (isa<DeclRefExpr>(base)) {
+      const Param* p = array_base(base);
+      if (p->row_pointers)
+        fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
+                                              "its elements as {}[j][i]",
+                                              p->name, p->name, p->name));
+      return Access{p, int_const(0)};
+    }
+    fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                              "parameter directly: a[i + 1]");
+  }
+  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
+      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
+    // v[i] of a std::vector parameter
+    const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
+    if (!isa<DeclRefExpr>(base))
+      fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
+    const Param* p = array_base(base);
+    ExprP idx = expr(oc->getArg(1));
+    if (idx->type != Type::Int)
+      fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
+    return Access{p, idx};
+  }
+  const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
+  if (!sub)
+    return std::nullopt;
+  ExprP idx = expr(sub->getIdx());
+  if (idx->type != Type::Int)
+    fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
+  const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
+  if (const auto* row = dyn_cast<ArraySubscriptExpr>(base);
+      row && row->getType().getCanonicalType()->isPointerType()) {
+    // a[j][i] of row pointers `double** a`: the flat j * R + i (R the row
+    // symbol); a[k][j][i] of `double*** a`: k * P + j * R + i. The indices
+    // must be affine: the printer writes them back as [k][j][i].
+    std::vector<const clang::Expr*> outer = {row->getIdx()}; // j, then k
+    const clang::Expr* rb = row->getBase()->IgnoreParenImpCasts();
+    if (const auto* plane = dyn_cast<ArraySubscriptExpr>(rb);
+        plane && plane->getType().getCanonicalType()->isPointerType()) {
+      outer.push_back(plane->getIdx());
+      rb = plane->getBase()->IgnoreParenImpCasts();
+    }
+    const Param* p = isa<DeclRefExpr>(rb) ? array_base(rb) : nullptr;
+    if (!p || !p->row_pointers)
+      fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
+                                "'double**' or 'double***' kernel parameter: a[j][i], "
+                                "a[k][j][i]");
+    if (outer.size() != (p->plane_pointers ? 2u : 1u))
+      fail(sub->getBeginLoc(), fmt::format("'{}' is indexed with {} subscripts; index its "
+                                           "elements as {}",
+                                           p->name, outer.size() + 1,
+                                           p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
+    ExprP flat = idx;
+    std::vector<ExprP> symbols = {row_lengths_.at(p->name)};
+    if (p->plane_pointers)
+      symbols.push_back(plane_lengths_.at(p->name));
+    bool affine = to_poly(idx).has_value();
+    for (size_t d = 0; d < outer.size(); ++d) {
+      ExprP x = expr(outer[d]);
+      if (x->type != Type::Int)
+        fail(outer[d]->getBeginLoc(), "array index must be an integer");
+      affine = affine && to_poly(x).has_value();
+      flat = binary(Op::Add, binary(Op::Mul, x, symbols[d]), flat);
+    }
+    if (!affine)
+      fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
+                                           "data-dependent row or column; dpgen needs every "
+                                           "index of a[j][i] affine in the loop counters "
+                                           "and sizes for row pointers (pass a flat array for "
+                                           "interpolation)",
+                                           p->name));
+    return Access{p, flat};
+  }
+  if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
+    // a[j][i]: row j of an array of rows, each `extent` elements long.
+    QualType rt = row->getType().getCanonicalType();
+    const clang::ArrayType* at = ctx_.getAsArrayType(rt);
+    if (!at)
+      fail(base->getBeginLoc(),
+           "rows reached through a pointer ('double** a', a[j][i]) are outside the kernel "
+           "subset: dpgen cannot prove rows do not overlap; pass the array as 'double (*a)[N]', "
+           "'double a[][N]' or a flat pointer with a[j * N + i]");
+    ExprP extent;
+    if (const auto* c = dyn_cast<ConstantArrayType>(at))
+      extent = int_const(static_cast<long long>(c->getSize().getZExtValue()));
+    else if (const auto* v = dyn_cast<VariableArrayType>(at))
+      extent = expr(v->getSizeExpr());
+    else
+      fail(base->getBeginLoc(), "this array type is outside the kernel subset");
+    auto inner = element(row);
+    ExprP flat = binary(Op::Add, binary(Op::Mul, inner->index, extent), idx);
+    // (the flat index of a[j][i] is computed by the compiler in 64 bits)
+    return Access{inner->param, flat};
+  }
+  const Param* p = array_base(base);
+  if (p->row_pointers)
+    fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
+                                         "value; index its elements as {}[j][i]",
+                                         p->name, p->name, p->name));
+  check_index_width(sub->getIdx(), idx, p->name);
+  return Access{p, idx};
+}
+
+const Param* Lowerer::array_base(const clang::Expr* base) {
+  const auto* ref = dyn_cast<DeclRefExpr>(base);
+  if (!ref) {
+    if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
+      fail(base->getBeginLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                                "parameter directly: a[i + 1]");
+    fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+  }
+  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && poisoned_.count(v))
+    throw Rejected{}; // its declaration's error is reported already
+  auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
+  if (it == env_.end() || it->second.kind != Binding::ArrayParam) {
+    if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && v->hasGlobalStorage())
+      fail(base->getBeginLoc(), fmt::format("'{}' is global state, outside the kernel subset",
+                                            v->getNameAsString()));
+    fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+  }
+  return it->second.param;
+}
+
+ExprP Lowerer::expr(const clang::Expr* e) {
+  e = e->IgnoreParens();
+  if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
+    return cast_expr(c, c->getSubExpr());
+  if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
+    return cast_expr(c, c->getSubExpr());
+  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
+    return expr(m->getSubExpr());
+  if (const auto* w = dyn_cast<ExprWithCleanups>(e))
+    return expr(w->getSubExpr());
+  if (const auto* c = dyn_cast<ConstantExpr>(e))
+    return expr(c->getSubExpr());
+  if (const auto* l = dyn_cast<IntegerLiteral>(e))
+    return int_const(static_cast<long long>(l->getValue().getSExtValue()));
+  if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
+    Type t = type_of(e);
+    // The literal as written; from a macro (`#define C 0.5` in a header the
+    // generated code does not include), its spelling in the definition.
+    SourceLocation at = l->getLocation();
+    std::string spelled_as =
+        at.isMacroID()
+            ? Lexer::getSourceText(CharSourceRange::getTokenRange(sm_.getSpellingLoc(at)), sm_,
+                                   ctx_.getLangOpts())
+                  .str()
+            : text(l);
+    return real_const(l->getValueAsApproximateDouble(), t, spelled_as);
+  }
+  if (const auto* l = dyn_cast<CXXBoolLiteralExpr>(e))
+    return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
+  if (const auto* r = dyn_cast<DeclRefExpr>(e))
+    return decl_ref(r);
+  if (const VarDecl* v = deref_local(e)) {
+    const Binding& b = env_[v];
+    if (!b.value)
+      fail(e->getBeginLoc(), unset_message(v, "may be used before it has a value"));
+    return *b.value;
+  }
+  if (auto le = local_element(e)) {
+    const std::optional<ExprP>& v = env_[le->first].elems[le->second];
+    if (!v)
+      fail(e->getBeginLoc(), unset_message(le->first, "may be used before it has a value"));
+    return *v;
+  }
+  if (auto acc = element(e)) {
+    const Param* p = acc->param;
+    if (p->kind == ParamKind::Out) {
+      // An output read back in the iteration that stored it: that value.
+      order_after_later_stores(p->name);
+      auto nit = nest_index_.find(cur_key());
+      Store* st = nit == nest_index_.end()
+                      ? nullptr
+                      : visible_store(k_.nests[nit->second], p->name, acc->index);
+      // An output an earlier loop nest wrote (a work array: fluxes, then
+      // the update from them): an intermediate, read like an input; the
+      // adjoint recomputes it and runs the nests backwards.
+      if (!st && written_by_other_nest(p->name)) {
+        if (loops_.empty() && !path_reads_ok_)
+          acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
+        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+        std::const_pointer_cast<Expr>(r)->source = text(e);
+        k_.intermediates.insert(p->name);
+        acc_.work_reads.push_back(
+            {p->name, cur_key(), next_store_seq_, acc->index, path_, pos(e->getBeginLoc())});
+        return r;
+      }
+      if (!st || st->accumulate)
+        fail(e->getBeginLoc(),
+             fmt::format("reads output '{}'{}: the adjoint has only the output's seed, not its "
+                         "values; read the input it came from, or store it earlier in the same "
+                         "iteration and read it back at the same index",
+                         p->name, st ? " after '+=' (its previous contents)" : ""));
+      return st->value;
+    }
+    if (p->inout)
+      return inout_value(p, acc->index, e->getBeginLoc(), e);
+    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+    std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
+    return r;
+  }
+  if (const auto* u = dyn_cast<UnaryOperator>(e)) {
+    switch (u->getOpcode()) {
+    case UO_Minus: {
+      ExprP x = expr(u->getSubExpr());
+      if (u->getType()->isUnsignedIntegerType())
+        check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
+                              fmt::format("unsigned negation '{}'", text(u)), u);
+      return unary(Op::Neg, x);
+    }
+    case UO_Plus:
+      return expr(u->getSubExpr());
+    case UO_LNot:
+      return unary(Op::Not, cond(u->getSubExpr()));
+    case UO_Deref: // `*p` of a parameter is an element access (handled above)
+    case UO_AddrOf:
+      fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
+                                "parameters directly");
+    default:
+      fail(u->getOperatorLoc(), "increment/decrement inside an expression is outside the "
+                                "kernel subset");
+    }
+  }
+  if (const auto* b = dyn_cast<BinaryOperator>(e))
+    return binary_expr(b);
+  if (const auto* c = dyn_cast<ConditionalOperator>(e)) {
+    ExprP cc = cond(c->getCond());
+    Type t = type_of(c);
+    return select(cc, cast(expr(c->getTrueExpr()), t), cast(expr(c->getFalseExpr()), t));
+  }
+  if (const auto* m = dyn_cast<CXXMemberCallExpr>(e)) {
+    const auto* obj = dyn_cast<DeclRefExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+    auto it = obj ? env_.find(dyn_cast<VarDecl>(obj->getDecl())) : env_.end();
+    const CXXMethodDecl* md = m->getMethodDecl();
+    if (it != env_.end() && it->second.kind == Binding::ArrayParam &&
+        !it->second.param->container.empty() && md && md->getName() == "size" &&
+        m->getNumArgs() == 0)
+      return scalar_param(it->second.param->name + "_size", Type::Int);
+    fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
+                          "parameter, the kernel may call size())");
+  }
+  if (const auto* c = dyn_cast<CallExpr>(e))
+    return call_expr(c);
+  fail(e->getExprLoc(), fmt::format("expression '{}' is outside the kernel subset",
+                                    e->getStmtClassName()));
+}
+
+ExprP Lowerer::cast_expr(const CastExpr* c, const clang::Expr* sub) {
+  switch (c->getCastKind()) {
+  case CK_LValueToRValue:
+  case CK_NoOp:
+    return expr(sub);
+  case CK_IntegralCast: {
+    // An explicit cast that widens to 64 bits is kept, so index arithmetic
+    // stays as wide in the adjoint as in the kernel; implicit promotions
+    // happen again by themselves around it.
+    ExprP inner = expr(sub);
+    QualType to = c->getType().getCanonicalType(), from = sub->getType().getCanonicalType();
+    if (to->isUnsignedIntegerType() && from->isSignedIntegerType())
+      check_unsigned_result(inner, c->getExprLoc(),
+                            fmt::format("'{}', converted to unsigned '{}',", text(sub),
+                                        to.getAsString()),
+                            c);
+    if (!to->isBooleanType() && ctx_.getTypeSize(to) < 32 &&
+        ctx_.getTypeSize(to) < ctx_.getTypeSize(from) && !in_loop_bounds_) {
+      auto pv = to_poly(inner);
+      if (!pv || !pv->is_constant())
+        fail(c->getExprLoc(), fmt::format("conversion of '{}' to '{}' may truncate it; dpgen "
+                                          "computes integers in 64 bits: use int or a wider "
+                                          "type",
+                                          text(sub), to.getAsString()));
+    }
+    const auto* implicit = dyn_cast<ImplicitCastExpr>(c);
+    bool explicit_cast = isa<ExplicitCastExpr>(c) || (implicit && implicit->isPartOfExplicitCast());
+    if (!explicit_cast || ctx_.getTypeSize(c->getType()) < 64 ||
+        ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
+      return inner;
+    auto w = std::make_shared<dpgen::Expr>();
+    w->op = Op::Cast;
+    w->type = Type::Int;
+    w->ops = {inner};
+    w->cast_type = spelled(c->getType());
+    return w;
+  }
+  case CK_IntegralToFloating:
+  case CK_FloatingCast:
+  case CK_FloatingToIntegral:
+    return cast(expr(sub), type_of(c));
+  case CK_IntegralToBoolean:
+  case CK_FloatingToBoolean:
+    return cond(sub);
+  case CK_BooleanToSignedIntegral:
+  case CK_ToVoid:
+  default:
+    if (c->getType()->isPointerType() || sub->getType()->isPointerType())
+      fail(c->getExprLoc(), "pointer arithmetic is outside the kernel subset");
+    fail(c->getExprLoc(), fmt::format("conversion '{}' is outside the kernel subset",
+                                      c->getCastKindName()));
+  }
+}
+
+ExprP Lowerer::decl_ref(const DeclRefExpr* r) {
+  if (const auto* ec = dyn_cast<EnumConstantDecl>(r->getDecl()))
+    return int_const(ec->getInitVal().getSExtValue());
+  const auto* v = dyn_cast<VarDecl>(r->getDecl());
+  if (!v)
+    fail(r->getLocation(), fmt::format("'{}' is outside the kernel subset",
+                                       r->getDecl()->getNameAsString()));
+  if (poisoned_.count(v))
+    throw Rejected{}; // its declaration's error is reported already
+  auto it = env_.find(v);
+  if (it == env_.end()) {
+    // A global constant with a known value is a constant.
+    if (v->hasGlobalStorage() && v->getType().isConstQualified()) {
+      if (const clang::Expr* init = v->getAnyInitializer()) {
+        clang::Expr::EvalResult res;
+        if (init->EvaluateAsRValue(res, ctx_) && res.Val.isFloat())
+          return real_const(res.Val.getFloat().convertToDouble(), type_of(r));
+        if (init->EvaluateAsRValue(res, ctx_) && res.Val.isInt())
+          return int_const(res.Val.getInt().getSExtValue());
+      }
+    }
+    fail(r->getLocation(), fmt::format("'{}' is global state, outside the kernel subset; "
+                                       "pass it as a parameter",
+                                       v->getNameAsString()));
+  }
+  const Binding& b = it->second;
+  switch (b.kind) {
+  case Binding::ScalarParam:
+    return scalar_param(b.param->name, b.param->elem);
+  case Binding::ArrayParam:
+    fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
+                                       "read",
+                                       b.param->name));
+  case Binding::LoopVar:
+    return *b.value;
+  case Binding::LocalArray:
+    fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
+                                       "can be read",
+                                       v->getNameAsString()));
+  case Binding::Lambda:
+    fail(r->getLocation(), fmt::format("lambda '{}' is used other than called; a kernel calls "
+                                       "its lambdas, which dpgen inlines",
+                                       v->getNameAsString()));
+  case Binding::Value:
+    if (b.deref_only)
+      fail(r->getLocation(), fmt::format("pointer '{}' to a local is used without '*': only "
+                                         "'*{}' is in the kernel subset",
+                                         v->getNameAsString(), v->getNameAsString()));
+    if (!b.value)
+      fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
+    return *b.value;
+  }
+  throw std::logic_error("internal error: lower: a binding of no known kind");
+}
+
+ExprP Lowerer::binary_expr(const BinaryOperator* b) {
+  if (b->isAssignmentOp())
+    fail(b->getOperatorLoc(), "assignment inside an expression is outside the kernel subset");
+  if (b->getOpcode() == BO_Comma)
+    fail(b->getOperatorLoc(), "comma operator is outside the kernel subset");
+  if (b->getOpcode() == BO_LAnd || b->getOpcode() == BO_LOr)
+    return binary(b->getOpcode() == BO_LAnd ? Op::And : Op::Or, cond(b->getLHS()),
+                  cond(b->getRHS()));
+  ExprP l = expr(b->getLHS()), r = expr(b->getRHS());
+  switch (b->getOpcode()) {
+  case BO_Add:
+    return binary(Op::Add, l, r);
+  case BO_Sub:
+    if (b->getType()->isUnsignedIntegerType())
+      check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
+                            fmt::format("unsigned difference '{}'", text(b)), b);
+    return binary(Op::Sub, l, r);
+  case BO_Mul:
+    return binary(Op::Mul, l, r);
+  case BO_Div:
+    return binary(Op::Div, l, r);
+  case BO_Rem:
+    return binary(Op::Rem, l, r);
+  case BO_LT:
+    return binary(Op::Lt, l, r);
+  case BO_LE:
+    return binary(Op::Le, l, r);
+  case BO_GT:
+    return binary(Op::Gt, l, r);
+  case BO_GE:
+    return binary(Op::Ge, l, r);
+  case BO_EQ:
+    return binary(Op::Eq, l, r);
+  case BO_NE:
+    return binary(Op::Ne, l, r);
+  default:
+    fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
+                                          b->getOpcodeStr().str()));
+  }
+}
+
+ExprP Lowerer::call_expr(const CallExpr* c) {
+  const FunctionDecl* f = c->getDirectCallee();
+  if (!f)
+    fail(c->getBeginLoc(), "indirect call is outside the kernel subset", "dpgen-call");
+  if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
+    fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
+                                       f->getNameAsString()), "dpgen-call");
+  const MathFn* math = find_math_function(f->getNameAsString());
+  bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
+                      f->getBuiltinID() != 0;
+  if (!from_library && f->hasBody())
+    return inline_call(c, f);
+  if (!from_library)
+    fail(c->getBeginLoc(), fmt::format("call to '{}', whose body dpgen cannot see: helper "
+                                       "functions are inlined, so define '{}' in the kernel's "
+                                       "file or a header it includes",
+                                       f->getQualifiedNameAsString(), f->getNameAsString()), "dpgen-call");
+  if (!math)
+    fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
+                                       "kernel subset calls only {}",
+                                       f->getQualifiedNameAsString(), supported_calls()), "dpgen-call");
+  Type t = type_of(c);
+  std::vector<ExprP> args;
+  for (const clang::Expr* a : c->arguments())
+    args.push_back(cast(expr(a), t == Type::Int ? type_of(a) : t));
+  std::string fnname = math->name;
+  if (args.size() != math->arity)
+    fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
+                                       fnname, math->arity), "dpgen-call");
+  return call(fnname, args, t);
+}
+
+} // namespace dpgen::lowering

@@ -1,0 +1,471 @@
+// The lowering's internals (lower.hpp is its interface), shared by the files
+// it is split into along its seams: lower.cpp (the driver: run, statements'
+// error recovery, the checks), lower_signature.cpp (parameters and names),
+// lower_stmt.cpp (statements, declarations, stores), lower_loop.cpp (loops,
+// their bounds, accumulators), lower_expr.cpp (expressions, helper calls,
+// array elements). Included by those files only.
+#pragma once
+
+#include "lower.hpp"
+#include "check.hpp"
+#include "ir_walk.hpp"
+#include "ops.hpp"
+
+#include "affine.hpp"
+#include "prove.hpp"
+
+#include <clang/AST/ASTContext.h>
+#include <clang/AST/Attr.h>
+#include <clang/AST/Expr.h>
+#include <clang/AST/ExprCXX.h>
+#include <clang/AST/ParentMapContext.h>
+#include <clang/AST/Stmt.h>
+#include <clang/AST/StmtCXX.h>
+#include <clang/AST/StmtOpenMP.h>
+#include <clang/Basic/FileManager.h>
+#include <clang/Basic/SourceManager.h>
+#include <clang/Lex/Lexer.h>
+#include <fmt/format.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+namespace dpgen::lowering {
+
+using namespace clang;
+
+// What a name in the kernel body refers to.
+struct Binding {
+  enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray, Lambda } kind;
+  // Lambda: the closure's class, and the value each variable captured by copy
+  // had when the lambda was made (a call checks it has not changed since).
+  const clang::CXXRecordDecl* closure = nullptr;
+  std::vector<std::pair<const clang::VarDecl*, std::optional<ExprP>>> captured;
+  std::vector<std::pair<const clang::VarDecl*, std::vector<std::optional<ExprP>>>>
+      captured_arrays; // local arrays captured by copy: their elements then
+  std::optional<ExprP> value;              // Value: current SSA value (none: uninitialised)
+  std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
+  Type elem = Type::Double; // LocalArray: element type
+  const Param* param = nullptr;
+  bool kernel_level = false; // Value defined outside every loop
+  // Value: a helper's pointer parameter bound to a caller's local (`&f`),
+  // used only as `*p`; the binding holds the local's value.
+  bool deref_only = false;
+};
+
+// An error at `loc` through Clang (which shows the line and any macro
+// expansion behind it), ending with its id: "message [dpgen-loop]".
+void report_error(ASTContext& ctx, SourceLocation loc, const std::string& msg,
+                  const std::string& id);
+
+// Thrown to abandon a kernel after its diagnostic has been reported.
+struct Rejected {};
+
+enum class Escape { None, Always };
+class Lowerer {
+public:
+  Lowerer(ASTContext& ctx, const FunctionDecl* fn) : ctx_(ctx), sm_(ctx.getSourceManager()), fn_(fn) {}
+
+  bool run(Kernel& out);
+
+  // Errors in one statement do not stop the lowering of the next ones, so a
+  // run reports every error of a kernel. A variable whose declaration failed
+  // is poisoned: its uses are not reported again.
+  bool failed_ = false;
+  std::set<const VarDecl*> poisoned_;
+
+  // Lowers `s`; on an error (already reported) marks the kernel failed and
+  // goes on, unless inside a helper or an unrolled loop (whose copies would
+  // repeat the same error), where the error propagates.
+  Escape lower_recovering(const Stmt* s);
+
+private:
+  ASTContext& ctx_;
+  SourceManager& sm_;
+  const FunctionDecl* fn_;
+  Kernel k_;
+  std::map<const VarDecl*, Binding> env_;
+  std::vector<PathCond> path_;
+  std::vector<std::shared_ptr<Loop>> loops_;
+  // Each `for` statement lowered gets its own number; a nest is keyed by the
+  // numbers of the loops around it, so two nests never share an entry even
+  // when they reuse counter names (or a freed Loop's address).
+  std::vector<int> loop_ids_;
+  int next_loop_id_ = 0;
+  // Straight-line code after a loop that stored an output, and that reads or
+  // rewrites what the loop stored, runs after the loop: it opens a new
+  // segment, a nest of its own at the same depth (negative numbers, one per
+  // depth, the last entry of a nest's key).
+  std::vector<int> segments_{-1};
+  int next_segment_ = -1;
+  std::vector<int> cur_key() const {
+    std::vector<int> k = loop_ids_;
+    k.push_back(segments_.back());
+    return k;
+  }
+  // A statement that reads `array` (an output) or updates an element of it
+  // that this nest stored goes after every nest created since this one that
+  // stores `array` (a loop that accumulated into it, or wrote it): a new
+  // segment. Otherwise it would be folded into the earlier statements.
+  void order_after_later_stores(const std::string& array);
+  std::map<std::vector<int>, size_t> nest_index_;
+  std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
+  std::map<std::string, ExprP> plane_lengths_; // double*** array -> its plane symbol
+  std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
+  ExprP scalar_param(const std::string& name, Type t) {
+    auto it = signed_views_.find(name);
+    return it != signed_views_.end() ? it->second : param(name, t);
+  }
+  std::set<std::string> local_names_;
+  std::set<std::string> loop_names_; // every counter name the generated code uses
+  // Why a variable has no value here, where that is more than "not yet set".
+  std::map<const VarDecl*, std::string> why_unset_;
+  int next_local_id_ = 0;
+
+  // ---- diagnostics -------------------------------------------------------
+
+  // An error that does not stop the lowering (the others are reported too).
+  // Every diagnostic ends with its id, clang-tidy style ("[dpgen-loop]"): the
+  // rule of the kernel subset it is about, which tests match instead of the
+  // sentence. The ids: dpgen-signature (parameters and annotations),
+  // dpgen-name (names the generated code needs), dpgen-loop (loop headers),
+  // dpgen-call (math functions and helpers), dpgen-lambda, and
+  // dpgen-unsupported (any other construct outside the subset); the output
+  // rules have theirs (check.cpp).
+  void error(SourceLocation loc, const std::string& msg, const char* id = "dpgen-unsupported") {
+    report_error(ctx_, loc, msg, id);
+    failed_ = true;
+  }
+
+  [[noreturn]] void fail(SourceLocation loc, const std::string& msg,
+                         const char* id = "dpgen-unsupported") {
+    error(loc, msg, id);
+    throw Rejected{};
+  }
+
+  // Where `loc` is (its expansion, for a macro), keeping `loc` itself for
+  // diagnostics at the position (ClangDiagnostics).
+  SourcePos pos(SourceLocation loc) const;
+
+  std::string text(const Stmt* s) const {
+    return Lexer::getSourceText(CharSourceRange::getTokenRange(s->getSourceRange()), sm_,
+                                ctx_.getLangOpts())
+        .str();
+  }
+
+  // ---- types ---------------------------------------------------------------
+
+  // T of a std::vector<T> (any allocator); null for any other type.
+  QualType vector_element(QualType q, const char* which = "vector") const;
+
+  // std::array<T, N>: (T, N); nullopt for any other type.
+  std::optional<std::pair<QualType, uint64_t>> std_array(QualType q) const;
+
+  // A type as the generated code spells it: canonical, so a typedef of the
+  // user's (`FLOAT`, `real_t`) or a library alias (`size_t`) never appears in
+  // a generated file that does not declare it.
+  static std::string spelled(QualType q, bool keep_const = false) {
+    QualType c = q.getCanonicalType();
+    if (!keep_const)
+      c = c.getUnqualifiedType();
+    return c.getAsString();
+  }
+
+  std::optional<Type> scalar_type(QualType q) const;
+
+  Type type_of(const clang::Expr* e);
+
+  // ---- the function header -----------------------------------------------
+
+  void header();
+
+  // ---- statements ----------------------------------------------------------
+
+  void body(const Stmt* s);
+
+  Escape lower(const Stmt* s);
+
+  // `if (c) A else B`; a branch ending in continue/return puts the negated
+  // condition on the path of everything that follows.
+  Escape if_stmt(const IfStmt* s);
+
+  ExprP inline_locals(const ExprP& e, int from, int to);
+
+  ExprP make_local(const std::string& base, const VarDecl* decl, ExprP def);
+
+  std::string unset_message(const VarDecl* v, const char* plain) const {
+    auto it = why_unset_.find(v);
+    if (it != why_unset_.end())
+      return it->second;
+    return fmt::format("'{}' {}", v->getNameAsString(), plain);
+  }
+
+  // The stem of a renamed name: without the reserved prefix dpgen_ (a user's
+  // local `dpgen_x` becomes `user_x_1`; appending alone never leaves the
+  // prefix, and the renaming would not end).
+  static std::string unprefixed(const std::string& base) {
+    return base.rfind("dpgen_", 0) == 0 ? "user_" + base.substr(6) : base;
+  }
+
+  // Names a local or a loop counter must not keep (it is renamed <name>_1):
+  // a parameter, an enclosing counter, a name the signature rule gives an
+  // adjoint or tangent parameter (<array>_adj, <array>_dot), the prefix
+  // dpgen_ of generated helpers, or a C++ keyword (a C kernel's `new`: the
+  // generated code is C++).
+  bool is_reserved(const std::string& name) const;
+
+  // The array parameter whose adjoint or tangent the signature rule names
+  // `name` (<array>_adj, <array>_dot), or null.
+  const Param* contract_name_of(const std::string& name) const;
+
+  static bool is_cxx_only_keyword(const std::string& name);
+
+  // The parameters keep their names in every generated function, so a name
+  // the generated code needs for something else is an error: the adjoint or
+  // tangent of another parameter (<array>_adj, <array>_dot), the size dpgen
+  // passes for a vector, the prefix dpgen_, a C++ keyword.
+  void check_parameter_names();
+
+  // Every name the generated code takes from the kernel (Kernel::names).
+  void collect_names();
+
+  void declare(const Decl* d);
+
+  // A small local array (`double w[3] = {...}`, a line buffer `double v[5]`):
+  // each element is a local value, indexed by constants (counters of small
+  // constant loops count as constants: those loops are unrolled).
+  void declare_array(const VarDecl* v, const ConstantArrayType* at);
+
+  // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
+  // variable captured by copy must still have the value it had here when the
+  // lambda is called; init-captures and `this` are outside the subset.
+  void declare_lambda(const VarDecl* v, const CXXRecordDecl* rd);
+
+  // The element of a local array that `idx` names: it must be a constant.
+  size_t local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n);
+
+  // `a[k]` of a local array: its binding and element, if that is what `e` is.
+  std::optional<std::pair<const VarDecl*, size_t>> local_element(const clang::Expr* e);
+
+  // A loop with constant bounds and at most 16 iterations that touches a
+  // local array or assigns a variable declared outside it (`s += w[m] *
+  // a[i + m]`) is unrolled: its counter is a constant in each copy.
+  int unrolling_ = 0;
+  bool should_unroll(const ForStmt* f, long long lo, long long hi);
+
+  void for_loop(const ForStmt* f);
+
+  // The bound of a loop condition as `counter op bound` (op returned in `op`):
+  // `i < n`, `i + 1 < n` (i < n - 1), `n > i` (i < n). Null when the sides do
+  // not differ by exactly +-counter plus something free of the counter.
+  ExprP loop_bound(const BinaryOperator* c, const VarDecl* var, BinaryOperatorKind& op);
+
+  // An integer expression for a polynomial over parameters and kernel-level
+  // locals (symbols resolve to what they name).
+  ExprP poly_expr(const Poly& p);
+  ExprP symbol_expr(const Sym& sym);
+
+  // The `i = lo` of a C89-style loop, if that is its init statement.
+  static const BinaryOperator* init_assignment(const ForStmt* f) {
+    const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit());
+    const auto* a = e ? dyn_cast<BinaryOperator>(e->IgnoreParens()) : nullptr;
+    return a && a->getOpcode() == BO_Assign ? a : nullptr;
+  }
+
+  // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
+  // The extreme (the largest if `upper`, else the smallest) of loop bound `e`
+  // (`p` as a polynomial) over the enclosing loops' ranges: each outer counter
+  // replaced by its first or last value, by the sign of its coefficient. Null
+  // where a coefficient is not a constant.
+  std::optional<ExprP> hull(const ExprP& e, const Poly& p, bool upper) const;
+
+  // A lower bound of integer `e` over the enclosing loops that depends on the
+  // sizes only: `e` itself where it mentions no counter, the hull of an
+  // affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
+  // remainder of a non-negative value), sums of those. Null otherwise.
+  std::optional<ExprP> smallest(const ExprP& e) const;
+
+  // ---- scalar accumulators ------------------------------------------------
+  //
+  // `double s = 0; for (...) s += f(a[i]); out[0] = g(s);` and per-row sums:
+  // `s` becomes a hidden work array H (Kernel::hidden) with one element per
+  // iteration of the loops around the accumulating loop: `H[c] = <s before
+  // the loop>` there, `H[c] += f(...)` in the loop, and `s` after the loop is
+  // the work-array read H[c]. The output rules, the staged adjoint (which
+  // recomputes H) and the tangent then treat it like any work array.
+
+  static constexpr size_t kMaxAccumulators = 32;
+  bool is_hidden(const std::string& array) const {
+    return std::any_of(k_.hidden.begin(), k_.hidden.end(),
+                       [&](const Param& h) { return h.name == array; });
+  }
+  struct Accumulator {
+    std::string array; // the hidden array
+    ExprP index;       // its element: the outer loops' iteration, mixed radix
+  };
+  std::map<const VarDecl*, Accumulator> accumulators_;
+
+  // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
+  // where `e` does not mention v; null for any other form.
+  static const clang::Expr* accumulated_term(const clang::Expr* rhs, const VarDecl* v,
+                                             bool& negate);
+
+  static bool mentions(const Stmt* s, const VarDecl* v);
+
+  // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
+  // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+  static bool is_accumulator(const Stmt* body, const VarDecl* v);
+
+  // Makes `v` (a real scalar with a value here) an accumulator of the loop
+  // about to be lowered; false (and nothing done) where it cannot be one.
+  bool start_accumulator(const VarDecl* v, SourceLocation loc);
+
+  // After the accumulating loop: `v` is the sum, a read of its element.
+  void finish_accumulator(const VarDecl* v, SourceLocation loc);
+
+  static void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
+
+  int loop_step(const clang::Expr* inc, const VarDecl* var);
+
+  void check_not_assigned(const Stmt* s, const VarDecl* var);
+
+  // An expression statement: an assignment to an output element or a local.
+  void expr_stmt(const clang::Expr* e);
+
+  // `*p` of a helper's pointer parameter bound to a caller's local (`&f`).
+  const VarDecl* deref_local(const clang::Expr* e);
+
+  void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
+              SourceLocation loc);
+
+  // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
+  // stands for).
+  void assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
+                    const clang::Expr* rhs, SourceLocation loc);
+
+  Nest& current_nest();
+
+  // `prefix` holds wherever `path` holds: its conditions open `path`.
+  static bool is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path);
+
+  // The store of this iteration that a later statement on the current path
+  // sees at `array[idx]`: the last one to that element whose path is still
+  // open. nullptr when there is none.
+  Store* visible_store(Nest& nest, const std::string& array, const ExprP& idx) {
+    for (auto it = nest.stores.rbegin(); it != nest.stores.rend(); ++it)
+      if (it->array == array && same_index(it->index, idx) && is_prefix(it->path, path_))
+        return &*it;
+    return nullptr;
+  }
+
+  void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
+                 SourceLocation loc);
+  int next_store_seq_ = 0;
+
+  // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
+
+  // The reads of work arrays and in-place arrays and the stores to in-place
+  // arrays, which the checks need besides the IR (check.hpp).
+  Accesses acc_;
+
+  // The value u[k] of an in-place array has here: what this iteration stored
+  // at k, or the value before the call (a read of the input).
+  ExprP inout_value(const Param* p, const ExprP& idx, SourceLocation loc, const clang::Expr* e);
+
+  // ---- work arrays (outputs a later loop nest reads) ---------------------------
+
+  bool written_by_other_nest(const std::string& array) const;
+
+  // Unless set, a read of a work array outside every loop is recorded for
+  // the checks (Accesses::kernel_level_work_reads).
+  bool path_reads_ok_ = false;
+
+  // `e >= 0` wherever this statement runs: its loops run, the counters are
+  // in range, the conditions on its path hold, unsigned sizes are >= 0.
+  bool provably_nonneg(const ExprP& e, const std::vector<PathCond>& more = {}) const;
+
+  // Integer arithmetic in the generated code is signed and 64 bits wide; the
+  // kernel's own may wrap (unsigned below zero, a negative value converted to
+  // unsigned) or truncate (to short or char). Where the two could differ the
+  // kernel is rejected, unless the value provably stays in range. Loop bounds
+  // are exempt: where they differ the forward loop itself runs ~2^64 times.
+  bool in_loop_bounds_ = false;
+  // The value of `e` only goes into an array index (through + - * and
+  // conversions): if it wraps, the kernel itself reads out of bounds.
+  bool feeds_index_only(const clang::Expr* e);
+  // The conditions of the ternaries `e` is an arm of (`i == 0 ? n - 1 : i - 1`).
+  std::vector<PathCond> arm_conditions(const clang::Expr* e);
+  void check_unsigned_result(const ExprP& value, SourceLocation loc, const std::string& what,
+                             const clang::Expr* node);
+
+  // Facts about the parameters on the current path.
+  Facts facts_of_path() const {
+    Facts f;
+    for (const auto& pc : path_)
+      add_facts(pc, f);
+    return f;
+  }
+
+  static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
+
+  // An index that multiplies three or more sizes and counters (a 3D
+  // `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
+  // 32-bit type it overflows, in the forward kernel and in its adjoint alike.
+  void check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array);
+  bool warned_width_ = false;
+
+  // ---- expressions -----------------------------------------------------------
+
+  // ---- helper functions ---------------------------------------------------------
+
+  // A user function called from a kernel (a limiter, a flux, minmod) is
+  // differentiated by inlining: its parameters are bound to the arguments'
+  // values (arrays to the kernel's arrays), its body is lowered like the
+  // kernel's, and its returns become one value, selected by the conditions
+  // under which each return is reached.
+  struct InlineFrame {
+    const FunctionDecl* fn;
+    size_t path_depth;
+    size_t loop_depth;
+    Type ret;
+    std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
+    bool is_void = false; // results through out-parameters, or stores
+  };
+  std::vector<InlineFrame> frames_;
+
+  ExprP inline_call(const CallExpr* c, const FunctionDecl* f);
+
+  // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
+  // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).
+  struct Access {
+    const Param* param;
+    ExprP index;
+  };
+
+  std::optional<Access> element(const clang::Expr* e);
+
+  const Param* array_base(const clang::Expr* base);
+
+  ExprP cond(const clang::Expr* e) {
+    ExprP c = expr(e);
+    if (c->type != Type::Bool)
+      c = binary(Op::Ne, c, c->type == Type::Int ? int_const(0) : real_const(0, c->type, ""));
+    return c;
+  }
+
+  ExprP expr(const clang::Expr* e);
+
+  ExprP cast_expr(const CastExpr* c, const clang::Expr* sub);
+
+  ExprP decl_ref(const DeclRefExpr* r);
+
+  ExprP binary_expr(const BinaryOperator* b);
+
+  ExprP call_expr(const CallExpr* c);
+};
+
+} // namespace dpgen::lowering

@@ -1,0 +1,395 @@
+// Lowering, the signature: parameters, their annotations and shapes, and the
+// names generated code will need (lower_impl.hpp).
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+void Lowerer::header() {
+  if (isa<CXXMethodDecl>(fn_))
+    fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
+  if (fn_->isTemplated() || fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate)
+    fail(fn_->getLocation(), "a DPGEN_KERNEL must not be a template; write one kernel per "
+                             "element type", "dpgen-signature");
+  if (!fn_->getReturnType()->isVoidType())
+    fail(fn_->getLocation(), "a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays", "dpgen-signature");
+  if (fn_->isVariadic())
+    fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
+
+  k_.name = fn_->getNameAsString();
+  k_.pos = pos(fn_->getLocation());
+  for (const DeclContext* dc = fn_->getDeclContext(); dc; dc = dc->getParent())
+    if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+      k_.namespaces.insert(k_.namespaces.begin(), ns->getNameAsString());
+
+  bool any_in = false, any_out = false;
+  // One parameter; an error in it is reported, the parameter poisoned (its
+  // uses are not reported again) and the rest of the kernel still lowered,
+  // so one run reports every error of the file.
+  auto parameter = [&](const ParmVarDecl* p) {
+    Param out;
+    out.name = p->getNameAsString();
+    if (out.name.empty())
+      fail(p->getLocation(), "every kernel parameter needs a name", "dpgen-signature");
+    std::string ann = annotation(p);
+    QualType q = p->getType();
+    std::optional<Param> size_param;
+    std::optional<Param> inout_twin;
+    // std::span<T> u (by value; C++20), with the element's constness.
+    QualType span_elem = q->isReferenceType() ? QualType() : vector_element(q, "span");
+    if (q->isReferenceType() || !span_elem.isNull()) {
+      QualType elem = !span_elem.isNull() ? span_elem : vector_element(q.getNonReferenceType());
+      if (elem.isNull())
+        fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
+                                           "and arrays as pointers, std::vector<T>& or "
+                                           "std::span<T>",
+                                           out.name), "dpgen-signature");
+      // std::vector<T>& u (or std::span<T> u): elements u[i], size u.size();
+      // the generated entry point takes the vectors (spans), its flat twin
+      // u.data() and u.size().
+      bool is_const = !span_elem.isNull() ? elem.isConstQualified()
+                                          : q.getNonReferenceType().isConstQualified();
+      elem = elem.getUnqualifiedType();
+      out.span = !span_elem.isNull();
+      auto et = scalar_type(elem);
+      if (!et || *et == Type::Bool)
+        fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
+                                           "float, double or an integer type",
+                                           out.name, elem.getAsString()), "dpgen-signature");
+      out.elem = *et;
+      out.elem_name = spelled(elem);
+      out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
+      if (ann == "dpgen.inout")
+        fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                           "to non-const float or double (pass {}.data())",
+                                           out.name, out.name), "dpgen-signature");
+      if (ann == "dpgen.in" || ann == "dpgen.out") {
+        if (!is_real(*et))
+          fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
+                                             ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
+                                             out.name), "dpgen-signature");
+        if (ann == "dpgen.out" && is_const)
+          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
+        out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
+        (ann == "dpgen.in" ? any_in : any_out) = true;
+      } else {
+        if (!is_const)
+          fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+                                             "mark it DPGEN_OUT, or make it const",
+                                             out.name), "dpgen-signature");
+        out.kind = ParamKind::ConstArray;
+      }
+      Param sz;
+      sz.name = out.name + "_size";
+      sz.kind = ParamKind::Scalar;
+      sz.elem = Type::Int;
+      sz.elem_name = sz.spelling = "unsigned long";
+      sz.synthetic = true;
+      sz.is_unsigned = true;
+      size_param = sz;
+    } else if (q->isPointerType()) {
+      QualType elem = q->getPointeeType();
+      // Rows of a multi-dimensional array: double (*a)[64], double a[][64],
+      // or, in C, double a[n][n] (a variable-length row: flat in the
+      // generated signature).
+      bool const_rows = elem.isConstQualified();
+      while (const clang::ArrayType* at = ctx_.getAsArrayType(elem)) {
+        if (const auto* c = dyn_cast<ConstantArrayType>(at))
+          out.rows += fmt::format("[{}]", c->getSize().getZExtValue());
+        else if (!isa<VariableArrayType>(at))
+          fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
+                                             "kernel subset",
+                                             out.name), "dpgen-signature");
+        elem = at->getElementType();
+        const_rows = const_rows || elem.isConstQualified();
+      }
+      if (const_rows)
+        elem.addConst();
+      if (elem->isPointerType() && out.rows.empty()) {
+        // double** a, const double* const* a: rows through pointers, each
+        // row an array of its own (documented assumption).
+        elem = elem->getPointeeType();
+        if (elem->isPointerType()) { // double*** a: planes of rows
+          elem = elem->getPointeeType();
+          out.plane_pointers = true;
+        }
+        if (elem->isPointerType() || ctx_.getAsArrayType(elem))
+          fail(p->getLocation(),
+               fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
+                           "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
+                           "flat pointer indexed {}[(k * ny + j) * nx + i]",
+                           out.name, q.getAsString(), out.name, out.name, out.name), "dpgen-signature");
+        if (ann == "dpgen.inout")
+          fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
+                                             "pointer to non-const float or double",
+                                             out.name), "dpgen-signature");
+        out.row_pointers = true;
+      } else if (elem->isPointerType()) {
+        fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
+                                           "row pointers, outside the kernel subset",
+                                           out.name, q.getAsString()), "dpgen-signature");
+      }
+      auto et = scalar_type(elem);
+      if (!et || *et == Type::Bool)
+        fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
+                                           "float, double or an integer type",
+                                           out.name, elem.getAsString()), "dpgen-signature");
+      out.elem = *et;
+      out.elem_name = spelled(elem);
+      if (ann == "dpgen.in") {
+        if (!is_real(*et))
+          fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
+                                             "double, not '{}'",
+                                             out.name, elem.getAsString()), "dpgen-signature");
+        out.kind = ParamKind::In;
+        any_in = true;
+      } else if (ann == "dpgen.inout") {
+        if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
+          fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                             "to non-const float or double",
+                                             out.name), "dpgen-signature");
+        out.kind = ParamKind::In;
+        out.inout = true;
+        any_in = any_out = true;
+        Param twin;
+        twin.name = out.name + "_new";
+        twin.kind = ParamKind::Out;
+        twin.elem = *et;
+        twin.elem_name = out.elem_name;
+        twin.twin_of = out.name;
+        twin.declaration = twin.spelling = fmt::format("{}* {}", out.elem_name, twin.name);
+        inout_twin = twin;
+      } else if (ann == "dpgen.out") {
+        if (!is_real(*et))
+          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
+                                             "double, not '{}'",
+                                             out.name, elem.getAsString()), "dpgen-signature");
+        if (elem.isConstQualified())
+          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
+        out.kind = ParamKind::Out;
+        any_out = true;
+      } else {
+        out.kind = ParamKind::ConstArray;
+      }
+    } else {
+      auto t = scalar_type(q);
+      if (!t)
+        fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
+                                           "subset",
+                                           out.name, q.getAsString()), "dpgen-signature");
+      if (!ann.empty() && ann != "dpgen.const")
+        fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
+                                           "parameters (pass a one-element array to "
+                                           "differentiate a scalar)",
+                                           out.name), "dpgen-signature");
+      out.kind = ParamKind::Scalar;
+      out.elem = *t;
+      out.elem_name = spelled(q);
+      out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
+    }
+    out.spelling = spelled(p->getType(), /*keep_const=*/true);
+    {
+      std::string decl;
+      llvm::raw_string_ostream os(decl);
+      PrintingPolicy policy(ctx_.getLangOpts());
+      policy.SuppressTagKeyword = true;
+      p->getType().getCanonicalType().print(os, policy, out.name);
+      out.declaration = os.str();
+    }
+    k_.params.push_back(out);
+    if (inout_twin) {
+      for (const auto& other : k_.params)
+        if (other.name == inout_twin->name)
+          fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
+                                             "for the new values of in-place array '{}'",
+                                             other.name, out.name), "dpgen-signature");
+      k_.params.push_back(*inout_twin);
+      inout_twin.reset();
+    }
+    if (size_param) {
+      for (const auto& other : k_.params)
+        if (other.name == size_param->name)
+          fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
+                                             "for vector '{}'",
+                                             other.name, out.name), "dpgen-signature");
+      k_.params.push_back(*size_param);
+    }
+  };
+  bool params_ok = true;
+  for (const ParmVarDecl* p : fn_->parameters()) {
+    try {
+      parameter(p);
+    } catch (const Rejected&) {
+      failed_ = true;
+      params_ok = false;
+      poisoned_.insert(p);
+    }
+  }
+  check_parameter_names();
+  // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
+  if (!any_in && params_ok)
+    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
+                                         "nothing to differentiate",
+                                         k_.name), "dpgen-signature");
+  if (!any_out && params_ok)
+    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name), "dpgen-signature");
+  // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
+  // that is larger than any column (a symbol; its value in the generated
+  // code, kRowSymbolValue, is only ever compared, never used as an address).
+  auto opaque_symbol = [&](const std::string& name, long long value) {
+    auto l = std::make_shared<LocalVar>();
+    l->name = name;
+    l->type_name = "std::ptrdiff_t";
+    l->def = int_const(value);
+    l->opaque = true;
+    l->id = next_local_id_++;
+    l->kernel_level = true;
+    local_names_.insert(l->name);
+    k_.kernel_locals.push_back(l);
+    return local_ref(l);
+  };
+  for (const auto& p : k_.params)
+    if (p.row_pointers) {
+      row_lengths_[p.name] = opaque_symbol(
+          row_symbol(p.name), p.plane_pointers ? kPlaneRowSymbolValue : kRowSymbolValue);
+      if (p.plane_pointers)
+        plane_lengths_[p.name] = opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
+    }
+  // Unsigned integer parameters (`unsigned n`, `size_t n`, a vector's
+  // size) are read through a signed 64-bit copy defined first in every
+  // generated function (`const std::ptrdiff_t n_signed = n;`): index
+  // arithmetic in the adjoint goes below zero (`-n + 1`, `i = c_i + n - 1`),
+  // which unsigned arithmetic would wrap to huge values.
+  for (const auto& p : k_.params)
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && p.is_unsigned) {
+      auto l = std::make_shared<LocalVar>();
+      l->name = p.name + "_signed";
+      for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
+        l->name = fmt::format("{}_signed_{}", unprefixed(p.name), n);
+      l->type_name = "std::ptrdiff_t";
+      l->def = param(p.name, Type::Int);
+      l->id = next_local_id_++;
+      l->kernel_level = true;
+      l->opaque = true;
+      local_names_.insert(l->name);
+      k_.kernel_locals.push_back(l);
+      signed_views_[p.name] = local_ref(l);
+    }
+  k_.hidden.reserve(kMaxAccumulators); // (start_accumulator: pointers stay valid)
+  // Bind parameters (after the vector is complete, so pointers stay valid).
+  // By name: a rejected parameter has no Param (and is poisoned).
+  for (const auto& p : k_.params) {
+    if (p.synthetic || !p.twin_of.empty())
+      continue;
+    Binding b;
+    b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
+    b.param = &p;
+    for (const ParmVarDecl* decl : fn_->parameters())
+      if (decl->getNameAsString() == p.name && !poisoned_.count(decl))
+        env_[decl] = b;
+  }
+  // Mixed precision between inputs and outputs is almost always a mistake.
+  std::optional<Type> real;
+  for (const auto& p : k_.params)
+    if (p.kind == ParamKind::In || p.kind == ParamKind::Out) {
+      if (real && *real != p.elem)
+        fail(fn_->getLocation(), fmt::format("kernel '{}' mixes float and double arrays "
+                                             "('{}' is {}); use one precision for all "
+                                             "DPGEN_IN and DPGEN_OUT arrays",
+                                             k_.name, p.name, type_spelling(p.elem)), "dpgen-signature");
+      real = p.elem;
+    }
+}
+
+// Names a local or a loop counter must not keep (it is renamed <name>_1):
+// a parameter, an enclosing counter, a name the signature rule gives an
+// adjoint or tangent parameter (<array>_adj, <array>_dot), the prefix
+// dpgen_ of generated helpers, or a C++ keyword (a C kernel's `new`: the
+// generated code is C++).
+bool Lowerer::is_reserved(const std::string& name) const {
+  if (k_.find_param(name) || contract_name_of(name) || name.rfind("dpgen_", 0) == 0 ||
+      is_cxx_only_keyword(name))
+    return true;
+  for (const auto& l : loops_)
+    if (l->var == name)
+      return true;
+  return false;
+}
+
+// The array parameter whose adjoint or tangent the signature rule names
+// `name` (<array>_adj, <array>_dot), or null.
+const Param* Lowerer::contract_name_of(const std::string& name) const {
+  for (const char* suffix : {"_adj", "_dot"}) {
+    size_t n = std::char_traits<char>::length(suffix);
+    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
+      if (const Param* p = k_.find_param(name.substr(0, name.size() - n));
+          p && p->kind != ParamKind::Scalar)
+        return p;
+  }
+  return nullptr;
+}
+
+bool Lowerer::is_cxx_only_keyword(const std::string& name) {
+  static const std::set<std::string> keywords = {
+      "alignas",    "alignof",      "and",       "and_eq",      "asm",
+      "bitand",     "bitor",        "bool",      "catch",       "char8_t",
+      "char16_t",   "char32_t",     "class",     "compl",       "concept",
+      "consteval",  "constexpr",    "constinit", "const_cast",  "co_await",
+      "co_return",  "co_yield",     "decltype",  "delete",      "dynamic_cast",
+      "explicit",   "export",       "false",     "friend",      "mutable",
+      "namespace",  "new",          "noexcept",  "not",         "not_eq",
+      "nullptr",    "operator",     "or",        "or_eq",       "private",
+      "protected",  "public",       "reinterpret_cast", "requires", "static_assert",
+      "static_cast", "template",    "this",      "thread_local", "throw",
+      "true",       "try",          "typeid",    "typename",    "using",
+      "virtual",    "wchar_t",      "xor",       "xor_eq"};
+  return keywords.count(name) > 0;
+}
+
+// The parameters keep their names in every generated function, so a name
+// the generated code needs for something else is an error: the adjoint or
+// tangent of another parameter (<array>_adj, <array>_dot), the size dpgen
+// passes for a vector, the prefix dpgen_, a C++ keyword.
+void Lowerer::check_parameter_names() {
+  for (const ParmVarDecl* decl : fn_->parameters()) {
+    std::string name = decl->getNameAsString();
+    if (const Param* a = contract_name_of(name))
+      error(decl->getLocation(),
+            fmt::format("parameter '{}' has the name that the generated {} gives the {} of "
+                        "array '{}'; rename it",
+                        name, name.back() == 'j' ? "adjoint" : "tangent",
+                        name.back() == 'j' ? "adjoint" : "tangent", a->name), "dpgen-name");
+    else if (name.rfind("dpgen_", 0) == 0)
+      error(decl->getLocation(), fmt::format("parameter '{}': names starting with 'dpgen_' "
+                                             "are reserved for generated code; rename it",
+                                             name), "dpgen-name");
+    else if (is_cxx_only_keyword(name))
+      error(decl->getLocation(), fmt::format("parameter '{}' is a C++ keyword, and the "
+                                             "generated adjoint is C++; rename it",
+                                             name), "dpgen-name");
+  }
+  for (const auto& p : k_.params)
+    if (p.synthetic)
+      for (const auto& other : k_.params)
+        if (!other.synthetic && other.name == p.name)
+          for (const ParmVarDecl* decl : fn_->parameters())
+            if (decl->getNameAsString() == p.name)
+              error(decl->getLocation(),
+                    fmt::format("parameter '{}' clashes with the size dpgen passes for vector "
+                                "'{}'; rename it",
+                                p.name, p.name.substr(0, p.name.size() - 5)), "dpgen-name");
+}
+
+// Every name the generated code takes from the kernel (Kernel::names).
+void Lowerer::collect_names() {
+  for (const auto& p : k_.params) {
+    k_.names.insert(p.name);
+    if (p.kind != ParamKind::Scalar) {
+      k_.names.insert(p.name + "_adj");
+      k_.names.insert(p.name + "_dot");
+    }
+  }
+  k_.names.insert(local_names_.begin(), local_names_.end());
+  k_.names.insert(loop_names_.begin(), loop_names_.end());
+}
+
+} // namespace dpgen::lowering
