@@ -44,7 +44,9 @@ IDIR = os.path.join(HERE, "include")
 RUNTIME_INC = os.path.join(ROOT, "runtime", "include")
 TESTS = os.path.join(ROOT, "tests")
 SELFCHECK_INC = os.path.join(ROOT, "tests", "styles", "selfcheck")
-DEFAULT_DPGEN = "/work/main/build/tool/dpgen"
+DEFAULT_DPGEN = next((p for p in (os.path.join(ROOT, "build", "tool", "dpgen"),
+                                   "/work/main/build/tool/dpgen") if os.access(p, os.X_OK)),
+                     os.path.join(ROOT, "build", "tool", "dpgen"))
 
 
 def meta(path):
@@ -240,7 +242,8 @@ def one_file(ctx, kpath):
 def main():
     signal.signal(signal.SIGPIPE, signal.SIG_DFL)
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("--dpgen", default=os.environ.get("DPGEN", DEFAULT_DPGEN))
+    ap.add_argument("--dpgen", default=os.environ.get("DPGEN", DEFAULT_DPGEN),
+                    help="default: $DPGEN, else <repo>/build/tool/dpgen, else /work/main/build/tool/dpgen")
     ap.add_argument("--forms", default="", help="comma-separated forms to run (default: all)")
     ap.add_argument("--only", nargs="*", default=[], help="kernel file stems")
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("JOBS", "2")))
