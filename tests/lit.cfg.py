@@ -6,7 +6,7 @@ config.name = "dpgen"
 config.test_format = lit.formats.ShTest(execute_external=False)
 config.suffixes = [".cpp", ".test"]
 config.test_source_root = os.path.dirname(__file__)
-config.excludes = ["kernels", "kernels20", "styles", "consumer", "mpi", "adversary", "support", "runtime", "fuzz", "CMakeLists.txt",
+config.excludes = ["kernels", "modern", "kernels20", "styles", "consumer", "mpi", "adversary", "support", "runtime", "fuzz", "CMakeLists.txt",
                    "lit.cfg.py", "phases_test.cpp"]  # phases_test.cpp: doctest, not lit
 
 tools = config.llvm_tools_dir

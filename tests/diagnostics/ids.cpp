@@ -7,11 +7,11 @@
 
 #include <cmath>
 
-// CHECK-DAG: ids.cpp:[[@LINE+1]]:{{[0-9]+}}: error: a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays [dpgen-signature]
-DPGEN_KERNEL double returns(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+// CHECK-DAG: ids.cpp:[[@LINE+1]]:{{[0-9]+}}: error: a DPGEN_KERNEL returns void, float or double, not 'long'; {{.*}} [dpgen-signature]
+DPGEN_KERNEL long returns(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
   for (int i = 0; i < n; ++i)
     b[i] = a[i];
-  return 0.0;
+  return 0;
 }
 
 // CHECK-DAG: ids.cpp:[[@LINE+1]]:{{[0-9]+}}: error: parameter 'dpgen_n': names starting with 'dpgen_' are reserved for generated code; rename it [dpgen-name]

@@ -64,7 +64,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
     std::vector<std::string> ps, flat;
     for (const auto& prm : k.params) {
-      if (prm.synthetic || !prm.twin_of.empty())
+      if (prm.synthetic || !prm.twin_of.empty() || prm.returned)
         continue;
       ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
       bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
@@ -76,11 +76,11 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     if (k.c_linkage) {
       // C's variable-length rows and restrict are not C++: from C++ the same
       // function is declared with flat pointers (the same ABI).
-      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" void {}({});\n#else\n", k.name,
-                        fmt::join(flat, ", ")));
-      d.raw(fmt::format("void {}({});\n#endif\n", k.name, fmt::join(ps, ", ")));
+      d.raw(fmt::format("#ifdef __cplusplus\nextern \"C\" {} {}({});\n#else\n", k.return_type,
+                        k.name, fmt::join(flat, ", ")));
+      d.raw(fmt::format("{} {}({});\n#endif\n", k.return_type, k.name, fmt::join(ps, ", ")));
     } else {
-      d.raw(fmt::format("void {}({});\n", k.name, fmt::join(ps, ", ")));
+      d.raw(fmt::format("{} {}({});\n", k.return_type, k.name, fmt::join(ps, ", ")));
     }
     close_namespaces(d, k);
     d.raw("\n");

@@ -68,6 +68,14 @@ TangentPlan plan_tangent(const Kernel& k) {
   return p;
 }
 
+// The kernel's return value, if it has one (Param::returned).
+const Param* returned(const Kernel& k) {
+  for (const auto& p : k.params)
+    if (p.returned)
+      return &p;
+  return nullptr;
+}
+
 // The tangent's parameters (`decl`) or the arguments from the shaped entry
 // point to the flat one: each DPGEN_IN array followed by its read-only
 // `<name>_dot`, each DPGEN_OUT array followed by its `<name>_dot` result. An
@@ -87,7 +95,9 @@ std::string tangent_list(const Kernel& k, bool shaped, bool decl) {
       ps.push_back(array(p, !p.inout, p.name + "_dot"));
       break;
     case ParamKind::Out:
-      ps.push_back(array(p, false, p.name));
+      // (the return value: the shaped entry returns it, from a local)
+      if (!(p.returned && decl && shaped))
+        ps.push_back(array(p, false, p.name));
       ps.push_back(array(p, false, p.name + "_dot"));
       break;
     case ParamKind::ConstArray:
@@ -229,9 +239,14 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
   if (shaped) {
     code.raw("} // namespace\n\n");
     code.line("// Tangent of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
-    code.open(fmt::format("void {}_tangent({})", k.name, tangent_params(k, true)));
+    code.open(tangent_signature(k));
     emit_vector_checks(code, k);
+    const Param* ret = returned(k);
+    if (ret)
+      code.line("{} {};", ret->elem_name, ret->name);
     code.line("{}_tangent_flat({});", k.name, flat_tangent_arguments(k));
+    if (ret)
+      code.line("return {};", ret->name);
     code.close();
   }
   close_namespaces(code, k);
@@ -240,7 +255,7 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
 } // namespace
 
 std::string tangent_signature(const Kernel& k) {
-  return fmt::format("void {}_tangent({})", k.name, tangent_params(k, true));
+  return fmt::format("{} {}_tangent({})", k.return_type, k.name, tangent_params(k, true));
 }
 
 EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,

@@ -529,6 +529,12 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
                            "torch op cannot do to a tensor autograd tracks; for --torch write "
                            "the new values into a separate DPGEN_OUT array",
                            k.name, p.name)));
+      else if (p.scalar_ref)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': {} is a scalar by reference, not a tensor; for --torch "
+                           "make it a one-element array ({}* {})",
+                           k.name, p.returned ? "the return value" : "'" + p.name + "'",
+                           p.elem_name, p.name)));
       else if (p.row_pointers)
         out.errors.push_back(error_at(
             k, fmt::format("kernel '{}': row-pointer array '{}' ({}**) is not one tensor; for "

@@ -101,7 +101,8 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name) {
 // declared and calls a flat twin.
 bool has_rows(const Kernel& k) {
   return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
-    return p.kind != ParamKind::Scalar && (!p.rows.empty() || !p.container.empty());
+    return p.kind != ParamKind::Scalar &&
+           (!p.rows.empty() || !p.container.empty() || p.scalar_ref);
   });
 }
 
@@ -171,6 +172,9 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
     return fmt::format("std::span<{}{}> {}", c, p.elem_name, name);
   if (shaped && !p.container.empty())
     return fmt::format("{}{}& {}", c, p.container, name);
+  if (shaped && p.scalar_ref) // a seed by value, an adjoint or tangent by reference
+    return is_const ? fmt::format("{} {}", p.elem_name, name)
+                    : fmt::format("{}& {}", p.elem_name, name);
   return fmt::format("{}{}* {}", c, p.elem_name, name);
 }
 
@@ -179,6 +183,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
 std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
   if (!p.container.empty())
     return name + ".data()";
+  if (p.scalar_ref)
+    return "&" + name;
   if (p.rows.empty())
     return name;
   return fmt::format("reinterpret_cast<{}{}*>({})", is_const ? "const " : "", p.elem_name, name);

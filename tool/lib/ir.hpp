@@ -189,6 +189,18 @@ struct Param {
   /// An unsigned integer scalar (`unsigned n`, `size_t n`): generated code
   /// reads it through a signed copy, `<name>_signed`.
   bool is_unsigned = false;
+  /// A scalar passed by reference and annotated (`DPGEN_OUT double& mass`,
+  /// `DPGEN_IN const double& c`): in the IR a one-element array (`mass` is
+  /// mass[0]). The adjoint's user-facing entry point takes an output's seed by
+  /// value (`double mass_adj`) and an input's adjoint by reference
+  /// (`double& c_adj`), and passes their addresses to the flat one.
+  bool scalar_ref = false;
+  /// The kernel's return value (`double checksum(...)`): an output
+  /// `<kernel>_return` (scalar_ref) after every declared parameter, in no
+  /// forward signature. Its seed is the adjoint's trailing
+  /// `<kernel>_return_adj`; the tangent returns the value and takes
+  /// `<kernel>_return_dot` by reference.
+  bool returned = false;
 };
 
 /// How many pointer levels lead to an element: 0 for a flat array (or rows
@@ -288,6 +300,9 @@ struct Kernel {
   SourcePos pos;
   std::string file;       // source file as given on the command line
   bool c_linkage = false; // a C kernel: its adjoint is declared extern "C"
+  /// The forward kernel's return type as spelled ("double"); "void" unless
+  /// a parameter is `returned`.
+  std::string return_type = "void";
 
   /// A name for an identifier of generated code (an accumulator, a cell
   /// counter, a size): `base`, with '_' appended while the kernel has a name

@@ -325,6 +325,8 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
 
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
+  if (const Param* p = scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
+    return Access{p, int_const(0)};
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
     const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
     if (isa<DeclRefExpr>(base)) {
@@ -430,6 +432,16 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   return Access{p, idx};
 }
 
+const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {
+  const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+  if (!r)
+    return nullptr;
+  auto it = env_.find(dyn_cast<VarDecl>(r->getDecl()));
+  if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->scalar_ref)
+    return nullptr;
+  return it->second.param;
+}
+
 const Param* Lowerer::array_base(const clang::Expr* base) {
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref) {
@@ -479,7 +491,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
   }
   if (const auto* l = dyn_cast<CXXBoolLiteralExpr>(e))
     return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
-  if (const auto* r = dyn_cast<DeclRefExpr>(e))
+  if (const auto* r = dyn_cast<DeclRefExpr>(e); r && !scalar_ref_param(r))
     return decl_ref(r);
   if (const VarDecl* v = deref_local(e)) {
     const Binding& b = env_[v];

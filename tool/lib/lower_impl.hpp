@@ -448,6 +448,8 @@ private:
 
   std::optional<Access> element(const clang::Expr* e);
 
+  // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
+  const Param* scalar_ref_param(const clang::Expr* e) const;
   const Param* array_base(const clang::Expr* base);
 
   ExprP cond(const clang::Expr* e) {

@@ -10,8 +10,16 @@ void Lowerer::header() {
   if (fn_->isTemplated() || fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate)
     fail(fn_->getLocation(), "a DPGEN_KERNEL must not be a template; write one kernel per "
                              "element type", "dpgen-signature");
-  if (!fn_->getReturnType()->isVoidType())
-    fail(fn_->getLocation(), "a DPGEN_KERNEL must return void; results go to DPGEN_OUT arrays", "dpgen-signature");
+  QualType ret = fn_->getReturnType();
+  std::optional<Type> returns;
+  if (!ret->isVoidType()) {
+    returns = scalar_type(ret.getUnqualifiedType());
+    if (!returns || !is_real(*returns))
+      fail(fn_->getLocation(), fmt::format("a DPGEN_KERNEL returns void, float or double, not "
+                                           "'{}'; other results go to DPGEN_OUT arrays",
+                                           ret.getAsString()),
+           "dpgen-signature");
+  }
   if (fn_->isVariadic())
     fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
 
@@ -36,7 +44,39 @@ void Lowerer::header() {
     std::optional<Param> inout_twin;
     // std::span<T> u (by value; C++20), with the element's constness.
     QualType span_elem = q->isReferenceType() ? QualType() : vector_element(q, "span");
-    if (q->isReferenceType() || !span_elem.isNull()) {
+    // A scalar by reference: `const double& dx` (a value, like `double dx`),
+    // `DPGEN_OUT double& mass` / `DPGEN_IN const double& c` (a one-element
+    // array, Param::scalar_ref).
+    std::optional<Type> ref_scalar =
+        q->isReferenceType() ? scalar_type(q.getNonReferenceType().getUnqualifiedType())
+                             : std::nullopt;
+    if (ref_scalar && *ref_scalar != Type::Bool &&
+        (ann == "dpgen.in" || ann == "dpgen.out")) {
+      QualType elem = q.getNonReferenceType();
+      if (!is_real(*ref_scalar))
+        fail(p->getLocation(), fmt::format("{} parameter '{}' must be float or double",
+                                           ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT", out.name),
+             "dpgen-signature");
+      if (ann == "dpgen.out" && elem.isConstQualified())
+        fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is a const reference",
+                                           out.name), "dpgen-signature");
+      out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
+      (ann == "dpgen.in" ? any_in : any_out) = true;
+      out.elem = *ref_scalar;
+      out.elem_name = spelled(elem.getUnqualifiedType());
+      out.scalar_ref = true;
+    } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
+      // const double& dx: read like a value; the adjoint takes it the same way.
+      out.kind = ParamKind::Scalar;
+      out.elem = *ref_scalar;
+      out.elem_name = spelled(q.getNonReferenceType().getUnqualifiedType());
+      out.is_unsigned = *ref_scalar == Type::Int &&
+                        q.getNonReferenceType()->isUnsignedIntegerType();
+    } else if (ref_scalar && ann.empty()) {
+      fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+                                         "mark it DPGEN_OUT, or make it const",
+                                         out.name), "dpgen-signature");
+    } else if (q->isReferenceType() || !span_elem.isNull()) {
       QualType elem = !span_elem.isNull() ? span_elem : vector_element(q.getNonReferenceType());
       if (elem.isNull())
         fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
@@ -224,6 +264,26 @@ void Lowerer::header() {
       poisoned_.insert(p);
     }
   }
+  if (returns) { // the return value: an output after every parameter
+    Param r;
+    r.name = k_.name + "_return";
+    r.kind = ParamKind::Out;
+    r.elem = *returns;
+    r.elem_name = spelled(ret.getUnqualifiedType());
+    r.spelling = r.elem_name + "&";
+    r.declaration = r.elem_name + "& " + r.name;
+    r.scalar_ref = true;
+    r.returned = true;
+    for (const auto& other : k_.params)
+      if (other.name == r.name)
+        fail(fn_->getLocation(), fmt::format("parameter '{}' has the name dpgen gives the return "
+                                             "value of '{}'; rename it",
+                                             r.name, k_.name),
+             "dpgen-name");
+    k_.params.push_back(r);
+    k_.return_type = r.elem_name;
+    any_out = true;
+  }
   check_parameter_names();
   // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
   if (!any_in && params_ok)
@@ -231,7 +291,7 @@ void Lowerer::header() {
                                          "nothing to differentiate",
                                          k_.name), "dpgen-signature");
   if (!any_out && params_ok)
-    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter", k_.name), "dpgen-signature");
+    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.name), "dpgen-signature");
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
   // code, kRowSymbolValue, is only ever compared, never used as an address).

@@ -84,8 +84,21 @@ Escape Lowerer::lower(const Stmt* s) {
     if (!loops_.empty() || unrolling_ > 0)
       fail(s->getBeginLoc(), "'return' inside a loop is outside the kernel subset; use "
                              "'continue' or an if/else");
-    if (r->getRetValue())
-      fail(s->getBeginLoc(), "a kernel returns nothing");
+    if (const clang::Expr* v = r->getRetValue()) {
+      // `return s;` of a kernel returning a value: a store to its output
+      // `<kernel>_return` (Param::returned), as the kernel's last statement.
+      const Param* ret = nullptr;
+      for (const auto& p : k_.params)
+        if (p.returned)
+          ret = &p;
+      if (!ret)
+        fail(s->getBeginLoc(), "a kernel returns nothing");
+      if (!path_.empty())
+        fail(s->getBeginLoc(), "a kernel that returns a value returns it once, as its last "
+                               "statement, not inside a branch (compute it in a local first)");
+      add_store(ret->name, int_const(0), cast(expr(v), ret->elem), false,
+                pos(s->getBeginLoc()), s->getBeginLoc());
+    }
     return Escape::Always;
   }
   if (const auto* e = dyn_cast<clang::Expr>(s)) {
