@@ -2,6 +2,8 @@
 // generated files of one input file, around the kernels emit.cpp prints.
 #include "emit_file.hpp"
 
+#include <set>
+
 #include "emit.hpp"
 #include "emit_checked.hpp"
 #include "emit_util.hpp"
@@ -31,9 +33,11 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     spans = spans || has_spans(*p->kernel);
   }
   h.raw(container_includes(vectors, spans));
+  std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto& p : plans) {
     open_namespaces(h, *p->kernel);
-    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p->kernel->name, base_name(p->kernel->file),
+    h.raw(fmt::format("/// Adjoint of {} ({}:{}).\n", p->kernel->display_name(),
+                      base_name(p->kernel->file),
                       p->kernel->pos.line));
     if (p->kernel->c_linkage) // a C kernel: callable from C
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
@@ -46,7 +50,23 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
           checked_signature(*p->kernel)));
     if (p->kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
-    close_namespaces(h, *p->kernel);
+    const Kernel& k = *p->kernel;
+    if (!k.template_name.empty()) {
+      std::vector<std::string> args; // the adjoint's parameters (the signature rule)
+      for (const auto& prm : k.params) {
+        if (prm.synthetic || !prm.twin_of.empty())
+          continue;
+        if (prm.kind == ParamKind::In || prm.kind == ParamKind::ConstArray ||
+            prm.kind == ParamKind::Scalar)
+          args.push_back(prm.name);
+        if (prm.kind == ParamKind::In || prm.kind == ParamKind::Out)
+          args.push_back(prm.name + "_adj");
+      }
+      bool first = facades.insert(k.template_name).second;
+      h.raw(template_facade(k, first, adjoint_signature(generic_kernel(k)), adjoint_signature(k),
+                            "_adjoint", args));
+    }
+    close_namespaces(h, k);
     h.raw("\n");
   }
   out.header = formatted(h.str(), stem + "_adjoint.hpp");
@@ -60,6 +80,11 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   d.raw(container_includes(vectors, spans));
   for (const auto& p : plans) {
     const Kernel& k = *p->kernel;
+    if (!k.template_name.empty()) {
+      d.raw(fmt::format("// {}{}: a template kernel, declared by {} (not here).\n\n",
+                        k.template_name, k.template_args, base_name(k.file)));
+      continue;
+    }
     open_namespaces(d, k);
     d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
     std::vector<std::string> ps, flat;

@@ -281,14 +281,30 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
     std_vectors = std_vectors || has_std_vectors(*k);
   }
   h.raw(container_includes(std_vectors, spans));
+  std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto* k : kernels) {
     open_namespaces(h, *k);
-    h.raw(fmt::format("/// Tangent of {} ({}:{}).\n", k->name, base_name(k->file), k->pos.line));
+    h.raw(fmt::format("/// Tangent of {} ({}:{}).\n", k->display_name(), base_name(k->file),
+                      k->pos.line));
     if (k->c_linkage)
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
     h.raw(tangent_signature(*k) + ";\n");
     if (k->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
+    if (!k->template_name.empty()) {
+      std::vector<std::string> args; // the tangent's parameters
+      for (const auto& p : k->params) {
+        if (p.synthetic || !p.twin_of.empty())
+          continue;
+        if (!p.returned)
+          args.push_back(p.name);
+        if (p.kind == ParamKind::In || p.kind == ParamKind::Out)
+          args.push_back(p.name + "_dot");
+      }
+      bool first = facades.insert(k->template_name).second;
+      h.raw(template_facade(*k, first, tangent_signature(generic_kernel(*k)),
+                            tangent_signature(*k), "_tangent", args));
+    }
     close_namespaces(h, *k);
     h.raw("\n");
   }

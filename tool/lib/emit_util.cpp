@@ -130,6 +130,41 @@ bool has_spans(const Kernel& k) {
 }
 
 
+Kernel generic_kernel(const Kernel& k) {
+  Kernel g = k;
+  g.name = k.template_name;
+  for (auto& p : g.params) {
+    if (p.kind == ParamKind::Scalar) {
+      auto it = k.generic_scalars.find(p.name);
+      if (it != k.generic_scalars.end())
+        p.spelling = it->second;
+    } else if (auto it = k.generic_types.find(p.name); it != k.generic_types.end()) {
+      p.elem_name = it->second;
+    }
+  }
+  return g;
+}
+
+std::string template_facade(const Kernel& k, bool first, const std::string& generic_signature,
+                            const std::string& signature, const std::string& suffix,
+                            const std::vector<std::string>& args) {
+  std::string out;
+  const std::string generated = k.name + suffix, public_name = k.template_name + suffix;
+  if (first)
+    out += fmt::format("/// {}{}: the template kernel {}'s, one explicit specialization per "
+                       "instantiation the kernel file makes.\n{} {};\n",
+                       public_name, "", k.template_name, k.template_head, generic_signature);
+  std::string sig = signature;
+  size_t at = sig.find(generated + "(");
+  if (at == std::string::npos)
+    throw std::logic_error("internal error: template_facade: no " + generated + " in " + sig);
+  sig.replace(at, generated.size(), public_name + k.template_args);
+  bool returns = sig.rfind("void ", 0) != 0;
+  out += fmt::format("template <> inline {} {{ {}{}({}); }}\n", sig, returns ? "return " : "",
+                     generated, fmt::join(args, ", "));
+  return out;
+}
+
 void open_namespaces(Code& c, const Kernel& k) {
   for (const auto& ns : k.namespaces)
     c.raw(fmt::format("namespace {} {{\n", ns));

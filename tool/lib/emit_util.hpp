@@ -91,6 +91,17 @@ std::string container_includes(bool vectors, bool spans);
 bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);
 void close_namespaces(Code& c, const Kernel& k);
+/// An instantiation of a template kernel (Kernel::template_name) as its
+/// template: the template's name, each parameter typed as the template
+/// spells it ("const Real* u").
+Kernel generic_kernel(const Kernel& k);
+/// The public face of a generated function `<k.name><suffix>` of a template
+/// kernel's instantiation: `template <> inline <signature as
+/// <template_name><suffix><args>> { <generated>(args); }`, preceded (`first`)
+/// by the primary template's declaration, `<head> <generic_signature>;`.
+std::string template_facade(const Kernel& k, bool first, const std::string& generic_signature,
+                            const std::string& signature, const std::string& suffix,
+                            const std::vector<std::string>& args);
 /// clang-format (LLVM style, 100 columns) over generated text.
 std::string formatted(const std::string& code, const std::string& name);
 

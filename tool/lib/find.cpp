@@ -17,7 +17,10 @@
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/VirtualFileSystem.h>
 
+#include <cctype>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,8 +45,12 @@ public:
     if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation())))
       return;
     if (fn->isTemplateInstantiation())
-      return;
+      return; // lowered from its template (below)
     found_ = true;
+    if (const FunctionTemplateDecl* t = fn->getDescribedFunctionTemplate()) {
+      lower_instantiations(*r.Context, t);
+      return;
+    }
     Kernel k;
     if (lower_kernel(*r.Context, fn, k)) {
       k.file = file_;
@@ -56,6 +63,75 @@ public:
   bool found() const { return found_; }
 
 private:
+  // A template kernel: each instantiation the file makes (explicitly, or by
+  // a call) is a kernel of its own, named uniquely (Kernel::template_name).
+  void lower_instantiations(ASTContext& ctx, const FunctionTemplateDecl* t) {
+    PrintingPolicy policy(ctx.getLangOpts());
+    policy.SuppressTagKeyword = true;
+    std::string head;
+    llvm::raw_string_ostream hs(head);
+    t->getTemplateParameters()->print(hs, ctx);
+    head = hs.str();
+    while (!head.empty() && head.back() == ' ')
+      head.pop_back();
+    // Each parameter's element (or scalar) type as the template spells it.
+    std::map<std::string, std::string> generic, generic_scalars;
+    for (const ParmVarDecl* p : t->getTemplatedDecl()->parameters()) {
+      generic_scalars[p->getNameAsString()] = p->getType().getAsString(policy);
+      QualType q = p->getType().getNonReferenceType();
+      while (q->isPointerType() || q->isArrayType())
+        q = q->isPointerType() ? q->getPointeeType() : QualType(q->getArrayElementTypeNoTypeQual(), 0);
+      generic[p->getNameAsString()] = q.getUnqualifiedType().getAsString(policy);
+    }
+    std::set<std::string> names;
+    bool any = false;
+    for (const FunctionDecl* spec : t->specializations()) {
+      if (!spec->doesThisDeclarationHaveABody())
+        continue; // declared, not instantiated (or instantiated elsewhere)
+      any = true;
+      std::string args;
+      llvm::raw_string_ostream as(args);
+      printTemplateArgumentList(as, spec->getTemplateSpecializationArgs()->asArray(), policy);
+      args = as.str();
+      std::string suffix;
+      for (char c : args)
+        if (std::isalnum(static_cast<unsigned char>(c)))
+          suffix += c;
+        else if (c == '-')
+          suffix += "m";
+        else if (!suffix.empty() && suffix.back() != '_')
+          suffix += '_';
+      while (!suffix.empty() && suffix.back() == '_')
+        suffix.pop_back();
+      std::string name = t->getNameAsString() + "_" + suffix;
+      while (!names.insert(name).second)
+        name += "_";
+      Kernel k;
+      if (!lower_kernel(ctx, spec, k)) {
+        ok_ = false;
+        continue;
+      }
+      k.file = file_;
+      k.template_name = k.name;
+      k.name = name;
+      k.template_head = head;
+      k.template_args = args;
+      k.generic_types = generic;
+      k.generic_scalars = generic_scalars;
+      out_.push_back(std::move(k));
+    }
+    if (!any) {
+      auto& d = ctx.getDiagnostics();
+      unsigned id = d.getCustomDiagID(
+          DiagnosticsEngine::Error,
+          "template kernel '%0' is not instantiated in this file: dpgen writes an adjoint per "
+          "instantiation, so instantiate it here (template void %0<double>(...);) or call it "
+          "[dpgen-signature]");
+      d.Report(t->getLocation(), id) << t->getNameAsString();
+      ok_ = false;
+    }
+  }
+
   std::vector<Kernel>& out_;
   bool& ok_;
   std::string file_;

@@ -303,6 +303,19 @@ struct Kernel {
   /// The forward kernel's return type as spelled ("double"); "void" unless
   /// a parameter is `returned`.
   std::string return_type = "void";
+  /// One instantiation of a template kernel (`template <typename Real, int
+  /// Dir> void gradient(...)`, instantiated by the file as gradient<double,
+  /// 0>): `name` is then unique per instantiation ("gradient_double_0", the
+  /// generated functions' names), `template_name` the user's ("gradient"),
+  /// `template_head` "template <typename Real, int Dir>", `template_args`
+  /// "<double, 0>", and `generic_types` each parameter's element (or scalar)
+  /// type as the template spells it ("Real"). The adjoint and tangent headers
+  /// declare `gradient_adjoint<Real, Dir>` with an explicit specialization per
+  /// instantiation calling the generated function.
+  std::string template_name, template_head, template_args;
+  std::map<std::string, std::string> generic_types;
+  /// A scalar parameter's whole type as the template spells it ("const Real&").
+  std::map<std::string, std::string> generic_scalars;
 
   /// A name for an identifier of generated code (an accumulator, a cell
   /// counter, a size): `base`, with '_' appended while the kernel has a name
@@ -312,6 +325,12 @@ struct Kernel {
     while (names.count(base))
       base += '_';
     return base;
+  }
+
+  /// The kernel as the user names it: "gradient<double, 0>" for an
+  /// instantiation of a template kernel, else `name`.
+  std::string display_name() const {
+    return template_name.empty() ? name : template_name + template_args;
   }
 
   /// pointer_levels() of array parameter `n`; 0 if there is none of that name.

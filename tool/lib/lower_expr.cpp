@@ -474,6 +474,8 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     return expr(w->getSubExpr());
   if (const auto* c = dyn_cast<ConstantExpr>(e))
     return expr(c->getSubExpr());
+  if (const auto* t = dyn_cast<SubstNonTypeTemplateParmExpr>(e)) // Dir of template <int Dir>
+    return expr(t->getReplacement());
   if (const auto* l = dyn_cast<IntegerLiteral>(e))
     return int_const(static_cast<long long>(l->getValue().getSExtValue()));
   if (const auto* l = dyn_cast<FloatingLiteral>(e)) {

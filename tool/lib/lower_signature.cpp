@@ -7,9 +7,13 @@ namespace dpgen::lowering {
 void Lowerer::header() {
   if (isa<CXXMethodDecl>(fn_))
     fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
-  if (fn_->isTemplated() || fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate)
-    fail(fn_->getLocation(), "a DPGEN_KERNEL must not be a template; write one kernel per "
-                             "element type", "dpgen-signature");
+  // (a template kernel is lowered per instantiation, find.cpp)
+  if (fn_->isTemplated() || (fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate &&
+                             fn_->getTemplatedKind() !=
+                                 FunctionDecl::TK_FunctionTemplateSpecialization))
+    fail(fn_->getLocation(), "this kind of template kernel is outside the kernel subset "
+                             "(a function template at namespace scope is in it)",
+         "dpgen-signature");
   QualType ret = fn_->getReturnType();
   std::optional<Type> returns;
   if (!ret->isVoidType()) {
