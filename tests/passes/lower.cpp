@@ -56,3 +56,16 @@ DPGEN_KERNEL void relax(DPGEN_INOUT double* u, int n, double r) {
     if (u[i] > 0.0)
       u[i] *= r;
 }
+
+// Integer bit logic in indices and conditions: i << 1 is the affine 2 * i;
+// the colour test of a red-black sweep is a path condition.
+// CHECK-LABEL: kernel bits
+// CHECK: store #0 out[i] = 0.5 * (a[i << 1] + a[(i << 1) + 1])  if (((i + n) & 1) == 0)
+// CHECK-NEXT: store #1 out[i] = a[i >> 1]  if !(((i + n) & 1) == 0)
+DPGEN_KERNEL void bits(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    if (((i + n) & 1) == 0)
+      out[i] = 0.5 * (a[i << 1] + a[(i << 1) + 1]);
+    else
+      out[i] = a[i >> 1];
+}

@@ -243,6 +243,15 @@ std::optional<Poly> to_poly(const ExprP& e) {
       return std::nullopt;
     return -*a;
   }
+  case Op::Shl: { // i << c for a constant c: i * 2^c
+    const ExprP& c = e->ops[1];
+    if (e->type != Type::Int || c->op != Op::IntConst || c->ival < 0 || c->ival > 40)
+      return std::nullopt;
+    auto a = to_poly(e->ops[0]);
+    if (!a)
+      return std::nullopt;
+    return *a * Poly::constant(1LL << c->ival);
+  }
   case Op::Add:
   case Op::Sub:
   case Op::Mul: {

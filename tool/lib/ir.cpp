@@ -148,6 +148,20 @@ ExprP binary(Op op, ExprP a, ExprP b) {
       return int_const(x - y);
     case Op::Mul:
       return int_const(x * y);
+    case Op::Shl:
+      if (y >= 0 && y < 62)
+        return int_const(x * (1LL << y));
+      break;
+    case Op::Shr:
+      if (y >= 0 && y < 63)
+        return int_const(x >> y);
+      break;
+    case Op::BitAnd:
+      return int_const(x & y);
+    case Op::BitOr:
+      return int_const(x | y);
+    case Op::BitXor:
+      return int_const(x ^ y);
     default:
       break;
     }

@@ -53,6 +53,13 @@ enum class Op {
   Select, // ops[0] ? ops[1] : ops[2]
   Call,   // name(ops...), name is one of the supported math functions
   Cast,   // conversion of ops[0] to `type`
+  // Integer bit operations (index and branch logic: i << 1, (i + j) & 1).
+  Shl,
+  Shr,
+  BitAnd,
+  BitOr,
+  BitXor,
+  BitNot,
 };
 
 struct Expr;

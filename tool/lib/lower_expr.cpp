@@ -556,6 +556,8 @@ ExprP Lowerer::expr(const clang::Expr* e) {
       return expr(u->getSubExpr());
     case UO_LNot:
       return unary(Op::Not, cond(u->getSubExpr()));
+    case UO_Not:
+      return unary(Op::BitNot, expr(u->getSubExpr()));
     case UO_Deref: // `*p` of a parameter is an element access (handled above)
     case UO_AddrOf:
       fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
@@ -733,6 +735,18 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
     return binary(Op::Eq, l, r);
   case BO_NE:
     return binary(Op::Ne, l, r);
+  case BO_Shl:
+  case BO_Shr:
+  case BO_And:
+  case BO_Or:
+  case BO_Xor:
+    // integer bit logic (index and branch conditions); never on reals in C++
+    return binary(b->getOpcode() == BO_Shl   ? Op::Shl
+                  : b->getOpcode() == BO_Shr ? Op::Shr
+                  : b->getOpcode() == BO_And ? Op::BitAnd
+                  : b->getOpcode() == BO_Or  ? Op::BitOr
+                                             : Op::BitXor,
+                  l, r);
   default:
     fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
                                           b->getOpcodeStr().str()));

@@ -172,7 +172,9 @@ private:
     QualType c = q.getCanonicalType();
     if (!keep_const)
       c = c.getUnqualifiedType();
-    return c.getAsString();
+    PrintingPolicy policy{LangOptions()};
+    policy.Bool = true; // `bool`, as the generated C++ spells it (not `_Bool`)
+    return c.getAsString(policy);
   }
 
   std::optional<Type> scalar_type(QualType q) const;

@@ -4,6 +4,10 @@
 
 namespace dpgen::lowering {
 
+// Loop nests up to this deep (component loops around a 3D stencil, coarsening
+// loops inside a cell loop); deeper nests are refused.
+constexpr size_t kMaxLoopDepth = 6;
+
 bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
   if (hi - lo > 16 || hi <= lo)
     return false;
@@ -274,8 +278,10 @@ void Lowerer::for_loop(const ForStmt* f) {
       return;
     }
   }
-  if (loops_.size() == 3)
-    fail(f->getBeginLoc(), "loops nest at most 3 deep in the kernel subset", "dpgen-loop");
+  if (loops_.size() == kMaxLoopDepth)
+    fail(f->getBeginLoc(), fmt::format("loops nest at most {} deep in the kernel subset",
+                                       kMaxLoopDepth),
+         "dpgen-loop");
 
   auto loop = std::make_shared<Loop>();
   // The counter keeps its name unless that would collide with a parameter,

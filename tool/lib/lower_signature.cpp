@@ -173,10 +173,14 @@ void Lowerer::header() {
                                            out.name, q.getAsString()), "dpgen-signature");
       }
       auto et = scalar_type(elem);
-      if (!et || *et == Type::Bool)
+      // (a bool mask, `const bool* solid`, is a constant array: not differentiated)
+      if (!et || (*et == Type::Bool && (!ann.empty() && ann != "dpgen.const")))
         fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
-                                           "float, double or an integer type",
-                                           out.name, elem.getAsString()), "dpgen-signature");
+                                           "float, double or an integer type (or bool, "
+                                           "for an unmarked mask)",
+                                           out.name,
+                                           elem.getAsString(PrintingPolicy(ctx_.getLangOpts()))),
+             "dpgen-signature");
       out.elem = *et;
       out.elem_name = spelled(elem);
       if (ann == "dpgen.in") {

@@ -112,9 +112,11 @@ std::string print(const ExprP& e) {
   case Op::Read:
     return e->name + subscript(e->ops[0], e->levels);
   case Op::Neg:
-    return "-" + wrap(e->ops[0], 9);
+    return "-" + wrap(e->ops[0], op_info(Op::Neg).precedence + 1);
   case Op::Not:
-    return "!" + wrap(e->ops[0], 9);
+    return "!" + wrap(e->ops[0], op_info(Op::Not).precedence + 1);
+  case Op::BitNot:
+    return "~" + wrap(e->ops[0], op_info(Op::BitNot).precedence + 1);
   case Op::Select:
     return fmt::format("{} ? {} : {}", wrap(e->ops[0], 2), wrap(e->ops[1], 2), wrap(e->ops[2], 1));
   case Op::Call: {
@@ -140,6 +142,14 @@ std::string print(const ExprP& e) {
     // Binary, left-associative: a right operand of equal precedence keeps its
     // parentheses, so floating-point evaluation order is exactly the IR's.
     int p = precedence(*e);
+    // Operands of bit operations are parenthesized unless they are single
+    // terms ((i + j) & 1, not i + j & 1), as people write them and as GCC's
+    // -Wparentheses asks.
+    bool bits = e->op == Op::Shl || e->op == Op::Shr || e->op == Op::BitAnd ||
+                e->op == Op::BitOr || e->op == Op::BitXor;
+    if (bits)
+      return fmt::format("{} {} {}", wrap(e->ops[0], op_info(Op::Neg).precedence),
+                         op_info(e->op).symbol, wrap(e->ops[1], op_info(Op::Neg).precedence));
     return fmt::format("{} {} {}", wrap(e->ops[0], p), op_info(e->op).symbol, wrap(e->ops[1], p + 1));
   }
   }
