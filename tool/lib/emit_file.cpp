@@ -33,6 +33,10 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     spans = spans || has_spans(*p->kernel);
   }
   h.raw(container_includes(vectors, spans));
+  std::vector<const Kernel*> all;
+  for (const auto& p : plans)
+    all.push_back(p->kernel);
+  h.raw(tag_declarations(all));
   std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto& p : plans) {
     open_namespaces(h, *p->kernel);
@@ -78,6 +82,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   d.raw("//\n// Declarations of the forward kernels, as the kernel file defines them.\n"
         "#pragma once\n\n");
   d.raw(container_includes(vectors, spans));
+  d.raw(tag_declarations(all));
   for (const auto& p : plans) {
     const Kernel& k = *p->kernel;
     if (!k.template_name.empty()) {

@@ -281,6 +281,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
     std_vectors = std_vectors || has_std_vectors(*k);
   }
   h.raw(container_includes(std_vectors, spans));
+  h.raw(tag_declarations(kernels));
   std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto* k : kernels) {
     open_namespaces(h, *k);

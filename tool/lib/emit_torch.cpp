@@ -529,6 +529,11 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
                            "torch op cannot do to a tensor autograd tracks; for --torch write "
                            "the new values into a separate DPGEN_OUT array",
                            k.name, p.name)));
+      else if (p.tag)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': its tag parameter ({}) picks an overload, which a torch "
+                           "op cannot; for --torch give each overload a name of its own",
+                           k.name, p.spelling)));
       else if (p.scalar_ref)
         out.errors.push_back(error_at(
             k, fmt::format("kernel '{}': {} is a scalar by reference, not a tensor; for --torch "

@@ -1,6 +1,8 @@
 // Shared by the emitters: see emit_util.hpp.
 #include "emit_util.hpp"
 
+#include <set>
+
 #include "ir_walk.hpp"
 
 #include "print.hpp"
@@ -129,6 +131,16 @@ bool has_spans(const Kernel& k) {
   return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.span; });
 }
 
+
+std::string tag_declarations(const std::vector<const Kernel*>& kernels) {
+  std::set<std::string> seen;
+  std::string out;
+  for (const Kernel* k : kernels)
+    for (const auto& p : k->params)
+      if (p.tag && seen.insert(p.tag_declaration).second)
+        out += p.tag_declaration + "\n";
+  return out.empty() ? out : "// The kernels' tag types (a declaration is enough).\n" + out + "\n";
+}
 
 Kernel generic_kernel(const Kernel& k) {
   Kernel g = k;

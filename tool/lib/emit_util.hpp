@@ -91,6 +91,9 @@ std::string container_includes(bool vectors, bool spans);
 bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);
 void close_namespaces(Code& c, const Kernel& k);
+/// Declarations of the kernels' tag types (Param::tag_declaration), once
+/// each, for a generated header.
+std::string tag_declarations(const std::vector<const Kernel*>& kernels);
 /// An instantiation of a template kernel (Kernel::template_name) as its
 /// template: the template's name, each parameter typed as the template
 /// spells it ("const Real* u").

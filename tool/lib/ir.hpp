@@ -208,6 +208,13 @@ struct Param {
   /// `<kernel>_return_adj`; the tangent returns the value and takes
   /// `<kernel>_return_dot` by reference.
   bool returned = false;
+  /// An unnamed parameter of an empty class type (`XDir`, a
+  /// std::integral_constant): a tag that picks an overload. A Scalar named
+  /// `dpgen_tag_<position>` in every generated signature, passed along.
+  bool tag = false;
+  /// A tag's declaration for generated headers, which do not include the
+  /// kernel file: "namespace d { struct XDir; }" or "#include <type_traits>".
+  std::string tag_declaration;
 };
 
 /// How many pointer levels lead to an element: 0 for a flat array (or rows

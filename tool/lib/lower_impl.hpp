@@ -174,6 +174,7 @@ private:
       c = c.getUnqualifiedType();
     PrintingPolicy policy{LangOptions()};
     policy.Bool = true; // `bool`, as the generated C++ spells it (not `_Bool`)
+    policy.SuppressTagKeyword = true; // `XDir`, not `struct XDir`
     return c.getAsString(policy);
   }
 

@@ -40,9 +40,47 @@ void Lowerer::header() {
   auto parameter = [&](const ParmVarDecl* p) {
     Param out;
     out.name = p->getNameAsString();
-    if (out.name.empty())
-      fail(p->getLocation(), "every kernel parameter needs a name", "dpgen-signature");
     std::string ann = annotation(p);
+    if (out.name.empty()) {
+      // An unnamed parameter of an empty class type (struct XDir {};,
+      // std::integral_constant<int, 0>) is a tag choosing an overload; the
+      // generated functions take it as well, under a name of their own.
+      const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
+      if (!rd || !rd->hasDefinition() || !rd->isEmpty() || !ann.empty())
+        fail(p->getLocation(), "every kernel parameter needs a name (an unnamed one may only "
+                               "be an unannotated tag: a value of an empty class type)",
+             "dpgen-signature");
+      // Generated code takes it by const reference, so that a declaration of
+      // its class is enough: `struct XDir;` (or <type_traits> for
+      // std::integral_constant and its aliases).
+      std::string type = spelled(p->getType().getNonReferenceType().getUnqualifiedType());
+      if (type.rfind("std::integral_constant<", 0) == 0 || type == "std::true_type" ||
+          type == "std::false_type") {
+        out.tag_declaration = "#include <type_traits>";
+      } else if (!isa<ClassTemplateSpecializationDecl>(rd) &&
+                 rd->getDeclContext()->getRedeclContext()->isFileContext()) {
+        std::string decl = fmt::format("{} {};", rd->isClass() ? "class" : "struct",
+                                       rd->getNameAsString());
+        for (const DeclContext* dc = rd->getDeclContext(); dc; dc = dc->getParent())
+          if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+            decl = fmt::format("namespace {} {{ {} }}", ns->getNameAsString(), decl);
+        out.tag_declaration = decl;
+      } else {
+        fail(p->getLocation(), fmt::format("tag parameter of type '{}': a tag is a class at "
+                                           "namespace scope or a std::integral_constant",
+                                           type),
+             "dpgen-signature");
+      }
+      out.kind = ParamKind::Scalar;
+      out.tag = true;
+      out.elem = Type::Bool; // (no number: never shown or checked)
+      out.name = fmt::format("dpgen_tag_{}", p->getFunctionScopeIndex());
+      out.elem_name = type;
+      out.spelling = "const " + type + "&";
+      out.declaration = type + " " + out.name;
+      k_.params.push_back(out);
+      return;
+    }
     QualType q = p->getType();
     std::optional<Param> size_param;
     std::optional<Param> inout_twin;
