@@ -6,7 +6,8 @@
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
-extern double g;
+static double g = 1.0;
+// CHECK: every_error.cpp:[[@LINE-1]]:15: error: global 'g' is static
 double foo(double);
 
 DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {

@@ -567,7 +567,7 @@ std::string param_list(const Kernel& k, bool shaped = true) {
     return array_declaration(p, is_const, name, shaped, k.c_linkage);
   };
   for (const auto& p : k.params) {
-    if (shaped && (p.synthetic || !p.twin_of.empty()))
+    if ((shaped && (p.synthetic || !p.twin_of.empty())) || p.global)
       continue;
     switch (p.kind) {
     case ParamKind::In:
@@ -607,6 +607,8 @@ std::string flat_arguments(const Kernel& k) {
   std::vector<std::string> as;
   auto array = flat_argument;
   for (const auto& p : k.params) {
+    if (p.global) // (read by name: in no signature)
+      continue;
     switch (p.kind) {
     case ParamKind::In:
       as.push_back(array(p, true, p.name));
@@ -670,7 +672,7 @@ void emit_body(Code& code, const LoopPlan& plan) {
 std::string forward_params(const Kernel& k) {
   std::vector<std::string> ps;
   for (const auto& p : k.params)
-    if (!p.synthetic)
+    if (!p.synthetic && !p.global && !p.returned)
       ps.push_back(p.declaration);
   return fmt::format("{}", fmt::join(ps, ", "));
 }
@@ -717,6 +719,8 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   auto b_of = [&](const std::string& a) { return k.fresh(a + "_b"); };
   std::vector<std::string> fwd, flat;
   for (const auto& p : k.params) {
+    if (p.global)
+      continue;
     if (p.kind == ParamKind::Out) {
       code.line("const std::ptrdiff_t {} = {};", n_of(p.name), k.extent.at(p.name));
       code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "

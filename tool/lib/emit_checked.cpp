@@ -144,6 +144,8 @@ std::string size_name(const Kernel& k, const std::string& array) {
 std::string checked_params(const Kernel& k) {
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
+    if (p.global)
+      continue;
     std::string n = p.elem_name;
     const std::string adj = p.name + "_adj";
     switch (p.kind) {
@@ -184,7 +186,8 @@ void emit_checked_entry(Code& code, const Kernel& k) {
   auto ranges = access_ranges(k);
   std::vector<std::string> unchecked;
   for (const auto& p : k.params)
-    if (p.kind != ParamKind::Scalar && ranges.count(p.name) && !ranges[p.name].bounded)
+    if (p.kind != ParamKind::Scalar && !p.global && ranges.count(p.name) &&
+        !ranges[p.name].bounded)
       unchecked.push_back(p.name);
   open_namespaces(code, k);
   code.line("// {}_adjoint with the size of every array, checked against the elements the "
@@ -220,6 +223,8 @@ void emit_checked_entry(Code& code, const Kernel& k) {
   };
   std::vector<std::string> args;
   for (const auto& p : k.params) {
+    if (p.global)
+      continue;
     if (p.kind == ParamKind::Scalar) {
       args.push_back(p.name);
       continue;

@@ -37,6 +37,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   for (const auto& p : plans)
     all.push_back(p->kernel);
   h.raw(tag_declarations(all));
+  h.raw(global_declarations(all, "_adj", false));
   std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto& p : plans) {
     open_namespaces(h, *p->kernel);
@@ -58,7 +59,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     if (!k.template_name.empty()) {
       std::vector<std::string> args; // the adjoint's parameters (the signature rule)
       for (const auto& prm : k.params) {
-        if (prm.synthetic || !prm.twin_of.empty())
+        if (prm.synthetic || !prm.twin_of.empty() || prm.global)
           continue;
         if (prm.kind == ParamKind::In || prm.kind == ParamKind::ConstArray ||
             prm.kind == ParamKind::Scalar)
@@ -94,7 +95,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     d.raw(fmt::format("/// {}:{}.\n", base_name(k.file), k.pos.line));
     std::vector<std::string> ps, flat;
     for (const auto& prm : k.params) {
-      if (prm.synthetic || !prm.twin_of.empty() || prm.returned)
+      if (prm.synthetic || !prm.twin_of.empty() || prm.returned || prm.global)
         continue;
       ps.push_back(prm.inout ? fmt::format("{}* {}", prm.elem_name, prm.name) : prm.declaration);
       bool is_const = prm.kind == ParamKind::In ? !prm.inout : prm.kind == ParamKind::ConstArray;
@@ -138,6 +139,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   if (staged)
     c.raw("#include <vector>\n");
   c.raw("\n");
+  c.raw(global_declarations(all, "_adj", true));
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
         "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"

@@ -53,7 +53,7 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k) {
 void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
-    if (!p.twin_of.empty())
+    if (!p.twin_of.empty() || p.global)
       continue;
     if (p.kind == ParamKind::Scalar)
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));

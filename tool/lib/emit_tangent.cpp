@@ -87,7 +87,7 @@ std::string tangent_list(const Kernel& k, bool shaped, bool decl) {
                 : flat_argument(p, is_const, name);
   };
   for (const auto& p : k.params) {
-    if ((decl && shaped && p.synthetic) || !p.twin_of.empty())
+    if ((decl && shaped && p.synthetic) || !p.twin_of.empty() || p.global)
       continue;
     switch (p.kind) {
     case ParamKind::In:
@@ -282,6 +282,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
   }
   h.raw(container_includes(std_vectors, spans));
   h.raw(tag_declarations(kernels));
+  h.raw(global_declarations(kernels, "_dot", false));
   std::set<std::string> facades; // template kernels whose primary is declared
   for (const auto* k : kernels) {
     open_namespaces(h, *k);
@@ -295,7 +296,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
     if (!k->template_name.empty()) {
       std::vector<std::string> args; // the tangent's parameters
       for (const auto& p : k->params) {
-        if (p.synthetic || !p.twin_of.empty())
+        if (p.synthetic || !p.twin_of.empty() || p.global)
           continue;
         if (!p.returned)
           args.push_back(p.name);
@@ -327,6 +328,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
   if (checks)
     c.raw("#include <stdexcept>\n#include <string>\n");
   c.raw("\n");
+  c.raw(global_declarations(kernels, "_dot", true));
   c.raw("namespace {\n"
         "// std::min/std::max by value, the first argument on ties (as in the adjoints).\n"
         "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"

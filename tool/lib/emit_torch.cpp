@@ -529,6 +529,11 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
                            "torch op cannot do to a tensor autograd tracks; for --torch write "
                            "the new values into a separate DPGEN_OUT array",
                            k.name, p.name)));
+      else if (p.global)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': it reads global '{}', which a torch op cannot see as a "
+                           "tensor; for --torch pass it as a parameter",
+                           k.name, p.name)));
       else if (p.tag)
         out.errors.push_back(error_at(
             k, fmt::format("kernel '{}': its tag parameter ({}) picks an overload, which a torch "

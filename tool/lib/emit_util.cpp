@@ -79,7 +79,7 @@ std::string literal(const std::string& s) {
 void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name) {
   std::vector<std::string> shown;
   for (const auto& p : k.params)
-    if (p.kind == ParamKind::Scalar && p.elem == Type::Int)
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && !p.global)
       shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
   std::string sizes = shown.empty() ? "\"\""
                                     : fmt::format("{}", fmt::join(shown, " + \", \" + "));
@@ -131,6 +131,46 @@ bool has_spans(const Kernel& k) {
   return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.span; });
 }
 
+
+std::string global_declarations(const std::vector<const Kernel*>& kernels,
+                                const std::string& suffix, bool source) {
+  std::set<std::string> seen;
+  std::string out;
+  auto in_namespaces = [](const Param& g, const std::string& decl) {
+    std::string s = decl;
+    for (auto it = g.global_namespaces.rbegin(); it != g.global_namespaces.rend(); ++it)
+      s = fmt::format("namespace {} {{ {} }}", *it, s);
+    return s + "\n";
+  };
+  auto using_decl = [](const Param& g, const std::string& name) {
+    if (g.global_namespaces.empty())
+      return std::string();
+    return fmt::format("using {}::{};\n", fmt::join(g.global_namespaces, "::"), name);
+  };
+  for (const Kernel* k : kernels)
+    for (const auto& g : k->params) {
+      if (!g.global || !seen.insert(g.name).second)
+        continue;
+      const std::string d = g.name + suffix;
+      if (source) {
+        out += in_namespaces(g, g.global_declaration) + using_decl(g, g.name);
+        if (g.kind == ParamKind::In)
+          out += in_namespaces(g, fmt::format("{}* {} = nullptr;", g.elem_name, d)) +
+                 using_decl(g, d);
+      } else if (g.kind == ParamKind::In) {
+        out += in_namespaces(g, fmt::format("extern {}* {};", g.elem_name, d));
+      }
+    }
+  if (out.empty())
+    return out;
+  return (source ? std::string("// The globals the kernels read (and the ") +
+                       (suffix == "_adj" ? "adjoint" : "tangent") +
+                       " pointers of those marked DPGEN_IN).\n"
+                 : std::string(suffix == "_adj" ? "// The adjoint" : "// The tangent") +
+                       " of each global marked DPGEN_IN: point it at storage of the global's "
+                       "size before the call (null: not computed).\n") +
+         out + "\n";
+}
 
 std::string tag_declarations(const std::vector<const Kernel*>& kernels) {
   std::set<std::string> seen;

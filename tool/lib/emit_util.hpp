@@ -91,6 +91,12 @@ std::string container_includes(bool vectors, bool spans);
 bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);
 void close_namespaces(Code& c, const Kernel& k);
+/// The kernels' globals (Param::global) for a generated file: in a header
+/// (`source` false), `extern T* <name><suffix>;` for each DPGEN_IN global
+/// (suffix "_adj" or "_dot"); in a .cpp, the globals' declarations, the
+/// definitions of those pointers, and using-declarations for namespaced ones.
+std::string global_declarations(const std::vector<const Kernel*>& kernels,
+                                const std::string& suffix, bool source);
 /// Declarations of the kernels' tag types (Param::tag_declaration), once
 /// each, for a generated header.
 std::string tag_declarations(const std::vector<const Kernel*>& kernels);

@@ -215,6 +215,17 @@ struct Param {
   /// A tag's declaration for generated headers, which do not include the
   /// kernel file: "namespace d { struct XDir; }" or "#include <type_traits>".
   std::string tag_declaration;
+  /// A global the kernel reads (`double g_dx;`, `DPGEN_IN double* g_kappa;`,
+  /// `DPGEN_IN double g_diff[3];`, a constexpr table): in no signature; the
+  /// generated files declare it (`global_declaration`: "extern double*
+  /// g_kappa;", or a static copy of a constant table's values) in its
+  /// namespaces (`global_namespaces`) and name it unqualified. A DPGEN_IN
+  /// global's adjoint (tangent) is the global pointer `<name>_adj`
+  /// (`<name>_dot`), defined by the generated .cpp, declared by its header;
+  /// the caller points it at storage (null: not differentiated).
+  bool global = false;
+  std::string global_declaration;
+  std::vector<std::string> global_namespaces;
 };
 
 /// How many pointer levels lead to an element: 0 for a flat array (or rows

@@ -453,6 +453,10 @@ private:
 
   // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
   const Param* scalar_ref_param(const clang::Expr* e) const;
+  // The globals the kernel body reads, as Params (Param::global), bound in
+  // header() like parameters.
+  void globals(const Stmt* body);
+  std::map<std::string, const VarDecl*> global_decls_;
   const Param* array_base(const clang::Expr* base);
 
   ExprP cond(const clang::Expr* e) {

@@ -2,6 +2,10 @@
 // names generated code will need (lower_impl.hpp).
 #include "lower_impl.hpp"
 
+#include "print.hpp"
+
+#include <algorithm>
+
 namespace dpgen::lowering {
 
 void Lowerer::header() {
@@ -330,6 +334,9 @@ void Lowerer::header() {
     k_.return_type = r.elem_name;
     any_out = true;
   }
+  globals(fn_->getBody());
+  for (const auto& p : k_.params)
+    any_in = any_in || (p.global && p.kind == ParamKind::In);
   check_parameter_names();
   // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
   if (!any_in && params_ok)
@@ -389,6 +396,10 @@ void Lowerer::header() {
     Binding b;
     b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
     b.param = &p;
+    if (p.global) {
+      env_[global_decls_.at(p.name)] = b;
+      continue;
+    }
     for (const ParmVarDecl* decl : fn_->parameters())
       if (decl->getNameAsString() == p.name && !poisoned_.count(decl))
         env_[decl] = b;
@@ -496,6 +507,115 @@ void Lowerer::collect_names() {
   }
   k_.names.insert(local_names_.begin(), local_names_.end());
   k_.names.insert(loop_names_.begin(), loop_names_.end());
+}
+
+void Lowerer::globals(const Stmt* body) {
+  std::vector<const VarDecl*> found;
+  std::function<void(const Stmt*)> scan = [&](const Stmt* s) {
+    if (!s)
+      return;
+    if (const auto* r = dyn_cast<DeclRefExpr>(s))
+      if (const auto* v = dyn_cast<VarDecl>(r->getDecl());
+          v && v->hasGlobalStorage() && !v->isStaticLocal() && !global_decls_.count(v->getNameAsString()) &&
+          std::find(found.begin(), found.end(), v) == found.end())
+        found.push_back(v);
+    for (const Stmt* c : s->children())
+      scan(c);
+  };
+  scan(body);
+  PrintingPolicy policy(ctx_.getLangOpts());
+  policy.SuppressTagKeyword = true;
+  policy.Bool = true;
+  for (const VarDecl* v : found) {
+    std::string ann = annotation(v);
+    QualType q = v->getType();
+    bool is_const = q.isConstQualified();
+    bool array = q->isPointerType() || q->isConstantArrayType();
+    // A constant scalar with a known value is a constant (decl_ref); one
+    // whose value is not known stays an error there.
+    if (is_const && !array && ann.empty())
+      continue;
+    Param g;
+    g.name = v->getNameAsString();
+    g.global = true;
+    for (const DeclContext* dc = v->getDeclContext(); dc; dc = dc->getParent())
+      if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+        g.global_namespaces.insert(g.global_namespaces.begin(), ns->getNameAsString());
+    QualType elem = q->isPointerType() ? q->getPointeeType()
+                    : array ? QualType(q->getArrayElementTypeNoTypeQual(), 0)
+                            : q;
+    auto t = scalar_type(elem.getUnqualifiedType());
+    if (!t || elem->isPointerType() || elem->isArrayType()) {
+      error(v->getLocation(), fmt::format("global '{}' of type '{}' is outside the kernel "
+                                          "subset (a scalar, a pointer to numbers or a "
+                                          "one-dimensional array)",
+                                          g.name, q.getAsString(policy)),
+            "dpgen-global");
+      continue;
+    }
+    g.elem = *t;
+    g.elem_name = spelled(elem.getUnqualifiedType());
+    g.spelling = g.elem_name;
+    if (ann == "dpgen.in") {
+      if (!array || !is_real(*t) || elem.isConstQualified()) {
+        error(v->getLocation(), fmt::format("DPGEN_IN global '{}' must be a pointer to or an "
+                                            "array of non-const float or double",
+                                            g.name),
+              "dpgen-global");
+        continue;
+      }
+      g.kind = ParamKind::In;
+    } else if (!ann.empty()) {
+      error(v->getLocation(), fmt::format("global '{}' is marked {}; a global is read only: "
+                                          "unmarked (a constant) or DPGEN_IN (differentiated)",
+                                          g.name, ann == "dpgen.out" ? "DPGEN_OUT" : ann),
+            "dpgen-global");
+      continue;
+    } else {
+      g.kind = array ? ParamKind::ConstArray : ParamKind::Scalar;
+    }
+    std::string decl;
+    llvm::raw_string_ostream os(decl);
+    q.print(os, policy, g.name);
+    decl = os.str();
+    if (is_const && array) {
+      // A constant table (constexpr double w[3] = {...}) has internal
+      // linkage: the generated files hold a copy of its values.
+      const APValue* val = v->evaluateValue();
+      if (!val || !val->isArray()) {
+        error(v->getLocation(), fmt::format("constant global array '{}' has no value dpgen "
+                                            "can read (initialise it with constants)",
+                                            g.name),
+              "dpgen-global");
+        continue;
+      }
+      std::vector<std::string> vals;
+      for (unsigned i = 0; i < val->getArraySize(); ++i) {
+        const APValue& e = i < val->getArrayInitializedElts() ? val->getArrayInitializedElt(i)
+                                                              : val->getArrayFiller();
+        vals.push_back(e.isFloat() ? real_literal(e.getFloat().convertToDouble(), Type::Double)
+                                   : std::to_string(e.getInt().getSExtValue()));
+      }
+      g.global_declaration = fmt::format("static {} = {{{}}};", decl, fmt::join(vals, ", "));
+    } else {
+      if (v->getStorageClass() == SC_Static || v->isInAnonymousNamespace()) {
+        error(v->getLocation(), fmt::format("global '{}' is static: the generated files, "
+                                            "another translation unit, cannot read it; give it "
+                                            "external linkage or pass it as a parameter",
+                                            g.name),
+              "dpgen-global");
+        continue;
+      }
+      g.global_declaration = "extern " + decl + ";";
+    }
+    g.declaration = decl;
+    for (const auto& other : k_.params)
+      if (other.name == g.name)
+        error(v->getLocation(), fmt::format("global '{}' has the name of a parameter", g.name),
+              "dpgen-global");
+    global_decls_[g.name] = v;
+    k_.params.push_back(g);
+  }
 }
 
 } // namespace dpgen::lowering

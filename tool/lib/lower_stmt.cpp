@@ -475,6 +475,11 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
       fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
                                            "values; store them in the kernel",
                                            frames_.back().fn->getNameAsString(), p->name));
+    if (p->global)
+      fail(lhs->getBeginLoc(), fmt::format("write to '{}': global state is outside the kernel "
+                                           "subset (a kernel reads globals; its results go to "
+                                           "DPGEN_OUT parameters)",
+                                           p->name));
     if (p->kind != ParamKind::Out)
       fail(lhs->getBeginLoc(),
            fmt::format("'{}' is written but is not a DPGEN_OUT parameter; inputs and constant "
@@ -509,7 +514,7 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
     fail(lhs->getBeginLoc(), "assignment target is outside the kernel subset (write to an "
                              "output element or a local variable)");
   auto it = env_.find(var);
-  if (it == env_.end()) {
+  if (it == env_.end() || (it->second.param && it->second.param->global)) {
     if (var->hasGlobalStorage())
       fail(lhs->getBeginLoc(), fmt::format("write to '{}': global state is outside the kernel "
                                            "subset",
