@@ -4,13 +4,13 @@
 // Gradient descent through the whole simulation: MacCormack marker transport, semi-Lagrangian
 // self-advection, buoyancy, and a pressure projection whose gradient comes from the implicit
 // rule (one more MG-preconditioned CG solve per step), all kernels dpgen kernels
-// (runtime/include/dpgen/flow2d.hpp); binomial checkpointing on request.
+// (runtime/solvers/include/dpgen/solvers/flow2d.hpp); binomial checkpointing on request.
 #include "common/cli.hpp"
 #include "common/plot.hpp"
 #include "common/report.hpp"
 
 #include "dpgen/checkpoint.hpp"
-#include "dpgen/flow2d.hpp"
+#include "dpgen/solvers/flow2d.hpp"
 #include "dpgen/optim.hpp"
 #include "dpgen/train.hpp"
 

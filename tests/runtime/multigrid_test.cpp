@@ -1,9 +1,9 @@
-// Tests of dpgen/multigrid.hpp: the V-cycle is a symmetric positive definite operator; its
+// Tests of dpgen/solvers/multigrid.hpp: the V-cycle is a symmetric positive definite operator; its
 // contraction factor is bounded independently of the grid size and of the number of levels;
 // MG-preconditioned CG needs a flat number of iterations as the grid grows; gradients of an
 // implicit solve preconditioned by it match central differences; errors are clear.
 #include "dpgen/implicit_solve.hpp"
-#include "dpgen/multigrid.hpp"
+#include "dpgen/solvers/multigrid.hpp"
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
 #include "neg_div_k_grad_walls2d_adjoint.hpp"
 #include "operators.hpp"

@@ -65,9 +65,9 @@ struct CgOptions {
   /// Empty means no Jacobi preconditioner.
   Eigen::VectorXd jacobi_diagonal;
   /// A general SPD preconditioner, called as `preconditioner(r, z)` to compute z = M^-1 r, such
-  /// as Multigrid::preconditioner() (dpgen/multigrid.hpp). It must be a fixed linear map (not an
-  /// inner iteration to a tolerance). Empty means none. At most one of jacobi_diagonal and
-  /// preconditioner may be set.
+  /// as Multigrid::preconditioner() (dpgen/solvers/multigrid.hpp). It must be a fixed linear map
+  /// (not an inner iteration to a tolerance). Empty means none. At most one of jacobi_diagonal
+  /// and preconditioner may be set.
   VectorOperator preconditioner;
   /// For operators whose null space is the constant vector (periodic or all-Neumann Poisson):
   /// the mean of the right-hand side is removed (the solvable part P b, P v = v - mean(v)),

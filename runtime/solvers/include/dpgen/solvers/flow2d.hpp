@@ -6,7 +6,7 @@
 #pragma once
 
 #include "dpgen/implicit_solve.hpp"
-#include "dpgen/multigrid.hpp"
+#include "dpgen/solvers/multigrid.hpp"
 #include "flow2d_adjoint.hpp"
 #include "kernels.hpp"
 
