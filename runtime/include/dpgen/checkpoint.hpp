@@ -155,7 +155,7 @@ void unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& s
   stats.working_bytes = 4 * state_bytes;
   CheckpointWorkspace local;
   CheckpointWorkspace& work = workspace != nullptr ? *workspace : local;
-  VectorXd& cur = work.cur;           // forward work buffers
+  VectorXd& cur = work.cur; // forward work buffers
   VectorXd& next = work.next;
   VectorXd& adj = work.adj;           // dL/ds_{t+1}
   VectorXd& adj_prev = work.adj_prev; // dL/ds_t
