@@ -55,7 +55,8 @@ struct RowStripShape {
 /// not kept: the kernel treats them as boundary rows. Strips run on every thread in two passes
 /// (even strips, then odd ones: a strip's call overwrites the edge output rows of its neighbours,
 /// which an odd strip saves and puts back); periodic end strips work on copies. `force_strips`:
-/// split even on one thread (to check that a kernel has the shape, bit for bit).
+/// split even where one call would do (one thread, a small grid), to check that a kernel has
+/// the shape, bit for bit.
 /// Returns false (and does nothing) when the grid is too small to split: call the kernel once.
 template <std::size_t N, typename Kernel>
 bool run_by_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
@@ -65,7 +66,7 @@ bool run_by_row_strips(const RowStripShape& shape, const std::array<const double
   const Eigen::Index in_w = shape.in_width, out_w = shape.out_width;
   const int opi = shape.out_per_in;
   // Even and odd strips of at least 8 rows, 2 per thread and pass.
-  const int wanted = force_strips ? 4 : 4 * threads;
+  const int wanted = 4 * threads;
   const int strips = std::min(wanted, rows / 8) / 2 * 2;
   if (strips < 4 ||
       (!force_strips && (threads < 2 || Eigen::Index(rows) * in_w < detail::kParallelValues)))
@@ -123,7 +124,7 @@ bool run_by_row_strips(const RowStripShape& shape, const std::array<const double
     }
   };
 #ifdef _OPENMP
-#pragma omp parallel num_threads(force_strips ? 1 : threads)
+#pragma omp parallel num_threads(threads)
 #endif
   {
     std::vector<double> buffer; // per thread: one strip's copies, or two saved rows

@@ -174,11 +174,11 @@ public:
     detail::require_finite(k, options_.name, "coefficient k");
     fine.k = k;
     for (std::size_t l = 1; l < levels_.size(); ++l)
-      mg_average_2x2(levels_[l - 1].k.data(), levels_[l].k.data(), levels_[l].nx, levels_[l].ny);
-    for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
-      set_smoother(static_cast<int>(l));
+      average_2x2(levels_[l - 1], levels_[l]);
     for (Level& level : levels_)
       level.row_strips = options_.parallel_rows && strips_match(level);
+    for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
+      set_smoother(static_cast<int>(l));
     factor_coarsest();
   }
 
@@ -361,10 +361,27 @@ private:
   }
 
   // smoother = w / diag(A), diag(A) > 0 checked.
+  // The coarse coefficient: mg_average_2x2 by row strips (coarse row jc reads fine rows 2 jc and
+  // 2 jc + 1: one input row of 4 nx_coarse values).
+  void average_2x2(const Level& fine, Level& coarse) const {
+    const int nxc = coarse.nx;
+    const auto average = [&](const std::array<const double*, 1>& in, double* out, int rows) {
+      mg_average_2x2(in[0], out, nxc, rows);
+    };
+    if (!run_by_row_strips<1>({coarse.ny, 4 * Eigen::Index(nxc), nxc, 1, false}, {fine.k.data()},
+                              coarse.k.data(), average))
+      average({fine.k.data()}, coarse.k.data(), coarse.ny);
+  }
+
   void set_smoother(int l) {
     Level& level = levels_[l];
+    // probed with the level's own application (by row strips where they were found right)
+    const LevelOperator apply = [&](const double* x, const double*, double* y, int, int, double) {
+      if (!level.row_strips || !apply_by_strips(level, x, y, /*force=*/false))
+        op_(x, level.k.data(), y, level.nx, level.ny, level.h);
+    };
     const Eigen::VectorXd diagonal =
-        operator_diagonal(op_, level.k, level.nx, level.ny, level.h, boundaries_);
+        operator_diagonal(apply, level.k, level.nx, level.ny, level.h, boundaries_);
     for (int j = 0; j < level.ny; ++j)
       for (int i = 0; i < level.nx; ++i) {
         const double d = diagonal[j * level.nx + i];
