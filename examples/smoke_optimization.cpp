@@ -176,6 +176,7 @@ int main(int argc, char** argv) try {
     cp.snapshots = checkpoints;
   }
   dpgen::CheckpointStats last_stats;
+  dpgen::CheckpointWorkspace tape; // the states, kept from one gradient to the next
   const auto loss_and_gradient = [&](const VectorXd& x, VectorXd& grad) {
     grad.setZero(x.size());
     double total = 0.0;
@@ -196,7 +197,7 @@ int main(int argc, char** argv) try {
             adj.head(flow.cells()) += area * r;
             return 0.5 * area * r.squaredNorm();
           },
-          cp);
+          cp, &tape);
       total += g.loss;
       grad.segment(b * velocity_size, velocity_size) =
           g.state_adjoint.tail(velocity_size).cwiseProduct(wall_mask);
