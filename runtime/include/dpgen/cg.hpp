@@ -324,25 +324,21 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
       double* pr = r.data();
       const double* pp = p.data();
       const double* pq_ = q.data();
-      const double sum = parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
-        double s = 0.0;
+      const double sum = parallel_blocks(n, [&](Eigen::Index lo, Eigen::Index hi) {
         for (Eigen::Index i = lo; i < hi; ++i) {
           px[i] += alpha * pp[i];
           pr[i] -= alpha * pq_[i];
-          s += project ? pr[i] : pr[i] * pr[i];
         }
-        return s;
+        const Eigen::Map<const VectorXd> block(pr + lo, hi - lo);
+        return project ? block.sum() : block.squaredNorm();
       });
       if (project) {
         // r_{k+1} <- P r_{k+1}: rounding must not leak into the null space
         const double mean = sum / static_cast<double>(n);
-        r_norm = std::sqrt(parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
-          double s = 0.0;
-          for (Eigen::Index i = lo; i < hi; ++i) {
+        r_norm = std::sqrt(parallel_blocks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+          for (Eigen::Index i = lo; i < hi; ++i)
             pr[i] -= mean;
-            s += pr[i] * pr[i];
-          }
-          return s;
+          return Eigen::Map<const VectorXd>(pr + lo, hi - lo).squaredNorm();
         }));
       } else {
         r_norm = std::sqrt(sum);

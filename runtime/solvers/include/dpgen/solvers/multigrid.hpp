@@ -131,8 +131,9 @@ struct MultigridOptions {
   /// Run the operator on horizontal strips of the grid on every thread (dpgen/parallel.hpp:
   /// each strip with one row of its neighbours on either side, whose output is discarded). Right
   /// for any operator whose row j depends only on rows j - 1 .. j + 1 and on whether j is the
-  /// first or last row; checked at setup, level by level, against one whole-grid application
-  /// (bit for bit, on a pseudo-random x): a level where they differ runs the operator whole.
+  /// first or last row; checked level by level against one whole-grid application (bit for
+  /// bit, on a pseudo-random x) when a level is first applied on several threads after a
+  /// coefficient is set: a level where they differ runs the operator whole.
   bool parallel_rows = true;
   /// Prefix of every error message.
   std::string name = "multigrid";
@@ -175,8 +176,8 @@ public:
     fine.k = k;
     for (std::size_t l = 1; l < levels_.size(); ++l)
       average_2x2(levels_[l - 1], levels_[l]);
-    for (Level& level : levels_)
-      level.row_strips = options_.parallel_rows && strips_match(level);
+    for (Level& level : levels_) // checked when first needed (on more than one thread)
+      level.strips = options_.parallel_rows ? Strips::unchecked : Strips::no;
     for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
       set_smoother(static_cast<int>(l));
     factor_coarsest();
@@ -184,7 +185,7 @@ public:
 
   /// True when level l applies the operator by row strips in parallel (see
   /// MultigridOptions::parallel_rows; false also for levels too small to be split).
-  bool parallel_rows(int l) const { return levels_.at(l).row_strips; }
+  bool parallel_rows(int l) const { return strips_right(levels_.at(l)); }
 
   /// z = B r: one V-cycle for A z = r from z = 0.
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
@@ -227,6 +228,7 @@ public:
   bool constant_null_space() const { return null_space_; }
 
 private:
+  enum class Strips { unchecked, yes, no };
   struct Level {
     int nx = 0, ny = 0;
     double h = 0.0;
@@ -235,7 +237,7 @@ private:
     Eigen::VectorXd b, x;     // right-hand side and correction (coarse levels)
     Eigen::VectorXd scratch;  // A x, residuals, prolonged corrections
     Eigen::VectorXd transfer; // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
-    bool row_strips = false;  // the operator gives the same bits by row strips (checked)
+    mutable Strips strips = Strips::unchecked; // does the operator give its bits by row strips
     Eigen::Index cells() const { return static_cast<Eigen::Index>(nx) * ny; }
   };
 
@@ -326,9 +328,22 @@ private:
     }
   }
 
+  // y = A_l x: by row strips on every thread where they were found right, else in one call.
+  void apply_level(const Level& level, const double* x, double* y) const {
+    const bool strips = level.strips != Strips::no && detail::max_threads() > 1;
+    if (!strips || !strips_right(level) || !apply_by_strips(level, x, y, /*force=*/false))
+      op_(x, level.k.data(), y, level.nx, level.ny, level.h);
+  }
+
+  // Whether the operator gives the whole grid's bits by row strips on this level, checked once
+  // per coefficient (false for a level too small to be split).
+  bool strips_right(const Level& level) const {
+    if (level.strips == Strips::unchecked)
+      level.strips = strips_match(level) ? Strips::yes : Strips::no;
+    return level.strips == Strips::yes;
+  }
   void apply_level(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-    if (!level.row_strips || !apply_by_strips(level, x.data(), y.data(), /*force=*/false))
-      op_(x.data(), level.k.data(), y.data(), level.nx, level.ny, level.h);
+    apply_level(level, x.data(), y.data());
   }
 
   bool apply_by_strips(const Level& level, const double* x, double* y, bool force) const {
@@ -342,8 +357,7 @@ private:
         force);
   }
 
-  // Whether the operator gives the whole grid's bits by row strips on this level (false for a
-  // level too small to be split).
+  // One whole-grid application against one by strips, on a pseudo-random x.
   bool strips_match(const Level& level) const {
     const Eigen::Index n = level.cells();
     Eigen::VectorXd x(n), whole(n), strips(n);
@@ -360,7 +374,6 @@ private:
            std::memcmp(whole.data(), strips.data(), sizeof(double) * n) == 0;
   }
 
-  // smoother = w / diag(A), diag(A) > 0 checked.
   // The coarse coefficient: mg_average_2x2 by row strips (coarse row jc reads fine rows 2 jc and
   // 2 jc + 1: one input row of 4 nx_coarse values).
   void average_2x2(const Level& fine, Level& coarse) const {
@@ -373,12 +386,11 @@ private:
       average({fine.k.data()}, coarse.k.data(), coarse.ny);
   }
 
+  // smoother = w / diag(A), diag(A) > 0 checked; probed with the level's own application.
   void set_smoother(int l) {
     Level& level = levels_[l];
-    // probed with the level's own application (by row strips where they were found right)
     const LevelOperator apply = [&](const double* x, const double*, double* y, int, int, double) {
-      if (!level.row_strips || !apply_by_strips(level, x, y, /*force=*/false))
-        op_(x, level.k.data(), y, level.nx, level.ny, level.h);
+      apply_level(level, x, y);
     };
     const Eigen::VectorXd diagonal =
         operator_diagonal(apply, level.k, level.nx, level.ny, level.h, boundaries_);
