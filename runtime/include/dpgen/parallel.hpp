@@ -50,14 +50,14 @@ struct RowStripShape {
 /// Runs `kernel(inputs, out, strip_rows)` (inputs: std::array<const double*, N> of the strip's
 /// input rows, out: its output rows, strip_rows: how many input rows it has) on horizontal
 /// strips of the grid so that the output equals kernel(inputs, out, shape.rows) on the whole
-/// grid, for any kernel of the shape described above. A strip gets one extra input row on each
-/// side (its neighbours' rows, or the wrapped row on a periodic grid), whose output rows are
-/// not kept: the kernel treats them as boundary rows. Strips run on every thread in two passes
-/// (even strips, then odd ones: a strip's call overwrites the edge output rows of its neighbours,
-/// which an odd strip saves and puts back); periodic end strips work on copies. `force_strips`:
-/// split even where one call would do (one thread, a small grid), to check that a kernel has
-/// the shape, bit for bit.
-/// Returns false (and does nothing) when the grid is too small to split: call the kernel once.
+/// grid, for any kernel of the shape described above (`out` must not overlap an input). A strip
+/// gets one extra input row on each side (its neighbours' rows, or the wrapped row on a
+/// periodic grid), whose output rows are not kept: the kernel treats them as boundary rows. Strips
+/// run on every thread in two passes (even strips, then odd ones: a strip's call overwrites the
+/// edge output rows of its neighbours, which an odd strip saves and puts back); periodic end strips
+/// work on copies. `force_strips`: split even where one call would do (one thread, a small grid),
+/// to check that a kernel has the shape, bit for bit. Returns false (and does nothing) when the
+/// grid is too small to split: call the kernel once.
 template <std::size_t N, typename Kernel>
 bool run_by_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
                        double* out, Kernel&& kernel, bool force_strips = false) {
@@ -127,7 +127,9 @@ bool run_by_row_strips(const RowStripShape& shape, const std::array<const double
 #pragma omp parallel num_threads(threads)
 #endif
   {
-    std::vector<double> buffer; // per thread: one strip's copies, or two saved rows
+    // per thread: one strip's copies, or two saved rows; kept by the thread (OpenMP's threads
+    // live on), so that a call allocates nothing once the sizes have been seen
+    thread_local std::vector<double> buffer;
     for (int parity = 0; parity < 2; ++parity) {
 #ifdef _OPENMP
 #pragma omp for schedule(static)
