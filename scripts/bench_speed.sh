@@ -34,4 +34,5 @@ for flavour in o3 native; do
     echo "load average after $flavour $bin: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$out/load.txt"
   done
 done
-python3 "$root/scripts/bench_speed_table.py" "$out" "$base"
+python3 "$root/scripts/bench_speed_table.py" "$out" "$base"        # wall time, 1 and 2 threads
+python3 "$root/scripts/bench_speed_table.py" "$out" "$base" cpu    # CPU time, 1 thread (a busy machine)

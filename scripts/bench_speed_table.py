@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """Tables of scripts/bench_speed.sh's runs (medians of the repetitions), in markdown.
-usage: bench_speed_table.py <results-dir> <baseline-commit>"""
+usage: bench_speed_table.py <results-dir> <baseline-commit> [cpu]
+With `cpu`, times are the process's CPU time instead of wall time, and only 1-thread figures are
+shown (a 2-thread run's CPU time adds both threads): on a machine shared with other jobs, CPU
+time is what a 1-thread run itself used, wall time adds the time it waited for a core."""
 import json
 import os
 import sys
@@ -17,18 +20,33 @@ def load(path):
     return data["context"], rows
 
 
+CLOCK = "real_time"
+
+
 def ms(b):
-    return b["real_time"] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+    return b[CLOCK] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+
+
+def keep(rows):
+    """Drops the 2-thread runs (names ending in /2) when timing by CPU time."""
+    if CLOCK == "real_time":
+        return rows
+    return {k: v for k, v in rows.items() if not k.endswith("/2")}
 
 
 def main():
+    global CLOCK
     d, base = sys.argv[1], sys.argv[2]
+    if len(sys.argv) > 3 and sys.argv[3] == "cpu":
+        CLOCK = "cpu_time"
     flavours = {"o3": "plain -O3 (CMake Release)", "native": "-O3 -march=native"}
     for flavour, title in flavours.items():
         ctx, new = load(os.path.join(d, f"{flavour}-bench_speed.json"))
         _, old = load(os.path.join(d, f"{flavour}-bench_speed_baseline.json"))
-        print(f"\n#### {title}: {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz, "
-              f"{ctx.get('date', '')}; baseline = runtime headers of {base}\n")
+        new, old = keep(new), keep(old)
+        clock = "wall time" if CLOCK == "real_time" else "CPU time, 1 thread only"
+        print(f"\n#### {title} ({clock}): {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} "
+              f"MHz, {ctx.get('date', '')}; baseline = runtime headers of {base}\n")
         print("Unrolled upwind loop, full tape, 2^24 cell-steps (16 to 10^4 steps): "
               "gradient / forward at 1T / 2T; heap: how much the heap grew during a gradient call "
               "(sampled when the tape is complete; the workspace's calls after the first)\n")
@@ -45,7 +63,8 @@ def main():
             hw = new.get(f"BM_unrolled_upwind/{n}/1/1")
             hb = old.get(f"BM_unrolled_upwind/{n}/1/1")
             heap = f"{hw['heap_growth_bytes'] / 1e6:.2f} MB / {hb['heap_growth_bytes'] / 1e6:.2f} MB" if hw and hb else "–"
-            print(f"| {n} | {ms(f1):.2f} / {ms(f2):.2f} | {r(old, 1, 1)} / {r(old, 1, 2)} | "
+            f2ms = f"{ms(f2):.2f}" if f2 else "–"
+            print(f"| {n} | {ms(f1):.2f} / {f2ms} | {r(old, 1, 1)} / {r(old, 1, 2)} | "
                   f"{r(new, 1, 1)} / {r(new, 1, 2)} | {r(new, 2, 1)} / {r(new, 2, 2)} | {heap} |")
         print("\nMG-PCG, setup + solve to 1e-8 (`-div(k grad p)`, periodic): ms at 1T / 2T, "
               "2-thread speed-up, ns per cell at 2T\n")
@@ -55,11 +74,14 @@ def main():
         for n in (256, 512, 1024, 2048):
             o1, o2 = old.get(f"BM_mgpcg/{n}/1"), old.get(f"BM_mgpcg/{n}/2")
             n1, n2 = new.get(f"BM_mgpcg/{n}/1"), new.get(f"BM_mgpcg/{n}/2")
-            if not (o1 and o2 and n1 and n2):
+            if not (o1 and n1):
                 continue
-            print(f"| {n}² | {int(n1['cg_iterations'])} | {ms(o1):.1f} / {ms(o2):.1f} | "
-                  f"{ms(o1) / ms(o2):.2f} | {ms(n1):.1f} / {ms(n2):.1f} | {ms(n1) / ms(n2):.2f} | "
-                  f"{ms(n1) * 1e6 / n / n:.0f} / {ms(n2) * 1e6 / n / n:.0f} | {ms(n1) / ms(o1):.2f} |")
+            t2 = lambda b: f"{ms(b):.1f}" if b else "–"
+            up = lambda a, b: f"{ms(a) / ms(b):.2f}" if a and b else "–"
+            cell = lambda b: f"{ms(b) * 1e6 / n / n:.0f}" if b else "–"
+            print(f"| {n}² | {int(n1['cg_iterations'])} | {ms(o1):.1f} / {t2(o2)} | {up(o1, o2)} | "
+                  f"{ms(n1):.1f} / {t2(n2)} | {up(n1, n2)} | {cell(n1)} / {cell(n2)} | "
+                  f"{ms(n1) / ms(o1):.2f} |")
         print("\nFlow solver, 4 steps (closed box, semi-Lagrangian, MG-PCG pressure to 1e-10): "
               "gradient / forward and the 2-thread speed-up of each\n")
         print("| grid | baseline forward ms 1T | baseline gradient / forward 1T / 2T | "
@@ -70,10 +92,10 @@ def main():
             def cols(rows):
                 f1, f2 = rows.get(f"BM_flow/{n}/0/1"), rows.get(f"BM_flow/{n}/0/2")
                 g1, g2 = rows.get(f"BM_flow/{n}/1/1"), rows.get(f"BM_flow/{n}/1/2")
-                if not (f1 and f2 and g1 and g2):
+                if not (f1 and g1):
                     return ["–"] * 3
-                return [f"{ms(f1):.1f}", f"{ms(g1) / ms(f1):.2f} / {ms(g2) / ms(f2):.2f}",
-                        f"{ms(f1) / ms(f2):.2f} / {ms(g1) / ms(g2):.2f}"]
+                r = lambda a, b: f"{ms(a) / ms(b):.2f}" if a and b else "–"
+                return [f"{ms(f1):.1f}", f"{r(g1, f1)} / {r(g2, f2)}", f"{r(f1, f2)} / {r(g1, g2)}"]
             print(f"| {n}² | " + " | ".join(cols(old) + cols(new)) + " |")
 
 
