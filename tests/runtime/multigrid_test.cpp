@@ -387,12 +387,13 @@ void cycle_on(int threads, dpgen::Multigrid& mg, const VectorXd& r, VectorXd& z,
 } // namespace
 
 TEST_CASE("row strips on 2 threads: the V-cycle and the operator give the 1-thread bits") {
-  // 160x96: levels 160x96 .. 20x12; the finer ones are split into row strips (the operator and
-  // both prolongation passes), the coarse ones run whole. Every boundary kind, so the periodic
-  // end strips (on copies) and the closed ones (in place) both run.
+  // 512x256: levels 512x256 .. 8x4; the two finest are split into row strips on 2 threads (the
+  // operator, both prolongation passes, the coefficient averages), the coarse ones run whole.
+  // Every boundary kind, so the periodic end strips (on copies) and the closed ones (in place)
+  // both run.
   for (const Case& c : kCases) {
     CAPTURE(c.name);
-    const int nx = 160, ny = 96;
+    const int nx = 512, ny = 256;
     VectorXd k(nx * ny);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -403,7 +404,7 @@ TEST_CASE("row strips on 2 threads: the V-cycle and the operator give the 1-thre
     omp_set_num_threads(before);
     CHECK(mg.parallel_rows(0));
     CHECK(mg.parallel_rows(1));
-    CHECK_FALSE(mg.parallel_rows(mg.levels() - 1)); // 20x12: too small to split
+    CHECK_FALSE(mg.parallel_rows(mg.levels() - 1)); // 8x4: too small to split
     const VectorXd r = random_vector(nx * ny, 7);
     VectorXd z1, z2, a1, a2;
     cycle_on(1, mg, r, z1, a1);

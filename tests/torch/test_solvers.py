@@ -107,9 +107,9 @@ class Rollout(unittest.TestCase):
             torch.testing.assert_close(a, b, rtol=1e-14, atol=1e-14)
 
     def test_cpp_rollout_on_strips_equals_the_kernel_as_written(self):
-        # 40000 cells: the C++ op runs each step on strips of cells on every thread
+        # 100000 cells: the C++ op runs each step on strips of cells on every thread
         # (dpgen/parallel.hpp); it must give the serial kernel's bits, and the same gradient.
-        n, steps = 40000, 5
+        n, steps = 100000, 5
         d0, u = torch.rand(n, dtype=D), torch.rand(n, dtype=D) - 0.5
         ref = d0
         for _ in range(steps):

@@ -29,8 +29,9 @@ inline int max_threads() {
 #endif
 }
 
-// Below this many values a loop stays on one thread (a parallel region costs a few us).
-constexpr Eigen::Index kParallelValues = 16384;
+// Below this many values a loop stays on one thread: a pass over 64K doubles takes tens of us,
+// a parallel region a few (and far more on a machine whose cores are busy with other work).
+constexpr Eigen::Index kParallelValues = 65536;
 
 } // namespace detail
 
@@ -68,8 +69,8 @@ bool run_by_row_strips(const RowStripShape& shape, const std::array<const double
   // Even and odd strips of at least 8 rows, 2 per thread and pass.
   const int wanted = 4 * threads;
   const int strips = std::min(wanted, rows / 8) / 2 * 2;
-  if (strips < 4 ||
-      (!force_strips && (threads < 2 || Eigen::Index(rows) * in_w < detail::kParallelValues)))
+  const Eigen::Index values = Eigen::Index(rows) * std::max(in_w, opi * out_w);
+  if (strips < 4 || (!force_strips && (threads < 2 || values < detail::kParallelValues)))
     return false;
   const auto strip_begin = [&](int s) { return static_cast<int>(Eigen::Index(rows) * s / strips); };
   const Eigen::Index out_row = opi * out_w; // output values per input row
