@@ -6,7 +6,7 @@
 // thread (the generated kernels would otherwise use OpenMP, the rest not).
 #include "dpgen/checkpoint.hpp"
 #include "dpgen/implicit_solve.hpp"
-#include "dpgen/multigrid.hpp"
+#include "dpgen/solvers/multigrid.hpp"
 #include "kernels.hpp"
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
 #include "operators.hpp"

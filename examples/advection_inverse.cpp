@@ -82,6 +82,8 @@ int main(int argc, char** argv) try {
   Eigen::VectorXd final_state;
 
   // L(u) = |d(T) - target|^2 and dL/du, through T steps.
+  cp.step_assigns_every_element = true; // upwind_step writes every cell
+  dpgen::CheckpointWorkspace tape;       // the states, kept from one gradient to the next
   auto loss_and_gradient = [&](const Eigen::VectorXd& u, Eigen::VectorXd& grad) {
     Eigen::VectorXd u_adj = Eigen::VectorXd::Zero(cells);
     auto step = [&](int, const Eigen::VectorXd& d, Eigen::VectorXd& next) {
@@ -100,7 +102,7 @@ int main(int argc, char** argv) try {
       return r.squaredNorm();
     };
     dpgen::UnrolledGradient g =
-        dpgen::unrolled_gradient(p.d0, steps, step, step_adjoint, loss_adjoint, cp);
+        dpgen::unrolled_gradient(p.d0, steps, step, step_adjoint, loss_adjoint, cp, &tape);
     grad = u_adj;
     last_stats = g.stats;
     final_state = g.final_state;

@@ -108,6 +108,7 @@ int main(int argc, char** argv) try {
 
   // L(u0) = sum((u16 - ref)^2) / N and dL/du0, through 16 stored steps.
   Eigen::VectorXd u16;
+  dpgen::CheckpointWorkspace tape; // the states, kept from one gradient to the next
   auto loss_and_gradient = [&](const Eigen::VectorXd& u0, Eigen::VectorXd& grad) {
     Eigen::VectorXd mid(kCells), mid_adj(kCells);
     auto step = [&](int, const Eigen::VectorXd& u, Eigen::VectorXd& next) {
@@ -130,7 +131,7 @@ int main(int argc, char** argv) try {
       return r.squaredNorm() / kCells;
     };
     dpgen::UnrolledGradient g =
-        dpgen::unrolled_gradient(u0, kLossStep, step, step_adjoint, loss_adjoint);
+        dpgen::unrolled_gradient(u0, kLossStep, step, step_adjoint, loss_adjoint, {}, &tape);
     grad = g.state_adjoint;
     u16 = g.final_state;
     return g.loss;

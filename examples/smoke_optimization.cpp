@@ -4,13 +4,13 @@
 // Gradient descent through the whole simulation: MacCormack marker transport, semi-Lagrangian
 // self-advection, buoyancy, and a pressure projection whose gradient comes from the implicit
 // rule (one more MG-preconditioned CG solve per step), all kernels dpgen kernels
-// (runtime/include/dpgen/flow2d.hpp); binomial checkpointing on request.
+// (runtime/solvers/include/dpgen/solvers/flow2d.hpp); binomial checkpointing on request.
 #include "common/cli.hpp"
 #include "common/plot.hpp"
 #include "common/report.hpp"
 
 #include "dpgen/checkpoint.hpp"
-#include "dpgen/flow2d.hpp"
+#include "dpgen/solvers/flow2d.hpp"
 #include "dpgen/optim.hpp"
 #include "dpgen/train.hpp"
 
@@ -176,6 +176,7 @@ int main(int argc, char** argv) try {
     cp.snapshots = checkpoints;
   }
   dpgen::CheckpointStats last_stats;
+  dpgen::CheckpointWorkspace tape; // the states, kept from one gradient to the next
   const auto loss_and_gradient = [&](const VectorXd& x, VectorXd& grad) {
     grad.setZero(x.size());
     double total = 0.0;
@@ -196,7 +197,7 @@ int main(int argc, char** argv) try {
             adj.head(flow.cells()) += area * r;
             return 0.5 * area * r.squaredNorm();
           },
-          cp);
+          cp, &tape);
       total += g.loss;
       grad.segment(b * velocity_size, velocity_size) =
           g.state_adjoint.tail(velocity_size).cwiseProduct(wall_mask);

@@ -1,4 +1,4 @@
-// Kernels of the 2D incompressible flow solver (dpgen/flow2d.hpp) on a MAC grid of
+// Kernels of the 2D incompressible flow solver (dpgen/solvers/flow2d.hpp) on a MAC grid of
 // nx-by-ny cells of size h: the marker s at cell centres (j*nx + i), u on the x
 // faces ((nx+1) per row, u[j*(nx+1) + i] on the west face of cell (i, j)), v on
 // the y faces (v[j*nx + i] on the south face). dpgen generates every adjoint; the
@@ -218,7 +218,7 @@ DPGEN_KERNEL void flow_force_u(DPGEN_IN const double* u, DPGEN_IN const double* 
 
 // -div(k grad p) with closed walls (no flux through them) or periodic axes; the
 // constants are its null space either way: the pressure Poisson operator, k = 1
-// for a plain projection (a LevelOperator of dpgen/multigrid.hpp, with px, py
+// for a plain projection (a LevelOperator of dpgen/solvers/multigrid.hpp, with px, py
 // bound). ox, oy: 1 for periodic, 0 for closed (the weight of the wrapped face).
 DPGEN_KERNEL void flow_pressure_operator(DPGEN_IN const double* p, DPGEN_IN const double* k,
                                          DPGEN_OUT double* out, int nx, int ny, double h,

@@ -14,7 +14,7 @@ DPGEN_KERNEL void divergence2d(DPGEN_IN const double* u, DPGEN_IN const double* 
 DPGEN_KERNEL void laplacian2d(DPGEN_IN const double* a, DPGEN_OUT double* out,
                               int nx, int ny, double h);
 
-// Multigrid transfers (multigrid_transfer.cpp), used by dpgen/multigrid.hpp.
+// Multigrid transfers (multigrid_transfer.cpp), used by dpgen/solvers/multigrid.hpp.
 // Bilinear prolongation along x: coarse nxc-by-ny -> fine 2nxc-by-ny. Ghost
 // weights per wall: periodic (self 0, wrap 1), Neumann (1, 0), Dirichlet (-1, 0).
 DPGEN_KERNEL void mg_prolong_x(DPGEN_IN const double* c, DPGEN_OUT double* f, int nxc, int ny,
@@ -27,7 +27,7 @@ DPGEN_KERNEL void mg_prolong_y(DPGEN_IN const double* c, DPGEN_OUT double* f, in
 // Coefficient coarsening: mean of the 2x2 fine cells of each coarse cell.
 DPGEN_KERNEL void mg_average_2x2(DPGEN_IN const double* f, DPGEN_OUT double* c, int nxc, int nyc);
 
-// The 2D flow solver's kernels (flow2d.cpp, used by dpgen/flow2d.hpp): MAC grid,
+// The 2D flow solver's kernels (flow2d.cpp, used by dpgen/solvers/flow2d.hpp): MAC grid,
 // marker s (nx*ny), u ((nx+1)*ny), v (nx*(ny+1)); dt_h = dt / h; px, py: 1 where
 // an axis is periodic (face nx / row ny is then a copy of face / row 0), 0 closed.
 DPGEN_KERNEL void flow_advect_marker(DPGEN_IN const double* s, DPGEN_IN const double* u,

@@ -1,4 +1,4 @@
-// Grid transfers of the cell-centred multigrid in dpgen/multigrid.hpp: bilinear
+// Grid transfers of the cell-centred multigrid in dpgen/solvers/multigrid.hpp: bilinear
 // prolongation P, one axis per kernel (P = P_y P_x), and the 2x2 average that
 // coarsens a cell-centred coefficient. The restriction is R = P^T / 4, computed
 // by the generated adjoints of the two prolongation kernels, so R is exactly

@@ -14,12 +14,14 @@
 
 #include "dpgen/checkpoint.hpp"
 #include "dpgen/implicit_solve.hpp"
+#include "dpgen/parallel.hpp"
 #include "dpgen/torch.hpp"
 
 #include <torch/library.h>
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 #include <utility>
 
@@ -37,6 +39,17 @@ Eigen::Map<VectorXd> view_mut(torch::Tensor& t) { return {t.data_ptr<double>(), 
 
 // ---- upwind_rollout ---------------------------------------------------------------------
 
+// One upwind step on every thread: the kernel as written (serial; periodic, radius 1) run on
+// strips of cells by dpgen/parallel.hpp, which gives the bits of one whole call.
+void upwind_step_parallel(const double* d, const double* u, double* d_next, int n, double dt,
+                          double dx) {
+  const auto strip = [&](const std::array<const double*, 2>& in, double* out, int cells) {
+    upwind_step(in[0], in[1], out, cells, dt, dx);
+  };
+  if (!dpgen::run_by_row_strips<2>({n, 1, 1, 1, /*periodic=*/true}, {d, u}, d_next, strip))
+    upwind_step(d, u, d_next, n, dt, dx);
+}
+
 struct UpwindRollout : public torch::autograd::Function<UpwindRollout> {
   static torch::Tensor forward(AutogradContext* ctx, const torch::Tensor& d0,
                                const torch::Tensor& u, std::int64_t steps, double dt, double dx,
@@ -53,8 +66,8 @@ struct UpwindRollout : public torch::autograd::Function<UpwindRollout> {
     // Forward: two buffers, nothing stored (backward recomputes what it needs).
     torch::Tensor cur = d0.clone(), next = torch::empty_like(d0);
     for (std::int64_t t = 0; t < steps; ++t) {
-      upwind_step(cur.data_ptr<double>(), u.data_ptr<double>(), next.data_ptr<double>(), n, dt,
-                  dx);
+      upwind_step_parallel(cur.data_ptr<double>(), u.data_ptr<double>(), next.data_ptr<double>(), n,
+                           dt, dx);
       std::swap(cur, next);
     }
     ctx->save_for_backward({d0, u});
@@ -79,7 +92,7 @@ struct UpwindRollout : public torch::autograd::Function<UpwindRollout> {
     const double* u_ptr = u.data_ptr<double>();
     double* u_adj_ptr = u_adj.data_ptr<double>();
     auto step = [&](int, const VectorXd& s, VectorXd& s_next) {
-      upwind_step(s.data(), u_ptr, s_next.data(), n, dt, dx);
+      upwind_step_parallel(s.data(), u_ptr, s_next.data(), n, dt, dx);
     };
     auto step_adjoint = [&](int, const VectorXd& s, const VectorXd& next_adj, VectorXd& s_adj) {
       upwind_step_adjoint(s.data(), s_adj.data(), u_ptr, u_adj_ptr, next_adj.data(), n, dt, dx);
@@ -91,6 +104,7 @@ struct UpwindRollout : public torch::autograd::Function<UpwindRollout> {
       return 0.0;
     };
     dpgen::CheckpointOptions options;
+    options.step_assigns_every_element = true; // upwind_step writes every cell
     if (checkpoints > 0) {
       options.strategy = dpgen::CheckpointStrategy::revolve;
       options.snapshots = checkpoints;

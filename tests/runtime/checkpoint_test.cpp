@@ -4,6 +4,7 @@
 #include "dpgen/checkpoint.hpp"
 
 #include <doctest/doctest.h>
+#include <malloc.h>
 
 #include <cmath>
 #include <cstring>
@@ -139,9 +140,12 @@ bool same_bits(const VectorXd& a, const VectorXd& b) {
 }
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
-dpgen::CheckpointOptions full_tape() { return {dpgen::CheckpointStrategy::full_tape, 0}; }
+dpgen::CheckpointOptions full_tape() { return {}; }
 dpgen::CheckpointOptions revolve(int snapshots) {
-  return {dpgen::CheckpointStrategy::revolve, snapshots};
+  dpgen::CheckpointOptions options;
+  options.strategy = dpgen::CheckpointStrategy::revolve;
+  options.snapshots = snapshots;
+  return options;
 }
 
 // Independent references for Revolve's step count. (1) The dynamic programme over every
@@ -331,6 +335,126 @@ TEST_CASE("memory of a 4000-step unrolled run: full tape vs 16 snapshots") {
           << " states, " << rev.result.stats.forward_steps << " forward steps ("
           << rev.result.stats.recomputed_steps << " recomputed); working buffers "
           << rev.result.stats.working_bytes << " B in both");
+}
+
+// Bytes the heap holds right now (small blocks + mmap'ed large ones), as bench/ measures it.
+std::size_t heap_in_use() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;
+}
+
+// One gradient of L = 1/2 |s_T|^2 with the workspace and result given, returning the most the
+// heap held above its level at the call (sampled in every step, adjoint step and loss call) and
+// checking it is back at that level after the call.
+std::size_t heap_growth_of_call(Burgers& model, const VectorXd& u0, int steps,
+                                const dpgen::CheckpointOptions& options,
+                                dpgen::CheckpointWorkspace* workspace,
+                                dpgen::UnrolledGradient& result) {
+  model.nu_adj = 0.0;
+  model.forcing_adj.setZero();
+  const std::size_t base = heap_in_use();
+  std::size_t peak = 0;
+  const auto sample = [&] {
+    const std::size_t now = heap_in_use();
+    peak = std::max(peak, now > base ? now - base : 0);
+  };
+  dpgen::unrolled_gradient(
+      u0, steps,
+      [&](int, const VectorXd& s, VectorXd& next) {
+        model.step(s, next);
+        sample();
+      },
+      [&](int, const VectorXd& s, const VectorXd& next_adj, VectorXd& s_adj) {
+        model.step_adjoint(s, next_adj, s_adj);
+        sample();
+      },
+      [&](int t, const VectorXd& s, VectorXd& s_adj) {
+        sample();
+        if (t != steps)
+          return 0.0;
+        s_adj += s;
+        return 0.5 * s.squaredNorm();
+      },
+      options, workspace, result);
+  sample();
+  return peak;
+}
+
+TEST_CASE("a reused workspace: the same bits, and no heap growth from the second call on") {
+  // 256 cells: 2 KB per state, blocks that glibc's heap counts as free once freed (smaller ones
+  // may sit in its per-thread cache, counted as in use, so their reuse would not show).
+  Burgers model;
+  model.n = 256;
+  model.dx = 1.0 / 256;
+  model.dt = 1e-4;
+  model.forcing = VectorXd::Zero(256);
+  model.forcing_adj = VectorXd::Zero(256);
+  const VectorXd u0 = model.initial_state();
+  const int steps = 200;
+  const std::size_t tape_bytes = steps * model.n * sizeof(double);
+  dpgen::CheckpointOptions assigning = full_tape();
+  assigning.step_assigns_every_element = true; // Burgers::step writes every cell
+  dpgen::CheckpointOptions assigning_revolve = revolve(7);
+  assigning_revolve.step_assigns_every_element = true;
+  for (const dpgen::CheckpointOptions& options :
+       {full_tape(), revolve(7), revolve(1), revolve(500), assigning, assigning_revolve}) {
+    CAPTURE(options.snapshots);
+    CAPTURE(options.step_assigns_every_element);
+    // Without a workspace every call allocates its stored states again (this is what the
+    // sampling sees, so the zero below is not for want of looking).
+    dpgen::UnrolledGradient plain;
+    heap_growth_of_call(model, u0, steps, options, nullptr, plain);
+    const std::size_t fresh = heap_growth_of_call(model, u0, steps, options, nullptr, plain);
+    CHECK(fresh >= static_cast<std::size_t>(plain.stats.max_snapshots) * model.n * sizeof(double));
+    const double nu_adj = model.nu_adj;
+    const VectorXd forcing_adj = model.forcing_adj;
+
+    dpgen::CheckpointWorkspace workspace;
+    dpgen::UnrolledGradient reused;
+    heap_growth_of_call(model, u0, steps, options, &workspace, reused); // sizes the buffers
+    for (int call = 2; call <= 3; ++call) {
+      CAPTURE(call);
+      CHECK(heap_growth_of_call(model, u0, steps, options, &workspace, reused) == 0);
+      CHECK(same_bits(reused.state_adjoint, plain.state_adjoint));
+      CHECK(same_bits(reused.final_state, plain.final_state));
+      CHECK(same_bits(reused.loss, plain.loss));
+      CHECK(same_bits(model.nu_adj, nu_adj));
+      CHECK(same_bits(model.forcing_adj, forcing_adj));
+      CHECK(reused.stats.forward_steps == plain.stats.forward_steps);
+      CHECK(reused.stats.peak_snapshot_bytes == plain.stats.peak_snapshot_bytes);
+    }
+    if (options.strategy == dpgen::CheckpointStrategy::full_tape)
+      CHECK(workspace.bytes() >= tape_bytes);
+  }
+}
+
+TEST_CASE("a workspace follows a change of size and step count") {
+  Burgers small;
+  Burgers large;
+  large.n = 96;
+  large.dx = 1.0 / 96;
+  large.forcing = VectorXd::Zero(96);
+  large.forcing_adj = VectorXd::Zero(96);
+  dpgen::CheckpointWorkspace workspace;
+  for (Burgers* model : {&small, &large, &small}) {
+    const VectorXd u0 = model->initial_state();
+    for (int steps : {30, 5, 0, 1}) {
+      const Loss loss{LossKind::several_times, steps};
+      for (const dpgen::CheckpointOptions& options : {full_tape(), revolve(3)}) {
+        const Run expected = run(*model, u0, steps, loss, options);
+        Burgers m = *model;
+        m.nu_adj = 0.0;
+        const dpgen::UnrolledGradient got = dpgen::unrolled_gradient(
+            u0, steps, [&](int, const VectorXd& s, VectorXd& next) { m.step(s, next); },
+            [&](int, const VectorXd& s, const VectorXd& next_adj, VectorXd& s_adj) {
+              m.step_adjoint(s, next_adj, s_adj);
+            },
+            loss, options, &workspace);
+        CHECK(same_bits(got.state_adjoint, expected.result.state_adjoint));
+        CHECK(same_bits(m.nu_adj, expected.nu_adj));
+      }
+    }
+  }
 }
 
 TEST_CASE("checkpoint errors") {

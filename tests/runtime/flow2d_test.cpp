@@ -1,9 +1,9 @@
-// Tests of dpgen/flow2d.hpp: a step leaves a divergence-free velocity with closed walls; the
-// gradient of a loss at step T with respect to the initial velocity, the initial marker and the
+// Tests of dpgen/solvers/flow2d.hpp: a step leaves a divergence-free velocity with closed walls;
+// the gradient of a loss at step T with respect to the initial velocity, the initial marker and the
 // inflow, through T steps with binomial checkpointing, matches central differences of the whole
 // simulation and is bit-identical to the full tape's.
 #include "dpgen/checkpoint.hpp"
-#include "dpgen/flow2d.hpp"
+#include "dpgen/solvers/flow2d.hpp"
 
 #include "test_support.hpp"
 

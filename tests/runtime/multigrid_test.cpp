@@ -1,9 +1,9 @@
-// Tests of dpgen/multigrid.hpp: the V-cycle is a symmetric positive definite operator; its
+// Tests of dpgen/solvers/multigrid.hpp: the V-cycle is a symmetric positive definite operator; its
 // contraction factor is bounded independently of the grid size and of the number of levels;
 // MG-preconditioned CG needs a flat number of iterations as the grid grows; gradients of an
 // implicit solve preconditioned by it match central differences; errors are clear.
 #include "dpgen/implicit_solve.hpp"
-#include "dpgen/multigrid.hpp"
+#include "dpgen/solvers/multigrid.hpp"
 #include "neg_div_k_grad_periodic2d_adjoint.hpp"
 #include "neg_div_k_grad_walls2d_adjoint.hpp"
 #include "operators.hpp"
@@ -11,8 +11,10 @@
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
+#include <omp.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -364,6 +366,84 @@ TEST_CASE("non-convergence of MG-PCG is reported, never silent") {
   const dpgen::LinearSolveResult r =
       dpgen::solve_forward(mg.fine_operator(), random_vector(n * n, 10), cg);
   CHECK(r.summary.termination == dpgen::CgTermination::max_iterations);
+}
+
+namespace {
+
+bool same_bits(const VectorXd& a, const VectorXd& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+// One V-cycle z = B r and one operator application on `threads` threads.
+void cycle_on(int threads, dpgen::Multigrid& mg, const VectorXd& r, VectorXd& z, VectorXd& ar) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  mg.precondition(r, z);
+  mg.apply(r, ar);
+  omp_set_num_threads(before);
+}
+
+} // namespace
+
+TEST_CASE("row strips on 2 threads: the V-cycle and the operator give the 1-thread bits") {
+  // 512x256: levels 512x256 .. 8x4; the two finest are split into row strips on 2 threads (the
+  // operator, both prolongation passes, the coefficient averages), the coarse ones run whole.
+  // Every boundary kind, so the periodic end strips (on copies) and the closed ones (in place)
+  // both run.
+  for (const Case& c : kCases) {
+    CAPTURE(c.name);
+    const int nx = 512, ny = 256;
+    VectorXd k(nx * ny);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        k[j * nx + i] = 1.0 + 0.5 * std::sin(0.1 * i) * std::cos(0.13 * j);
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(2); // setup by strips too (coefficient averages, probing)
+    dpgen::Multigrid mg(nx, ny, 1.0 / ny, c.bc, operator_for(c.bc), k);
+    omp_set_num_threads(before);
+    CHECK(mg.parallel_rows(0));
+    CHECK(mg.parallel_rows(1));
+    CHECK_FALSE(mg.parallel_rows(mg.levels() - 1)); // 8x4: too small to split
+    const VectorXd r = random_vector(nx * ny, 7);
+    VectorXd z1, z2, a1, a2;
+    cycle_on(1, mg, r, z1, a1);
+    cycle_on(2, mg, r, z2, a2);
+    CHECK(same_bits(a1, a2));
+    CHECK(same_bits(z1, z2));
+    // and the same as a hierarchy set up and run on one thread, which never splits
+    dpgen::MultigridOptions whole;
+    whole.parallel_rows = false;
+    omp_set_num_threads(1);
+    dpgen::Multigrid serial(nx, ny, 1.0 / ny, c.bc, operator_for(c.bc), k, whole);
+    omp_set_num_threads(before);
+    CHECK_FALSE(serial.parallel_rows(0));
+    VectorXd z3, a3;
+    cycle_on(1, serial, r, z3, a3);
+    CHECK(same_bits(a1, a3));
+    CHECK(same_bits(z1, z3));
+  }
+}
+
+TEST_CASE("an operator that is not row-local runs whole, and stays right") {
+  // Row j of this operator also depends on the grid's height (a shift that grows with ny):
+  // strips would see other heights, so the setup check must keep it whole on every level.
+  const int n = 128;
+  const dpgen::Boundaries bc = Boundaries::all(Boundary::periodic);
+  const dpgen::LevelOperator shifted = [](const double* x, const double* k, double* y, int nx,
+                                          int ny, double h) {
+    neg_div_k_grad_periodic2d(x, k, y, nx, ny, h);
+    for (int c = 0; c < nx * ny; ++c)
+      y[c] += 1e-3 * ny * x[c];
+  };
+  dpgen::Multigrid mg(n, n, 1.0 / n, bc, shifted, smooth_coefficient(n));
+  for (int l = 0; l < mg.levels(); ++l)
+    CHECK_FALSE(mg.parallel_rows(l));
+  const VectorXd x = random_vector(n * n, 3);
+  VectorXd y, expected(n * n);
+  mg.apply(x, y);
+  shifted(x.data(), smooth_coefficient(n).data(), expected.data(), n, n, 1.0 / n);
+  CHECK(same_bits(y, expected));
 }
 
 TEST_CASE("bad operators and inputs are rejected with a clear message") {

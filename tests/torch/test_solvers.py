@@ -106,6 +106,24 @@ class Rollout(unittest.TestCase):
         for a, b in zip(*out):
             torch.testing.assert_close(a, b, rtol=1e-14, atol=1e-14)
 
+    def test_cpp_rollout_on_strips_equals_the_kernel_as_written(self):
+        # 100000 cells: the C++ op runs each step on strips of cells on every thread
+        # (dpgen/parallel.hpp); it must give the serial kernel's bits, and the same gradient.
+        n, steps = 100000, 5
+        d0, u = torch.rand(n, dtype=D), torch.rand(n, dtype=D) - 0.5
+        ref = d0
+        for _ in range(steps):
+            ref = torch.ops.dpgen.upwind_step(ref, u, n, 0.1, 1.0)
+        self.assertTrue(torch.equal(torch.ops.dpgen.upwind_rollout(d0, u, steps, 0.1, 1.0, 0), ref))
+        out = []
+        for f in (lambda a, b: torch.ops.dpgen.upwind_rollout(a, b, steps, 0.1, 1.0, 2),
+                  lambda a, b: dpgen_torch.upwind_rollout(a, b, steps, 0.1, 1.0, 2)):
+            a, b = d0.clone().requires_grad_(), u.clone().requires_grad_()
+            f(a, b).square().sum().backward()
+            out.append((a.grad, b.grad))
+        for a, b in zip(*out):
+            torch.testing.assert_close(a, b, rtol=1e-14, atol=1e-14)
+
     def test_revolve_recomputes_the_optimal_number_of_steps(self):
         n = 6
         for steps, cp in [(1, 1), (2, 1), (10, 1), (10, 2), (25, 3), (40, 4), (30, 30), (13, 5)]:

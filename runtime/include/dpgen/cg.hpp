@@ -3,6 +3,7 @@
 #pragma once
 
 #include "dpgen/error.hpp"
+#include "dpgen/parallel.hpp"
 
 #include <Eigen/Core>
 
@@ -65,9 +66,9 @@ struct CgOptions {
   /// Empty means no Jacobi preconditioner.
   Eigen::VectorXd jacobi_diagonal;
   /// A general SPD preconditioner, called as `preconditioner(r, z)` to compute z = M^-1 r, such
-  /// as Multigrid::preconditioner() (dpgen/multigrid.hpp). It must be a fixed linear map (not an
-  /// inner iteration to a tolerance). Empty means none. At most one of jacobi_diagonal and
-  /// preconditioner may be set.
+  /// as Multigrid::preconditioner() (dpgen/solvers/multigrid.hpp). It must be a fixed linear map
+  /// (not an inner iteration to a tolerance). Empty means none. At most one of jacobi_diagonal
+  /// and preconditioner may be set.
   VectorOperator preconditioner;
   /// For operators whose null space is the constant vector (periodic or all-Neumann Poisson):
   /// the mean of the right-hand side is removed (the solvable part P b, P v = v - mean(v)),
@@ -131,8 +132,32 @@ namespace detail {
 
 // P v = v - mean(v) 1: the orthogonal projection onto the complement of the constant vector.
 inline void remove_mean(Eigen::VectorXd& v) {
-  if (v.size() > 0)
-    v.array() -= v.mean();
+  const Eigen::Index n = v.size();
+  if (n == 0)
+    return;
+  double* p = v.data();
+  const double mean =
+      parallel_chunks(n,
+                      [&](Eigen::Index lo, Eigen::Index hi) {
+                        return Eigen::Map<const Eigen::VectorXd>(p + lo, hi - lo).sum();
+                      }) /
+      static_cast<double>(n);
+  parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+    for (Eigen::Index i = lo; i < hi; ++i)
+      p[i] -= mean;
+    return 0.0;
+  });
+}
+
+// v = 0, on every thread for long vectors (the operator and preconditioner contract: their
+// output arrives zero-filled).
+inline void set_zero(Eigen::VectorXd& v, Eigen::Index n) {
+  v.resize(n);
+  double* p = v.data();
+  parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+    std::fill(p + lo, p + hi, 0.0);
+    return 0.0;
+  });
 }
 
 inline void check_cg_options(const CgOptions& options, Eigen::Index n) {
@@ -203,7 +228,7 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
 
   // q = A v, checked: the operator must return a vector of the input's size.
   auto apply_checked = [&](const VectorXd& v) {
-    q.setZero(n);
+    detail::set_zero(q, n);
     apply(v, q);
     if (q.size() != n)
       throw std::invalid_argument(detail::message(where, ": operator returned a vector of size ",
@@ -212,9 +237,16 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
   // z = M^-1 r (then P z when projecting, so the search directions stay mean-free).
   auto precondition = [&](const VectorXd& r) {
     if (options.jacobi_diagonal.size() > 0) {
-      z = r.cwiseQuotient(options.jacobi_diagonal);
+      const double* pr = r.data();
+      const double* d = options.jacobi_diagonal.data();
+      double* pz = z.data();
+      parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+        for (Eigen::Index i = lo; i < hi; ++i)
+          pz[i] = pr[i] / d[i];
+        return 0.0;
+      });
     } else if (options.preconditioner) {
-      z.setZero(n);
+      detail::set_zero(z, n);
       options.preconditioner(r, z);
       if (z.size() != n)
         throw std::invalid_argument(detail::message(
@@ -243,9 +275,9 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
   summary.initial_residual_norm = r.norm();
 
   precondition(r);
-  p = z;                    // p0 = z0 = M^-1 r0
-  double rz = r.dot(z);     // rho0 = r0^T z0
-  double r_norm = r.norm(); // ||r_k||
+  p = z;                                         // p0 = z0 = M^-1 r0
+  double rz = parallel_dot(r, z);                // rho0 = r0^T z0
+  double r_norm = std::sqrt(parallel_dot(r, r)); // ||r_k||
   int k = 0;
   double curvature = 0.0;          // the non-positive value behind negative_curvature
   const char* curvature_what = ""; // which quadratic form it was
@@ -270,8 +302,8 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
       summary.termination = CgTermination::max_iterations;
       break;
     }
-    apply_checked(p);           // q_k = A p_k
-    const double pq = p.dot(q); // p_k^T A p_k
+    apply_checked(p);                     // q_k = A p_k
+    const double pq = parallel_dot(p, q); // p_k^T A p_k
     ++k;
     if (!std::isfinite(pq)) {
       summary.termination = CgTermination::nan;
@@ -285,16 +317,46 @@ CgSummary conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vec
       break;
     }
     const double alpha = rz / pq; // alpha_k = rho_k / (p_k^T A p_k)
-    x += alpha * p;               // x_{k+1} = x_k + alpha_k p_k
-    r -= alpha * q;               // r_{k+1} = r_k - alpha_k A p_k
-    if (project)
-      detail::remove_mean(r); // r_{k+1} <- P r_{k+1}: rounding must not leak into the null space
-    r_norm = r.norm();
-    precondition(r);                  // z_{k+1} = M^-1 r_{k+1}
-    const double rz_next = r.dot(z);  // rho_{k+1} = r_{k+1}^T z_{k+1}
-    const double beta = rz_next / rz; // beta_k = rho_{k+1} / rho_k
+    // x_{k+1} = x_k + alpha_k p_k and r_{k+1} = r_k - alpha_k A p_k, in one pass that also
+    // sums r_{k+1} (for its mean) or its squares (for its norm).
+    {
+      double* px = x.data();
+      double* pr = r.data();
+      const double* pp = p.data();
+      const double* pq_ = q.data();
+      const double sum = parallel_blocks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+        for (Eigen::Index i = lo; i < hi; ++i) {
+          px[i] += alpha * pp[i];
+          pr[i] -= alpha * pq_[i];
+        }
+        const Eigen::Map<const VectorXd> block(pr + lo, hi - lo);
+        return project ? block.sum() : block.squaredNorm();
+      });
+      if (project) {
+        // r_{k+1} <- P r_{k+1}: rounding must not leak into the null space
+        const double mean = sum / static_cast<double>(n);
+        r_norm = std::sqrt(parallel_blocks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+          for (Eigen::Index i = lo; i < hi; ++i)
+            pr[i] -= mean;
+          return Eigen::Map<const VectorXd>(pr + lo, hi - lo).squaredNorm();
+        }));
+      } else {
+        r_norm = std::sqrt(sum);
+      }
+    }
+    precondition(r);                           // z_{k+1} = M^-1 r_{k+1}
+    const double rz_next = parallel_dot(r, z); // rho_{k+1} = r_{k+1}^T z_{k+1}
+    const double beta = rz_next / rz;          // beta_k = rho_{k+1} / rho_k
     rz = rz_next;
-    p = z + beta * p; // p_{k+1} = z_{k+1} + beta_k p_k
+    {
+      double* pp = p.data();
+      const double* pz = z.data();
+      parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+        for (Eigen::Index i = lo; i < hi; ++i)
+          pp[i] = pz[i] + beta * pp[i]; // p_{k+1} = z_{k+1} + beta_k p_k
+        return 0.0;
+      });
+    }
   }
   if (project)
     detail::remove_mean(x); // the mean-free representative of the solution set

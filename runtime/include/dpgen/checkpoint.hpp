@@ -26,6 +26,30 @@ struct CheckpointOptions {
   /// Revolve only: the most states held at once, the initial state's copy included (>= 1).
   /// With snapshots >= steps Revolve stores every state and recomputes nothing.
   int snapshots = 0;
+  /// True when step() assigns every element of s_next: s_next then arrives sized but not
+  /// zero-filled (its contents are stale), which saves one write of the state per step. Leave
+  /// false for a step that accumulates into s_next or writes only part of it.
+  bool step_assigns_every_element = false;
+};
+
+/// The buffers of unrolled_gradient: the stored states (the tape, or Revolve's snapshots) and the
+/// forward and adjoint work vectors. Pass one to every call of a training loop so that calls
+/// after the first reuse its storage instead of allocating (and page-faulting) the whole tape
+/// again: from the second call with the same sizes on, unrolled_gradient allocates nothing but
+/// the result's two vectors (none at all with the overload that fills a given result). Its
+/// contents between calls are meaningless; one workspace must not serve two calls at once.
+struct CheckpointWorkspace {
+  std::vector<Eigen::VectorXd> states; ///< slots for stored states, kept across calls
+  Eigen::VectorXd cur, next, adj, adj_prev;
+  /// Bytes of state storage held (the slots' and the work vectors' capacity).
+  std::size_t bytes() const {
+    std::size_t total = 0;
+    for (const Eigen::VectorXd& v : states)
+      total += static_cast<std::size_t>(v.size()) * sizeof(double);
+    for (const Eigen::VectorXd* v : {&cur, &next, &adj, &adj_prev})
+      total += static_cast<std::size_t>(v->size()) * sizeof(double);
+    return total;
+  }
 };
 
 /// Counters of one unrolled_gradient call.
@@ -92,9 +116,11 @@ inline long long revolve_split(long long l, long long s) {
 } // namespace detail
 
 /// Runs s_{t+1} = step(t, s_t) for t = 0 .. steps-1 from `initial_state` and returns the loss
-/// L = sum_t l_t(s_t) with its gradient dL/ds_0. The callables, all on Eigen::VectorXd:
-///  - `step(t, s_t, s_next)`: s_next arrives sized like s_t, zero-filled; must be deterministic
-///    (the reverse sweep may recompute states and relies on getting the same bits).
+/// L = sum_t l_t(s_t) with its gradient dL/ds_0, in `result` (its vectors are reused when they
+/// have the right size already). The callables, all on Eigen::VectorXd:
+///  - `step(t, s_t, s_next)`: s_next arrives sized like s_t, zero-filled (stale, with
+///    options.step_assigns_every_element); must be deterministic (the reverse sweep may
+///    recompute states and relies on getting the same bits).
 ///  - `step_adjoint(t, s_t, next_adj, s_adj)`: ADD (d s_{t+1}/d s_t)^T next_adj into s_adj
 ///    (zero-filled), and add the parameter adjoints of this step into the caller's own
 ///    accumulators (a generated kernel adjoint does both). Called once per t, t = steps-1 .. 0.
@@ -102,13 +128,15 @@ inline long long revolve_split(long long l, long long s) {
 ///    s_adj; return 0 and add nothing at times without a loss. Called once per t,
 ///    t = steps .. 0, after step_adjoint(t).
 /// Both strategies make the same calls in the same order with the same states, so their
-/// results are identical bit for bit. Throws std::invalid_argument for a negative step
-/// count, fewer than 1 Revolve snapshot, a non-finite initial state or a step that changes
-/// the state's size.
+/// results are identical bit for bit, with or without a workspace. `workspace` (may be null:
+/// buffers of this call only) keeps the tape and the work vectors between calls. Throws
+/// std::invalid_argument for a negative step count, fewer than 1 Revolve snapshot, a
+/// non-finite initial state or a step that changes the state's size.
 template <typename Step, typename StepAdjoint, typename LossAdjoint>
-UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& step,
-                                   StepAdjoint&& step_adjoint, LossAdjoint&& loss_adjoint,
-                                   const CheckpointOptions& options = {}) {
+void unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& step,
+                       StepAdjoint&& step_adjoint, LossAdjoint&& loss_adjoint,
+                       const CheckpointOptions& options, CheckpointWorkspace* workspace,
+                       UnrolledGradient& result) {
   using Eigen::VectorXd;
   const bool revolve = options.strategy == CheckpointStrategy::revolve;
   if (steps < 0)
@@ -121,23 +149,46 @@ UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int ste
   const Eigen::Index n = initial_state.size();
   const std::size_t state_bytes = static_cast<std::size_t>(n) * sizeof(double);
 
-  UnrolledGradient result;
+  result.loss = 0.0;
+  result.stats = CheckpointStats{};
   CheckpointStats& stats = result.stats;
   stats.working_bytes = 4 * state_bytes;
-  VectorXd cur(n), next(n);                      // forward work buffers
-  VectorXd adj = VectorXd::Zero(n), adj_prev(n); // dL/ds_{t+1}, dL/ds_t
+  CheckpointWorkspace local;
+  CheckpointWorkspace& work = workspace != nullptr ? *workspace : local;
+  VectorXd& cur = work.cur; // forward work buffers
+  VectorXd& next = work.next;
+  VectorXd& adj = work.adj;           // dL/ds_{t+1}
+  VectorXd& adj_prev = work.adj_prev; // dL/ds_t
+  cur.resize(n);
+  next.resize(n);
+  adj.setZero(n);
+  adj_prev.resize(n);
 
-  std::vector<VectorXd> stored; // the snapshots (Revolve) or the tape (full)
-  stored.reserve(revolve ? static_cast<std::size_t>(std::min(options.snapshots, steps + 1))
-                         : static_cast<std::size_t>(steps));
-  const auto store = [&](const VectorXd& s) {
-    stored.push_back(s);
-    stats.max_snapshots = std::max(stats.max_snapshots, static_cast<int>(stored.size()));
-    stats.peak_snapshot_bytes = std::max(stats.peak_snapshot_bytes, stored.size() * state_bytes);
+  // The stored states (Revolve's snapshots or the tape) are work.states[0 .. used): a stack
+  // whose slots keep their storage when popped, for the next push and the next call. The slot
+  // vector gets its final length before any reference into it is taken.
+  const std::size_t slots =
+      static_cast<std::size_t>(revolve ? std::min(options.snapshots, steps + 1) : steps);
+  if (work.states.size() < slots)
+    work.states.resize(slots);
+  std::size_t used = 0;
+  // A new slot on top of the stack, sized n (contents stale).
+  const auto push = [&]() -> VectorXd& {
+    if (used == work.states.size()) // the schedules above never hold more than `slots` states
+      throw std::logic_error("checkpoint: internal error: more states stored than planned");
+    VectorXd& slot = work.states[used++];
+    slot.resize(n);
+    stats.max_snapshots = std::max(stats.max_snapshots, static_cast<int>(used));
+    stats.peak_snapshot_bytes = std::max(stats.peak_snapshot_bytes, used * state_bytes);
+    return slot;
   };
+  const auto top = [&]() -> VectorXd& { return work.states[used - 1]; };
   // out = step(t, in), counted and size-checked.
   const auto forward = [&](int t, const VectorXd& in, VectorXd& out) {
-    out.setZero(n);
+    if (options.step_assigns_every_element)
+      out.resize(n);
+    else
+      out.setZero(n);
     step(t, in, out);
     ++stats.forward_steps;
     if (out.size() != n)
@@ -175,28 +226,30 @@ UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int ste
     result.loss += loss_adjoint(0, initial_state, adj);
   } else if (!revolve) {
     // Full tape: one forward sweep storing s_0 .. s_{T-1}, then the reverse sweep reads them.
-    store(initial_state);
+    push() = initial_state;
     for (int t = 1; t < steps; ++t) {
-      store(VectorXd(n));
-      forward(t - 1, stored[t - 1], stored[t]);
+      VectorXd& out = push();
+      forward(t - 1, work.states[used - 2], out);
     }
     for (int t = steps - 1; t >= 0; --t)
-      leaf(t, stored[t]);
+      leaf(t, work.states[t]);
+    used = 0;
   } else {
     // Revolve, as an explicit stack of frames so that the depth of the schedule never touches
     // the call stack. A frame reverses steps [t0, t0 + l) from its base snapshot s_t0 (the top
-    // of `stored` while the frame is active), using at most s snapshots, the base included.
+    // of the stored states while the frame is active), using at most s snapshots, the base
+    // included.
     struct Frame {
       int t0, l, s;
     };
     std::vector<Frame> frames{{0, steps, options.snapshots}};
-    store(initial_state);
+    push() = initial_state;
     while (!frames.empty()) {
       Frame& f = frames.back();
-      const VectorXd& base = stored.back();
+      const VectorXd& base = top();
       if (f.l == 0) { // done: release the base snapshot
         frames.pop_back();
-        stored.pop_back();
+        --used;
       } else if (f.l == 1) {
         leaf(f.t0, base);
         f.l = 0;
@@ -209,14 +262,14 @@ UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int ste
         // Room for every state: store s_{t0+1} .. s_{t0+l-1} on the way, l - 1 steps.
         const int t0 = f.t0, l = f.l;
         for (int t = t0; t < t0 + l - 1; ++t) {
-          store(VectorXd(n));
-          forward(t, stored[stored.size() - 2], stored.back());
+          VectorXd& out = push();
+          forward(t, work.states[used - 2], out);
         }
         for (int t = t0 + l - 1; t > t0; --t) {
-          leaf(t, stored.back());
-          stored.pop_back();
+          leaf(t, top());
+          --used;
         }
-        leaf(t0, stored.back());
+        leaf(t0, top());
         frames.back().l = 0;
       } else {
         // Advance m steps, store s_{t0+m}, reverse the tail with one snapshot fewer, then
@@ -224,13 +277,26 @@ UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int ste
         const int m = static_cast<int>(detail::revolve_split(f.l, f.s));
         const Frame tail{f.t0 + m, f.l - m, f.s - 1};
         f.l = m;
-        store(advance(base, f.t0, m));
+        const VectorXd& state = advance(base, f.t0, m); // cur: m >= 1
+        push() = state;
         frames.push_back(tail);
       }
     }
   }
   stats.recomputed_steps = stats.forward_steps - steps;
-  result.state_adjoint = std::move(adj);
+  result.state_adjoint = adj; // a copy: adj stays in the workspace
+}
+
+/// The same, returning a new result (its state adjoint and final state are new vectors).
+template <typename Step, typename StepAdjoint, typename LossAdjoint>
+UnrolledGradient unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& step,
+                                   StepAdjoint&& step_adjoint, LossAdjoint&& loss_adjoint,
+                                   const CheckpointOptions& options = {},
+                                   CheckpointWorkspace* workspace = nullptr) {
+  UnrolledGradient result;
+  unrolled_gradient(initial_state, steps, std::forward<Step>(step),
+                    std::forward<StepAdjoint>(step_adjoint),
+                    std::forward<LossAdjoint>(loss_adjoint), options, workspace, result);
   return result;
 }
 

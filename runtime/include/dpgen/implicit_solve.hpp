@@ -32,9 +32,9 @@ struct LinearSolveResult {
 // solve removes the mean of x_bar), provided A(theta) 1 = 0 for every theta.
 //
 // Preconditioning: forward and backward take the same CgOptions, so a preconditioner set there
-// (Jacobi, or a Multigrid V-cycle from dpgen/multigrid.hpp) serves both solves without a second
-// setup. That is right because A^T = A here: M ~ A^-1 is also M ~ A^-T, and the backward solve
-// converges as fast as the forward one. For a non-symmetric A, CG does not apply to A itself:
+// (Jacobi, or a Multigrid V-cycle from dpgen/solvers/multigrid.hpp) serves both solves without a
+// second setup. That is right because A^T = A here: M ~ A^-1 is also M ~ A^-T, and the backward
+// solve converges as fast as the forward one. For a non-symmetric A, CG does not apply to A itself:
 // solve_forward_normal / solve_backward_normal below run CG on A^T A, for which M ~ A^-1 is not
 // a preconditioner (M M^T would be, with M^T a V-cycle built on A^T). A Multigrid refuses a
 // non-symmetric operator at setup, so it cannot be passed there by mistake.

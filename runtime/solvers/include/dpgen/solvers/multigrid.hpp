@@ -7,6 +7,7 @@
 
 #include "dpgen/cg.hpp"
 #include "dpgen/error.hpp"
+#include "dpgen/parallel.hpp"
 #include "kernels.hpp"
 #include "multigrid_transfer_adjoint.hpp"
 
@@ -14,8 +15,12 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -123,6 +128,13 @@ struct MultigridOptions {
   /// Jacobi damping w in x += w D^-1 (b - A x); 4/5 damps the high frequencies of a 5-point
   /// Laplacian best. Must lie in (0, 1].
   double jacobi_weight = 0.8;
+  /// Run the operator on horizontal strips of the grid on every thread (dpgen/parallel.hpp:
+  /// each strip with one row of its neighbours on either side, whose output is discarded). Right
+  /// for any operator whose row j depends only on rows j - 1 .. j + 1 and on whether j is the
+  /// first or last row; checked level by level against one whole-grid application (bit for
+  /// bit, on a pseudo-random x) when a level is first applied on several threads after a
+  /// coefficient is set: a level where they differ runs the operator whole.
+  bool parallel_rows = true;
   /// Prefix of every error message.
   std::string name = "multigrid";
 };
@@ -163,11 +175,17 @@ public:
     detail::require_finite(k, options_.name, "coefficient k");
     fine.k = k;
     for (std::size_t l = 1; l < levels_.size(); ++l)
-      mg_average_2x2(levels_[l - 1].k.data(), levels_[l].k.data(), levels_[l].nx, levels_[l].ny);
+      average_2x2(levels_[l - 1], levels_[l]);
+    for (Level& level : levels_) // checked when first needed (on more than one thread)
+      level.strips = options_.parallel_rows ? Strips::unchecked : Strips::no;
     for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
       set_smoother(static_cast<int>(l));
     factor_coarsest();
   }
+
+  /// True when level l applies the operator by row strips in parallel (see
+  /// MultigridOptions::parallel_rows; false also for levels too small to be split).
+  bool parallel_rows(int l) const { return strips_right(levels_.at(l)); }
 
   /// z = B r: one V-cycle for A z = r from z = 0.
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
@@ -210,6 +228,7 @@ public:
   bool constant_null_space() const { return null_space_; }
 
 private:
+  enum class Strips { unchecked, yes, no };
   struct Level {
     int nx = 0, ny = 0;
     double h = 0.0;
@@ -218,6 +237,7 @@ private:
     Eigen::VectorXd b, x;     // right-hand side and correction (coarse levels)
     Eigen::VectorXd scratch;  // A x, residuals, prolonged corrections
     Eigen::VectorXd transfer; // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
+    mutable Strips strips = Strips::unchecked; // does the operator give its bits by row strips
     Eigen::Index cells() const { return static_cast<Eigen::Index>(nx) * ny; }
   };
 
@@ -308,15 +328,72 @@ private:
     }
   }
 
-  void apply_level(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-    op_(x.data(), level.k.data(), y.data(), level.nx, level.ny, level.h);
+  // y = A_l x: by row strips on every thread where they were found right, else in one call.
+  void apply_level(const Level& level, const double* x, double* y) const {
+    const bool strips = level.strips != Strips::no && detail::max_threads() > 1;
+    if (!strips || !strips_right(level) || !apply_by_strips(level, x, y, /*force=*/false))
+      op_(x, level.k.data(), y, level.nx, level.ny, level.h);
   }
 
-  // smoother = w / diag(A), diag(A) > 0 checked.
+  // Whether the operator gives the whole grid's bits by row strips on this level, checked once
+  // per coefficient (false for a level too small to be split).
+  bool strips_right(const Level& level) const {
+    if (level.strips == Strips::unchecked)
+      level.strips = strips_match(level) ? Strips::yes : Strips::no;
+    return level.strips == Strips::yes;
+  }
+  void apply_level(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    apply_level(level, x.data(), y.data());
+  }
+
+  bool apply_by_strips(const Level& level, const double* x, double* y, bool force) const {
+    const RowStripShape shape{level.ny, level.nx, level.nx, 1,
+                              boundaries_.south == Boundary::periodic};
+    return run_by_row_strips<2>(
+        shape, {x, level.k.data()}, y,
+        [&](const std::array<const double*, 2>& in, double* out, int rows) {
+          op_(in[0], in[1], out, level.nx, rows, level.h);
+        },
+        force);
+  }
+
+  // One whole-grid application against one by strips, on a pseudo-random x.
+  bool strips_match(const Level& level) const {
+    const Eigen::Index n = level.cells();
+    Eigen::VectorXd x(n), whole(n), strips(n);
+    std::uint64_t state = 0x9e3779b97f4a7c15ULL; // a fixed pseudo-random x (splitmix64)
+    for (Eigen::Index c = 0; c < n; ++c) {
+      std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      x[c] = static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.5;
+    }
+    op_(x.data(), level.k.data(), whole.data(), level.nx, level.ny, level.h);
+    strips.setConstant(std::numeric_limits<double>::quiet_NaN()); // a row never written shows
+    return apply_by_strips(level, x.data(), strips.data(), /*force=*/true) &&
+           std::memcmp(whole.data(), strips.data(), sizeof(double) * n) == 0;
+  }
+
+  // The coarse coefficient: mg_average_2x2 by row strips (coarse row jc reads fine rows 2 jc and
+  // 2 jc + 1: one input row of 4 nx_coarse values).
+  void average_2x2(const Level& fine, Level& coarse) const {
+    const int nxc = coarse.nx;
+    const auto average = [&](const std::array<const double*, 1>& in, double* out, int rows) {
+      mg_average_2x2(in[0], out, nxc, rows);
+    };
+    if (!run_by_row_strips<1>({coarse.ny, 4 * Eigen::Index(nxc), nxc, 1, false}, {fine.k.data()},
+                              coarse.k.data(), average))
+      average({fine.k.data()}, coarse.k.data(), coarse.ny);
+  }
+
+  // smoother = w / diag(A), diag(A) > 0 checked; probed with the level's own application.
   void set_smoother(int l) {
     Level& level = levels_[l];
+    const LevelOperator apply = [&](const double* x, const double*, double* y, int, int, double) {
+      apply_level(level, x, y);
+    };
     const Eigen::VectorXd diagonal =
-        operator_diagonal(op_, level.k, level.nx, level.ny, level.h, boundaries_);
+        operator_diagonal(apply, level.k, level.nx, level.ny, level.h, boundaries_);
     for (int j = 0; j < level.ny; ++j)
       for (int i = 0; i < level.nx; ++i) {
         const double d = diagonal[j * level.nx + i];
@@ -369,7 +446,15 @@ private:
   // One damped Jacobi sweep: x <- x + w D^-1 (b - A x).
   void smooth(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     apply_level(level, x, level.scratch);
-    x.array() += level.smoother.array() * (b - level.scratch).array();
+    const double* w = level.smoother.data();
+    const double* rhs = b.data();
+    const double* ax = level.scratch.data();
+    double* xs = x.data();
+    parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
+      for (Eigen::Index c = lo; c < hi; ++c)
+        xs[c] += w[c] * (rhs[c] - ax[c]);
+      return 0.0;
+    });
   }
 
   // R r = P^T r / 4: the generated adjoints of the two prolongation passes, in reverse order
@@ -379,24 +464,49 @@ private:
     const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
     // The adjoints of these linear kernels never read their primal input; they get the
     // buffer they accumulate into as a stand-in of the right size.
-    coarse.transfer.setZero();
+    fill_zero(coarse.transfer);
     mg_prolong_y_adjoint(coarse.transfer.data(), coarse.transfer.data(), r.data(), coarse.nx,
                          coarse.ny, s.self, s.wrap, n.self, n.wrap);
-    coarse.b.setZero();
+    fill_zero(coarse.b);
     mg_prolong_x_adjoint(coarse.b.data(), coarse.b.data(), coarse.transfer.data(), coarse.nx,
                          coarse.ny, w.self, w.wrap, e.self, e.wrap);
-    coarse.b *= 0.25;
+    coarse.b *= 0.25; // a coarse level: a quarter of the cells
   }
 
-  // x += P x_coarse (bilinear, ghosts from the boundary conditions).
+  static void fill_zero(Eigen::VectorXd& v) {
+    double* p = v.data();
+    parallel_chunks(v.size(), [&](Eigen::Index lo, Eigen::Index hi) {
+      std::fill(p + lo, p + hi, 0.0);
+      return 0.0;
+    });
+  }
+
+  // x += P x_coarse (bilinear, ghosts from the boundary conditions). The two kernels run by
+  // row strips (dpgen/parallel.hpp): mg_prolong_x acts on each row alone, mg_prolong_y writes
+  // fine rows 2 jc, 2 jc + 1 from coarse rows jc - 1 .. jc + 1, as that needs.
   void add_prolonged(Level& coarse, Level& fine, Eigen::VectorXd& x) const {
     const Ghost s = ghost(boundaries_.south), n = ghost(boundaries_.north);
     const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
-    mg_prolong_x(coarse.x.data(), coarse.transfer.data(), coarse.nx, coarse.ny, w.self, w.wrap,
-                 e.self, e.wrap);
-    mg_prolong_y(coarse.transfer.data(), fine.scratch.data(), coarse.nx, coarse.ny, s.self, s.wrap,
-                 n.self, n.wrap);
-    x += fine.scratch;
+    const int nxc = coarse.nx, nyc = coarse.ny;
+    const auto prolong_x = [&](const std::array<const double*, 1>& in, double* out, int rows) {
+      mg_prolong_x(in[0], out, nxc, rows, w.self, w.wrap, e.self, e.wrap);
+    };
+    if (!run_by_row_strips<1>({nyc, nxc, 2 * nxc, 1, false}, {coarse.x.data()},
+                              coarse.transfer.data(), prolong_x))
+      prolong_x({coarse.x.data()}, coarse.transfer.data(), nyc);
+    const auto prolong_y = [&](const std::array<const double*, 1>& in, double* out, int rows) {
+      mg_prolong_y(in[0], out, nxc, rows, s.self, s.wrap, n.self, n.wrap);
+    };
+    if (!run_by_row_strips<1>({nyc, 2 * nxc, 2 * nxc, 2, boundaries_.south == Boundary::periodic},
+                              {coarse.transfer.data()}, fine.scratch.data(), prolong_y))
+      prolong_y({coarse.transfer.data()}, fine.scratch.data(), nyc);
+    const double* p = fine.scratch.data();
+    double* xs = x.data();
+    parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
+      for (Eigen::Index c = lo; c < hi; ++c)
+        xs[c] += p[c];
+      return 0.0;
+    });
   }
 
   // The V-cycle on level l for A_l x = b:
@@ -417,14 +527,30 @@ private:
       return;
     }
     for (int s = 0; s < options_.smoothing_sweeps; ++s) {
-      if (s == 0 && zero_guess)
-        x = level.smoother.cwiseProduct(b);
-      else
+      if (s == 0 && zero_guess) {
+        const double* w = level.smoother.data();
+        const double* rhs = b.data();
+        double* xs = x.data();
+        parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
+          for (Eigen::Index c = lo; c < hi; ++c)
+            xs[c] = w[c] * rhs[c];
+          return 0.0;
+        });
+      } else {
         smooth(level, b, x);
+      }
     }
     Level& coarse = levels_[l + 1];
     apply_level(level, x, level.scratch);
-    level.scratch = b - level.scratch; // r = b - A x
+    {
+      const double* rhs = b.data();
+      double* r = level.scratch.data();
+      parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
+        for (Eigen::Index c = lo; c < hi; ++c)
+          r[c] = rhs[c] - r[c]; // r = b - A x
+        return 0.0;
+      });
+    }
     restrict_residual(level.scratch, coarse);
     v_cycle(l + 1, coarse.b, coarse.x, /*zero_guess=*/true);
     add_prolonged(coarse, level, x);

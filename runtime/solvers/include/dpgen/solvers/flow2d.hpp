@@ -6,12 +6,14 @@
 #pragma once
 
 #include "dpgen/implicit_solve.hpp"
-#include "dpgen/multigrid.hpp"
+#include "dpgen/solvers/multigrid.hpp"
 #include "flow2d_adjoint.hpp"
 #include "kernels.hpp"
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -57,8 +59,11 @@ struct FlowOptions {
 ///   v1 = v(x - dt u) + dt b s1 + dt fy              buoyancy and force
 ///   A p = -div(u1, v1)                              A = -laplace, walls or periodic (MG-PCG)
 ///   (u2, v2) = (u1, v1) - grad p                    divergence-free
-/// and its adjoint, which recomputes the step's intermediates from the state (nothing is kept
-/// between calls, so a checkpointing schedule may call it in any order).
+/// and its adjoint, which recomputes the step's nonlinear intermediates from the state (nothing
+/// is kept between calls, so a checkpointing schedule may call it in any order). The adjoint
+/// needs no forward pressure solve: the kernels after the advection are linear, and their
+/// adjoints never read their primal inputs (they get a NaN-filled stand-in, so a change there
+/// would show in every gradient).
 class Flow2d {
 public:
   /// `inflow`: the marker added per step at each cell (nx*ny values).
@@ -131,8 +136,8 @@ public:
     u(next).setZero();
     v(next).setZero();
     flow_subtract_gradient_u(u1_.data(), p_.data(), next.data() + cells(), nx_, ny_, h_, px());
-    flow_subtract_gradient_v(v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_,
-                             h_, py());
+    flow_subtract_gradient_v(v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_, h_,
+                             py());
   }
 
   /// Adds (d step(state)/d state)^T next_adj into state_adj and (d step/d inflow)^T next_adj
@@ -154,42 +159,59 @@ public:
     detail::require_size(inflow_adj.size(), cells(), "flow2d step_adjoint", "inflow_adj");
     detail::require_size(force_adj.size(), 2 * cells(), "flow2d step_adjoint", "force_adj");
     detail::require_finite(state, "flow2d step_adjoint", "state");
-    forward(state); // the step's intermediates: s1, u1 and v1 (before and after the forces), p
     using Eigen::VectorXd;
-    VectorXd s1_adj = marker(next_adj);
-    VectorXd u1_adj = VectorXd::Zero(u_faces()), v1_adj = VectorXd::Zero(v_faces());
-    VectorXd p_adj = VectorXd::Zero(cells());
+    const double dt_h = options_.dt / h_;
+    const double* su = state.data() + cells();
+    const double* sv = state.data() + cells() + u_faces();
+    if (options_.marker_advection == MarkerAdvection::maccormack)
+      maccormack_intermediates(state.data(), su, sv, dt_h); // s_sl, s_rev: the clamp reads them
+    // The adjoints of the linear kernels below get `unread` for their primal inputs.
+    const double* unread = unread_.data();
+    VectorXd& s1_adj = s1_adj_;
+    s1_adj = marker(next_adj);
+    VectorXd& u1_adj = u1_adj_;
+    VectorXd& v1_adj = v1_adj_;
+    VectorXd& p_adj = p_adj_;
+    u1_adj.setZero(u_faces());
+    v1_adj.setZero(v_faces());
+    p_adj.setZero(cells());
     // (u2, v2) = (u1, v1) - grad p
-    flow_subtract_gradient_u_adjoint(u1_.data(), u1_adj.data(), p_.data(), p_adj.data(),
+    flow_subtract_gradient_u_adjoint(unread, u1_adj.data(), unread, p_adj.data(),
                                      next_adj.data() + cells(), nx_, ny_, h_, px());
-    flow_subtract_gradient_v_adjoint(v1_.data(), v1_adj.data(), p_.data(), p_adj.data(),
+    flow_subtract_gradient_v_adjoint(unread, v1_adj.data(), unread, p_adj.data(),
                                      next_adj.data() + cells() + u_faces(), nx_, ny_, h_, py());
     // A p = -div: lambda = A^+ P p_adj (A^T = A, same V-cycle), so div_adj = -lambda. A has no
     // parameters: nothing to accumulate for theta.
     detail::require_finite(p_adj, backward_cg_.name, "x_bar");
     backward_summary_ =
         conjugate_gradient(multigrid_.fine_operator(), p_adj, lambda_, backward_cg_);
-    const VectorXd div_adj = -lambda_;
-    flow_divergence_adjoint(u1_.data(), u1_adj.data(), v1_.data(), v1_adj.data(), div_adj.data(),
-                            nx_, ny_, h_, px(), py());
+    VectorXd& div_adj = div_adj_;
+    div_adj = -lambda_;
+    flow_divergence_adjoint(unread, u1_adj.data(), unread, v1_adj.data(), div_adj.data(), nx_, ny_,
+                            h_, px(), py());
     // v1 = v_advected + dt b s1 + dt fy,  u1 = u_advected + dt fx
-    VectorXd va_adj = VectorXd::Zero(v_faces()), ua_adj = VectorXd::Zero(u_faces());
-    flow_buoyancy_adjoint(va_.data(), va_adj.data(), s1_.data(), s1_adj.data(),
-                          force_.data() + cells(), force_adj.data() + cells(), v1_adj.data(), nx_,
-                          ny_, options_.dt * options_.buoyancy, options_.dt, py());
-    flow_force_u_adjoint(ua_.data(), ua_adj.data(), force_.data(), force_adj.data(),
-                         u1_adj.data(), nx_, ny_, options_.dt, px());
+    VectorXd& va_adj = va_adj_;
+    VectorXd& ua_adj = ua_adj_;
+    va_adj.setZero(v_faces());
+    ua_adj.setZero(u_faces());
+    flow_buoyancy_adjoint(unread, va_adj.data(), unread, s1_adj.data(), unread,
+                          force_adj.data() + cells(), v1_adj.data(), nx_, ny_,
+                          options_.dt * options_.buoyancy, options_.dt, py());
+    flow_force_u_adjoint(unread, ua_adj.data(), unread, force_adj.data(), u1_adj.data(), nx_, ny_,
+                         options_.dt, px());
     // u1 = u(x - dt u), v_advected = v(x - dt u), s1 = s(x - dt u) + inflow
-    const double dt_h = options_.dt / h_;
     double* u_adj = state_adj.data() + cells();
     double* v_adj = state_adj.data() + cells() + u_faces();
-    const double* su = state.data() + cells();
-    const double* sv = state.data() + cells() + u_faces();
     flow_advect_u_adjoint(su, u_adj, sv, v_adj, ua_adj.data(), nx_, ny_, dt_h, px(), py(), zt());
     flow_advect_v_adjoint(su, u_adj, sv, v_adj, va_adj.data(), nx_, ny_, dt_h, px(), py(), zt());
     if (options_.marker_advection == MarkerAdvection::maccormack) {
-      VectorXd sl_adj = VectorXd::Zero(cells()), rev_adj = VectorXd::Zero(cells());
-      VectorXd none = VectorXd::Zero(cells()), none_adj = VectorXd::Zero(cells());
+      VectorXd& sl_adj = sl_adj_;
+      VectorXd& rev_adj = rev_adj_;
+      VectorXd& none_adj = none_adj_;
+      sl_adj.setZero(cells());
+      rev_adj.setZero(cells());
+      none_adj.setZero(cells());
+      const VectorXd& none = zeros_;
       flow_maccormack_marker_adjoint(state.data(), state_adj.data(), s_sl_.data(), sl_adj.data(),
                                      s_rev_.data(), rev_adj.data(), su, u_adj, sv, v_adj,
                                      inflow_.data(), inflow_adj.data(), s1_adj.data(), nx_, ny_,
@@ -256,13 +278,7 @@ private:
     va_.resize(v_faces());
     v1_.resize(v_faces());
     if (options_.marker_advection == MarkerAdvection::maccormack) {
-      // s_sl = s(x - dt u); s_rev = s_sl(x + dt u); then the corrected and clamped value.
-      s_sl_.resize(cells());
-      s_rev_.resize(cells());
-      const Eigen::VectorXd none = Eigen::VectorXd::Zero(cells());
-      flow_advect_marker(s, su, sv, none.data(), s_sl_.data(), nx_, ny_, dt_h, px(), py());
-      flow_advect_marker(s_sl_.data(), su, sv, none.data(), s_rev_.data(), nx_, ny_, -dt_h, px(),
-                         py());
+      maccormack_intermediates(s, su, sv, dt_h);
       flow_maccormack_marker(s, s_sl_.data(), s_rev_.data(), su, sv, inflow_.data(), s1_.data(),
                              nx_, ny_, dt_h, px(), py());
     } else {
@@ -280,6 +296,15 @@ private:
     forward_summary_ = conjugate_gradient(multigrid_.fine_operator(), rhs_, p_, forward_cg_);
   }
 
+  // s_sl = s(x - dt u); s_rev = s_sl(x + dt u): what the MacCormack correction and clamp read.
+  void maccormack_intermediates(const double* s, const double* su, const double* sv, double dt_h) {
+    s_sl_.resize(cells());
+    s_rev_.resize(cells());
+    flow_advect_marker(s, su, sv, zeros_.data(), s_sl_.data(), nx_, ny_, dt_h, px(), py());
+    flow_advect_marker(s_sl_.data(), su, sv, zeros_.data(), s_rev_.data(), nx_, ny_, -dt_h, px(),
+                       py());
+  }
+
   int nx_, ny_;
   double h_;
   Eigen::VectorXd inflow_;
@@ -287,9 +312,18 @@ private:
   Multigrid multigrid_;
   CgWorkspace cg_workspace_; // r, z, p, A p of the pressure solves, reused step after step
   CgOptions cg_, forward_cg_, backward_cg_; // the last two named like solve_forward/_backward
-  Eigen::VectorXd force_; // [fx, fy] per cell
+  Eigen::VectorXd force_;                   // [fx, fy] per cell
   Eigen::VectorXd s1_, ua_, u1_, va_, v1_, p_, s_sl_, s_rev_, force_adj_scratch_;
   Eigen::VectorXd rhs_, lambda_; // -div of the forward solve; lambda = A^+ P p_adj
+  // step_adjoint's work vectors, kept so that a step's adjoint allocates nothing.
+  Eigen::VectorXd s1_adj_, u1_adj_, v1_adj_, p_adj_, div_adj_, ua_adj_, va_adj_, sl_adj_, rev_adj_,
+      none_adj_;
+  Eigen::VectorXd zeros_ = Eigen::VectorXd::Zero(cells()); // no inflow (MacCormack's passes)
+  // The primal inputs of linear kernels' adjoints, which never read them: NaN, so that a read
+  // would show in the gradient.
+  Eigen::VectorXd unread_ =
+      Eigen::VectorXd::Constant(std::max(2 * cells(), std::max(u_faces(), v_faces())),
+                                std::numeric_limits<double>::quiet_NaN());
   CgSummary forward_summary_, backward_summary_;
 };
 
