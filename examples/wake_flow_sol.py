@@ -572,44 +572,80 @@ def vorticity(u, v, h):
 
 
 def vorticity_panels(path, fields, h, scale=6):
-    """Fields side by side (flow upwards), blue-white-red on one symmetric scale."""
+    """Fields side by side (flow upwards), each framed in black, blue-white-red on one
+    symmetric scale (the 99th percentile of |vorticity|), and a colour bar on the right."""
     ws = [vorticity(u, v, h) for u, v in fields]
     lim = max(np.percentile(np.abs(w), 99) for w in ws) or 1.0
-    gap = np.full((ws[0].shape[0], 2, 3), 255.0)
-    tiles = []
-    for w in ws:
-        t = np.clip(w / lim, -1, 1)[::-1]  # y up
+    panels_png(path, [np.clip(w / lim, -1, 1)[::-1] for w in ws], scale)  # y up
+
+
+def panels_png(path, ts, scale):
+    """Panels of values in [-1, 1] (first row at the top) and a colour bar."""
+    def colour(t):
         rgb = np.empty(t.shape + (3,))
         pos, neg = np.clip(t, 0, 1), np.clip(-t, 0, 1)
         rgb[..., 0] = 255 * (1 - neg)
         rgb[..., 1] = 255 * (1 - pos - neg)
         rgb[..., 2] = 255 * (1 - pos)
-        tiles += [rgb, gap]
-    img = np.concatenate(tiles[:-1], axis=1)
-    img = np.kron(img, np.ones((scale, scale, 1)))
-    write_png(path, img)
+        return rgb
+
+    def framed(rgb):
+        rgb = np.kron(rgb, np.ones((scale, scale, 1)))
+        out = np.zeros((rgb.shape[0] + 2, rgb.shape[1] + 2, 3))  # a black frame
+        out[1:-1, 1:-1] = rgb
+        return out
+
+    tiles = [framed(colour(t)) for t in ts]
+    height = tiles[0].shape[0]
+    bar = framed(colour(np.linspace(1, -1, (height - 2) // scale)[:, None] * np.ones((1, 2))))
+    bar = np.concatenate([bar, np.full((height - bar.shape[0], bar.shape[1], 3), 255.0)])
+    gap = np.full((height, 8, 3), 255.0)
+    parts = []
+    for t in tiles + [bar]:
+        parts += [t, gap]
+    write_png(path, np.concatenate(parts[:-1], axis=1))
+
+
+def _round_step(top, ticks=5):
+    """A step of 1, 2 or 5 x 10^k giving about `ticks` intervals up to `top`."""
+    raw = top / ticks
+    k = 10 ** math.floor(math.log10(raw))
+    return next(m * k for m in (1, 2, 5, 10) if m * k >= raw)
 
 
 def error_svg(path, curves, title):
-    """Error per step, one polyline per (label, colour, values)."""
-    W, H, m = 640, 360, 50
+    """Error per step, one polyline per (label, colour, values); round ticks on both axes."""
+    W, H, m = 640, 360, 60
     n = len(curves[0][2])
-    top = max(max(c[2]) for c in curves) * 1.05
-    def pt(i, y):
-        return f"{m + (W - 2 * m) * i / (n - 1):.1f},{H - m - (H - 2 * m) * y / top:.1f}"
+    ystep = _round_step(max(max(c[2]) for c in curves))
+    top = ystep * math.ceil(max(max(c[2]) for c in curves) / ystep)
+    xstep = _round_step(n)
+
+    def px(i):
+        return m + (W - 2 * m) * i / n
+
+    def py(y):
+        return H - m - (H - 2 * m) * y / top
+
     s = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
          f'font-family="sans-serif" font-size="12"><rect width="{W}" height="{H}" fill="white"/>',
          f'<text x="{W / 2}" y="20" text-anchor="middle">{title}</text>',
          f'<line x1="{m}" y1="{H - m}" x2="{W - m}" y2="{H - m}" stroke="black"/>',
          f'<line x1="{m}" y1="{m}" x2="{m}" y2="{H - m}" stroke="black"/>',
-         f'<text x="{W / 2}" y="{H - 15}" text-anchor="middle">step</text>',
-         f'<text x="{m - 5}" y="{H - m}" text-anchor="end">0</text>',
-         f'<text x="{m - 5}" y="{m + 4}" text-anchor="end">{top:.3f}</text>',
-         f'<text x="{W - m}" y="{H - m + 15}" text-anchor="end">{n}</text>']
+         f'<text x="{W / 2}" y="{H - 15}">step</text>']
+    for i in range(0, n + 1, xstep):
+        s.append(f'<line x1="{px(i):.1f}" y1="{H - m}" x2="{px(i):.1f}" y2="{H - m + 4}" '
+                 f'stroke="black"/><text x="{px(i):.1f}" y="{H - m + 16}" '
+                 f'text-anchor="middle">{i}</text>')
+    for k in range(int(round(top / ystep)) + 1):
+        y = k * ystep
+        s.append(f'<line x1="{m - 4}" y1="{py(y):.1f}" x2="{m}" y2="{py(y):.1f}" '
+                 f'stroke="black"/><text x="{m - 6}" y="{py(y) + 4:.1f}" '
+                 f'text-anchor="end">{y:.10g}</text>')
     for k, (label, colour, ys) in enumerate(curves):
         s.append(f'<polyline fill="none" stroke="{colour}" stroke-width="2" points="'
-                 + " ".join(pt(i, y) for i, y in enumerate(ys)) + '"/>')
-        s.append(f'<text x="{W - m - 120}" y="{m + 15 * k}" fill="{colour}">{label}</text>')
+                 + " ".join(f"{px(i + 1):.1f},{py(y):.1f}" for i, y in enumerate(ys)) + '"/>')
+        s.append(f'<text x="{W - m - 110}" y="{m + 15 * k}" fill="{colour}">{label}</text>')
     s.append("</svg>")
     with open(path, "w") as f:
         f.write("\n".join(s))
