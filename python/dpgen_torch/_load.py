@@ -11,7 +11,9 @@ The steps, each a subprocess whose output goes to the entry's build.log:
      whole or not at all.
 The key hashes the kernel text, its name, the flags and the toolchain (the generator binary,
 the runtime headers, torch's version, the compiler); the headers a kernel includes from
-outside /usr are recorded with their hashes and checked on every hit.
+outside /usr are recorded with their hashes and checked on every hit. After every build the
+cache is pruned (prune_cache: entries unused for 30 days, then the least recently used while it
+is over 2048 MB; $DPGEN_TORCH_CACHE_MAX_AGE_DAYS, $DPGEN_TORCH_CACHE_MAX_MB).
 """
 import hashlib
 import json
@@ -574,7 +576,8 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
     Raises KernelError (dpgen's file:line:col messages) for a kernel outside the subset and
     CompileError (with the log's path) when the generated code does not compile. The first
     call builds (15 to 25 s on 2 cores, mostly compiling against libtorch's headers); later
-    calls, in any process, load the cached library (milliseconds).
+    calls, in any process, load the cached library (milliseconds). After a build the cache is
+    pruned (prune_cache with its default bounds).
     """
     if isinstance(extra_cflags, str) or isinstance(include_dirs, str):
         raise TypeError("dpgen_torch.load: extra_cflags and include_dirs are lists of strings")
