@@ -2,16 +2,18 @@
 """Solver in the loop, PyTorch version (seed dp-discussion-time-steps.txt; the C++ twin is
 examples/solver_in_the_loop.cpp): a torch.nn ResNet corrects a coarse 1D Burgers solver after
 every step, u_{t+1} = P(u_t) + net(P(u_t)), where P is the coarse solver made of two dpgen ops
-generated from annotated C++ kernels (torch.ops.dpgen.diffuse_explicit, then
-torch.ops.dpgen.advect_self_semi_lagrangian; their backward is the generated adjoint).
+generated from annotated C++ kernels (examples/kernels/diffuse_explicit.cpp, then
+advect_self_semi_lagrangian.cpp, turned into ops by dpgen_torch.load: generated, compiled and
+cached on first use; their backward is the generated adjoint).
 Trained with Adam (a) through `--unroll` unrolled solver steps (differentiable physics) and
 (b) supervised on one-step pairs; evaluated on held-out initial conditions rolled out 4x longer
 than trained. Same setup as the C++ example: x in [-1, 1], periodic, dt = 1/32,
 nu = 0.01/pi; the reference runs --ratio times the cells and substeps, averaged onto the
 coarse cells.
 
-  PYTHONPATH=python DPGEN_TORCH_LIBRARY=build/torch/libdpgen_torch.so:\\
-    build/examples/libdpgen_example_torch.so /usr/bin/python3 examples/solver_in_the_loop_torch.py
+  env/bin/python examples/solver_in_the_loop_torch.py   # dpgen_torch installed with pip
+  PYTHONPATH=python /usr/bin/python3 examples/solver_in_the_loop_torch.py   # a source tree
+                                                     # with a build*/ folder (its tool/dpgen)
 """
 import argparse
 import math
@@ -21,9 +23,22 @@ import time
 
 import torch
 
-import dpgen_torch  # noqa: F401  (loads the ops libraries named in $DPGEN_TORCH_LIBRARY)
+import dpgen_torch
 
-ops = torch.ops.dpgen
+_KERNELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "kernels")
+
+
+class _Ops:
+    """The two kernels' ops, loaded (and on first use built) when first needed."""
+
+    def __getattr__(self, name):
+        mod = dpgen_torch.load(os.path.join(_KERNELS, name + ".cpp"))
+        op = getattr(mod, name)
+        setattr(self, name, op)
+        return op
+
+
+ops = _Ops()
 
 
 def parse():

@@ -17,10 +17,10 @@ import os
 import torch
 
 from . import _locate
-from ._load import CompileError, KernelError, cache_dir, load
+from ._load import CompileError, KernelError, cache_dir, load, prune_cache
 from .solvers import ConvergenceError, rollout, solve
 
-__all__ = ["load", "KernelError", "CompileError", "cache_dir", "rollout", "solve",
+__all__ = ["load", "KernelError", "CompileError", "cache_dir", "prune_cache", "rollout", "solve",
            "ConvergenceError", "load_library", "loaded", "ops", "upwind_rollout",
            "diffusion_solve", "generator"]
 __version__ = "0.1.0"

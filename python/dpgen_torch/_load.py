@@ -11,7 +11,9 @@ The steps, each a subprocess whose output goes to the entry's build.log:
      whole or not at all.
 The key hashes the kernel text, its name, the flags and the toolchain (the generator binary,
 the runtime headers, torch's version, the compiler); the headers a kernel includes from
-outside /usr are recorded with their hashes and checked on every hit.
+outside /usr are recorded with their hashes and checked on every hit. After every build the
+cache is pruned (prune_cache: entries unused for 30 days, then the least recently used while it
+is over 2048 MB; $DPGEN_TORCH_CACHE_MAX_AGE_DAYS, $DPGEN_TORCH_CACHE_MAX_MB).
 """
 import hashlib
 import json
@@ -31,7 +33,7 @@ import torch
 
 from . import _locate
 
-__all__ = ["load", "KernelError", "CompileError", "cache_dir"]
+__all__ = ["load", "KernelError", "CompileError", "cache_dir", "prune_cache"]
 
 _FORMAT = 2  # bump when the layout of a cache entry changes
 _lock = threading.Lock()
@@ -70,6 +72,125 @@ def cache_dir():
         return os.path.abspath(env)
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     return os.path.join(base, "dpgen_torch")
+
+
+# ---- pruning -------------------------------------------------------------------------------
+
+_DEFAULT_MAX_MB = 2048
+_DEFAULT_MAX_AGE_DAYS = 30
+_GRACE_SECONDS = 60  # an entry used this recently is never removed for size (another process
+#                      may be between reading its manifest and loading its library)
+_STALE_BUILD_SECONDS = 24 * 3600  # a temporary build folder this old is a crashed build's
+
+
+def _limit_from_env(var, default):
+    raw = os.environ.get(var)
+    if raw is None or raw == "":
+        return default
+    try:
+        value = float(raw)
+    except ValueError:
+        raise ValueError(f"dpgen_torch: ${var}={raw!r} is not a number") from None
+    if not value >= 0 or value != value:
+        raise ValueError(f"dpgen_torch: ${var}={raw!r} must be >= 0 (0: no bound)")
+    return value
+
+
+def _tree_size(path):
+    total = 0
+    for dirpath, _, files in os.walk(path):
+        for f in files:
+            try:
+                total += os.lstat(os.path.join(dirpath, f)).st_size
+            except OSError:
+                pass
+    return total
+
+
+def _last_use(entry):
+    """When an entry was last loaded: its manifest's mtime (touched on every hit), else the
+    folder's."""
+    for p in (os.path.join(entry, "manifest.json"), entry):
+        try:
+            return os.stat(p).st_mtime
+        except OSError:
+            pass
+    return 0.0
+
+
+def _touch(entry):
+    try:
+        os.utime(os.path.join(entry, "manifest.json"))
+    except OSError:  # a read-only cache: the entry just ages
+        pass
+
+
+def prune_cache(max_mb=None, max_age_days=None, cache=None, dry_run=False):
+    """Removes cache entries so that the cache stays bounded; returns the removed folders.
+
+    max_age_days: entries not loaded for longer are removed (default
+    $DPGEN_TORCH_CACHE_MAX_AGE_DAYS, else 30). max_mb: then, while the cache is larger, the
+    least recently loaded entries are removed (default $DPGEN_TORCH_CACHE_MAX_MB, else 2048).
+    0 disables either bound. Never removed: the entries this process has loaded, and, for size,
+    entries loaded in the last minute (another process may be loading them), so the bound can be
+    exceeded by those. Failed builds (<name>-<key>.failed) count as entries; temporary build
+    folders of crashed builds (older than a day) and leftovers of interrupted removals always go.
+    load() calls this after every build (never on a cache hit, which stays a few milliseconds).
+    """
+    max_mb = _limit_from_env("DPGEN_TORCH_CACHE_MAX_MB", _DEFAULT_MAX_MB) if max_mb is None \
+        else max_mb
+    max_age_days = _limit_from_env("DPGEN_TORCH_CACHE_MAX_AGE_DAYS", _DEFAULT_MAX_AGE_DAYS) \
+        if max_age_days is None else max_age_days
+    for what, value in (("max_mb", max_mb), ("max_age_days", max_age_days)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value >= 0:
+            raise ValueError(f"dpgen_torch.prune_cache: {what} must be a number >= 0 (0: no "
+                             f"bound), got {value!r}")
+    root = os.path.abspath(cache) if cache else cache_dir()
+    if not os.path.isdir(root):
+        return []
+    now = time.time()
+    in_use = {os.path.abspath(e) for e in _loaded}
+    removed = []
+
+    def remove(path):
+        if not dry_run:
+            if ".trash-" in os.path.basename(path):
+                shutil.rmtree(path, ignore_errors=True)
+            else:
+                _discard(path)
+        removed.append(path)
+
+    entries = []  # (last use, size, path)
+    for name in sorted(os.listdir(root)):
+        path = os.path.join(root, name)
+        if not os.path.isdir(path) or os.path.islink(path):
+            continue
+        if ".trash-" in name:
+            remove(path)
+            continue
+        if name.startswith("."):  # a build in progress, or a crashed one
+            if now - _last_use(path) > _STALE_BUILD_SECONDS:
+                remove(path)
+            continue
+        if not name.endswith(".failed") and not os.path.isfile(os.path.join(path, "manifest.json")):
+            continue  # not ours
+        entries.append((_last_use(path), _tree_size(path), path))
+    kept = []
+    for used, size, path in entries:
+        if max_age_days > 0 and now - used > max_age_days * 86400 and path not in in_use:
+            remove(path)
+        else:
+            kept.append((used, size, path))
+    if max_mb > 0:
+        total = sum(size for _, size, _ in kept)
+        for used, size, path in sorted(kept):  # least recently used first
+            if total <= max_mb * 1024 * 1024:
+                break
+            if path in in_use or now - used < _GRACE_SECONDS:
+                continue
+            remove(path)
+            total -= size
+    return removed
 
 
 def _sha256_file(path, h=None):
@@ -455,7 +576,8 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
     Raises KernelError (dpgen's file:line:col messages) for a kernel outside the subset and
     CompileError (with the log's path) when the generated code does not compile. The first
     call builds (15 to 25 s on 2 cores, mostly compiling against libtorch's headers); later
-    calls, in any process, load the cached library (milliseconds).
+    calls, in any process, load the cached library (milliseconds). After a build the cache is
+    pruned (prune_cache with its default bounds).
     """
     if isinstance(extra_cflags, str) or isinstance(include_dirs, str):
         raise TypeError("dpgen_torch.load: extra_cflags and include_dirs are lists of strings")
@@ -478,6 +600,7 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
                 return _loaded[entry]
             manifest = _read_manifest(entry)
             if manifest and _deps_ok(manifest["deps"]):
+                _touch(entry)  # its last use, for prune_cache
                 _loaded[entry] = _module(entry, manifest)
                 return _loaded[entry]
         os.makedirs(root, exist_ok=True)
@@ -524,4 +647,10 @@ def load(source, *, name=None, extra_cflags=(), include_dirs=(), cache=None, reb
             print(f"dpgen_torch.load: built {entry} in {manifest['build_seconds']} s",
                   file=sys.stderr)
         _loaded[entry] = _module(entry, manifest)
+        try:  # keep the cache bounded; a cache we cannot prune never fails a load
+            pruned = prune_cache(cache=root)
+            if verbose and pruned:
+                print(f"dpgen_torch.load: pruned {len(pruned)} cache entries", file=sys.stderr)
+        except (OSError, ValueError) as e:
+            print(f"dpgen_torch.load: warning: cache not pruned: {e}", file=sys.stderr)
         return _loaded[entry]
