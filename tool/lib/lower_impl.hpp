@@ -260,6 +260,9 @@ private:
   int unrolling_ = 0;
   bool should_unroll(const ForStmt* f, long long lo, long long hi);
 
+  // A local (or local array) assigned in a loop has no single value after
+  // it: forgets it. False if `v` is no such variable.
+  bool forget_value(const VarDecl* v);
   void for_loop(const ForStmt* f);
 
   // The bound of a loop condition as `counter op bound` (op returned in `op`):

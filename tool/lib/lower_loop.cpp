@@ -31,6 +31,17 @@ bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
   return touches;
 }
 
+bool Lowerer::forget_value(const VarDecl* v) {
+  auto it = env_.find(v);
+  if (it == env_.end() ||
+      (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
+    return false;
+  it->second.value = std::nullopt;
+  for (auto& el : it->second.elems)
+    el = std::nullopt;
+  return true;
+}
+
 void Lowerer::for_loop(const ForStmt* f) {
   if (!frames_.empty())
     fail(f->getBeginLoc(), fmt::format("a loop in helper '{}': helpers called from a kernel "
@@ -336,13 +347,8 @@ void Lowerer::for_loop(const ForStmt* f) {
         start_accumulator(v, f->getForLoc()))
       accumulating.push_back(v);
   for (const VarDecl* v : assigned) {
-    auto it = env_.find(v);
-    if (it == env_.end() ||
-        (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
+    if (!forget_value(v))
       continue;
-    it->second.value = std::nullopt;
-    for (auto& el : it->second.elems)
-      el = std::nullopt;
     if (accumulators_.count(v)) {
       why_unset_[v] = fmt::format("'{}' accumulates in this loop ('+='): its sum is known "
                                   "after the loop, read it there",
@@ -386,13 +392,8 @@ void Lowerer::for_loop(const ForStmt* f) {
       finish_accumulator(v, f->getEndLoc());
       continue;
     }
-    auto it = env_.find(v);
-    if (it == env_.end() ||
-        (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
+    if (!forget_value(v))
       continue;
-    it->second.value = std::nullopt;
-    for (auto& el : it->second.elems)
-      el = std::nullopt;
     why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
                                 "is the last iteration's, outside the kernel subset",
                                 v->getNameAsString());
