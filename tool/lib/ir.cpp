@@ -148,10 +148,12 @@ ExprP binary(Op op, ExprP a, ExprP b) {
       return int_const(x - y);
     case Op::Mul:
       return int_const(x * y);
-    case Op::Shl:
-      if (y >= 0 && y < 62)
-        return int_const(x * (1LL << y));
+    case Op::Shl: {
+      long long r = 0;
+      if (y >= 0 && y < 62 && !__builtin_mul_overflow(x, 1LL << y, &r))
+        return int_const(r);
       break;
+    }
     case Op::Shr:
       if (y >= 0 && y < 63)
         return int_const(x >> y);
