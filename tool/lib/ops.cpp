@@ -35,11 +35,11 @@ const std::vector<OpInfo> kOps = {
     {Op::Select, "select", "?:", 1, 3, false},
     {Op::Call, "call", "", 14, -1, false},
     {Op::Cast, "cast", "", 14, 1, false},
-    {Op::Shl, "shl", "<<", 9, 2, false},
-    {Op::Shr, "shr", ">>", 9, 2, false},
-    {Op::BitAnd, "bitand", "&", 6, 2, false},
-    {Op::BitOr, "bitor", "|", 4, 2, false},
-    {Op::BitXor, "bitxor", "^", 5, 2, false},
+    {Op::Shl, "shl", "<<", 9, 2, false, false, Op::Shl, Op::Shl, true},
+    {Op::Shr, "shr", ">>", 9, 2, false, false, Op::Shr, Op::Shr, true},
+    {Op::BitAnd, "bitand", "&", 6, 2, false, false, Op::BitAnd, Op::BitAnd, true},
+    {Op::BitOr, "bitor", "|", 4, 2, false, false, Op::BitOr, Op::BitOr, true},
+    {Op::BitXor, "bitxor", "^", 5, 2, false, false, Op::BitXor, Op::BitXor, true},
     {Op::BitNot, "bitnot", "~", 12, 1, false},
 };
 

@@ -27,6 +27,10 @@ struct OpInfo {
   bool comparison = false;
   Op mirror = op;
   Op negated = op;
+  /// Integer bit operations: their operands print parenthesized unless they
+  /// are single terms ((i + j) & 1), as people write them and GCC's
+  /// -Wparentheses asks.
+  bool bitwise = false;
 };
 
 /// The row of `op`. A value outside the enum is an internal error.

@@ -142,12 +142,7 @@ std::string print(const ExprP& e) {
     // Binary, left-associative: a right operand of equal precedence keeps its
     // parentheses, so floating-point evaluation order is exactly the IR's.
     int p = precedence(*e);
-    // Operands of bit operations are parenthesized unless they are single
-    // terms ((i + j) & 1, not i + j & 1), as people write them and as GCC's
-    // -Wparentheses asks.
-    bool bits = e->op == Op::Shl || e->op == Op::Shr || e->op == Op::BitAnd ||
-                e->op == Op::BitOr || e->op == Op::BitXor;
-    if (bits)
+    if (op_info(e->op).bitwise) // (ops.hpp: operands parenthesized)
       return fmt::format("{} {} {}", wrap(e->ops[0], op_info(Op::Neg).precedence),
                          op_info(e->op).symbol, wrap(e->ops[1], op_info(Op::Neg).precedence));
     return fmt::format("{} {} {}", wrap(e->ops[0], p), op_info(e->op).symbol, wrap(e->ops[1], p + 1));
