@@ -39,7 +39,13 @@ struct CheckpointOptions {
 /// the result's two vectors (none at all with the overload that fills a given result). Its
 /// contents between calls are meaningless; one workspace must not serve two calls at once.
 struct CheckpointWorkspace {
+  /// One frame of Revolve's schedule: reverse steps [t0, t0 + l) from the base snapshot s_t0,
+  /// with at most s snapshots (the base included).
+  struct Frame {
+    int t0, l, s;
+  };
   std::vector<Eigen::VectorXd> states; ///< slots for stored states, kept across calls
+  std::vector<Frame> frames;           ///< Revolve's stack of frames, kept across calls
   Eigen::VectorXd cur, next, adj, adj_prev;
   /// Bytes of state storage held (the slots' and the work vectors' capacity).
   std::size_t bytes() const {
@@ -238,11 +244,11 @@ void unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& s
     // Revolve, as an explicit stack of frames so that the depth of the schedule never touches
     // the call stack. A frame reverses steps [t0, t0 + l) from its base snapshot s_t0 (the top
     // of the stored states while the frame is active), using at most s snapshots, the base
-    // included.
-    struct Frame {
-      int t0, l, s;
-    };
-    std::vector<Frame> frames{{0, steps, options.snapshots}};
+    // included. The stack lives in the workspace: a reused one keeps its capacity.
+    using Frame = CheckpointWorkspace::Frame;
+    std::vector<Frame>& frames = work.frames;
+    frames.clear();
+    frames.push_back(Frame{0, steps, options.snapshots});
     push() = initial_state;
     while (!frames.empty()) {
       Frame& f = frames.back();
