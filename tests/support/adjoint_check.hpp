@@ -338,4 +338,13 @@ template <typename T> void check_adjoint(const Problem<T>& p, uint64_t seed = 20
   Checker<T>(p, seed).run();
 }
 
+// The checker works through std::function, so one compiled copy serves every test: a test
+// executable that links tests/kernels/main.cpp (which instantiates it) defines
+// DPGEN_TEST_CHECKER_COMPILED_ONCE and its hundreds of test files skip compiling it again
+// (most of their compile time, several seconds each under the sanitizers).
+#ifdef DPGEN_TEST_CHECKER_COMPILED_ONCE
+extern template class Checker<float>;
+extern template class Checker<double>;
+#endif
+
 } // namespace dpgen_test
