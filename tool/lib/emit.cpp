@@ -159,7 +159,7 @@ void emit_terms(Code& code, const Kernel& k, const Term& t, const Box& where,
   }
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {},
-                    k.levels_of(t.store->array));
+                    k.shape_of(t.store->array));
   if (factored && gs.empty() && invariant(partial)) {
     std::string sum = factored->name_for(partial);
     code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
@@ -188,7 +188,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
-  std::string out_sub = subscript(s.index, cx.k.levels_of(s.array));
+  std::string out_sub = subscript(s.index, cx.k.shape_of(s.array));
   std::string out_cell = s.array + out_sub;
   code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array, out_sub);
@@ -261,7 +261,7 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   Poly index = g.base;
   for (const auto& [v, c] : g.layout)
     index = index + c * Poly::symbol(cell_counter(k, v));
-  return g.array + "_adj" + subscript(index, k.levels_of(g.array));
+  return g.array + "_adj" + subscript(index, k.shape_of(g.array));
 }
 
 // One cell loop for one or more gather groups that share a layout and a cell
@@ -300,7 +300,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
                                  : fmt::format(", summed over {}", fmt::join(g0.reduced, ", ")));
   // A null adjoint marks an inactive input: its loop is skipped (a fused
   // loop runs only when all its inputs are active; see emit_body).
-  if (fused)
+  if (fused || k.find_param(g0.array)->view) // (a view has no null: always active)
     code.open("");
   else
     code.open(fmt::format("if ({}_adj != nullptr)", g0.array));
@@ -504,11 +504,14 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
 void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  const std::string out_sub = subscript(s.index, k.levels_of(s.array));
+  const std::string out_sub = subscript(s.index, k.shape_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
             u.array, u.array, s.array, out_sub);
-  code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
+  if (k.find_param(u.array)->view) // (a view has no null: always active)
+    code.open("");
+  else
+    code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
     code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", l.type_name, l.var, print(l.lo),
@@ -535,7 +538,7 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
   code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
   for (const auto& r : u.reads) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
-              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->levels),
+              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->shape),
               r.read->source);
     bool guarded = !r.conds.empty();
     if (guarded) {
@@ -550,7 +553,7 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
     collect(r.read->ops[0], locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0], r.read->levels),
+    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0], r.read->shape),
               print(binary(Op::Mul, r.partial, param(seed, s.value->type))));
     if (guarded)
       code.close();
@@ -654,7 +657,12 @@ void emit_body(Code& code, const LoopPlan& plan) {
       // is null (an inactive input).
       std::vector<std::string> all;
       for (const auto* f : step.loops.front().groups)
-        all.push_back(f->array + "_adj != nullptr");
+        if (!k.find_param(f->array)->view) // (a view has no null: always active)
+          all.push_back(f->array + "_adj != nullptr");
+      if (all.empty()) {
+        emit_gather(code, k, step.loops.front());
+        continue;
+      }
       code.open(fmt::format("if ({})", fmt::join(all, " && ")));
       emit_gather(code, k, step.loops.front());
       code.close();
@@ -827,10 +835,10 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
         collect(s.index, locals, vars);
         define_locals(code, locals, done);
         if (s.path.empty())
-          code.line("{}_adj{} = 0;", p.name, subscript(s.index, pointer_levels(p)));
+          code.line("{}_adj{} = 0;", p.name, subscript(s.index, shape_of(p)));
         else
           code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name,
-                    subscript(s.index, pointer_levels(p)));
+                    subscript(s.index, shape_of(p)));
       }
       for (int i = 0; i < opened; ++i)
         code.close();

@@ -39,7 +39,7 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k) {
     collect(s.value, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}{} {} {};", s.array, subscript(s.index, k.levels_of(s.array)),
+    code.line("{}{} {} {};", s.array, subscript(s.index, k.shape_of(s.array)),
               s.accumulate ? "+=" : "=", print(s.value));
     if (guarded)
       code.close();

@@ -171,7 +171,7 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
-    std::string idx = subscript(s.index, tp.k->levels_of(s.array));
+    std::string idx = subscript(s.index, tp.k->shape_of(s.array));
     std::string dot_text = !is_zero(dot)                             ? print(dot)
                            : type_spelling(s.value->type) == "float" ? "0.0f"
                                                                      : "0.0";

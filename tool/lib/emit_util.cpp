@@ -174,12 +174,18 @@ std::string global_declarations(const std::vector<const Kernel*>& kernels,
 
 std::string tag_declarations(const std::vector<const Kernel*>& kernels) {
   std::set<std::string> seen;
-  std::string out;
+  std::string tags, types;
   for (const Kernel* k : kernels)
     for (const auto& p : k->params)
-      if (p.tag && seen.insert(p.tag_declaration).second)
-        out += p.tag_declaration + "\n";
-  return out.empty() ? out : "// The kernels' tag types (a declaration is enough).\n" + out + "\n";
+      if (!p.tag_declaration.empty() && seen.insert(p.tag_declaration).second)
+        (p.tag ? tags : types) += p.tag_declaration + "\n";
+  std::string out;
+  if (!types.empty()) // views and objects: their classes, as the kernel file includes them
+    out += "// The kernels' view and object classes, as the kernel file includes them.\n" +
+           types + "\n";
+  if (!tags.empty())
+    out += "// The kernels' tag types (a declaration is enough).\n" + tags + "\n";
+  return out;
 }
 
 Kernel generic_kernel(const Kernel& k) {
@@ -248,6 +254,8 @@ std::string formatted(const std::string& code, const std::string& name) {
 std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
                               bool c_language) {
   std::string c = is_const ? "const " : "";
+  if (p.view) // an array view: the kernel's type, or the same view of non-const elements
+    return fmt::format("{} {}", is_const ? p.view_type : p.view_mutable, name);
   if (p.plane_pointers) // `double*** a`: `const double* const* const* a` (C: `double** const* a`)
     return c_language ? fmt::format("{}** const* {}", p.elem_name, name)
                       : fmt::format("{}{}* const* const* {}", c, p.elem_name, name);
@@ -268,6 +276,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
 // Rows of a multi-dimensional array are contiguous: the first element's
 // address is the flat array.
 std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
+  if (p.view)
+    return name;
   if (!p.container.empty())
     return name + ".data()";
   if (p.scalar_ref)

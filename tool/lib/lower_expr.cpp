@@ -325,6 +325,9 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
 
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
+  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
+    if (auto a = view_element(oc))
+      return a;
   if (const Param* p = scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
     return Access{p, int_const(0)};
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
@@ -464,6 +467,8 @@ const Param* Lowerer::array_base(const clang::Expr* base) {
 
 ExprP Lowerer::expr(const clang::Expr* e) {
   e = e->IgnoreParens();
+  if (auto v = object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
+    return *v;
   if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
     return cast_expr(c, c->getSubExpr());
   if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
@@ -522,7 +527,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
       if (!st && written_by_other_nest(p->name)) {
         if (loops_.empty() && !path_reads_ok_)
           acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
-        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
         std::const_pointer_cast<Expr>(r)->source = text(e);
         k_.intermediates.insert(p->name);
         acc_.work_reads.push_back(
@@ -539,7 +544,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     }
     if (p->inout)
       return inout_value(p, acc->index, e->getBeginLoc(), e);
-    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
     std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
     return r;
   }

@@ -454,6 +454,39 @@ private:
 
   std::optional<Access> element(const clang::Expr* e);
 
+  // ---- array views and objects (lower_view.cpp) ----------------------------
+
+  // A class with an operator() or operator[]: a parameter of it is a view.
+  bool is_view_class(const CXXRecordDecl* rd) const;
+  // The Param of a view parameter (Param::view), or of an object one
+  // (Param::object); fail on what is outside the subset.
+  void view_param(const ParmVarDecl* p, const std::string& ann, Param& out);
+  void object_param(const ParmVarDecl* p, const std::string& ann, Param& out);
+  std::string mutable_view_type(const ParmVarDecl* p) const;
+  // The kernel file's #include line that brings in class `rd` (for the
+  // generated headers); fails if the kernel file defines it.
+  std::string include_for(const CXXRecordDecl* rd, SourceLocation use, const std::string& what);
+  // v(k, j, i) of a view parameter: its flat element; nullopt if `oc` is no
+  // call of a view parameter's operator.
+  std::optional<Access> view_element(const CXXOperatorCallExpr* oc);
+  // The operator() a view is called with maps indices one-to-one (a layout).
+  void check_layout(const FunctionDecl* op, const Param& p, SourceLocation use);
+  std::set<const FunctionDecl*> layouts_ok_;
+  // The row (level 1) or plane (level 2) symbol of a view or row-pointer array.
+  ExprP level_symbol(const Param& p, int level);
+  // A value read from an object or view parameter or an object local
+  // (`bx.smallEnd(0)`, `u.extent(1)`, `lo.x`, `grid.dx`): a constant of the
+  // kernel spelled as C++ over those names; nullopt for anything else.
+  std::optional<ExprP> object_value(const clang::Expr* e);
+  std::optional<std::string> object_text(const clang::Expr* e);
+  // `const auto lo = amrex::lbound(bx);`: a local object made from objects,
+  // declared again in every generated function. False if `v` is none.
+  bool declare_object(const VarDecl* v);
+  std::set<const VarDecl*> object_locals_;
+  // A kernel-level symbol the index algebra cannot see into (its value only
+  // ever compared in generated code).
+  ExprP opaque_symbol(const std::string& name, long long value);
+
   // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
   const Param* scalar_ref_param(const clang::Expr* e) const;
   // The globals the kernel body reads, as Params (Param::global), bound in

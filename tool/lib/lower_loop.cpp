@@ -638,7 +638,7 @@ void Lowerer::finish_accumulator(const VarDecl* v, SourceLocation loc) {
   accumulators_.erase(v);
   const Param* h = k_.find_param(a.array);
   order_after_later_stores(a.array);
-  ExprP r = read(a.array, a.index, h->elem, pos(loc), 0);
+  ExprP r = read(a.array, a.index, h->elem, pos(loc), {});
   std::const_pointer_cast<Expr>(r)->source = v->getNameAsString();
   k_.intermediates.insert(a.array);
   acc_.work_reads.push_back({a.array, cur_key(), next_store_seq_, a.index, path_, pos(loc)});

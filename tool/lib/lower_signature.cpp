@@ -8,6 +8,19 @@
 
 namespace dpgen::lowering {
 
+ExprP Lowerer::opaque_symbol(const std::string& name, long long value) {
+  auto l = std::make_shared<LocalVar>();
+  l->name = name;
+  l->type_name = "std::ptrdiff_t";
+  l->def = int_const(value);
+  l->opaque = true;
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  local_names_.insert(l->name);
+  k_.kernel_locals.push_back(l);
+  return local_ref(l);
+}
+
 void Lowerer::header() {
   if (isa<CXXMethodDecl>(fn_))
     fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
@@ -96,7 +109,18 @@ void Lowerer::header() {
     std::optional<Type> ref_scalar =
         q->isReferenceType() ? scalar_type(q.getNonReferenceType().getUnqualifiedType())
                              : std::nullopt;
-    if (ref_scalar && *ref_scalar != Type::Bool &&
+    const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
+    if (record && span_elem.isNull() && vector_element(q.getNonReferenceType()).isNull() &&
+        !record->isLambda()) {
+      // An array view (Array4, Kokkos::View, mdspan, ...), or an object
+      // of constants (AMReX's Box).
+      if (is_view_class(record))
+        view_param(p, ann, out);
+      else
+        object_param(p, ann, out);
+      any_in = any_in || out.kind == ParamKind::In;
+      any_out = any_out || out.kind == ParamKind::Out;
+    } else if (ref_scalar && *ref_scalar != Type::Bool &&
         (ann == "dpgen.in" || ann == "dpgen.out")) {
       QualType elem = q.getNonReferenceType();
       if (!is_real(*ref_scalar))
@@ -276,7 +300,7 @@ void Lowerer::header() {
       out.elem_name = spelled(q);
       out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
     }
-    out.spelling = spelled(p->getType(), /*keep_const=*/true);
+    out.spelling = out.view ? out.view_type : spelled(p->getType(), /*keep_const=*/true);
     {
       std::string decl;
       llvm::raw_string_ostream os(decl);
@@ -348,18 +372,6 @@ void Lowerer::header() {
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
   // code, kRowSymbolValue, is only ever compared, never used as an address).
-  auto opaque_symbol = [&](const std::string& name, long long value) {
-    auto l = std::make_shared<LocalVar>();
-    l->name = name;
-    l->type_name = "std::ptrdiff_t";
-    l->def = int_const(value);
-    l->opaque = true;
-    l->id = next_local_id_++;
-    l->kernel_level = true;
-    local_names_.insert(l->name);
-    k_.kernel_locals.push_back(l);
-    return local_ref(l);
-  };
   for (const auto& p : k_.params)
     if (p.row_pointers) {
       row_lengths_[p.name] = opaque_symbol(

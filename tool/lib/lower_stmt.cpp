@@ -248,6 +248,8 @@ void Lowerer::declare(const Decl* d) {
     declare_lambda(v, rd);
     return;
   }
+  if (declare_object(v)) // const auto lo = amrex::lbound(bx);
+    return;
   if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
     declare_array(v, ctx_.getAsConstantArrayType(
                          ctx_.getConstantArrayType(sa->first, llvm::APInt(64, sa->second),
@@ -671,7 +673,7 @@ ExprP Lowerer::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
     if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
       return st->value;
   acc_.inout_reads.push_back({p->name, cur_key(), next_store_seq_, idx, {}, pos(loc)});
-  ExprP r = read(p->name, idx, p->elem, pos(loc), pointer_levels(*p));
+  ExprP r = read(p->name, idx, p->elem, pos(loc), shape_of(*p));
   std::const_pointer_cast<Expr>(r)->source = text(e);
   return r;
 }

@@ -1,0 +1,540 @@
+// Lowering, array views and objects (lower_impl.hpp): parameters of a class
+// type. A view (a pointer member indexed by an inline, affine, one-to-one
+// operator(): AMReX Array4, Kokkos::View, mdspan, an AthenaArray-like class)
+// is an array whose element a(k, j, i) is the flat k * P + j * R + i of the
+// IR, as for rows reached through pointers (ir.hpp: Param::view); any other
+// class-typed parameter (AMReX's Box, a struct of grid constants) is an
+// object the kernel reads integer and floating values from (`bx.smallEnd(0)`,
+// `u.extent(0)`, `grid.dx`), constants of the kernel spelled as written.
+#include "lower_impl.hpp"
+
+#include <algorithm>
+
+namespace dpgen::lowering {
+
+namespace {
+
+// The operator() (or operator[]) overloads of a class, templates included.
+std::vector<const NamedDecl*> call_operators(const CXXRecordDecl* rd, ASTContext& ctx) {
+  std::vector<const NamedDecl*> out;
+  if (!rd || !rd->hasDefinition())
+    return out;
+  for (auto op : {OO_Call, OO_Subscript})
+    for (const NamedDecl* d : rd->lookup(ctx.DeclarationNames.getCXXOperatorName(op)))
+      out.push_back(d);
+  return out;
+}
+
+// `t` with const dropped at every level (`const double* const*` -> `double**`).
+QualType without_const(QualType t, ASTContext& ctx) {
+  t = t.getCanonicalType();
+  if (t->isPointerType())
+    return ctx.getPointerType(without_const(t->getPointeeType(), ctx));
+  return t.getUnqualifiedType();
+}
+
+} // namespace
+
+bool Lowerer::is_view_class(const CXXRecordDecl* rd) const {
+  return rd && !rd->isLambda() && !call_operators(rd, ctx_).empty();
+}
+
+std::string Lowerer::include_for(const CXXRecordDecl* rd, SourceLocation use,
+                                 const std::string& what) {
+  const Decl* d = rd;
+  if (const auto* s = dyn_cast<ClassTemplateSpecializationDecl>(rd))
+    d = s->getSpecializedTemplate();
+  FileID fid = sm_.getFileID(sm_.getExpansionLoc(d->getLocation()));
+  const FileID main = sm_.getMainFileID();
+  if (fid == main)
+    fail(use, fmt::format("{} has a class defined in the kernel file ('{}'): the generated "
+                          "files must see its definition, so move it to a header the kernel "
+                          "file includes",
+                          what, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  SourceLocation inc;
+  for (int depth = 0; depth < 256; ++depth) {
+    inc = sm_.getIncludeLoc(fid);
+    if (inc.isInvalid())
+      break;
+    FileID parent = sm_.getFileID(sm_.getExpansionLoc(inc));
+    if (parent == main)
+      break;
+    fid = parent;
+  }
+  if (inc.isInvalid() || sm_.getFileID(sm_.getExpansionLoc(inc)) != main)
+    fail(use, fmt::format("{}: dpgen cannot find the #include of the kernel file that declares "
+                          "class '{}'",
+                          what, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  // The whole line of the directive, as written.
+  auto [file, offset] = sm_.getDecomposedLoc(sm_.getExpansionLoc(inc));
+  llvm::StringRef buffer = sm_.getBufferData(file);
+  size_t begin = buffer.rfind('\n', offset);
+  begin = begin == llvm::StringRef::npos ? 0 : begin + 1;
+  size_t end = buffer.find('\n', offset);
+  std::string line = buffer.slice(begin, end).trim().str();
+  if (line.empty() || line[0] != '#')
+    fail(use, fmt::format("{}: the directive that includes class '{}' is not a plain #include "
+                          "line",
+                          what, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  return line;
+}
+
+// The view's type with non-const elements: a template argument that is a
+// const type (Array4<const double>, View<const double**>, mdspan<const
+// double, ...>) loses its const at every level; a class without one
+// (AthenaArray<double> by const&) is the same class, taken by non-const
+// reference (its const operator() reads a value, the other one returns the
+// element).
+std::string Lowerer::mutable_view_type(const ParmVarDecl* p) const {
+  QualType q = p->getType();
+  bool ref = q->isReferenceType();
+  QualType cls = q.getNonReferenceType();
+  const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(cls->getAsCXXRecordDecl());
+  bool changed = false;
+  std::string type;
+  if (spec) {
+    std::vector<std::string> args;
+    PrintingPolicy policy{LangOptions()};
+    policy.Bool = true;
+    policy.SuppressTagKeyword = true;
+    auto arg_text = [&](const TemplateArgument& a) {
+      if (a.getKind() == TemplateArgument::Type) {
+        QualType t = a.getAsType().getCanonicalType();
+        QualType m = without_const(t, ctx_);
+        changed = changed || m != t;
+        return spelled(m);
+      }
+      std::string s;
+      llvm::raw_string_ostream os(s);
+      a.print(policy, os, /*IncludeType=*/true);
+      return os.str();
+    };
+    for (const TemplateArgument& a : spec->getTemplateArgs().asArray()) {
+      if (a.getKind() == TemplateArgument::Pack) {
+        for (const TemplateArgument& e : a.pack_elements())
+          args.push_back(arg_text(e));
+      } else {
+        args.push_back(arg_text(a));
+      }
+    }
+    type = fmt::format("{}<{}>", spec->getSpecializedTemplate()->getQualifiedNameAsString(),
+                       fmt::join(args, ", "));
+  } else {
+    type = spelled(cls.getUnqualifiedType());
+  }
+  if (!ref)
+    return type;
+  // Taken by const reference where the view is shallow (its const operator()
+  // returns a non-const element: Array4<double>, View<double**>) or its
+  // elements' constness was in its template arguments; else (a deep-const
+  // class, AthenaArray) by non-const reference.
+  bool shallow = changed;
+  for (const NamedDecl* d : call_operators(cls->getAsCXXRecordDecl(), ctx_)) {
+    const auto* m = dyn_cast_or_null<CXXMethodDecl>(d->getAsFunction());
+    if (m && m->isConst() && m->getReturnType()->isLValueReferenceType() &&
+        !m->getReturnType().getNonReferenceType().isConstQualified())
+      shallow = true;
+  }
+  return shallow ? "const " + type + "&" : type + "&";
+}
+
+void Lowerer::view_param(const ParmVarDecl* p, const std::string& ann, Param& out) {
+  const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
+  if (ann == "dpgen.inout")
+    fail(p->getLocation(), fmt::format("DPGEN_INOUT view '{}': pass its old values and its new "
+                                       "ones as two views (DPGEN_IN and DPGEN_OUT)",
+                                       out.name),
+         "dpgen-signature");
+  if (p->getType()->isReferenceType() && !p->getType().getNonReferenceType().isConstQualified() &&
+      ann.empty())
+    fail(p->getLocation(), fmt::format("unmarked view '{}' is a non-const reference: mark it "
+                                       "DPGEN_OUT, or make it const",
+                                       out.name),
+         "dpgen-signature");
+  // The element type: what operator() returns, without reference and const.
+  std::optional<Type> et;
+  std::string elem_name;
+  for (const NamedDecl* d : call_operators(rd, ctx_)) {
+    const FunctionDecl* f = d->getAsFunction();
+    if (!f || isa<FunctionTemplateDecl>(d)) {
+      // (a member template, as mdspan's: its instantiations say, at the calls)
+      if (const auto* ft = dyn_cast<FunctionTemplateDecl>(d))
+        for (const FunctionDecl* s : ft->specializations())
+          f = s;
+      if (!f)
+        continue;
+    }
+    QualType r = f->getReturnType().getNonReferenceType().getCanonicalType().getUnqualifiedType();
+    if (r->isDependentType())
+      continue;
+    et = scalar_type(r);
+    elem_name = spelled(r);
+    if (et)
+      break;
+  }
+  if (!et || *et == Type::Bool)
+    fail(p->getLocation(), fmt::format("view '{}' of class '{}': its operator() must return "
+                                       "float, double or an integer type (by value or by "
+                                       "reference)",
+                                       out.name, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  if ((ann == "dpgen.in" || ann == "dpgen.out") && !is_real(*et))
+    fail(p->getLocation(), fmt::format("{} view '{}' must hold float or double",
+                                       ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT", out.name),
+         "dpgen-signature");
+  out.elem = *et;
+  out.elem_name = elem_name;
+  out.kind = ann == "dpgen.in"    ? ParamKind::In
+             : ann == "dpgen.out" ? ParamKind::Out
+                                  : ParamKind::ConstArray;
+  out.view = true;
+  out.view_rank = 0; // from its first element access (view_element)
+  out.view_type = spelled(p->getType(), /*keep_const=*/true);
+  out.view_mutable = mutable_view_type(p);
+  out.tag_declaration = include_for(rd, p->getLocation(), fmt::format("view '{}'", out.name));
+}
+
+void Lowerer::object_param(const ParmVarDecl* p, const std::string& ann, Param& out) {
+  const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
+  if (!ann.empty() && ann != "dpgen.const")
+    fail(p->getLocation(), fmt::format("parameter '{}' of class '{}' is no array view (it has "
+                                       "no operator() or operator[]): DPGEN_IN/DPGEN_OUT do not "
+                                       "apply to it",
+                                       out.name, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  if (p->getType()->isReferenceType() && !p->getType().getNonReferenceType().isConstQualified())
+    fail(p->getLocation(), fmt::format("parameter '{}' of class '{}' is a non-const reference: "
+                                       "the kernel may only read it",
+                                       out.name, rd->getQualifiedNameAsString()),
+         "dpgen-signature");
+  out.kind = ParamKind::Scalar;
+  out.object = true;
+  out.elem = Type::Bool; // (no number of its own, never shown or checked: read through members)
+  out.elem_name = spelled(p->getType().getNonReferenceType());
+  out.tag_declaration = include_for(rd, p->getLocation(), fmt::format("parameter '{}'", out.name));
+}
+
+ExprP Lowerer::level_symbol(const Param& p, int level) {
+  auto& table = level == 1 ? row_lengths_ : plane_lengths_;
+  auto it = table.find(p.name);
+  if (it != table.end())
+    return it->second;
+  ExprP s = level == 1 ? opaque_symbol(row_symbol(p.name), pointer_levels(p) == 2
+                                                                ? kPlaneRowSymbolValue
+                                                                : kRowSymbolValue)
+                       : opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
+  table[p.name] = s;
+  return s;
+}
+
+// A view's layout: its operator() must return `ptr[index]` for a pointer
+// member `ptr` and an index affine in the operator's parameters, each with a
+// stride of its own (a member, a product of members, a constant); which
+// gives distinct indices distinct elements within the view's bounds (the
+// documented assumption, as for rows of their own). mdspan's standard
+// layouts, which compute the offset through their mapping, are one-to-one
+// by the standard.
+void Lowerer::check_layout(const FunctionDecl* op, const Param& p, SourceLocation use) {
+  if (layouts_ok_.count(op))
+    return;
+  const auto* rd = dyn_cast<CXXRecordDecl>(op->getDeclContext());
+  auto standard_mdspan = [&] {
+    const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(rd);
+    if (!spec || spec->getName() != "mdspan" || spec->getTemplateArgs().size() < 3)
+      return false;
+    const TemplateArgument& layout = spec->getTemplateArgs()[2];
+    if (layout.getKind() != TemplateArgument::Type)
+      return false;
+    const CXXRecordDecl* l = layout.getAsType()->getAsCXXRecordDecl();
+    return l && (l->getName() == "layout_right" || l->getName() == "layout_left");
+  };
+  std::string why;
+  const FunctionDecl* def = op->getDefinition();
+  const Stmt* body = def ? def->getBody() : nullptr;
+  const auto* cs = dyn_cast_or_null<CompoundStmt>(body);
+  const ReturnStmt* ret = cs && cs->size() == 1 ? dyn_cast<ReturnStmt>(cs->body_front()) : nullptr;
+  const auto* sub = ret && ret->getRetValue()
+                        ? dyn_cast<ArraySubscriptExpr>(ret->getRetValue()->IgnoreParenImpCasts())
+                        : nullptr;
+  const auto* base = sub ? dyn_cast<MemberExpr>(sub->getBase()->IgnoreParenImpCasts()) : nullptr;
+  if (!base || !isa<CXXThisExpr>(base->getBase()->IgnoreParenImpCasts()) ||
+      !base->getType()->isPointerType()) {
+    if (standard_mdspan()) {
+      layouts_ok_.insert(op);
+      return;
+    }
+    fail(use, fmt::format("view '{}': the body of {}::operator() is not 'return ptr[index];' "
+                          "with a pointer member (dpgen must see the index to know that "
+                          "distinct indices are distinct elements)",
+                          p.name, rd ? rd->getQualifiedNameAsString() : "?"),
+         "dpgen-signature");
+  }
+  // The index as a polynomial in the operator's parameters (counters) and
+  // the members it reads (sizes).
+  std::function<std::optional<Poly>(const clang::Expr*)> poly =
+      [&](const clang::Expr* e) -> std::optional<Poly> {
+    e = e->IgnoreParenImpCasts();
+    if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
+      return poly(c->getSubExpr());
+    if (const auto* l = dyn_cast<IntegerLiteral>(e))
+      return Poly::constant(static_cast<long long>(l->getValue().getSExtValue()));
+    if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
+      if (const auto* pv = dyn_cast<ParmVarDecl>(r->getDecl()))
+        return Poly::counter(fmt::format("dpgen_arg{}", pv->getFunctionScopeIndex()));
+      return std::nullopt;
+    }
+    if (isa<MemberExpr>(e) || isa<ArraySubscriptExpr>(e)) {
+      // a member (`jstride`, `begin.x`, `stride_[0]`): a size
+      if (!e->getType()->isIntegerType())
+        return std::nullopt;
+      std::string s;
+      llvm::raw_string_ostream os(s);
+      e->printPretty(os, nullptr, PrintingPolicy(ctx_.getLangOpts()));
+      if (os.str().find('(') != std::string::npos)
+        return std::nullopt;
+      return Poly::symbol("member:" + os.str());
+    }
+    if (const auto* u = dyn_cast<UnaryOperator>(e)) {
+      if (u->getOpcode() == UO_Minus)
+        if (auto a = poly(u->getSubExpr()))
+          return -*a;
+      if (u->getOpcode() == UO_Plus)
+        return poly(u->getSubExpr());
+      return std::nullopt;
+    }
+    if (const auto* b = dyn_cast<BinaryOperator>(e)) {
+      auto l = poly(b->getLHS()), r = poly(b->getRHS());
+      if (!l || !r)
+        return std::nullopt;
+      switch (b->getOpcode()) {
+      case BO_Add:
+        return *l + *r;
+      case BO_Sub:
+        return *l - *r;
+      case BO_Mul:
+        return *l * *r;
+      default:
+        return std::nullopt;
+      }
+    }
+    return std::nullopt;
+  };
+  std::optional<Poly> index = poly(sub->getIdx());
+  if (!index)
+    why = "its index is not a sum of the indices times members or constants";
+  std::vector<Poly> strides;
+  for (unsigned d = 0; why.empty() && d < op->getNumParams(); ++d) {
+    Sym arg = Sym::counter(fmt::format("dpgen_arg{}", d));
+    for (const auto& [m, c] : index->terms())
+      if (std::count_if(m.begin(), m.end(), [](const Sym& s) { return s.is_counter(); }) > 1)
+        why = "it multiplies two indices";
+    if (!why.empty())
+      break;
+    Poly stride = index->coefficient(arg);
+    if (stride == Poly())
+      why = fmt::format("its index does not depend on index {}", d + 1);
+    else if (std::find(strides.begin(), strides.end(), stride) != strides.end() ||
+             std::find(strides.begin(), strides.end(), -stride) != strides.end())
+      why = fmt::format("indices share the stride {}", stride.str());
+    strides.push_back(stride);
+  }
+  if (why.empty()) {
+    int constant = 0;
+    for (const Poly& s : strides)
+      constant += s.is_constant();
+    if (constant > 1)
+      why = "more than one index has a constant stride";
+  }
+  if (!why.empty()) {
+    if (standard_mdspan()) {
+      layouts_ok_.insert(op);
+      return;
+    }
+    fail(use, fmt::format("view '{}': {}::operator() does not map distinct indices to distinct "
+                          "elements as a layout does: {}",
+                          p.name, rd ? rd->getQualifiedNameAsString() : "?", why),
+         "dpgen-signature");
+  }
+  layouts_ok_.insert(op);
+}
+
+auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Access> {
+  if (oc->getOperator() != OO_Call && oc->getOperator() != OO_Subscript)
+    return std::nullopt;
+  const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
+  const auto* ref = dyn_cast<DeclRefExpr>(base);
+  if (!ref)
+    return std::nullopt;
+  auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
+  if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->view)
+    return std::nullopt;
+  const Param* p = it->second.param;
+  const FunctionDecl* op = oc->getDirectCallee();
+  if (!op)
+    fail(oc->getBeginLoc(), fmt::format("view '{}': dpgen cannot see which operator() this is",
+                                        p->name));
+  const unsigned rank = oc->getNumArgs() - 1;
+  if (oc->getOperator() == OO_Subscript && rank != 1)
+    fail(oc->getBeginLoc(), fmt::format("view '{}': index it as {}(k, j, i)", p->name, p->name));
+  if (oc->getOperator() == OO_Subscript)
+    fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with [] : index it with its "
+                                        "operator(), {}(i)",
+                                        p->name, p->name));
+  if (rank < 1 || rank > 3)
+    fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with {} indices: dpgen takes "
+                                        "views of rank 1 to 3 (a component index is a view "
+                                        "per component, or a rank-3 view)",
+                                        p->name, rank));
+  if (p->view_rank != 0 && p->view_rank != static_cast<int>(rank))
+    fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with {} indices here and {} "
+                                        "elsewhere: use one operator() per view",
+                                        p->name, rank, p->view_rank));
+  check_layout(op, *p, oc->getBeginLoc());
+  if (p->view_rank == 0) // k_.params owns it: the rank is known from here on
+    const_cast<Param*>(p)->view_rank = static_cast<int>(rank);
+  std::vector<ExprP> idx;
+  for (unsigned d = 1; d <= rank; ++d) {
+    ExprP x = expr(oc->getArg(d));
+    if (x->type != Type::Int)
+      fail(oc->getArg(d)->getBeginLoc(), "array index must be an integer");
+    if (rank > 1 && !to_poly(x))
+      fail(oc->getArg(d)->getBeginLoc(),
+           fmt::format("view '{}' is indexed at a data-dependent position; dpgen needs every "
+                       "index of a view of rank 2 or 3 affine in the loop counters and sizes",
+                       p->name));
+    idx.push_back(x);
+  }
+  // a(k, j, i): k * P + j * R + i (the innermost index last)
+  ExprP flat = idx.back();
+  for (unsigned d = 0; d + 1 < rank; ++d) {
+    int level = static_cast<int>(rank - 1 - d);
+    flat = binary(Op::Add, binary(Op::Mul, idx[d], level_symbol(*p, level)), flat);
+  }
+  return Access{p, flat};
+}
+
+std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
+  e = e->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
+    const auto* v = dyn_cast<VarDecl>(r->getDecl());
+    if (!v)
+      return std::nullopt;
+    if (object_locals_.count(v))
+      return v->getNameAsString();
+    auto it = env_.find(v);
+    if (it == env_.end() || !it->second.param)
+      return std::nullopt;
+    const Param* p = it->second.param;
+    if (p->view || p->object)
+      return p->name;
+    return std::nullopt;
+  }
+  if (const auto* l = dyn_cast<IntegerLiteral>(e))
+    return std::to_string(l->getValue().getSExtValue());
+  if (const auto* m = dyn_cast<MemberExpr>(e)) {
+    if (!isa<FieldDecl>(m->getMemberDecl()) && !isa<CXXMethodDecl>(m->getMemberDecl()))
+      return std::nullopt;
+    auto base = object_text(m->getBase());
+    if (!base)
+      return std::nullopt;
+    return *base + (m->isArrow() ? "->" : ".") + m->getMemberDecl()->getNameAsString();
+  }
+  if (const auto* c = dyn_cast<CXXMemberCallExpr>(e)) {
+    const CXXMethodDecl* md = c->getMethodDecl();
+    const auto* callee = dyn_cast<MemberExpr>(c->getCallee()->IgnoreParens());
+    if (!md || !callee || !md->isConst())
+      return std::nullopt;
+    auto head = object_text(callee);
+    if (!head)
+      return std::nullopt;
+    std::vector<std::string> args;
+    for (const clang::Expr* a : c->arguments()) {
+      clang::Expr::EvalResult r;
+      if (!a->getType()->isIntegerType() || !a->EvaluateAsInt(r, ctx_))
+        return std::nullopt; // (arguments that are constants only: no loop counter)
+      args.push_back(std::to_string(r.Val.getInt().getExtValue()));
+    }
+    return fmt::format("{}({})", *head, fmt::join(args, ", "));
+  }
+  if (const auto* c = dyn_cast<CallExpr>(e)) {
+    // a free function of objects (amrex::lbound(bx)): constexpr, or inline
+    // and taking every argument by value or const reference
+    const FunctionDecl* f = c->getDirectCallee();
+    if (!f || isa<CXXMethodDecl>(f) || !f->isInlined() || !f->getReturnType()->isRecordType())
+      return std::nullopt;
+    for (const ParmVarDecl* pv : f->parameters())
+      if (pv->getType()->isReferenceType() && !pv->getType().getNonReferenceType().isConstQualified())
+        return std::nullopt;
+    std::vector<std::string> args;
+    for (const clang::Expr* a : c->arguments()) {
+      auto t = object_text(a);
+      if (!t)
+        return std::nullopt;
+      args.push_back(*t);
+    }
+    return fmt::format("{}({})", f->getQualifiedNameAsString(), fmt::join(args, ", "));
+  }
+  if (const auto* s = dyn_cast<ArraySubscriptExpr>(e)) {
+    // a member array at a constant index (`geom.dx[0]`)
+    clang::Expr::EvalResult r;
+    auto base = object_text(s->getBase());
+    if (!base || !s->getIdx()->EvaluateAsInt(r, ctx_) || !s->getBase()->IgnoreParenImpCasts()
+                                                             ->getType()
+                                                             ->isConstantArrayType())
+      return std::nullopt;
+    return fmt::format("{}[{}]", *base, r.Val.getInt().getExtValue());
+  }
+  return std::nullopt;
+}
+
+std::optional<ExprP> Lowerer::object_value(const clang::Expr* e) {
+  const clang::Expr* s = e->IgnoreParenImpCasts();
+  if (!isa<MemberExpr>(s) && !isa<CXXMemberCallExpr>(s) && !isa<ArraySubscriptExpr>(s))
+    return std::nullopt;
+  auto t = scalar_type(s->getType());
+  if (!t)
+    return std::nullopt;
+  auto text = object_text(s);
+  if (!text)
+    return std::nullopt;
+  // (an unsigned value, `u.extent(0)`, is read as a signed 64-bit one: index
+  // arithmetic goes below zero)
+  if (*t == Type::Int && s->getType()->isUnsignedIntegerType())
+    return param(fmt::format("static_cast<std::ptrdiff_t>({})", *text), Type::Int);
+  return param(*text, *t);
+}
+
+bool Lowerer::declare_object(const VarDecl* v) {
+  const CXXRecordDecl* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
+  if (!rd || rd->isLambda() || is_view_class(rd) || !v->getInit())
+    return false;
+  auto text = object_text(v->getInit());
+  if (!text)
+    return false;
+  if (!loops_.empty() || !frames_.empty())
+    fail(v->getLocation(), fmt::format("local object '{}' is declared inside a loop or a helper; "
+                                       "declare it at the top of the kernel",
+                                       v->getNameAsString()));
+  const std::string name = v->getNameAsString();
+  if (local_names_.count(name) || k_.names.count(name))
+    fail(v->getLocation(), fmt::format("local object '{}' has the name of another variable of "
+                                       "the kernel; rename it",
+                                       name),
+         "dpgen-name");
+  auto l = std::make_shared<LocalVar>();
+  l->name = name;
+  l->type_name = "auto";
+  l->def = param(*text, Type::Int); // (printed only: its members are read by name)
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  l->opaque = true;
+  local_names_.insert(name);
+  k_.kernel_locals.push_back(l);
+  object_locals_.insert(v);
+  return true;
+}
+
+} // namespace dpgen::lowering
