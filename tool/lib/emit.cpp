@@ -334,12 +334,19 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   const bool any_bulk = plan.any_bulk;
   const Box& interior = plan.interior;
 
+  // The cell functions capture by copy (scalars, pointers, shallow views);
+  // by reference where the kernel takes a view by reference, whose copy may
+  // be deep or read-only (an AthenaArray-like class).
+  const bool by_ref = std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
+    return p.view && !p.view_type.empty() && p.view_type.back() == '&';
+  });
+  const std::string capture = by_ref ? "[&]" : "[=]";
   // Edge cell: every block, each checked against its iteration domain.
-  code.open(fmt::format("auto {} = [=]({})", edge_fn, params));
+  code.open(fmt::format("auto {} = {}({})", edge_fn, capture, params));
   edge_body();
   code.close(";");
   if (any_bulk) {
-    code.open(fmt::format("auto {} = [=]({})", interior_fn, params));
+    code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
       bool has_bulk = false;

@@ -463,6 +463,7 @@ private:
   void view_param(const ParmVarDecl* p, const std::string& ann, Param& out);
   void object_param(const ParmVarDecl* p, const std::string& ann, Param& out);
   std::string mutable_view_type(const ParmVarDecl* p) const;
+  std::string without_element_const(QualType t, bool& changed) const;
   // The kernel file's #include line that brings in class `rd` (for the
   // generated headers); fails if the kernel file defines it.
   std::string include_for(const CXXRecordDecl* rd, SourceLocation use, const std::string& what);
@@ -479,6 +480,7 @@ private:
   // kernel spelled as C++ over those names; nullopt for anything else.
   std::optional<ExprP> object_value(const clang::Expr* e);
   std::optional<std::string> object_text(const clang::Expr* e);
+  std::set<std::string> object_values_; // the integer ones, as spelled
   // `const auto lo = amrex::lbound(bx);`: a local object made from objects,
   // declared again in every generated function. False if `v` is none.
   bool declare_object(const VarDecl* v);

@@ -473,6 +473,8 @@ ExprP Lowerer::symbol_expr(const Sym& sym) {
   for (const auto& l : k_.kernel_locals)
     if (l->name == sym.name)
       return local_ref(l);
+  if (object_values_.count(sym.name)) // bx.smallEnd(0), u.extent(1) (lower_view.cpp)
+    return param(sym.name, Type::Int);
   throw std::logic_error("lower: unknown symbol " + sym.name);
 }
 

@@ -88,43 +88,48 @@ std::string Lowerer::include_for(const CXXRecordDecl* rd, SourceLocation use,
 // (AthenaArray<double> by const&) is the same class, taken by non-const
 // reference (its const operator() reads a value, the other one returns the
 // element).
+// `t` as generated code spells it with const dropped from every element type
+// it is made of (Array4<const double> -> Array4<double>; mdspan<const double,
+// E, L, default_accessor<const double>> -> mdspan<double, E, L,
+// default_accessor<double>>); `changed` says whether there was any.
+std::string Lowerer::without_element_const(QualType t, bool& changed) const {
+  t = t.getCanonicalType();
+  QualType m = without_const(t, ctx_);
+  if (m != t)
+    changed = true;
+  const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(m->getAsCXXRecordDecl());
+  if (!spec)
+    return spelled(m);
+  PrintingPolicy policy{LangOptions()};
+  policy.Bool = true;
+  policy.SuppressTagKeyword = true;
+  std::vector<std::string> args;
+  auto arg_text = [&](const TemplateArgument& a) {
+    if (a.getKind() == TemplateArgument::Type)
+      return without_element_const(a.getAsType(), changed);
+    std::string s;
+    llvm::raw_string_ostream os(s);
+    a.print(policy, os, /*IncludeType=*/true);
+    return os.str();
+  };
+  for (const TemplateArgument& a : spec->getTemplateArgs().asArray()) {
+    if (a.getKind() == TemplateArgument::Pack) {
+      for (const TemplateArgument& e : a.pack_elements())
+        args.push_back(arg_text(e));
+    } else {
+      args.push_back(arg_text(a));
+    }
+  }
+  return fmt::format("{}<{}>", spec->getSpecializedTemplate()->getQualifiedNameAsString(),
+                     fmt::join(args, ", "));
+}
+
 std::string Lowerer::mutable_view_type(const ParmVarDecl* p) const {
   QualType q = p->getType();
   bool ref = q->isReferenceType();
   QualType cls = q.getNonReferenceType();
-  const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(cls->getAsCXXRecordDecl());
   bool changed = false;
-  std::string type;
-  if (spec) {
-    std::vector<std::string> args;
-    PrintingPolicy policy{LangOptions()};
-    policy.Bool = true;
-    policy.SuppressTagKeyword = true;
-    auto arg_text = [&](const TemplateArgument& a) {
-      if (a.getKind() == TemplateArgument::Type) {
-        QualType t = a.getAsType().getCanonicalType();
-        QualType m = without_const(t, ctx_);
-        changed = changed || m != t;
-        return spelled(m);
-      }
-      std::string s;
-      llvm::raw_string_ostream os(s);
-      a.print(policy, os, /*IncludeType=*/true);
-      return os.str();
-    };
-    for (const TemplateArgument& a : spec->getTemplateArgs().asArray()) {
-      if (a.getKind() == TemplateArgument::Pack) {
-        for (const TemplateArgument& e : a.pack_elements())
-          args.push_back(arg_text(e));
-      } else {
-        args.push_back(arg_text(a));
-      }
-    }
-    type = fmt::format("{}<{}>", spec->getSpecializedTemplate()->getQualifiedNameAsString(),
-                       fmt::join(args, ", "));
-  } else {
-    type = spelled(cls.getUnqualifiedType());
-  }
+  std::string type = without_element_const(cls.getUnqualifiedType(), changed);
   if (!ref)
     return type;
   // Taken by const reference where the view is shallow (its const operator()
@@ -368,6 +373,8 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref)
     return std::nullopt;
+  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && poisoned_.count(v))
+    throw Rejected{}; // its declaration's error is reported already
   auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
   if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->view)
     return std::nullopt;
@@ -503,7 +510,9 @@ std::optional<ExprP> Lowerer::object_value(const clang::Expr* e) {
   // (an unsigned value, `u.extent(0)`, is read as a signed 64-bit one: index
   // arithmetic goes below zero)
   if (*t == Type::Int && s->getType()->isUnsignedIntegerType())
-    return param(fmt::format("static_cast<std::ptrdiff_t>({})", *text), Type::Int);
+    text = fmt::format("static_cast<std::ptrdiff_t>({})", *text);
+  if (*t == Type::Int)
+    object_values_.insert(*text);
   return param(*text, *t);
 }
 
