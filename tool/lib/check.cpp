@@ -576,6 +576,13 @@ private:
                                  "'double (*{})[N]'",
                                  p.name, p.name));
     for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && p.view)
+        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with view parameter '{}': the adjoint "
+                                 "recomputes work arrays into buffers of its own, and cannot "
+                                 "make a view over one; split the kernel where the work array "
+                                 "is complete (its adjoint is then an input's)",
+                                 work_name(*k_.intermediates.begin()), p.name));
+    for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
         fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
                                  "arrays as pointers",

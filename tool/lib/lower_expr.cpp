@@ -245,6 +245,12 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     const ParmVarDecl* pd = def->getParamDecl(i);
     const clang::Expr* arg = c->getArg(i + first);
     QualType pt = pd->getType();
+    // A library parallel-for's body (`template <class F> void ParallelFor(Box
+    // const& box, F&& f)`): a lambda, a view or an object of the caller.
+    if (std::optional<Binding> b = class_argument(pd, arg, def)) {
+      binds.push_back({pd, *b});
+      continue;
+    }
     if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
         scalar_type(pt->getPointeeType()) && [&] {
           const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());

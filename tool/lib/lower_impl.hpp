@@ -484,7 +484,18 @@ private:
   // `const auto lo = amrex::lbound(bx);`: a local object made from objects,
   // declared again in every generated function. False if `v` is none.
   bool declare_object(const VarDecl* v);
-  std::set<const VarDecl*> object_locals_;
+  std::map<const VarDecl*, std::string> object_locals_; // -> its name in generated code
+  // A helper's parameter of a class type bound to the caller's argument: a
+  // lambda (Binding::Lambda, as a local holding it would be), a view
+  // parameter (Binding::ArrayParam), an object (its spelling, in
+  // object_aliases_: a Binding::Value without value). nullopt: not a class.
+  std::optional<Binding> class_argument(const ParmVarDecl* pd, const clang::Expr* arg,
+                                        const FunctionDecl* helper);
+  std::map<const VarDecl*, std::string> object_aliases_;
+  std::optional<std::string> materialize(const clang::Expr* e, const CXXRecordDecl* rd);
+  // The Binding of a lambda expression, its captures by copy recorded
+  // (declare_lambda, a lambda passed to a helper).
+  Binding lambda_binding(const LambdaExpr* le, const std::string& name);
   // A kernel-level symbol the index algebra cannot see into (its value only
   // ever compared in generated code).
   ExprP opaque_symbol(const std::string& name, long long value);

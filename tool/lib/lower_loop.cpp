@@ -43,10 +43,13 @@ bool Lowerer::forget_value(const VarDecl* v) {
 }
 
 void Lowerer::for_loop(const ForStmt* f) {
-  if (!frames_.empty())
-    fail(f->getBeginLoc(), fmt::format("a loop in helper '{}': helpers called from a kernel "
-                                       "compute a value without loops; write the loop in the "
-                                       "kernel",
+  // A loop in a void helper (a library parallel-for: `ParallelFor(box, f)`
+  // runs f(i, j, k) in a nest) is a loop of the kernel; a helper that
+  // returns a value computes it without loops.
+  if (!frames_.empty() && !frames_.back().is_void)
+    fail(f->getBeginLoc(), fmt::format("a loop in helper '{}', which returns a value: helpers "
+                                       "that compute a value do it without loops; write the "
+                                       "loop in the kernel",
                                        frames_.back().fn->getNameAsString()), "dpgen-loop");
   // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
   const VarDecl* var = nullptr;

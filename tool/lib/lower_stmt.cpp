@@ -127,6 +127,13 @@ Escape Lowerer::lower(const Stmt* s) {
 Escape Lowerer::if_stmt(const IfStmt* s) {
   if (s->getInit() || s->getConditionVariable())
     fail(s->getBeginLoc(), "if with an initializer or a declaration is outside the subset");
+  if (s->isConstexpr()) { // `if constexpr`: only the branch the compiler keeps
+    bool taken = false;
+    if (!s->getCond()->EvaluateAsBooleanCondition(taken, ctx_))
+      fail(s->getBeginLoc(), "dpgen cannot evaluate the condition of this 'if constexpr'");
+    const Stmt* branch = taken ? s->getThen() : s->getElse();
+    return branch ? lower_recovering(branch) : Escape::None;
+  }
   ExprP c = cond(s->getCond());
   size_t depth = path_.size();
   auto env_before = env_;
@@ -232,6 +239,11 @@ ExprP Lowerer::make_local(const std::string& base, const VarDecl* decl, ExprP de
 }
 
 void Lowerer::declare(const Decl* d) {
+  // Declarations that make no value: type aliases (`using Tag = ...;`),
+  // static_assert, using-declarations and -directives.
+  if (isa<TypedefNameDecl>(d) || isa<StaticAssertDecl>(d) || isa<UsingDecl>(d) ||
+      isa<UsingDirectiveDecl>(d))
+    return;
   const auto* v = dyn_cast<VarDecl>(d);
   if (!v)
     fail(d->getLocation(), "only variable declarations are allowed in a kernel");
@@ -329,14 +341,19 @@ void Lowerer::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
     fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
                                        "expression",
                                        v->getNameAsString()), "dpgen-lambda");
+  (void)rd;
+  env_[v] = lambda_binding(le, v->getNameAsString());
+}
+
+Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
   Binding b;
   b.kind = Binding::Lambda;
-  b.closure = rd;
+  b.closure = le->getLambdaClass();
   for (const LambdaCapture& c : le->captures()) {
     if (!c.capturesVariable() || le->isInitCapture(&c))
       fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
                                         "kernel's variables (this, or an init-capture)",
-                                        v->getNameAsString()), "dpgen-lambda");
+                                        name), "dpgen-lambda");
     if (c.getCaptureKind() != LCK_ByCopy)
       continue;
     const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
@@ -346,7 +363,7 @@ void Lowerer::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
     if (it != env_.end() && it->second.kind == Binding::LocalArray)
       b.captured_arrays.push_back({cv, it->second.elems});
   }
-  env_[v] = b;
+  return b;
 }
 
 // The element of a local array that `idx` names: it must be a constant.

@@ -8,6 +8,8 @@
 // `u.extent(0)`, `grid.dx`), constants of the kernel spelled as written.
 #include "lower_impl.hpp"
 
+#include "print.hpp"
+
 #include <algorithm>
 
 namespace dpgen::lowering {
@@ -36,7 +38,15 @@ QualType without_const(QualType t, ASTContext& ctx) {
 } // namespace
 
 bool Lowerer::is_view_class(const CXXRecordDecl* rd) const {
-  return rd && !rd->isLambda() && !call_operators(rd, ctx_).empty();
+  if (!rd || rd->isLambda() || rd->isInStdNamespace()) // (std::string has an operator[])
+    return false;
+  // a call operator that returns an element (a functor's returns void)
+  for (const NamedDecl* d : call_operators(rd, ctx_)) {
+    const FunctionDecl* f = d->getAsFunction();
+    if (f && !f->getReturnType()->isVoidType())
+      return true;
+  }
+  return false;
 }
 
 std::string Lowerer::include_for(const CXXRecordDecl* rd, SourceLocation use,
@@ -424,13 +434,20 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
 }
 
 std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
-  e = e->IgnoreParenImpCasts();
+  e = e->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
+    e = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* c = dyn_cast<CXXConstructExpr>(e); // a copy: the object copied
+      c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor())
+    return object_text(c->getArg(0));
   if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
     const auto* v = dyn_cast<VarDecl>(r->getDecl());
     if (!v)
       return std::nullopt;
-    if (object_locals_.count(v))
-      return v->getNameAsString();
+    if (auto l = object_locals_.find(v); l != object_locals_.end())
+      return l->second;
+    if (auto a = object_aliases_.find(v); a != object_aliases_.end())
+      return a->second;
     auto it = env_.find(v);
     if (it == env_.end() || !it->second.param)
       return std::nullopt;
@@ -466,6 +483,18 @@ std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
     }
     return fmt::format("{}({})", *head, fmt::join(args, ", "));
   }
+  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
+      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
+    // an element of a std::array object at a constant index (`lo[0]`)
+    const CXXRecordDecl* rd = oc->getArg(0)->getType()->getAsCXXRecordDecl();
+    clang::Expr::EvalResult r;
+    if (!rd || !rd->isInStdNamespace() || !oc->getArg(1)->EvaluateAsInt(r, ctx_))
+      return std::nullopt;
+    auto base = object_text(oc->getArg(0));
+    if (!base)
+      return std::nullopt;
+    return fmt::format("{}[{}]", *base, r.Val.getInt().getExtValue());
+  }
   if (const auto* c = dyn_cast<CallExpr>(e)) {
     // a free function of objects (amrex::lbound(bx)): constexpr, or inline
     // and taking every argument by value or const reference
@@ -499,7 +528,9 @@ std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
 
 std::optional<ExprP> Lowerer::object_value(const clang::Expr* e) {
   const clang::Expr* s = e->IgnoreParenImpCasts();
-  if (!isa<MemberExpr>(s) && !isa<CXXMemberCallExpr>(s) && !isa<ArraySubscriptExpr>(s))
+  const auto* oc = dyn_cast<CXXOperatorCallExpr>(s);
+  if (!isa<MemberExpr>(s) && !isa<CXXMemberCallExpr>(s) && !isa<ArraySubscriptExpr>(s) &&
+      !(oc && oc->getOperator() == OO_Subscript))
     return std::nullopt;
   auto t = scalar_type(s->getType());
   if (!t)
@@ -523,16 +554,14 @@ bool Lowerer::declare_object(const VarDecl* v) {
   auto text = object_text(v->getInit());
   if (!text)
     return false;
-  if (!loops_.empty() || !frames_.empty())
-    fail(v->getLocation(), fmt::format("local object '{}' is declared inside a loop or a helper; "
-                                       "declare it at the top of the kernel",
+  if (!loops_.empty())
+    fail(v->getLocation(), fmt::format("local object '{}' is declared inside a loop; declare it "
+                                       "before the loops",
                                        v->getNameAsString()));
-  const std::string name = v->getNameAsString();
-  if (local_names_.count(name) || k_.names.count(name))
-    fail(v->getLocation(), fmt::format("local object '{}' has the name of another variable of "
-                                       "the kernel; rename it",
-                                       name),
-         "dpgen-name");
+  // (in a helper, or a second call of one, it gets a name of its own)
+  std::string name = v->getNameAsString();
+  for (int n = 1; local_names_.count(name) || k_.names.count(name) || is_reserved(name); ++n)
+    name = fmt::format("{}_{}", v->getNameAsString(), n);
   auto l = std::make_shared<LocalVar>();
   l->name = name;
   l->type_name = "auto";
@@ -542,8 +571,131 @@ bool Lowerer::declare_object(const VarDecl* v) {
   l->opaque = true;
   local_names_.insert(name);
   k_.kernel_locals.push_back(l);
-  object_locals_.insert(v);
+  object_locals_[v] = name;
   return true;
+}
+
+std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clang::Expr* arg,
+                                               const FunctionDecl* helper) {
+  QualType pt = pd->getType();
+  const CXXRecordDecl* rd = pt.getNonReferenceType()->getAsCXXRecordDecl();
+  if (!rd)
+    return std::nullopt;
+  const clang::Expr* a = arg->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(a))
+    a = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (rd->isLambda()) {
+    if (const auto* le = dyn_cast<LambdaExpr>(a))
+      return lambda_binding(le, pd->getNameAsString());
+    if (const auto* r = dyn_cast<DeclRefExpr>(a))
+      if (const auto* v = dyn_cast<VarDecl>(r->getDecl())) {
+        auto it = env_.find(v);
+        if (it != env_.end() && it->second.kind == Binding::Lambda)
+          return it->second;
+      }
+    fail(arg->getBeginLoc(), fmt::format("argument for parameter '{}' of helper '{}' must be a "
+                                         "lambda expression or a local holding one",
+                                         pd->getNameAsString(), helper->getNameAsString()),
+         "dpgen-lambda");
+  }
+  if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified() &&
+      !is_view_class(rd))
+    return std::nullopt; // (an out-parameter: not a class the kernel can pass)
+  if (is_view_class(rd)) {
+    const auto* r = dyn_cast<DeclRefExpr>(a);
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? env_.find(v) : env_.end();
+    if (v && poisoned_.count(v))
+      throw Rejected{};
+    if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->view)
+      fail(arg->getBeginLoc(), fmt::format("argument for view parameter '{}' of helper '{}' "
+                                           "must be a view parameter of the kernel",
+                                           pd->getNameAsString(), helper->getNameAsString()));
+    return it->second;
+  }
+  auto text = object_text(a);
+  if (!text)
+    text = materialize(a, rd);
+  const auto* ctor = dyn_cast<CXXConstructExpr>(a);
+  const bool label =
+      isa<StringLiteral>(a) || (ctor && ctor->getNumArgs() >= 1 &&
+                                isa<StringLiteral>(ctor->getArg(0)->IgnoreParenImpCasts()));
+  if (!text && label) { // a label (Kokkos::parallel_for("name", ...))
+    Binding b;
+    b.kind = Binding::Value; // (no value: the helper must not read it)
+    return b;
+  }
+  if (!text)
+    fail(arg->getBeginLoc(), fmt::format("argument for parameter '{}' of helper '{}' (of class "
+                                         "'{}') must be an object parameter of the kernel or "
+                                         "made from one (a Box, lbound(bx))",
+                                         pd->getNameAsString(), helper->getNameAsString(),
+                                         rd->getQualifiedNameAsString()));
+  object_aliases_[pd] = *text;
+  Binding b;
+  b.kind = Binding::Value; // (no value: read only through object_text)
+  return b;
+}
+
+// A temporary object made for a helper from values of the kernel
+// (`Kokkos::MDRangePolicy<Kokkos::Rank<2>>({1, 1}, {nx - 1, ny - 1})`, a
+// RangePolicy(0, n)): a kernel-level local object of generated code,
+// constructed from the same values; nullopt where `e` is no such construction.
+std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXRecordDecl* rd) {
+  const auto* c = dyn_cast<CXXConstructExpr>(e);
+  if (!c || !loops_.empty() || rd->isInStdNamespace() || !rd->hasDefinition())
+    return std::nullopt;
+  // each argument a value of the kernel, or a brace list of them
+  std::function<std::optional<std::string>(const clang::Expr*)> arg =
+      [&](const clang::Expr* a) -> std::optional<std::string> {
+    a = a->IgnoreImplicit()->IgnoreParenImpCasts();
+    if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(a))
+      a = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+    if (const auto* cc = dyn_cast<CXXConstructExpr>(a); cc && cc->getNumArgs() == 1 &&
+                                                        cc->getConstructor()->isCopyOrMoveConstructor())
+      return arg(cc->getArg(0));
+    if (const auto* il = dyn_cast<InitListExpr>(a)) {
+      if (il->isSyntacticForm() == false && il->getSyntacticForm())
+        il = il->getSyntacticForm();
+      std::vector<std::string> items;
+      for (const clang::Expr* x : il->inits()) {
+        auto t = arg(x);
+        if (!t)
+          return std::nullopt;
+        items.push_back(*t);
+      }
+      return fmt::format("{{{}}}", fmt::join(items, ", "));
+    }
+    if (!scalar_type(a->getType()))
+      return std::nullopt;
+    ExprP v = expr(a);
+    if (any_node(v, [](const ExprP& x) {
+          return x->op == Op::LoopVar || x->op == Op::Read || is_real(x->type);
+        }))
+      return std::nullopt;
+    return print(v);
+  };
+  std::vector<std::string> args;
+  for (const clang::Expr* a : c->arguments()) {
+    auto t = arg(a);
+    if (!t)
+      return std::nullopt;
+    args.push_back(*t);
+  }
+  std::string name = "dpgen_object";
+  // (a dpgen_ name: the prefix is dpgen's own, no kernel may use it)
+  for (int n = 1; local_names_.count(name) || k_.names.count(name); ++n)
+    name = fmt::format("dpgen_object_{}", n);
+  auto l = std::make_shared<LocalVar>();
+  l->name = name;
+  l->type_name = "auto";
+  l->def = param(fmt::format("{}({})", spelled(e->getType()), fmt::join(args, ", ")), Type::Int);
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  l->opaque = true;
+  local_names_.insert(name);
+  k_.kernel_locals.push_back(l);
+  return name;
 }
 
 } // namespace dpgen::lowering
