@@ -584,6 +584,9 @@ std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clan
   const clang::Expr* a = arg->IgnoreImplicit()->IgnoreParenImpCasts();
   if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(a))
     a = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* c = dyn_cast<CXXConstructExpr>(a); // passed by value: the object copied
+      c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor())
+    a = c->getArg(0)->IgnoreImplicit()->IgnoreParenImpCasts();
   if (rd->isLambda()) {
     if (const auto* le = dyn_cast<LambdaExpr>(a))
       return lambda_binding(le, pd->getNameAsString());
