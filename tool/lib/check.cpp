@@ -462,7 +462,9 @@ private:
     int levels = k_.levels_of(x.array);
     if (levels == 0)
       return false;
-    Sym outer = Sym::size(levels == 2 ? plane_symbol(x.array) : row_symbol(x.array));
+    Sym outer = Sym::size(levels == 3   ? cube_symbol(x.array)
+                          : levels == 2 ? plane_symbol(x.array)
+                                        : row_symbol(x.array));
     auto row = [&](const Store& s) { return to_poly(s.index)->coefficient(outer); };
     auto rx = index_range(row(x), x.path, nx), ry = index_range(row(y), y.path, ny);
     if (!rx || !ry)
@@ -575,8 +577,12 @@ private:
                                  "into flat buffers; pass it as a flat pointer or "
                                  "'double (*{})[N]'",
                                  p.name, p.name));
+    // (the sums of accumulators are recomputed by generated code, which reads
+    // views; an output a later loop reads is recomputed by the user's kernel,
+    // which would have to write it through a view)
     for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && p.view)
+      if (!k_.intermediates.empty() && p.view &&
+          (k_.intermediates.count(p.name) || k_.hidden.empty()))
         fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with view parameter '{}': the adjoint "
                                  "recomputes work arrays into buffers of its own, and cannot "
                                  "make a view over one; split the kernel where the work array "
@@ -695,8 +701,7 @@ int level_rank(const Poly& c) {
   const auto& [m, k] = *c.terms().begin();
   if (m.size() != 1 || (k != 1 && k != -1) || m[0].is_counter())
     return 0;
-  return m[0].name.rfind("dpgen_planes_", 0) == 0 ? 2 : m[0].name.rfind("dpgen_rows_", 0) == 0 ? 1
-                                                                                             : 0;
+  return level_of_symbol(m[0].name);
 }
 
 int max_level_rank(const Poly& p) {

@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace dpgen {
 
 namespace {
@@ -307,6 +309,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
       h.raw(template_facade(*k, first, tangent_signature(generic_kernel(*k)),
                             tangent_signature(*k), "_tangent", args));
     }
+    h.raw(member_wrapper(*k, true));
     close_namespaces(h, *k);
     h.raw("\n");
   }
@@ -318,6 +321,10 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
         "// Forward mode: every store of the kernel followed by its directional\n"
         "// derivative, d out = sum over reads of (d out / d read) * read_dot, in the\n"
         "// kernel's own loops.\n");
+  if (std::any_of(kernels.begin(), kernels.end(),
+                  [](const Kernel* k) { return !k->member_class.empty(); }))
+    c.raw("#define DPGEN_NO_MEMBER_WRAPPERS // (they need the classes, which this file does not "
+          "see)\n");
   c.raw(fmt::format("#include \"{}_tangent.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n");
   bool hidden = false;

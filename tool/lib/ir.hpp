@@ -256,6 +256,10 @@ struct Param {
   /// only through its integer and floating members (constants of the kernel,
   /// never differentiated). A Scalar whose `spelling` is its type.
   bool object = false;
+  /// A member of a member kernel's class (Kernel::member_class) that the
+  /// method reads or writes: named as the member, before the method's own
+  /// parameters; the generated wrapper takes it from `self`.
+  bool member = false;
 };
 
 /// How many pointer levels lead to an element: 0 for a flat array (or rows
@@ -273,12 +277,26 @@ inline Shape shape_of(const Param& p) { return {pointer_levels(p), p.view}; }
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
 inline std::string plane_symbol(const std::string& array) { return "dpgen_planes_" + array; }
+/// The third level of a rank-4 view (Param::view): a(n, k, j, i) is
+/// n * C + k * P + j * R + i.
+inline std::string cube_symbol(const std::string& array) { return "dpgen_cubes_" + array; }
+/// The rank (1 rows, 2 planes, 3 cubes) of such a symbol's name; 0 for any other.
+inline int level_of_symbol(const std::string& name) {
+  return name.rfind("dpgen_cubes_", 0) == 0    ? 3
+         : name.rfind("dpgen_planes_", 0) == 0 ? 2
+         : name.rfind("dpgen_rows_", 0) == 0   ? 1
+                                               : 0;
+}
 /// The values they have in generated code: R larger than any column index, P
 /// larger than any row index times R, small enough that no product with an
 /// index overflows 64 bits. (With planes, columns stay below 2^30.)
 constexpr long long kRowSymbolValue = 1LL << 40;
 constexpr long long kPlaneRowSymbolValue = 1LL << 30;
 constexpr long long kPlaneSymbolValue = 1LL << 61;
+/// Those of a rank-4 view: every index below 2^19 in magnitude.
+constexpr long long kCubeRowSymbolValue = 1LL << 20;
+constexpr long long kCubePlaneSymbolValue = 1LL << 40;
+constexpr long long kCubeSymbolValue = 1LL << 60;
 
 struct Loop {
   std::string var;
@@ -372,6 +390,15 @@ struct Kernel {
   /// declare `gradient_adjoint<Real, Dir>` with an explicit specialization per
   /// instantiation calling the generated function.
   std::string template_name, template_head, template_args;
+  /// A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
+  /// Heat1D): the class ("Heat1D", qualified) and the method ("step"); `name`
+  /// is then "Heat1D_step_members", the generated functions over the members
+  /// (Param::member) and the method's parameters, which the wrappers
+  /// `Heat1D_step_adjoint(const Heat1D& self, ...)` and `..._tangent` call.
+  std::string member_class, member_method;
+  /// Declarations generated headers need for types the kernel's objects
+  /// name (a work tag in a policy's type: "struct FaceX;").
+  std::vector<std::string> declarations;
   std::map<std::string, std::string> generic_types;
   /// A scalar parameter's whole type as the template spells it ("const Real&").
   std::map<std::string, std::string> generic_scalars;
@@ -389,6 +416,8 @@ struct Kernel {
   /// The kernel as the user names it: "gradient<double, 0>" for an
   /// instantiation of a template kernel, else `name`.
   std::string display_name() const {
+    if (!member_class.empty())
+      return member_class + "::" + member_method;
     return template_name.empty() ? name : template_name + template_args;
   }
 

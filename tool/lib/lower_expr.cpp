@@ -160,7 +160,9 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
   // A lambda of the kernel: its call operator, the closure object first.
   unsigned first = 0;
-  if (const auto* m = dyn_cast<CXXMethodDecl>(def); m && m->getParent()->isLambda()) {
+  std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
+  if (const auto* m = dyn_cast<CXXMethodDecl>(def);
+      m && (m->getParent()->isLambda() || is_functor_class(m->getParent()))) {
     const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
     const auto* ref =
         oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
@@ -171,6 +173,8 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     if (it == env_.end() || it->second.kind != Binding::Lambda)
       fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
                              "(auto f = [&](...) {...}; f(...))");
+    if (it->second.functor && it->second.fields) // its members, while its body runs
+      functor_fields = it->second.fields;
     if (!m->isConst())
       fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
                                          "changes from one call to the next, which inlining "
@@ -261,7 +265,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     }
     if (pt->isPointerType()) {
       const clang::Expr* base = arg->IgnoreParenImpCasts();
-      const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
+      const Param* ap = isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? array_base(base) : nullptr;
       if (!ap)
         fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
                                              "'{}' must be an array parameter of the kernel "
@@ -296,14 +300,23 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
   for (const auto& [pd, b] : binds)
     env_[pd] = b;
   frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
+  std::map<const FieldDecl*, Binding> outer_fields;
+  if (functor_fields) {
+    outer_fields = fields_;
+    fields_ = *functor_fields;
+  }
   Escape e;
   try {
     e = lower(def->getBody());
   } catch (const Rejected&) {
     path_.resize(frames_.back().path_depth);
     frames_.pop_back();
+    if (functor_fields)
+      fields_ = outer_fields;
     throw;
   }
+  if (functor_fields)
+    fields_ = outer_fields;
   InlineFrame fr = frames_.back();
   frames_.pop_back();
   path_.resize(fr.path_depth);
@@ -452,6 +465,9 @@ const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {
 }
 
 const Param* Lowerer::array_base(const clang::Expr* base) {
+  if (isa<MemberExpr>(base->IgnoreParenImpCasts())) // `u_[i]` of a member kernel's array
+    if (const Binding* b = bound(base); b && b->kind == Binding::ArrayParam)
+      return b->param;
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref) {
     if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
@@ -473,6 +489,13 @@ const Param* Lowerer::array_base(const clang::Expr* base) {
 
 ExprP Lowerer::expr(const clang::Expr* e) {
   e = e->IgnoreParens();
+  if (isa<MemberExpr>(e->IgnoreParenImpCasts())) { // `nu_` of a member kernel or a functor
+    const Binding* b = bound(e);
+    if (b && b->kind == Binding::ScalarParam && !b->param->object)
+      return scalar_param(b->param->name, b->param->elem);
+    if (b && b->kind == Binding::Value && b->value)
+      return *b->value;
+  }
   if (auto v = object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
     return *v;
   if (const auto* c = dyn_cast<ImplicitCastExpr>(e))

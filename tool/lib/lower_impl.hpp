@@ -55,6 +55,11 @@ struct Binding {
   // Value: a helper's pointer parameter bound to a caller's local (`&f`),
   // used only as `*p`; the binding holds the local's value.
   bool deref_only = false;
+  // Lambda: a functor object (a class with a void operator()), run like a
+  // lambda; its members' bindings (`GradMagnitude{phi, gsq, 0.5 * dxinv}`),
+  // or null for `*this` of a member kernel (whose members are fields_).
+  bool functor = false;
+  std::shared_ptr<std::map<const clang::FieldDecl*, Binding>> fields;
 };
 
 // An error at `loc` through Clang (which shows the line and any macro
@@ -76,7 +81,7 @@ public:
   // run reports every error of a kernel. A variable whose declaration failed
   // is poisoned: its uses are not reported again.
   bool failed_ = false;
-  std::set<const VarDecl*> poisoned_;
+  std::set<const ValueDecl*> poisoned_; // parameters, locals, members
 
   // Lowers `s`; on an error (already reported) marks the kernel failed and
   // goes on, unless inside a helper or an unrolled loop (whose copies would
@@ -115,6 +120,7 @@ private:
   std::map<std::vector<int>, size_t> nest_index_;
   std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
   std::map<std::string, ExprP> plane_lengths_; // double*** array -> its plane symbol
+  std::map<std::string, ExprP> cube_lengths_;  // rank-4 view -> its cube symbol
   std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
   ExprP scalar_param(const std::string& name, Type t) {
     auto it = signed_views_.find(name);
@@ -454,15 +460,29 @@ private:
 
   std::optional<Access> element(const clang::Expr* e);
 
+  // ---- member kernels (lower_view.cpp) ---------------------------------------
+
+  // The class of a member kernel (null for a free one), and its members'
+  // bindings (Param::member), as env_ binds variables.
+  const CXXRecordDecl* self_class_ = nullptr;
+  std::map<const FieldDecl*, Binding> fields_;
+  // The members of self_class_ that the kernel's method, the lambdas in it
+  // and the class's call operators name through `this`.
+  std::set<const FieldDecl*> used_fields() const;
+  // What `e` names: a variable (env_) or a member of the kernel's object
+  // (`u_`, `this->u_`: fields_); null for anything else. Throws Rejected for
+  // a poisoned one (its error is reported already).
+  const Binding* bound(const clang::Expr* e) const;
+
   // ---- array views and objects (lower_view.cpp) ----------------------------
 
   // A class with an operator() or operator[]: a parameter of it is a view.
   bool is_view_class(const CXXRecordDecl* rd) const;
   // The Param of a view parameter (Param::view), or of an object one
   // (Param::object); fail on what is outside the subset.
-  void view_param(const ParmVarDecl* p, const std::string& ann, Param& out);
-  void object_param(const ParmVarDecl* p, const std::string& ann, Param& out);
-  std::string mutable_view_type(const ParmVarDecl* p) const;
+  void view_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
+  void object_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
+  std::string mutable_view_type(const DeclaratorDecl* p) const;
   std::string without_element_const(QualType t, bool& changed) const;
   // The kernel file's #include line that brings in class `rd` (for the
   // generated headers); fails if the kernel file defines it.
@@ -492,6 +512,24 @@ private:
   std::optional<Binding> class_argument(const ParmVarDecl* pd, const clang::Expr* arg,
                                         const FunctionDecl* helper);
   std::map<const VarDecl*, std::string> object_aliases_;
+  // Loops of an inlined helper or lambda (a library parallel-for's): their
+  // iterations run in parallel under the library's semantics.
+  std::set<const Loop*> library_loops_;
+  // Statements of the kernel itself, or of the body of a parallel-for (a
+  // lambda's or functor's call operator): where a local may accumulate.
+  bool in_loop_body_frame() const {
+    if (frames_.empty())
+      return true;
+    const auto* m = dyn_cast<CXXMethodDecl>(frames_.back().fn);
+    return m && (m->getParent()->isLambda() || is_functor_class(m->getParent())) &&
+           m->getReturnType()->isVoidType();
+  }
+  // A class whose operator() returns void: a functor (a parallel-for body).
+  bool is_functor_class(const CXXRecordDecl* rd) const;
+  // The binding of a functor object made by `init`: `*this` of a member
+  // kernel, an aggregate initialization from the kernel's views, arrays and
+  // values; fails on anything else.
+  Binding functor_binding(const clang::Expr* init, const CXXRecordDecl* rd);
   std::optional<std::string> materialize(const clang::Expr* e, const CXXRecordDecl* rd);
   // The Binding of a lambda expression, its captures by copy recorded
   // (declare_lambda, a lambda passed to a helper).

@@ -346,7 +346,7 @@ void Lowerer::for_loop(const ForStmt* f) {
   // the loop): a hidden work array each (start_accumulator).
   std::vector<const VarDecl*> accumulating;
   for (const VarDecl* v : assigned)
-    if (frames_.empty() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
+    if (in_loop_body_frame() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
         start_accumulator(v, f->getForLoc()))
       accumulating.push_back(v);
   for (const VarDecl* v : assigned) {
@@ -378,10 +378,13 @@ void Lowerer::for_loop(const ForStmt* f) {
                      true});
   }
   loops_.push_back(loop);
+  if (!in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
+    library_loops_.insert(loop.get());
   loop_ids_.push_back(next_loop_id_++);
   segments_.push_back(--next_segment_);
   Escape e = lower_recovering(f->getBody());
   (void)e; // a body ending in continue is fine
+  library_loops_.erase(loop.get());
   loops_.pop_back();
   loop_ids_.pop_back();
   segments_.pop_back();

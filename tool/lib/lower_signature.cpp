@@ -22,8 +22,25 @@ ExprP Lowerer::opaque_symbol(const std::string& name, long long value) {
 }
 
 void Lowerer::header() {
-  if (isa<CXXMethodDecl>(fn_))
-    fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
+  // A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
+  // Heat1D): the members it reads are parameters before the method's own,
+  // the annotated ones arrays (Kernel::member_class).
+  const auto* method = dyn_cast<CXXMethodDecl>(fn_);
+  if (method && (method->isStatic() || method->getParent()->isLambda()))
+    method = nullptr; // (a static member function is a free function in a class)
+  if (method) {
+    const CXXRecordDecl* rd = method->getParent();
+    if (rd->isDependentContext() || isa<ClassTemplateSpecializationDecl>(rd))
+      fail(fn_->getLocation(), "a member kernel of a class template is outside the kernel "
+                               "subset: make the kernel a member of a class",
+           "dpgen-signature");
+    if (isa<CXXConstructorDecl>(method) || isa<CXXDestructorDecl>(method) ||
+        method->isOverloadedOperator())
+      fail(fn_->getLocation(), "a member kernel is a named method (not a constructor, "
+                               "destructor or operator)",
+           "dpgen-signature");
+    self_class_ = rd;
+  }
   // (a template kernel is lowered per instantiation, find.cpp)
   if (fn_->isTemplated() || (fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate &&
                              fn_->getTemplatedKind() !=
@@ -45,6 +62,11 @@ void Lowerer::header() {
     fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
 
   k_.name = fn_->getNameAsString();
+  if (self_class_) {
+    k_.member_class = self_class_->getQualifiedNameAsString();
+    k_.member_method = k_.name;
+    k_.name = fmt::format("{}_{}_members", self_class_->getNameAsString(), k_.member_method);
+  }
   k_.pos = pos(fn_->getLocation());
   for (const DeclContext* dc = fn_->getDeclContext(); dc; dc = dc->getParent())
     if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
@@ -54,7 +76,7 @@ void Lowerer::header() {
   // One parameter; an error in it is reported, the parameter poisoned (its
   // uses are not reported again) and the rest of the kernel still lowered,
   // so one run reports every error of the file.
-  auto parameter = [&](const ParmVarDecl* p) {
+  auto parameter = [&](const DeclaratorDecl* p) {
     Param out;
     out.name = p->getNameAsString();
     std::string ann = annotation(p);
@@ -91,7 +113,7 @@ void Lowerer::header() {
       out.kind = ParamKind::Scalar;
       out.tag = true;
       out.elem = Type::Bool; // (no number: never shown or checked)
-      out.name = fmt::format("dpgen_tag_{}", p->getFunctionScopeIndex());
+      out.name = fmt::format("dpgen_tag_{}", llvm::cast<ParmVarDecl>(p)->getFunctionScopeIndex());
       out.elem_name = type;
       out.spelling = "const " + type + "&";
       out.declaration = type + " " + out.name;
@@ -329,6 +351,25 @@ void Lowerer::header() {
     }
   };
   bool params_ok = true;
+  // The members first, in declaration order: those the method (and the
+  // lambdas and call operators of its class it runs) reads or writes.
+  if (self_class_) {
+    std::set<const FieldDecl*> used = used_fields();
+    for (const FieldDecl* f : self_class_->fields()) {
+      if (!used.count(f))
+        continue;
+      try {
+        size_t before = k_.params.size();
+        parameter(f);
+        for (size_t i = before; i < k_.params.size(); ++i)
+          k_.params[i].member = true;
+      } catch (const Rejected&) {
+        failed_ = true;
+        params_ok = false;
+        poisoned_.insert(f);
+      }
+    }
+  }
   for (const ParmVarDecl* p : fn_->parameters()) {
     try {
       parameter(p);
@@ -410,6 +451,12 @@ void Lowerer::header() {
     b.param = &p;
     if (p.global) {
       env_[global_decls_.at(p.name)] = b;
+      continue;
+    }
+    if (p.member) {
+      for (const FieldDecl* f : self_class_->fields())
+        if (f->getNameAsString() == p.name && !poisoned_.count(f))
+          fields_[f] = b;
       continue;
     }
     for (const ParmVarDecl* decl : fn_->parameters())

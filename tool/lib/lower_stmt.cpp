@@ -262,6 +262,11 @@ void Lowerer::declare(const Decl* d) {
   }
   if (declare_object(v)) // const auto lo = amrex::lbound(bx);
     return;
+  if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
+      rd && is_functor_class(rd) && v->getInit()) { // const GradientFluxes f{phi, fx, ...};
+    env_[v] = functor_binding(v->getInit(), rd);
+    return;
+  }
   if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
     declare_array(v, ctx_.getAsConstantArrayType(
                          ctx_.getConstantArrayType(sa->first, llvm::APInt(64, sa->second),
@@ -350,6 +355,8 @@ Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
   b.kind = Binding::Lambda;
   b.closure = le->getLambdaClass();
   for (const LambdaCapture& c : le->captures()) {
+    if (c.capturesThis() && self_class_) // a member kernel's object: its members are read-only
+      continue;
     if (!c.capturesVariable() || le->isInitCapture(&c))
       fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
                                         "kernel's variables (this, or an init-capture)",
@@ -628,6 +635,21 @@ bool Lowerer::is_prefix(const std::vector<PathCond>& prefix, const std::vector<P
 }
 
 void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc) {
+  // A sum into one element from the iterations of a library parallel-for
+  // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
+  // parallel semantics: refused, though a serial reading would be a sum.
+  if (accumulate && !library_loops_.empty()) {
+    auto pi = to_poly(idx);
+    for (const auto& l : loops_)
+      if (library_loops_.count(l.get()) && (!pi || !pi->mentions_counter(l->var)))
+        fail(loc, fmt::format("'+=' into '{}' in the body of a parallel-for ('{}'), at an "
+                              "element its iterations over '{}' share: a data race under the "
+                              "library's parallel semantics; write the sum as a loop nest of the "
+                              "kernel (a parallel_reduce is outside the kernel subset)",
+                              array, frames_.empty() ? "?" : frames_.front().fn->getNameAsString(),
+                              l->var),
+             "dpgen-loop");
+  }
   // Updating an element this nest stored, after a later nest stored the
   // array too: the update goes after that nest.
   if (auto it = nest_index_.find(cur_key()); it != nest_index_.end())

@@ -40,7 +40,22 @@ QualType without_const(QualType t, ASTContext& ctx) {
 bool Lowerer::is_view_class(const CXXRecordDecl* rd) const {
   if (!rd || rd->isLambda() || rd->isInStdNamespace()) // (std::string has an operator[])
     return false;
-  // a call operator that returns an element (a functor's returns void)
+  // a pointer member (the data; an IntVect's operator[] reads an array of
+  // its own: an object) ...
+  std::function<bool(const CXXRecordDecl*)> has_pointer = [&](const CXXRecordDecl* r) {
+    if (!r || !r->hasDefinition())
+      return false;
+    for (const FieldDecl* f : r->fields())
+      if (f->getType()->isPointerType() || has_pointer(f->getType()->getAsCXXRecordDecl()))
+        return true;
+    for (const CXXBaseSpecifier& b : r->bases())
+      if (has_pointer(b.getType()->getAsCXXRecordDecl()))
+        return true;
+    return false;
+  };
+  if (!has_pointer(rd))
+    return false;
+  // ... and a call operator that returns an element (a functor's returns void)
   for (const NamedDecl* d : call_operators(rd, ctx_)) {
     const FunctionDecl* f = d->getAsFunction();
     if (f && !f->getReturnType()->isVoidType())
@@ -134,7 +149,7 @@ std::string Lowerer::without_element_const(QualType t, bool& changed) const {
                      fmt::join(args, ", "));
 }
 
-std::string Lowerer::mutable_view_type(const ParmVarDecl* p) const {
+std::string Lowerer::mutable_view_type(const DeclaratorDecl* p) const {
   QualType q = p->getType();
   bool ref = q->isReferenceType();
   QualType cls = q.getNonReferenceType();
@@ -156,7 +171,7 @@ std::string Lowerer::mutable_view_type(const ParmVarDecl* p) const {
   return shallow ? "const " + type + "&" : type + "&";
 }
 
-void Lowerer::view_param(const ParmVarDecl* p, const std::string& ann, Param& out) {
+void Lowerer::view_param(const DeclaratorDecl* p, const std::string& ann, Param& out) {
   const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
   if (ann == "dpgen.inout")
     fail(p->getLocation(), fmt::format("DPGEN_INOUT view '{}': pass its old values and its new "
@@ -212,7 +227,7 @@ void Lowerer::view_param(const ParmVarDecl* p, const std::string& ann, Param& ou
   out.tag_declaration = include_for(rd, p->getLocation(), fmt::format("view '{}'", out.name));
 }
 
-void Lowerer::object_param(const ParmVarDecl* p, const std::string& ann, Param& out) {
+void Lowerer::object_param(const DeclaratorDecl* p, const std::string& ann, Param& out) {
   const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
   if (!ann.empty() && ann != "dpgen.const")
     fail(p->getLocation(), fmt::format("parameter '{}' of class '{}' is no array view (it has "
@@ -233,14 +248,23 @@ void Lowerer::object_param(const ParmVarDecl* p, const std::string& ann, Param& 
 }
 
 ExprP Lowerer::level_symbol(const Param& p, int level) {
-  auto& table = level == 1 ? row_lengths_ : plane_lengths_;
+  auto& table = level == 1 ? row_lengths_ : level == 2 ? plane_lengths_ : cube_lengths_;
   auto it = table.find(p.name);
   if (it != table.end())
     return it->second;
-  ExprP s = level == 1 ? opaque_symbol(row_symbol(p.name), pointer_levels(p) == 2
-                                                                ? kPlaneRowSymbolValue
-                                                                : kRowSymbolValue)
-                       : opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
+  // each level's value above any offset within it (ir.hpp)
+  const int levels = pointer_levels(p);
+  long long value = 0;
+  if (level == 1)
+    value = levels == 3 ? kCubeRowSymbolValue : levels == 2 ? kPlaneRowSymbolValue : kRowSymbolValue;
+  else if (level == 2)
+    value = levels == 3 ? kCubePlaneSymbolValue : kPlaneSymbolValue;
+  else
+    value = kCubeSymbolValue;
+  const std::string name = level == 1   ? row_symbol(p.name)
+                           : level == 2 ? plane_symbol(p.name)
+                                        : cube_symbol(p.name);
+  ExprP s = opaque_symbol(name, value);
   table[p.name] = s;
   return s;
 }
@@ -379,16 +403,10 @@ void Lowerer::check_layout(const FunctionDecl* op, const Param& p, SourceLocatio
 auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Access> {
   if (oc->getOperator() != OO_Call && oc->getOperator() != OO_Subscript)
     return std::nullopt;
-  const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
-  const auto* ref = dyn_cast<DeclRefExpr>(base);
-  if (!ref)
+  const Binding* b = bound(oc->getArg(0)); // (throws for a poisoned one)
+  if (!b || b->kind != Binding::ArrayParam || !b->param->view)
     return std::nullopt;
-  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && poisoned_.count(v))
-    throw Rejected{}; // its declaration's error is reported already
-  auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
-  if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->view)
-    return std::nullopt;
-  const Param* p = it->second.param;
+  const Param* p = b->param;
   const FunctionDecl* op = oc->getDirectCallee();
   if (!op)
     fail(oc->getBeginLoc(), fmt::format("view '{}': dpgen cannot see which operator() this is",
@@ -400,10 +418,9 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
     fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with [] : index it with its "
                                         "operator(), {}(i)",
                                         p->name, p->name));
-  if (rank < 1 || rank > 3)
+  if (rank < 1 || rank > 4)
     fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with {} indices: dpgen takes "
-                                        "views of rank 1 to 3 (a component index is a view "
-                                        "per component, or a rank-3 view)",
+                                        "views of rank 1 to 4",
                                         p->name, rank));
   if (p->view_rank != 0 && p->view_rank != static_cast<int>(rank))
     fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with {} indices here and {} "
@@ -420,11 +437,12 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
     if (rank > 1 && !to_poly(x))
       fail(oc->getArg(d)->getBeginLoc(),
            fmt::format("view '{}' is indexed at a data-dependent position; dpgen needs every "
-                       "index of a view of rank 2 or 3 affine in the loop counters and sizes",
+                       "index of a view of rank 2 to 4 affine in the loop counters and sizes",
                        p->name));
     idx.push_back(x);
   }
-  // a(k, j, i): k * P + j * R + i (the innermost index last)
+  // a(k, j, i): k * P + j * R + i (the innermost index last); a(n, k, j, i)
+  // adds n * C
   ExprP flat = idx.back();
   for (unsigned d = 0; d + 1 < rank; ++d) {
     int level = static_cast<int>(rank - 1 - d);
@@ -458,6 +476,12 @@ std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
   }
   if (const auto* l = dyn_cast<IntegerLiteral>(e))
     return std::to_string(l->getValue().getSExtValue());
+  if (const Binding* b = isa<MemberExpr>(e) ? bound(e) : nullptr) {
+    // a view or object member of a member kernel's class: its parameter
+    if (b->param && (b->param->view || b->param->object))
+      return b->param->name;
+    return std::nullopt;
+  }
   if (const auto* m = dyn_cast<MemberExpr>(e)) {
     if (!isa<FieldDecl>(m->getMemberDecl()) && !isa<CXXMethodDecl>(m->getMemberDecl()))
       return std::nullopt;
@@ -485,10 +509,10 @@ std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
   }
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
       oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
-    // an element of a std::array object at a constant index (`lo[0]`)
+    // an element of an object (a std::array, an IntVect) at a constant index (`lo[0]`)
     const CXXRecordDecl* rd = oc->getArg(0)->getType()->getAsCXXRecordDecl();
     clang::Expr::EvalResult r;
-    if (!rd || !rd->isInStdNamespace() || !oc->getArg(1)->EvaluateAsInt(r, ctx_))
+    if (!rd || is_view_class(rd) || !oc->getArg(1)->EvaluateAsInt(r, ctx_))
       return std::nullopt;
     auto base = object_text(oc->getArg(0));
     if (!base)
@@ -587,9 +611,16 @@ std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clan
   if (const auto* c = dyn_cast<CXXConstructExpr>(a); // passed by value: the object copied
       c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor())
     a = c->getArg(0)->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (rd->isLambda()) {
+  if (rd->isEmpty() && !rd->isLambda() && !is_functor_class(rd)) {
+    Binding b; // a tag (`Tag{}` choosing an overload): no value
+    b.kind = Binding::Value;
+    return b;
+  }
+  if (rd->isLambda() || is_functor_class(rd)) {
     if (const auto* le = dyn_cast<LambdaExpr>(a))
       return lambda_binding(le, pd->getNameAsString());
+    if (!isa<DeclRefExpr>(a))
+      return functor_binding(a, rd);
     if (const auto* r = dyn_cast<DeclRefExpr>(a))
       if (const auto* v = dyn_cast<VarDecl>(r->getDecl())) {
         auto it = env_.find(v);
@@ -597,7 +628,7 @@ std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clan
           return it->second;
       }
     fail(arg->getBeginLoc(), fmt::format("argument for parameter '{}' of helper '{}' must be a "
-                                         "lambda expression or a local holding one",
+                                         "lambda expression or a functor, or a local holding one",
                                          pd->getNameAsString(), helper->getNameAsString()),
          "dpgen-lambda");
   }
@@ -605,16 +636,12 @@ std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clan
       !is_view_class(rd))
     return std::nullopt; // (an out-parameter: not a class the kernel can pass)
   if (is_view_class(rd)) {
-    const auto* r = dyn_cast<DeclRefExpr>(a);
-    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = v ? env_.find(v) : env_.end();
-    if (v && poisoned_.count(v))
-      throw Rejected{};
-    if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->view)
+    const Binding* b = bound(a);
+    if (!b || b->kind != Binding::ArrayParam || !b->param->view)
       fail(arg->getBeginLoc(), fmt::format("argument for view parameter '{}' of helper '{}' "
                                            "must be a view parameter of the kernel",
                                            pd->getNameAsString(), helper->getNameAsString()));
-    return it->second;
+    return *b;
   }
   auto text = object_text(a);
   if (!text)
@@ -685,6 +712,38 @@ std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXR
       return std::nullopt;
     args.push_back(*t);
   }
+  // Classes of the kernel file in its type (a work tag: MDRangePolicy<FaceX,
+  // Rank<2>>) are declared by the generated files; they must be empty.
+  std::function<bool(QualType)> declarable = [&](QualType t) {
+    const CXXRecordDecl* r = t->getAsCXXRecordDecl();
+    if (!r)
+      return true;
+    if (sm_.getFileID(sm_.getExpansionLoc(r->getLocation())) == sm_.getMainFileID()) {
+      if (!r->isEmpty() || isa<ClassTemplateSpecializationDecl>(r) ||
+          !r->getDeclContext()->getRedeclContext()->isFileContext())
+        return false;
+      std::string decl = fmt::format("struct {};", r->getNameAsString());
+      for (const DeclContext* dc = r->getDeclContext(); dc; dc = dc->getParent())
+        if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+          decl = fmt::format("namespace {} {{ {} }}", ns->getNameAsString(), decl);
+      if (std::find(k_.declarations.begin(), k_.declarations.end(), decl) ==
+          k_.declarations.end())
+        k_.declarations.push_back(decl);
+      return true;
+    }
+    if (const auto* spec = dyn_cast<ClassTemplateSpecializationDecl>(r))
+      for (const TemplateArgument& a : spec->getTemplateArgs().asArray()) {
+        if (a.getKind() == TemplateArgument::Type && !declarable(a.getAsType()))
+          return false;
+        if (a.getKind() == TemplateArgument::Pack)
+          for (const TemplateArgument& x : a.pack_elements())
+            if (x.getKind() == TemplateArgument::Type && !declarable(x.getAsType()))
+              return false;
+      }
+    return true;
+  };
+  if (!declarable(e->getType()))
+    return std::nullopt;
   std::string name = "dpgen_object";
   // (a dpgen_ name: the prefix is dpgen's own, no kernel may use it)
   for (int n = 1; local_names_.count(name) || k_.names.count(name); ++n)
@@ -699,6 +758,123 @@ std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXR
   local_names_.insert(name);
   k_.kernel_locals.push_back(l);
   return name;
+}
+
+const Binding* Lowerer::bound(const clang::Expr* e) const {
+  e = e->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
+    const auto* v = dyn_cast<VarDecl>(r->getDecl());
+    if (!v)
+      return nullptr;
+    if (poisoned_.count(v))
+      throw Rejected{};
+    auto it = env_.find(v);
+    return it == env_.end() ? nullptr : &it->second;
+  }
+  const auto* m = dyn_cast<MemberExpr>(e);
+  const auto* f = m ? dyn_cast<FieldDecl>(m->getMemberDecl()) : nullptr;
+  if (!f || !isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
+    return nullptr;
+  if (poisoned_.count(f))
+    throw Rejected{};
+  auto it = fields_.find(f);
+  return it == fields_.end() ? nullptr : &it->second;
+}
+
+std::set<const FieldDecl*> Lowerer::used_fields() const {
+  std::set<const FieldDecl*> out;
+  std::function<void(const Stmt*)> walk = [&](const Stmt* s) {
+    if (!s)
+      return;
+    if (const auto* m = dyn_cast<MemberExpr>(s))
+      if (const auto* f = dyn_cast<FieldDecl>(m->getMemberDecl());
+          f && f->getParent() == self_class_ &&
+          isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
+        out.insert(f);
+    if (const auto* le = dyn_cast<LambdaExpr>(s))
+      walk(le->getBody());
+    for (const Stmt* c : s->children())
+      walk(c);
+  };
+  walk(fn_->getBody());
+  // the class's call operators (a functor run by a parallel-for on *this)
+  for (const CXXMethodDecl* m : self_class_->methods())
+    if (m->isOverloadedOperator() && m->getOverloadedOperator() == OO_Call && m->hasBody())
+      walk(m->getBody());
+  return out;
+}
+
+bool Lowerer::is_functor_class(const CXXRecordDecl* rd) const {
+  if (!rd || rd->isLambda() || !rd->hasDefinition() || rd->isInStdNamespace())
+    return false;
+  for (const NamedDecl* d : call_operators(rd, ctx_)) {
+    const FunctionDecl* f = d->getAsFunction();
+    if (f && f->getReturnType()->isVoidType())
+      return true;
+  }
+  return false;
+}
+
+Binding Lowerer::functor_binding(const clang::Expr* init, const CXXRecordDecl* rd) {
+  const clang::Expr* e = init->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
+    e = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  if (const auto* c = dyn_cast<CXXFunctionalCastExpr>(e))
+    e = c->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  Binding b;
+  b.kind = Binding::Lambda;
+  b.functor = true;
+  b.closure = rd;
+  if (const auto* u = dyn_cast<UnaryOperator>(e);
+      u && u->getOpcode() == UO_Deref && isa<CXXThisExpr>(u->getSubExpr()->IgnoreParenImpCasts())) {
+    if (rd != self_class_)
+      fail(init->getBeginLoc(), "'*this' of a class other than the member kernel's");
+    return b; // the member kernel's own object: its members are fields_
+  }
+  const auto* il = dyn_cast<InitListExpr>(e);
+  if (!il)
+    fail(init->getBeginLoc(), fmt::format("functor '{}' must be made here from the kernel's "
+                                          "views, arrays and values ({}{{...}}, members in "
+                                          "order), or be '*this' of a member kernel",
+                                          rd->getNameAsString(), rd->getNameAsString()),
+         "dpgen-lambda");
+  b.fields = std::make_shared<std::map<const FieldDecl*, Binding>>();
+  unsigned i = 0;
+  for (const FieldDecl* f : rd->fields()) {
+    if (i >= il->getNumInits())
+      fail(il->getBeginLoc(), fmt::format("functor '{}': member '{}' has no value here",
+                                          rd->getNameAsString(), f->getNameAsString()),
+           "dpgen-lambda");
+    const clang::Expr* v = il->getInit(i++);
+    QualType t = f->getType();
+    const CXXRecordDecl* frd = t->getAsCXXRecordDecl();
+    if (t->isPointerType() || (frd && is_view_class(frd))) {
+      // (a view member is copied, or converted to const elements, from the kernel's)
+      const clang::Expr* src = v->IgnoreImplicit()->IgnoreParenImpCasts();
+      if (const auto* cc = dyn_cast<CXXConstructExpr>(src); cc && cc->getNumArgs() == 1)
+        src = cc->getArg(0);
+      const Binding* a = bound(src);
+      if (!a || a->kind != Binding::ArrayParam)
+        fail(v->getBeginLoc(), fmt::format("member '{}' of functor '{}' must be made from an "
+                                           "array or view parameter of the kernel",
+                                           f->getNameAsString(), rd->getNameAsString()),
+             "dpgen-lambda");
+      (*b.fields)[f] = *a;
+      continue;
+    }
+    auto st = scalar_type(t);
+    if (!st)
+      fail(v->getBeginLoc(), fmt::format("member '{}' of functor '{}' has type '{}', outside the "
+                                         "kernel subset (views, arrays and numbers)",
+                                         f->getNameAsString(), rd->getNameAsString(),
+                                         t.getAsString()),
+           "dpgen-lambda");
+    Binding value;
+    value.kind = Binding::Value;
+    value.value = cast(expr(v), *st);
+    (*b.fields)[f] = value;
+  }
+  return b;
 }
 
 } // namespace dpgen::lowering

@@ -69,6 +69,13 @@ namespace {
 // k * P + j * R + i (ir.hpp: row_symbol, plane_symbol); a missing symbol is
 // level 0 (row 0).
 std::vector<std::string> level_indices(const Poly& index, int levels) {
+  if (levels >= 3) { // a rank-4 view: n * C + (k * P + j * R + i)
+    auto cubes = symbol_in(index, "dpgen_cubes_");
+    std::vector<std::string> out = {cubes ? index.coefficient(*cubes).code() : "0"};
+    auto rest = level_indices(cubes ? index.without(*cubes) : index, 2);
+    out.insert(out.end(), rest.begin(), rest.end());
+    return out;
+  }
   if (levels >= 2) {
     auto planes = symbol_in(index, "dpgen_planes_");
     std::vector<std::string> out = {planes ? index.coefficient(*planes).code() : "0"};
@@ -82,7 +89,8 @@ std::vector<std::string> level_indices(const Poly& index, int levels) {
       return {"0", index.code()};
     return {index.coefficient(*rows).code(), index.without(*rows).code()};
   }
-  if (symbol_in(index, "dpgen_rows_") || symbol_in(index, "dpgen_planes_"))
+  if (symbol_in(index, "dpgen_rows_") || symbol_in(index, "dpgen_planes_") ||
+      symbol_in(index, "dpgen_cubes_"))
     throw std::logic_error("internal error: subscript: a row or plane symbol in the index of a "
                            "flat array: " + index.code());
   return {index.code()};
