@@ -21,10 +21,10 @@ DPGEN_KERNEL void scrambled(DPGEN_IN Scrambled u, DPGEN_OUT double* v, int n) {
   // CHECK: views.cpp:[[@LINE-1]]:12: error: view 'u': Scrambled::operator() does not map distinct indices to distinct elements as a layout does: its index is not a sum of the indices times members or constants [dpgen-signature]
 }
 
-DPGEN_KERNEL void four(DPGEN_IN Four u, DPGEN_OUT double* v, int n) {
+DPGEN_KERNEL void five(DPGEN_IN Five u, DPGEN_OUT double* v, int n) {
   for (int i = 0; i < n; ++i)
-    v[i] = u(0, 0, 0, i);
-  // CHECK: views.cpp:[[@LINE-1]]:12: error: view 'u' is indexed with 4 indices: dpgen takes views of rank 1 to 3 (a component index is a view per component, or a rank-3 view) [dpgen-unsupported]
+    v[i] = u(0, 0, 0, 0, i);
+  // CHECK: views.cpp:[[@LINE-1]]:12: error: view 'u' is indexed with 5 indices: dpgen takes views of rank 1 to 4 [dpgen-unsupported]
 }
 
 struct Local {

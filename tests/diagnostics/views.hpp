@@ -14,12 +14,12 @@ struct Scrambled {
   double& operator()(int i) const { return p[scramble(i)]; }
 };
 
-// A layout, but indexed with four indices.
-struct Four {
+// A layout, but indexed with five indices.
+struct Five {
   double* p;
-  int s1, s2, s3;
-  double& operator()(int a, int b, int c, int d) const {
-    return p[a * s3 + b * s2 + c * s1 + d];
+  int s1, s2, s3, s4;
+  double& operator()(int a, int b, int c, int d, int e) const {
+    return p[a * s4 + b * s3 + c * s2 + d * s1 + e];
   }
 };
 

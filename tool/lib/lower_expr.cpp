@@ -195,7 +195,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
                                            lv->getNameAsString(), cv->getNameAsString(),
                                            cv->getNameAsString()));
     first = 1;
-  } else if (isa<CXXMethodDecl>(def) || def->isVariadic()) {
+  } else if ((isa<CXXMethodDecl>(def) && !this_call(c)) || def->isVariadic()) {
     fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
                                        "free helper functions only",
                                        def->getNameAsString()));
@@ -616,6 +616,10 @@ ExprP Lowerer::expr(const clang::Expr* e) {
         !it->second.param->container.empty() && md && md->getName() == "size" &&
         m->getNumArgs() == 0)
       return scalar_param(it->second.param->name + "_size", Type::Int);
+    // a method of the member kernel's (or the running functor's) object,
+    // on the same object: inlined like a helper, reading the same members
+    if (this_call(m) && md && md->hasBody() && !md->isVirtual())
+      return inline_call(m, md);
     fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
                           "parameter, the kernel may call size())");
   }

@@ -450,6 +450,13 @@ private:
   std::vector<InlineFrame> frames_;
 
   ExprP inline_call(const CallExpr* c, const FunctionDecl* f);
+  // `flux(a, b)` / `this->flux(a, b)` inside a member kernel or a functor's
+  // call operator: a call of a method on the same object.
+  bool this_call(const CallExpr* c) const {
+    const auto* m = dyn_cast<CXXMemberCallExpr>(c);
+    return m && (self_class_ || !fields_.empty()) &&
+           isa<CXXThisExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+  }
 
   // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
   // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).

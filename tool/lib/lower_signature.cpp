@@ -356,7 +356,7 @@ void Lowerer::header() {
   if (self_class_) {
     std::set<const FieldDecl*> used = used_fields();
     for (const FieldDecl* f : self_class_->fields()) {
-      if (!used.count(f))
+      if (!used.count(f) && annotation(f).empty()) // (every annotated one: the signature's)
         continue;
       try {
         size_t before = k_.params.size();
@@ -381,7 +381,7 @@ void Lowerer::header() {
   }
   if (returns) { // the return value: an output after every parameter
     Param r;
-    r.name = k_.name + "_return";
+    r.name = (self_class_ ? k_.member_method : k_.name) + "_return";
     r.kind = ParamKind::Out;
     r.elem = *returns;
     r.elem_name = spelled(ret.getUnqualifiedType());
@@ -407,9 +407,9 @@ void Lowerer::header() {
   if (!any_in && params_ok)
     fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                          "nothing to differentiate",
-                                         k_.name), "dpgen-signature");
+                                         k_.display_name()), "dpgen-signature");
   if (!any_out && params_ok)
-    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.name), "dpgen-signature");
+    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.display_name()), "dpgen-signature");
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
   // code, kRowSymbolValue, is only ever compared, never used as an address).

@@ -783,9 +783,16 @@ const Binding* Lowerer::bound(const clang::Expr* e) const {
 
 std::set<const FieldDecl*> Lowerer::used_fields() const {
   std::set<const FieldDecl*> out;
+  std::set<const FunctionDecl*> seen;
   std::function<void(const Stmt*)> walk = [&](const Stmt* s) {
     if (!s)
       return;
+    if (const auto* mc = dyn_cast<CXXMemberCallExpr>(s)) // a method on this: its body too
+      if (const CXXMethodDecl* md = mc->getMethodDecl();
+          md && md->getParent() == self_class_ && md->hasBody() &&
+          isa<CXXThisExpr>(mc->getImplicitObjectArgument()->IgnoreParenImpCasts()) &&
+          seen.insert(md).second)
+        walk(md->getBody());
     if (const auto* m = dyn_cast<MemberExpr>(s))
       if (const auto* f = dyn_cast<FieldDecl>(m->getMemberDecl());
           f && f->getParent() == self_class_ &&
