@@ -27,6 +27,37 @@ std::vector<const NamedDecl*> call_operators(const CXXRecordDecl* rd, ASTContext
   return out;
 }
 
+// `e` without what only copies or converts it: implicit nodes, temporaries,
+// copy and move constructions, a functional cast (`T{...}`): the object made.
+const clang::Expr* made_object(const clang::Expr* e) {
+  for (;;) {
+    e = e->IgnoreImplicit()->IgnoreParenImpCasts();
+    if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e)) {
+      e = m->getSubExpr();
+    } else if (const auto* c = dyn_cast<CXXConstructExpr>(e);
+               c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor()) {
+      e = c->getArg(0);
+    } else if (const auto* f = dyn_cast<CXXFunctionalCastExpr>(e)) {
+      e = f->getSubExpr();
+    } else {
+      return e;
+    }
+  }
+}
+
+// f(x) of each item joined with ", "; nullopt if any is nullopt.
+template <typename Range, typename F>
+std::optional<std::string> each_joined(const Range& items, F&& f) {
+  std::vector<std::string> out;
+  for (const auto* x : items) {
+    std::optional<std::string> t = f(x);
+    if (!t)
+      return std::nullopt;
+    out.push_back(*t);
+  }
+  return fmt::format("{}", fmt::join(out, ", "));
+}
+
 // `t` with const dropped at every level (`const double* const*` -> `double**`).
 QualType without_const(QualType t, ASTContext& ctx) {
   t = t.getCanonicalType();
@@ -452,12 +483,7 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
 }
 
 std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
-  e = e->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
-    e = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* c = dyn_cast<CXXConstructExpr>(e); // a copy: the object copied
-      c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor())
-    return object_text(c->getArg(0));
+  e = made_object(e); // (a copy: the object copied)
   if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
     const auto* v = dyn_cast<VarDecl>(r->getDecl());
     if (!v)
@@ -528,14 +554,10 @@ std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
     for (const ParmVarDecl* pv : f->parameters())
       if (pv->getType()->isReferenceType() && !pv->getType().getNonReferenceType().isConstQualified())
         return std::nullopt;
-    std::vector<std::string> args;
-    for (const clang::Expr* a : c->arguments()) {
-      auto t = object_text(a);
-      if (!t)
-        return std::nullopt;
-      args.push_back(*t);
-    }
-    return fmt::format("{}({})", f->getQualifiedNameAsString(), fmt::join(args, ", "));
+    auto args = each_joined(c->arguments(), [&](const clang::Expr* a) { return object_text(a); });
+    if (!args)
+      return std::nullopt;
+    return fmt::format("{}({})", f->getQualifiedNameAsString(), *args);
   }
   if (const auto* s = dyn_cast<ArraySubscriptExpr>(e)) {
     // a member array at a constant index (`geom.dx[0]`)
@@ -605,12 +627,7 @@ std::optional<Binding> Lowerer::class_argument(const ParmVarDecl* pd, const clan
   const CXXRecordDecl* rd = pt.getNonReferenceType()->getAsCXXRecordDecl();
   if (!rd)
     return std::nullopt;
-  const clang::Expr* a = arg->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(a))
-    a = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* c = dyn_cast<CXXConstructExpr>(a); // passed by value: the object copied
-      c && c->getNumArgs() == 1 && c->getConstructor()->isCopyOrMoveConstructor())
-    a = c->getArg(0)->IgnoreImplicit()->IgnoreParenImpCasts();
+  const clang::Expr* a = made_object(arg); // (passed by value: the object copied)
   if (rd->isEmpty() && !rd->isLambda() && !is_functor_class(rd)) {
     Binding b; // a tag (`Tag{}` choosing an overload): no value
     b.kind = Binding::Value;
@@ -678,23 +695,12 @@ std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXR
   // each argument a value of the kernel, or a brace list of them
   std::function<std::optional<std::string>(const clang::Expr*)> arg =
       [&](const clang::Expr* a) -> std::optional<std::string> {
-    a = a->IgnoreImplicit()->IgnoreParenImpCasts();
-    if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(a))
-      a = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
-    if (const auto* cc = dyn_cast<CXXConstructExpr>(a); cc && cc->getNumArgs() == 1 &&
-                                                        cc->getConstructor()->isCopyOrMoveConstructor())
-      return arg(cc->getArg(0));
+    a = made_object(a);
     if (const auto* il = dyn_cast<InitListExpr>(a)) {
       if (il->isSyntacticForm() == false && il->getSyntacticForm())
         il = il->getSyntacticForm();
-      std::vector<std::string> items;
-      for (const clang::Expr* x : il->inits()) {
-        auto t = arg(x);
-        if (!t)
-          return std::nullopt;
-        items.push_back(*t);
-      }
-      return fmt::format("{{{}}}", fmt::join(items, ", "));
+      auto items = each_joined(il->inits(), arg);
+      return items ? std::optional<std::string>("{" + *items + "}") : std::nullopt;
     }
     if (!scalar_type(a->getType()))
       return std::nullopt;
@@ -705,13 +711,9 @@ std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXR
       return std::nullopt;
     return print(v);
   };
-  std::vector<std::string> args;
-  for (const clang::Expr* a : c->arguments()) {
-    auto t = arg(a);
-    if (!t)
-      return std::nullopt;
-    args.push_back(*t);
-  }
+  std::optional<std::string> args = each_joined(c->arguments(), arg);
+  if (!args)
+    return std::nullopt;
   // Classes of the kernel file in its type (a work tag: MDRangePolicy<FaceX,
   // Rank<2>>) are declared by the generated files; they must be empty.
   std::function<bool(QualType)> declarable = [&](QualType t) {
@@ -751,7 +753,7 @@ std::optional<std::string> Lowerer::materialize(const clang::Expr* e, const CXXR
   auto l = std::make_shared<LocalVar>();
   l->name = name;
   l->type_name = "auto";
-  l->def = param(fmt::format("{}({})", spelled(e->getType()), fmt::join(args, ", ")), Type::Int);
+  l->def = param(fmt::format("{}({})", spelled(e->getType()), *args), Type::Int);
   l->id = next_local_id_++;
   l->kernel_level = true;
   l->opaque = true;
@@ -823,11 +825,7 @@ bool Lowerer::is_functor_class(const CXXRecordDecl* rd) const {
 }
 
 Binding Lowerer::functor_binding(const clang::Expr* init, const CXXRecordDecl* rd) {
-  const clang::Expr* e = init->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
-    e = m->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
-  if (const auto* c = dyn_cast<CXXFunctionalCastExpr>(e))
-    e = c->getSubExpr()->IgnoreImplicit()->IgnoreParenImpCasts();
+  const clang::Expr* e = made_object(init);
   Binding b;
   b.kind = Binding::Lambda;
   b.functor = true;
