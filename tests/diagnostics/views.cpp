@@ -4,6 +4,13 @@
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
+// A torch op takes tensors: views, objects and member kernels are refused by --torch.
+// RUN: %not %dpgen --torch %S/../styles/view_laplace2d.cpp --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s --check-prefix=TORCH
+// RUN: %not %dpgen --torch %S/../styles/member_advect.cpp --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s --check-prefix=TORCH-MEMBER
+// RUN: ls %t | %count 0
+// TORCH: view_laplace2d.cpp:{{[0-9]+}}:{{[0-9]+}}: error: kernel 'view_laplace2d': array view 'u' (grid::View2D<const double>) is no tensor; for --torch pass its data as a pointer with its sizes [dpgen-torch]
+// TORCH: view_laplace2d.cpp:{{[0-9]+}}:{{[0-9]+}}: error: kernel 'view_laplace2d': object 'h' (grid::Spacing) is no tensor; for --torch pass the numbers it holds as scalars [dpgen-torch]
+// TORCH-MEMBER: member_advect.cpp:{{[0-9]+}}:{{[0-9]+}}: error: kernel 'Advection1D::step' is a member function: a torch op has no object to call it on; for --torch write a free kernel taking the members it reads [dpgen-torch]
 #include "dpgen/annotate.hpp"
 
 #include "views.hpp"

@@ -515,10 +515,22 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
   std::set<std::string> names;
   for (const auto& plan : plans) {
     const Kernel& k = *plan.kernel;
+    if (!k.member_class.empty())
+      out.errors.push_back(error_at(
+          k, fmt::format("kernel '{}' is a member function: a torch op has no object to call it "
+                         "on; for --torch write a free kernel taking the members it reads",
+                         k.display_name())));
     for (const auto& p : k.params) {
       if (p.synthetic || !p.twin_of.empty())
         continue;
-      if (!p.container.empty())
+      if (p.view || p.object)
+        out.errors.push_back(error_at(
+            k, fmt::format("kernel '{}': {} '{}' ({}) is no tensor; for --torch pass {}",
+                           k.display_name(), p.view ? "array view" : "object", p.name,
+                           p.view ? p.view_type : p.elem_name,
+                           p.view ? "its data as a pointer with its sizes"
+                                  : "the numbers it holds as scalars")));
+      else if (!p.container.empty())
         out.errors.push_back(error_at(
             k, fmt::format("kernel '{}': std::vector parameter '{}' cannot be a torch op "
                            "argument without a copy; declare it as a pointer ({}*) for --torch",
