@@ -82,16 +82,7 @@ bool Hoister::hoistable(const ExprP& e, bool summed) const {
   std::map<const LocalVar*, bool> memo;
   if (!invariant(e, memo) || !safe_anywhere(e) || !worth_hoisting(e))
     return false;
-  bool ok = true; // its loop-level locals move with it
-  std::set<const LocalVar*> seen;
-  walk(
-      e, [&](const ExprP&) { return ok; },
-      [&](const ExprP& l) {
-        ok = ok && (l->local->kernel_level || movable(l));
-        return false;
-      },
-      seen);
-  return ok;
+  return locals_move(e); // its loop-level locals move with it
 }
 
 ExprP Hoister::operator()(const ExprP& e, bool summed) {
@@ -164,10 +155,15 @@ bool Hoister::movable(const ExprP& e) const {
   auto it = moved_.find(e->local->name);
   if (it != moved_.end() && it->second.first != print(def))
     return false;
+  return locals_move(def);
+}
+
+// Every loop-level local `e` uses (directly, not through definitions) moves.
+bool Hoister::locals_move(const ExprP& e) const {
   bool ok = true;
   std::set<const LocalVar*> seen;
   walk(
-      def, [&](const ExprP&) { return ok; },
+      e, [&](const ExprP&) { return ok; },
       [&](const ExprP& l) {
         ok = ok && (l->local->kernel_level || movable(l));
         return false;

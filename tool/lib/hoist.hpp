@@ -54,6 +54,7 @@ private:
   bool hoistable(const ExprP& e, bool summed) const;
   ExprP hoist(const ExprP& e);
   bool movable(const ExprP& local) const;
+  bool locals_move(const ExprP& e) const;
   ExprP move(const ExprP& local);
   ExprP with_moved_locals(const ExprP& e);
   std::string name_for(const ExprP& e);
