@@ -519,7 +519,8 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
 void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  const std::string out_sub = subscript(s.index, k.levels_of(s.array));
+  const ExprP out_index = hoist(s.index);
+  const std::string out_sub = subscript(out_index, k.levels_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
             u.array, u.array, s.array, out_sub);
@@ -547,7 +548,7 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
     ++opened;
   }
   std::map<int, LocalP> seed_locals;
-  collect(hoist(s.index), seed_locals, vars);
+  collect(out_index, seed_locals, vars);
   define_locals(code, seed_locals, done);
   const std::string seed = k.fresh("seed");
   code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
