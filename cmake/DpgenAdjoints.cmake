@@ -47,6 +47,7 @@ function(dpgen_add_adjoints target)
   file(MAKE_DIRECTORY ${gen_dir})
   set(generated)
   set(kernel_sources)
+  set(kernel_dirs)
   foreach(kernel IN LISTS ARG_KERNELS)
     get_filename_component(abs ${kernel} ABSOLUTE)
     get_filename_component(stem ${kernel} NAME_WE)
@@ -76,9 +77,14 @@ function(dpgen_add_adjoints target)
       VERBATIM)
     list(APPEND generated ${stamp} ${cpp} ${hpp} ${tangent_files})
     list(APPEND kernel_sources ${abs})
+    list(APPEND kernel_dirs ${kdir})
   endforeach()
+  list(REMOVE_DUPLICATES kernel_dirs)
   add_library(${target} STATIC ${kernel_sources} ${generated})
-  target_include_directories(${target} PUBLIC ${gen_dir})
+  # The generated headers include the headers of the kernels' view and object
+  # classes as the kernel files spell them ("grid_view.hpp"): the kernels'
+  # directories are on the include path of whoever includes them.
+  target_include_directories(${target} PUBLIC ${gen_dir} ${kernel_dirs})
   target_link_libraries(${target} PUBLIC dpgen::runtime)
 endfunction()
 

@@ -32,3 +32,16 @@ DPGEN_KERNEL void lambda_limiter(DPGEN_IN const double* q, DPGEN_OUT double* slo
     slope[i] = minmod(q[i] - q[i - 1], q[i + 1] - q[i]);
   }
 }
+
+// A lambda handed to a helper of the user's that runs it over a range (a
+// parallel-for of their own): the helper's loop is the kernel's.
+template <typename Body> void for_interior(int n, const Body& body) {
+  for (int i = 1; i < n - 1; ++i)
+    body(i);
+}
+
+DPGEN_KERNEL void lambda_for_each(DPGEN_IN const double* u, DPGEN_OUT double* out, int n,
+                                  double c) {
+  auto square = [](double x) { return x * x; };
+  for_interior(n, [&](int i) { out[i] = c * square(u[i + 1] - u[i - 1]) + u[i]; });
+}

@@ -45,5 +45,17 @@ TEST_CASE("styles: lambdas") {
       lambda_limiter_tangent(in[0], d[0], out[0], dout[0], n);
     };
     dpgen_test::check_adjoint(r);
+
+    dpgen_test::Problem<double> e;
+    e.in_sizes = {N};
+    e.out_sizes = {N};
+    e.forward = [&](auto in, auto out) { lambda_for_each(in[0], out[0], n, 0.3); };
+    e.adjoint = [&](auto in, auto adj, auto seed) {
+      lambda_for_each_adjoint(in[0], adj[0], seed[0], n, 0.3);
+    };
+    e.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lambda_for_each_tangent(in[0], d[0], out[0], dout[0], n, 0.3);
+    };
+    dpgen_test::check_adjoint(e);
   }
 }

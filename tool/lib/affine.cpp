@@ -181,9 +181,7 @@ bool smaller_coefficient(const Poly& a, const Poly& b) {
       (int(m.size()) == d ? top : rest) += c < 0 ? -c : c;
       for (const auto& sym : m)
         if (!sym.is_counter())
-          rank = std::max(rank, sym.name.rfind("dpgen_planes_", 0) == 0 ? 2
-                                : sym.name.rfind("dpgen_rows_", 0) == 0 ? 1
-                                                                        : 0);
+          rank = std::max(rank, level_of_symbol(sym.name));
     }
     return std::make_tuple(rank, d, top, rest, p.str());
   };

@@ -18,6 +18,12 @@
 
 namespace dpgen {
 
+// The rank of a row (1) or plane (2) symbol standing alone in a coefficient
+// (ir.hpp: row_symbol); 0 for any other coefficient.
+int level_rank(const Poly& c);
+// The highest rank of a row or plane symbol in `p` (0: none).
+int max_level_rank(const Poly& p);
+
 namespace {
 
 class Checker {
@@ -433,7 +439,7 @@ private:
 
   // The element as written in the source: "e[1][i]" for row pointers.
   std::string print_index(const Store& s) const {
-    return s.array + subscript(s.index, k_.levels_of(s.array));
+    return s.array + subscript(s.index, k_.shape_of(s.array));
   }
 
   // What holds where two stores run: their loops run, their paths hold.
@@ -456,7 +462,9 @@ private:
     int levels = k_.levels_of(x.array);
     if (levels == 0)
       return false;
-    Sym outer = Sym::size(levels == 2 ? plane_symbol(x.array) : row_symbol(x.array));
+    Sym outer = Sym::size(levels == 3   ? cube_symbol(x.array)
+                          : levels == 2 ? plane_symbol(x.array)
+                                        : row_symbol(x.array));
     auto row = [&](const Store& s) { return to_poly(s.index)->coefficient(outer); };
     auto rx = index_range(row(x), x.path, nx), ry = index_range(row(y), y.path, ny);
     if (!rx || !ry)
@@ -569,6 +577,17 @@ private:
                                  "into flat buffers; pass it as a flat pointer or "
                                  "'double (*{})[N]'",
                                  p.name, p.name));
+    // (the sums of accumulators are recomputed by generated code, which reads
+    // views; an output a later loop reads is recomputed by the user's kernel,
+    // which would have to write it through a view)
+    for (const auto& p : k_.params)
+      if (!k_.intermediates.empty() && p.view &&
+          (k_.intermediates.count(p.name) || k_.hidden.empty()))
+        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with view parameter '{}': the adjoint "
+                                 "recomputes work arrays into buffers of its own, and cannot "
+                                 "make a view over one; split the kernel where the work array "
+                                 "is complete (its adjoint is then an input's)",
+                                 work_name(*k_.intermediates.begin()), p.name));
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
         fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
@@ -648,6 +667,11 @@ private:
     const auto steps = mixed_radix(std::move(dims)); // affine.hpp
     for (size_t i = 0; i < steps.size(); ++i) {
       const Poly &c = steps[i].step, &reach = steps[i].reach;
+      // A row (plane) symbol exceeds any offset within a row (plane): the
+      // assumption about rows reached through pointers and views' layouts
+      // (ir.hpp: row_symbol, Param::view), no run-time check.
+      if (i > 0 && level_rank(c) > 0 && max_level_rank(reach) < level_rank(c))
+        continue;
       if (i > 0) {
         Poly slack = c - reach - Poly::constant(1); // must be >= 0
         if (!prove_nonneg(slack, facts)) {
@@ -670,6 +694,24 @@ private:
 };
 
 } // namespace
+
+int level_rank(const Poly& c) {
+  if (c.terms().size() != 1)
+    return 0;
+  const auto& [m, k] = *c.terms().begin();
+  if (m.size() != 1 || (k != 1 && k != -1) || m[0].is_counter())
+    return 0;
+  return level_of_symbol(m[0].name);
+}
+
+int max_level_rank(const Poly& p) {
+  int rank = 0;
+  for (const auto& [m, k] : p.terms())
+    for (const Sym& s : m)
+      if (!s.is_counter())
+        rank = std::max(rank, level_rank(Poly::of(s)));
+  return rank;
+}
 
 bool same_index(const ExprP& a, const ExprP& b) {
   auto pa = to_poly(a), pb = to_poly(b);

@@ -48,7 +48,7 @@ public:
     case Op::Read:
       if (active_) // forward mode: d a[k] = a_dot[k]
         return active_->count(e->name) ? read(e->name + "_dot", e->ops[0], e->type, e->pos,
-                                                    e->levels)
+                                                    e->shape)
                                        : zero(e->type);
       // d a[k] / d a[k] = 1 for the occurrences we differentiate by
       return reads_.count(e.get()) ? one(e) : zero(e->type);

@@ -165,7 +165,7 @@ void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, cons
   }
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {},
-                    k.levels_of(t.store->array));
+                    k.shape_of(t.store->array));
   if (factored && gs.empty() && same_everywhere) {
     std::string sum = factored->name_for(partial);
     code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
@@ -194,7 +194,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
     iter_desc += (iter_desc.empty() ? "" : ", ") + fmt::format("{} = {}", v, it.code());
   }
   const Store& s = *b.terms.front().store;
-  std::string out_sub = subscript(s.index, cx.k.levels_of(s.array));
+  std::string out_sub = subscript(s.index, cx.k.shape_of(s.array));
   std::string out_cell = s.array + out_sub;
   code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array, out_sub);
@@ -267,7 +267,7 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   Poly index = g.base;
   for (const auto& [v, c] : g.layout)
     index = index + c * Poly::symbol(cell_counter(k, v));
-  return g.array + "_adj" + subscript(index, k.levels_of(g.array));
+  return g.array + "_adj" + subscript(index, k.shape_of(g.array));
 }
 
 // One cell loop for one or more gather groups that share a layout and a cell
@@ -306,7 +306,7 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
                                  : fmt::format(", summed over {}", fmt::join(g0.reduced, ", ")));
   // A null adjoint marks an inactive input: its loop is skipped (a fused
   // loop runs only when all its inputs are active; see emit_body).
-  if (fused)
+  if (fused || k.find_param(g0.array)->view) // (a view has no null: always active)
     code.open("");
   else
     code.open(fmt::format("if ({}_adj != nullptr)", g0.array));
@@ -345,12 +345,19 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
   const bool any_bulk = plan.any_bulk;
   const Box& interior = plan.interior;
 
+  // The cell functions capture by copy (scalars, pointers, shallow views);
+  // by reference where the kernel takes a view by reference, whose copy may
+  // be deep or read-only (an AthenaArray-like class).
+  const bool by_ref = std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
+    return p.view && !p.view_type.empty() && p.view_type.back() == '&';
+  });
+  const std::string capture = by_ref ? "[&]" : "[=]";
   // Edge cell: every block, each checked against its iteration domain.
-  code.open(fmt::format("auto {} = [=]({})", edge_fn, params));
+  code.open(fmt::format("auto {} = {}({})", edge_fn, capture, params));
   edge_body();
   code.close(";");
   if (any_bulk) {
-    code.open(fmt::format("auto {} = [=]({})", interior_fn, params));
+    code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
     std::vector<std::string> stores; // after every sum (see edge_body)
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
@@ -520,11 +527,14 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
   const ExprP out_index = hoist(s.index);
-  const std::string out_sub = subscript(out_index, k.levels_of(s.array));
+  const std::string out_sub = subscript(out_index, k.shape_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
             u.array, u.array, s.array, out_sub);
-  code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
+  if (k.find_param(u.array)->view) // (a view has no null: always active)
+    code.open("");
+  else
+    code.open(fmt::format("if ({}_adj != nullptr)", u.array)); // null: an inactive input
   int opened = 1;
   for (const auto& l : nest.loops) {
     code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", l.type_name, l.var, print(l.lo),
@@ -554,7 +564,7 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
   code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
   for (const auto& r : u.reads) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
-              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->levels),
+              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->shape),
               r.read->source);
     bool guarded = !r.conds.empty();
     if (guarded) {
@@ -574,7 +584,7 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
     collect(index, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj{} += {};", r.read->name, subscript(index, r.read->levels),
+    code.line("{}_adj{} += {};", r.read->name, subscript(index, r.read->shape),
               print(binary(Op::Mul, partial, param(seed, s.value->type))));
     if (guarded)
       code.close();
@@ -682,7 +692,12 @@ void emit_body(Code& out, const LoopPlan& plan) {
       // is null (an inactive input).
       std::vector<std::string> all;
       for (const auto* f : step.loops.front().groups)
-        all.push_back(f->array + "_adj != nullptr");
+        if (!k.find_param(f->array)->view) // (a view has no null: always active)
+          all.push_back(f->array + "_adj != nullptr");
+      if (all.empty()) {
+        emit_gather(code, k, hoist, step.loops.front());
+        continue;
+      }
       code.open(fmt::format("if ({})", fmt::join(all, " && ")));
       emit_gather(code, k, hoist, step.loops.front());
       code.close();
@@ -857,10 +872,10 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
         collect(s.index, locals, vars);
         define_locals(code, locals, done);
         if (s.path.empty())
-          code.line("{}_adj{} = 0;", p.name, subscript(s.index, pointer_levels(p)));
+          code.line("{}_adj{} = 0;", p.name, subscript(s.index, shape_of(p)));
         else
           code.line("if ({}) {}_adj{} = 0;", conjunction(s.path), p.name,
-                    subscript(s.index, pointer_levels(p)));
+                    subscript(s.index, shape_of(p)));
       }
       for (int i = 0; i < opened; ++i)
         code.close();

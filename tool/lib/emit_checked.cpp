@@ -171,8 +171,9 @@ std::string checked_params(const Kernel& k) {
 
 bool has_checked_entry(const Kernel& k) {
   // (rows through pointers have no one size to check)
+  // (rows through pointers and views have no flat size to check against)
   bool row_pointers = std::any_of(k.params.begin(), k.params.end(),
-                                  [](const Param& p) { return p.row_pointers; });
+                                  [](const Param& p) { return p.row_pointers || p.view; });
   return !has_rows(k) && !has_inout(k) && !row_pointers;
 }
 

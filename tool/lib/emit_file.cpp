@@ -6,6 +6,8 @@
 
 #include "emit.hpp"
 #include "emit_checked.hpp"
+
+#include <algorithm>
 #include "emit_util.hpp"
 
 #include <fmt/format.h>
@@ -71,6 +73,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
       h.raw(template_facade(k, first, adjoint_signature(generic_kernel(k)), adjoint_signature(k),
                             "_adjoint", args));
     }
+    h.raw(member_wrapper(k, false));
     close_namespaces(h, k);
     h.raw("\n");
   }
@@ -125,6 +128,10 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
         "// sums the contributions of every forward iteration that read that cell, each\n"
         "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
         "// loop; edge cells check each term's iteration domain.\n");
+  if (std::any_of(plans.begin(), plans.end(),
+                  [](const auto& p) { return !p->kernel->member_class.empty(); }))
+    c.raw("#define DPGEN_NO_MEMBER_WRAPPERS // (they need the classes, which this file does not "
+          "see)\n");
   c.raw(fmt::format("#include \"{}_adjoint.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n#include <limits>\n");
   bool checks = false;

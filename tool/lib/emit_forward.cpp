@@ -45,7 +45,7 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
     collect(value, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}{} {} {};", s.array, subscript(index, k.levels_of(s.array)),
+    code.line("{}{} {} {};", s.array, subscript(index, k.shape_of(s.array)),
               s.accumulate ? "+=" : "=", print(value));
     if (guarded)
       code.close();

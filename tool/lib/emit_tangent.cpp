@@ -14,6 +14,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace dpgen {
 
 namespace {
@@ -178,7 +180,7 @@ void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
-    std::string idx = subscript(index, tp.k->levels_of(s.array));
+    std::string idx = subscript(index, tp.k->shape_of(s.array));
     std::string dot_text = !is_zero(dot)                             ? print(dot)
                            : type_spelling(s.value->type) == "float" ? "0.0f"
                                                                      : "0.0";
@@ -320,6 +322,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
       h.raw(template_facade(*k, first, tangent_signature(generic_kernel(*k)),
                             tangent_signature(*k), "_tangent", args));
     }
+    h.raw(member_wrapper(*k, true));
     close_namespaces(h, *k);
     h.raw("\n");
   }
@@ -331,6 +334,10 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
         "// Forward mode: every store of the kernel followed by its directional\n"
         "// derivative, d out = sum over reads of (d out / d read) * read_dot, in the\n"
         "// kernel's own loops.\n");
+  if (std::any_of(kernels.begin(), kernels.end(),
+                  [](const Kernel* k) { return !k->member_class.empty(); }))
+    c.raw("#define DPGEN_NO_MEMBER_WRAPPERS // (they need the classes, which this file does not "
+          "see)\n");
   c.raw(fmt::format("#include \"{}_tangent.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n");
   bool hidden = false;

@@ -174,12 +174,22 @@ std::string global_declarations(const std::vector<const Kernel*>& kernels,
 
 std::string tag_declarations(const std::vector<const Kernel*>& kernels) {
   std::set<std::string> seen;
-  std::string out;
-  for (const Kernel* k : kernels)
+  std::string tags, types;
+  for (const Kernel* k : kernels) {
     for (const auto& p : k->params)
-      if (p.tag && seen.insert(p.tag_declaration).second)
-        out += p.tag_declaration + "\n";
-  return out.empty() ? out : "// The kernels' tag types (a declaration is enough).\n" + out + "\n";
+      if (!p.tag_declaration.empty() && seen.insert(p.tag_declaration).second)
+        (p.tag ? tags : types) += p.tag_declaration + "\n";
+    for (const auto& d : k->declarations)
+      if (seen.insert(d).second)
+        tags += d + "\n";
+  }
+  std::string out;
+  if (!types.empty()) // views and objects: their classes, as the kernel file includes them
+    out += "// The kernels' view and object classes, as the kernel file includes them.\n" +
+           types + "\n";
+  if (!tags.empty())
+    out += "// The kernels' tag types (a declaration is enough).\n" + tags + "\n";
+  return out;
 }
 
 Kernel generic_kernel(const Kernel& k) {
@@ -248,6 +258,8 @@ std::string formatted(const std::string& code, const std::string& name) {
 std::string array_declaration(const Param& p, bool is_const, const std::string& name, bool shaped,
                               bool c_language) {
   std::string c = is_const ? "const " : "";
+  if (p.view) // an array view: the kernel's type, or the same view of non-const elements
+    return fmt::format("{} {}", is_const ? p.view_type : p.view_mutable, name);
   if (p.plane_pointers) // `double*** a`: `const double* const* const* a` (C: `double** const* a`)
     return c_language ? fmt::format("{}** const* {}", p.elem_name, name)
                       : fmt::format("{}{}* const* const* {}", c, p.elem_name, name);
@@ -268,6 +280,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
 // Rows of a multi-dimensional array are contiguous: the first element's
 // address is the flat array.
 std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
+  if (p.view)
+    return name;
   if (!p.container.empty())
     return name + ".data()";
   if (p.scalar_ref)
@@ -288,6 +302,97 @@ void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
                 fn, p.name, suffix, p.name, suffix, p.name, p.name);
       code.close();
     }
+}
+
+namespace {
+// The tag type naming member `m` of class `cls` for dpgen_member_of.
+std::string access_tag(const std::string& cls, const std::string& m) {
+  std::string t = cls + "_" + m;
+  for (char& ch : t)
+    if (ch == ':')
+      ch = '_';
+  return "dpgen_access::" + t;
+}
+} // namespace
+
+std::string member_wrapper(const Kernel& k, bool tangent) {
+  if (k.member_class.empty())
+    return "";
+  const std::string suffix = tangent ? "_dot" : "_adj";
+  std::string out = "#ifndef DPGEN_NO_MEMBER_WRAPPERS\n";
+  // Member pointers, private members too (an explicit instantiation may name
+  // any member; dpgen_member_of(tag) then returns its pointer).
+  out += "#ifndef DPGEN_ACCESS_DEFINED\n#define DPGEN_ACCESS_DEFINED\n"
+         "namespace dpgen_access {\n"
+         "template <class Tag, typename Tag::type M> struct Member {\n"
+         "  friend typename Tag::type dpgen_member_of(Tag) { return M; }\n"
+         "};\n"
+         "} // namespace dpgen_access\n#endif\n";
+  std::string cls = k.member_class;
+  for (const Param& p : k.params) {
+    if (!p.member)
+      continue;
+    std::string tag = access_tag(cls, p.name);
+    std::string guard = "DPGEN_ACCESS_" + tag.substr(std::string("dpgen_access::").size());
+    std::string type = p.view ? p.view_type : p.spelling;
+    while (!type.empty() && (type.back() == '&' || type.back() == ' '))
+      type.pop_back(); // (a member is an object, not a reference)
+    out += fmt::format("#ifndef {0}\n#define {0}\nnamespace dpgen_access {{\n"
+                       "struct {1} {{\n  using type = {2} {3}::*;\n"
+                       "  friend type dpgen_member_of({1});\n}};\n"
+                       "template struct Member<{1}, &{3}::{4}>;\n"
+                       "}} // namespace dpgen_access\n#endif\n",
+                       guard, tag.substr(std::string("dpgen_access::").size()), type, cls,
+                       p.name);
+  }
+  // the wrapper's parameters: the method's by the rule, then the members'
+  // adjoints (tangents); the call: the members from self, in the order of
+  // the generated function's parameters
+  std::vector<std::string> params = {fmt::format("const {}& self", cls)}, members, call;
+  auto member_value = [&](const Param& p) {
+    return fmt::format("self.*dpgen_member_of({}{{}})", access_tag(cls, p.name));
+  };
+  for (const Param& p : k.params) {
+    if (p.synthetic || !p.twin_of.empty() || p.global)
+      continue;
+    const bool array = p.kind == ParamKind::In || p.kind == ParamKind::Out;
+    std::string decl_in, decl_d;
+    if (array) {
+      // adjoint: an input's is accumulated, an output's is its seed; tangent:
+      // an input's direction is read, an output's written
+      bool d_const = tangent ? p.kind == ParamKind::In : p.kind == ParamKind::Out;
+      decl_d = array_declaration(p, d_const, p.name + suffix, true, false);
+    }
+    std::vector<std::string>& list = p.member ? members : params;
+    if (p.member) {
+      if (p.kind == ParamKind::In || p.kind == ParamKind::ConstArray ||
+          p.kind == ParamKind::Scalar || (tangent && p.kind == ParamKind::Out))
+        call.push_back(member_value(p));
+    } else {
+      if (p.kind == ParamKind::In || p.kind == ParamKind::ConstArray ||
+          p.kind == ParamKind::Scalar || (tangent && p.kind == ParamKind::Out)) {
+        params.push_back(p.kind == ParamKind::Scalar
+                             ? fmt::format("{} {}", p.spelling, p.name)
+                             : array_declaration(p, !(tangent && p.kind == ParamKind::Out),
+                                                 p.name, true, false));
+        call.push_back(p.name);
+      }
+    }
+    if (array) {
+      list.push_back(decl_d);
+      call.push_back(p.name + suffix);
+    }
+  }
+  params.insert(params.end(), members.begin(), members.end());
+  const std::string fn = k.name.substr(0, k.name.size() - std::string("_members").size()) +
+                         (tangent ? "_tangent" : "_adjoint");
+  out += fmt::format("/// {} of {}: the members it reads come from `self`; the adjoints of its\n"
+                     "/// annotated members follow the method's parameters, in declaration order.\n",
+                     tangent ? "Tangent" : "Adjoint", k.display_name());
+  out += fmt::format("inline void {}({}) {{\n  {}{}({});\n}}\n", fn, fmt::join(params, ", "),
+                     k.name, tangent ? "_tangent" : "_adjoint", fmt::join(call, ", "));
+  out += "#endif\n";
+  return out;
 }
 
 } // namespace dpgen

@@ -114,4 +114,15 @@ std::string template_facade(const Kernel& k, bool first, const std::string& gene
 /// clang-format (LLVM style, 100 columns) over generated text.
 std::string formatted(const std::string& code, const std::string& name);
 
+/// The wrapper of a member kernel (Kernel::member_class) that users call:
+/// `void Heat1D_step_adjoint(const Heat1D& self, <the method's parameters by
+/// the rule>, <one adjoint per annotated member, declaration order>)` (the
+/// tangent: one `_dot` per annotated member), defined inline after the class,
+/// taking each member the kernel reads from `self` (private ones through
+/// member pointers an explicit instantiation may name) and calling the
+/// generated `<Class>_<method>_members_adjoint`. Empty for a free kernel.
+/// Guarded by DPGEN_NO_MEMBER_WRAPPERS, which the generated .cpp files define
+/// (they do not see the class).
+std::string member_wrapper(const Kernel& k, bool tangent);
+
 } // namespace dpgen

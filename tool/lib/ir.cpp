@@ -109,11 +109,11 @@ ExprP local_ref(const LocalP& l) {
   return e;
 }
 
-ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, int levels) {
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, Shape shape) {
   auto e = node(Op::Read, t, {std::move(index)});
   e->name = array;
   e->pos = std::move(pos);
-  e->levels = levels;
+  e->shape = shape;
   return e;
 }
 

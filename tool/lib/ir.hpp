@@ -65,6 +65,14 @@ enum class Op {
 struct Expr;
 using ExprP = std::shared_ptr<const Expr>;
 
+/// How an array's flat IR index is written back as C++: `levels` pointer
+/// levels (pointer_levels(Param)) and, for an array view (Param::view), the
+/// view's call operator instead of subscripts: `a(k, j, i)` for a[k][j][i].
+struct Shape {
+  int levels = 0;
+  bool view = false;
+};
+
 /// A local variable of the kernel after SSA renaming: every assignment makes a
 /// new Local, so a Local has exactly one definition.
 struct LocalVar {
@@ -91,9 +99,10 @@ struct Expr {
   std::string cast_type; // Cast: the integer type of a widening cast as spelled ("long")
   LocalP local;     // Local
   /// Read: the pointer levels of the array (pointer_levels(Param)): 1 for
-  /// a[j][i] of `double** a`, 2 for a[k][j][i] of `double*** a`, else 0. The
-  /// printer needs it where the flat index has no row symbol (row 0).
-  int levels = 0;
+  /// a[j][i] of `double** a`, 2 for a[k][j][i] of `double*** a`, else 0; and
+  /// whether it is an array view, read as a(k, j, i). The printer needs it
+  /// where the flat index has no row symbol (row 0).
+  Shape shape;
   SourcePos pos;    // Read: where it is in the source (for remarks)
   /// RealConst: the exact zero of derivative code (zero()), as opposed to a
   /// 0.0 the kernel wrote. Derivative rules fold it (0·x = 0, 0 + x = x).
@@ -108,7 +117,7 @@ ExprP real_const(double v, Type t, std::string spelling = "");
 ExprP param(const std::string& name, Type t);
 ExprP loop_var(const std::string& name);
 ExprP local_ref(const LocalP& l);
-ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, int levels = 0);
+ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, Shape shape = {});
 ExprP unary(Op op, ExprP a);
 ExprP binary(Op op, ExprP a, ExprP b);
 ExprP select(ExprP c, ExprP a, ExprP b);
@@ -226,6 +235,31 @@ struct Param {
   bool global = false;
   std::string global_declaration;
   std::vector<std::string> global_namespaces;
+  /// An array view: a parameter of a class type whose inline operator() is
+  /// an affine, one-to-one map of its `view_rank` indices to the elements of
+  /// a pointer member (AMReX Array4, Kokkos::View, mdspan, an AthenaArray-like
+  /// class). In the IR a(k, j, i) is the flat k * P + j * R + i with the row
+  /// and plane symbols of row-pointer arrays (a view's layout gives distinct
+  /// indices distinct elements, as rows of their own would); generated code
+  /// reads and writes it through its own operator(). `view_type` is the
+  /// parameter's type as generated code declares it ("const
+  /// amrex::Array4<const double>&"); `view_mutable` the type of an adjoint or
+  /// tangent of it (the same view over non-const elements, "const
+  /// amrex::Array4<double>&"). The generated headers include what declares
+  /// the class (`tag_declaration`: `#include "amrex_lite.hpp"`, as the kernel
+  /// file spells it).
+  bool view = false;
+  int view_rank = 0;
+  std::string view_type, view_mutable;
+  /// An unannotated parameter of a class type that is no view (AMReX's `Box
+  /// const& bx`, a struct of grid constants): passed along unchanged, read
+  /// only through its integer and floating members (constants of the kernel,
+  /// never differentiated). A Scalar whose `spelling` is its type.
+  bool object = false;
+  /// A member of a member kernel's class (Kernel::member_class) that the
+  /// method reads or writes: named as the member, before the method's own
+  /// parameters; the generated wrapper takes it from `self`.
+  bool member = false;
 };
 
 /// How many pointer levels lead to an element: 0 for a flat array (or rows
@@ -233,18 +267,36 @@ struct Param {
 /// (`double*** a`). The printer writes a flat index back as that many
 /// subscripts plus one.
 inline int pointer_levels(const Param& p) {
+  if (p.view)
+    return p.view_rank - 1; // a view of rank 3: a(k, j, i) as k * P + j * R + i
   return p.plane_pointers ? 2 : p.row_pointers ? 1 : 0;
 }
+
+inline Shape shape_of(const Param& p) { return {pointer_levels(p), p.view}; }
 
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
 inline std::string plane_symbol(const std::string& array) { return "dpgen_planes_" + array; }
+/// The third level of a rank-4 view (Param::view): a(n, k, j, i) is
+/// n * C + k * P + j * R + i.
+inline std::string cube_symbol(const std::string& array) { return "dpgen_cubes_" + array; }
+/// The rank (1 rows, 2 planes, 3 cubes) of such a symbol's name; 0 for any other.
+inline int level_of_symbol(const std::string& name) {
+  return name.rfind("dpgen_cubes_", 0) == 0    ? 3
+         : name.rfind("dpgen_planes_", 0) == 0 ? 2
+         : name.rfind("dpgen_rows_", 0) == 0   ? 1
+                                               : 0;
+}
 /// The values they have in generated code: R larger than any column index, P
 /// larger than any row index times R, small enough that no product with an
 /// index overflows 64 bits. (With planes, columns stay below 2^30.)
 constexpr long long kRowSymbolValue = 1LL << 40;
 constexpr long long kPlaneRowSymbolValue = 1LL << 30;
 constexpr long long kPlaneSymbolValue = 1LL << 61;
+/// Those of a rank-4 view: every index below 2^19 in magnitude.
+constexpr long long kCubeRowSymbolValue = 1LL << 20;
+constexpr long long kCubePlaneSymbolValue = 1LL << 40;
+constexpr long long kCubeSymbolValue = 1LL << 60;
 
 struct Loop {
   std::string var;
@@ -338,6 +390,15 @@ struct Kernel {
   /// declare `gradient_adjoint<Real, Dir>` with an explicit specialization per
   /// instantiation calling the generated function.
   std::string template_name, template_head, template_args;
+  /// A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
+  /// Heat1D): the class ("Heat1D", qualified) and the method ("step"); `name`
+  /// is then "Heat1D_step_members", the generated functions over the members
+  /// (Param::member) and the method's parameters, which the wrappers
+  /// `Heat1D_step_adjoint(const Heat1D& self, ...)` and `..._tangent` call.
+  std::string member_class, member_method;
+  /// Declarations generated headers need for types the kernel's objects
+  /// name (a work tag in a policy's type: "struct FaceX;").
+  std::vector<std::string> declarations;
   std::map<std::string, std::string> generic_types;
   /// A scalar parameter's whole type as the template spells it ("const Real&").
   std::map<std::string, std::string> generic_scalars;
@@ -355,6 +416,8 @@ struct Kernel {
   /// The kernel as the user names it: "gradient<double, 0>" for an
   /// instantiation of a template kernel, else `name`.
   std::string display_name() const {
+    if (!member_class.empty())
+      return member_class + "::" + member_method;
     return template_name.empty() ? name : template_name + template_args;
   }
 
@@ -362,6 +425,11 @@ struct Kernel {
   int levels_of(const std::string& n) const {
     const Param* p = find_param(n);
     return p ? pointer_levels(*p) : 0;
+  }
+  /// shape_of() array parameter `n`; flat if there is none of that name.
+  Shape shape_of(const std::string& n) const {
+    const Param* p = find_param(n);
+    return p ? dpgen::shape_of(*p) : Shape{};
   }
 
   const Param* find_param(const std::string& n) const {

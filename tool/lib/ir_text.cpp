@@ -176,7 +176,7 @@ std::string print_partials(const Kernel& k, Partials& partials) {
           if (site.read->name != param.name)
             continue;
           const ExprP& d = partials.of(store, {site.read});
-          std::string read = site.read->name + subscript(site.read->ops[0], site.read->levels);
+          std::string read = site.read->name + subscript(site.read->ops[0], site.read->shape);
           out += fmt::format("  d {}[{}] / d {} = {}\n", store.array, print(store.index), read,
                              is_zero(d) ? "0 (exact)" : print(d));
           if (!site.conds.empty())

@@ -160,7 +160,9 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
   // A lambda of the kernel: its call operator, the closure object first.
   unsigned first = 0;
-  if (const auto* m = dyn_cast<CXXMethodDecl>(def); m && m->getParent()->isLambda()) {
+  std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
+  if (const auto* m = dyn_cast<CXXMethodDecl>(def);
+      m && (m->getParent()->isLambda() || is_functor_class(m->getParent()))) {
     const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
     const auto* ref =
         oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
@@ -171,6 +173,8 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     if (it == env_.end() || it->second.kind != Binding::Lambda)
       fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
                              "(auto f = [&](...) {...}; f(...))");
+    if (it->second.functor && it->second.fields) // its members, while its body runs
+      functor_fields = it->second.fields;
     if (!m->isConst())
       fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
                                          "changes from one call to the next, which inlining "
@@ -191,7 +195,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
                                            lv->getNameAsString(), cv->getNameAsString(),
                                            cv->getNameAsString()));
     first = 1;
-  } else if (isa<CXXMethodDecl>(def) || def->isVariadic()) {
+  } else if ((isa<CXXMethodDecl>(def) && !this_call(c)) || def->isVariadic()) {
     fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
                                        "free helper functions only",
                                        def->getNameAsString()));
@@ -245,6 +249,12 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     const ParmVarDecl* pd = def->getParamDecl(i);
     const clang::Expr* arg = c->getArg(i + first);
     QualType pt = pd->getType();
+    // A library parallel-for's body (`template <class F> void ParallelFor(Box
+    // const& box, F&& f)`): a lambda, a view or an object of the caller.
+    if (std::optional<Binding> b = class_argument(pd, arg, def)) {
+      binds.push_back({pd, *b});
+      continue;
+    }
     if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
         scalar_type(pt->getPointeeType()) && [&] {
           const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
@@ -255,7 +265,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     }
     if (pt->isPointerType()) {
       const clang::Expr* base = arg->IgnoreParenImpCasts();
-      const Param* ap = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
+      const Param* ap = isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? array_base(base) : nullptr;
       if (!ap)
         fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
                                              "'{}' must be an array parameter of the kernel "
@@ -290,14 +300,23 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
   for (const auto& [pd, b] : binds)
     env_[pd] = b;
   frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
+  std::map<const FieldDecl*, Binding> outer_fields;
+  if (functor_fields) {
+    outer_fields = fields_;
+    fields_ = *functor_fields;
+  }
   Escape e;
   try {
     e = lower(def->getBody());
   } catch (const Rejected&) {
     path_.resize(frames_.back().path_depth);
     frames_.pop_back();
+    if (functor_fields)
+      fields_ = outer_fields;
     throw;
   }
+  if (functor_fields)
+    fields_ = outer_fields;
   InlineFrame fr = frames_.back();
   frames_.pop_back();
   path_.resize(fr.path_depth);
@@ -325,6 +344,9 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
 
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
+  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
+    if (auto a = view_element(oc))
+      return a;
   if (const Param* p = scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
     return Access{p, int_const(0)};
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
@@ -443,6 +465,9 @@ const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {
 }
 
 const Param* Lowerer::array_base(const clang::Expr* base) {
+  if (isa<MemberExpr>(base->IgnoreParenImpCasts())) // `u_[i]` of a member kernel's array
+    if (const Binding* b = bound(base); b && b->kind == Binding::ArrayParam)
+      return b->param;
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref) {
     if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
@@ -464,6 +489,15 @@ const Param* Lowerer::array_base(const clang::Expr* base) {
 
 ExprP Lowerer::expr(const clang::Expr* e) {
   e = e->IgnoreParens();
+  if (isa<MemberExpr>(e->IgnoreParenImpCasts())) { // `nu_` of a member kernel or a functor
+    const Binding* b = bound(e);
+    if (b && b->kind == Binding::ScalarParam && !b->param->object)
+      return scalar_param(b->param->name, b->param->elem);
+    if (b && b->kind == Binding::Value && b->value)
+      return *b->value;
+  }
+  if (auto v = object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
+    return *v;
   if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
     return cast_expr(c, c->getSubExpr());
   if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
@@ -522,7 +556,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
       if (!st && written_by_other_nest(p->name)) {
         if (loops_.empty() && !path_reads_ok_)
           acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
-        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
         std::const_pointer_cast<Expr>(r)->source = text(e);
         k_.intermediates.insert(p->name);
         acc_.work_reads.push_back(
@@ -539,7 +573,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     }
     if (p->inout)
       return inout_value(p, acc->index, e->getBeginLoc(), e);
-    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), pointer_levels(*p));
+    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
     std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
     return r;
   }
@@ -582,6 +616,10 @@ ExprP Lowerer::expr(const clang::Expr* e) {
         !it->second.param->container.empty() && md && md->getName() == "size" &&
         m->getNumArgs() == 0)
       return scalar_param(it->second.param->name + "_size", Type::Int);
+    // a method of the member kernel's (or the running functor's) object,
+    // on the same object: inlined like a helper, reading the same members
+    if (this_call(m) && md && md->hasBody() && !md->isVirtual())
+      return inline_call(m, md);
     fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
                           "parameter, the kernel may call size())");
   }

@@ -55,6 +55,11 @@ struct Binding {
   // Value: a helper's pointer parameter bound to a caller's local (`&f`),
   // used only as `*p`; the binding holds the local's value.
   bool deref_only = false;
+  // Lambda: a functor object (a class with a void operator()), run like a
+  // lambda; its members' bindings (`GradMagnitude{phi, gsq, 0.5 * dxinv}`),
+  // or null for `*this` of a member kernel (whose members are fields_).
+  bool functor = false;
+  std::shared_ptr<std::map<const clang::FieldDecl*, Binding>> fields;
 };
 
 // An error at `loc` through Clang (which shows the line and any macro
@@ -76,7 +81,7 @@ public:
   // run reports every error of a kernel. A variable whose declaration failed
   // is poisoned: its uses are not reported again.
   bool failed_ = false;
-  std::set<const VarDecl*> poisoned_;
+  std::set<const ValueDecl*> poisoned_; // parameters, locals, members
 
   // Lowers `s`; on an error (already reported) marks the kernel failed and
   // goes on, unless inside a helper or an unrolled loop (whose copies would
@@ -115,6 +120,7 @@ private:
   std::map<std::vector<int>, size_t> nest_index_;
   std::map<std::string, ExprP> row_lengths_; // row-pointer array -> its row symbol
   std::map<std::string, ExprP> plane_lengths_; // double*** array -> its plane symbol
+  std::map<std::string, ExprP> cube_lengths_;  // rank-4 view -> its cube symbol
   std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
   ExprP scalar_param(const std::string& name, Type t) {
     auto it = signed_views_.find(name);
@@ -444,6 +450,13 @@ private:
   std::vector<InlineFrame> frames_;
 
   ExprP inline_call(const CallExpr* c, const FunctionDecl* f);
+  // `flux(a, b)` / `this->flux(a, b)` inside a member kernel or a functor's
+  // call operator: a call of a method on the same object.
+  bool this_call(const CallExpr* c) const {
+    const auto* m = dyn_cast<CXXMemberCallExpr>(c);
+    return m && (self_class_ || !fields_.empty()) &&
+           isa<CXXThisExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+  }
 
   // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
   // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).
@@ -453,6 +466,84 @@ private:
   };
 
   std::optional<Access> element(const clang::Expr* e);
+
+  // ---- member kernels (lower_view.cpp) ---------------------------------------
+
+  // The class of a member kernel (null for a free one), and its members'
+  // bindings (Param::member), as env_ binds variables.
+  const CXXRecordDecl* self_class_ = nullptr;
+  std::map<const FieldDecl*, Binding> fields_;
+  // The members of self_class_ that the kernel's method, the lambdas in it
+  // and the class's call operators name through `this`.
+  std::set<const FieldDecl*> used_fields() const;
+  // What `e` names: a variable (env_) or a member of the kernel's object
+  // (`u_`, `this->u_`: fields_); null for anything else. Throws Rejected for
+  // a poisoned one (its error is reported already).
+  const Binding* bound(const clang::Expr* e) const;
+
+  // ---- array views and objects (lower_view.cpp) ----------------------------
+
+  // A class with an operator() or operator[]: a parameter of it is a view.
+  bool is_view_class(const CXXRecordDecl* rd) const;
+  // The Param of a view parameter (Param::view), or of an object one
+  // (Param::object); fail on what is outside the subset.
+  void view_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
+  void object_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
+  std::string mutable_view_type(const DeclaratorDecl* p) const;
+  std::string without_element_const(QualType t, bool& changed) const;
+  // The kernel file's #include line that brings in class `rd` (for the
+  // generated headers); fails if the kernel file defines it.
+  std::string include_for(const CXXRecordDecl* rd, SourceLocation use, const std::string& what);
+  // v(k, j, i) of a view parameter: its flat element; nullopt if `oc` is no
+  // call of a view parameter's operator.
+  std::optional<Access> view_element(const CXXOperatorCallExpr* oc);
+  // The operator() a view is called with maps indices one-to-one (a layout).
+  void check_layout(const FunctionDecl* op, const Param& p, SourceLocation use);
+  std::set<const FunctionDecl*> layouts_ok_;
+  // The row (level 1) or plane (level 2) symbol of a view or row-pointer array.
+  ExprP level_symbol(const Param& p, int level);
+  // A value read from an object or view parameter or an object local
+  // (`bx.smallEnd(0)`, `u.extent(1)`, `lo.x`, `grid.dx`): a constant of the
+  // kernel spelled as C++ over those names; nullopt for anything else.
+  std::optional<ExprP> object_value(const clang::Expr* e);
+  std::optional<std::string> object_text(const clang::Expr* e);
+  std::set<std::string> object_values_; // the integer ones, as spelled
+  // `const auto lo = amrex::lbound(bx);`: a local object made from objects,
+  // declared again in every generated function. False if `v` is none.
+  bool declare_object(const VarDecl* v);
+  std::map<const VarDecl*, std::string> object_locals_; // -> its name in generated code
+  // A helper's parameter of a class type bound to the caller's argument: a
+  // lambda (Binding::Lambda, as a local holding it would be), a view
+  // parameter (Binding::ArrayParam), an object (its spelling, in
+  // object_aliases_: a Binding::Value without value). nullopt: not a class.
+  std::optional<Binding> class_argument(const ParmVarDecl* pd, const clang::Expr* arg,
+                                        const FunctionDecl* helper);
+  std::map<const VarDecl*, std::string> object_aliases_;
+  // Loops of an inlined helper or lambda (a library parallel-for's): their
+  // iterations run in parallel under the library's semantics.
+  std::set<const Loop*> library_loops_;
+  // Statements of the kernel itself, or of the body of a parallel-for (a
+  // lambda's or functor's call operator): where a local may accumulate.
+  bool in_loop_body_frame() const {
+    if (frames_.empty())
+      return true;
+    const auto* m = dyn_cast<CXXMethodDecl>(frames_.back().fn);
+    return m && (m->getParent()->isLambda() || is_functor_class(m->getParent())) &&
+           m->getReturnType()->isVoidType();
+  }
+  // A class whose operator() returns void: a functor (a parallel-for body).
+  bool is_functor_class(const CXXRecordDecl* rd) const;
+  // The binding of a functor object made by `init`: `*this` of a member
+  // kernel, an aggregate initialization from the kernel's views, arrays and
+  // values; fails on anything else.
+  Binding functor_binding(const clang::Expr* init, const CXXRecordDecl* rd);
+  std::optional<std::string> materialize(const clang::Expr* e, const CXXRecordDecl* rd);
+  // The Binding of a lambda expression, its captures by copy recorded
+  // (declare_lambda, a lambda passed to a helper).
+  Binding lambda_binding(const LambdaExpr* le, const std::string& name);
+  // A kernel-level symbol the index algebra cannot see into (its value only
+  // ever compared in generated code).
+  ExprP opaque_symbol(const std::string& name, long long value);
 
   // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
   const Param* scalar_ref_param(const clang::Expr* e) const;

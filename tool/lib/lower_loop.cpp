@@ -43,10 +43,13 @@ bool Lowerer::forget_value(const VarDecl* v) {
 }
 
 void Lowerer::for_loop(const ForStmt* f) {
-  if (!frames_.empty())
-    fail(f->getBeginLoc(), fmt::format("a loop in helper '{}': helpers called from a kernel "
-                                       "compute a value without loops; write the loop in the "
-                                       "kernel",
+  // A loop in a void helper (a library parallel-for: `ParallelFor(box, f)`
+  // runs f(i, j, k) in a nest) is a loop of the kernel; a helper that
+  // returns a value computes it without loops.
+  if (!frames_.empty() && !frames_.back().is_void)
+    fail(f->getBeginLoc(), fmt::format("a loop in helper '{}', which returns a value: helpers "
+                                       "that compute a value do it without loops; write the "
+                                       "loop in the kernel",
                                        frames_.back().fn->getNameAsString()), "dpgen-loop");
   // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
   const VarDecl* var = nullptr;
@@ -343,7 +346,7 @@ void Lowerer::for_loop(const ForStmt* f) {
   // the loop): a hidden work array each (start_accumulator).
   std::vector<const VarDecl*> accumulating;
   for (const VarDecl* v : assigned)
-    if (frames_.empty() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
+    if (in_loop_body_frame() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
         start_accumulator(v, f->getForLoc()))
       accumulating.push_back(v);
   for (const VarDecl* v : assigned) {
@@ -375,10 +378,13 @@ void Lowerer::for_loop(const ForStmt* f) {
                      true});
   }
   loops_.push_back(loop);
+  if (!in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
+    library_loops_.insert(loop.get());
   loop_ids_.push_back(next_loop_id_++);
   segments_.push_back(--next_segment_);
   Escape e = lower_recovering(f->getBody());
   (void)e; // a body ending in continue is fine
+  library_loops_.erase(loop.get());
   loops_.pop_back();
   loop_ids_.pop_back();
   segments_.pop_back();
@@ -473,6 +479,8 @@ ExprP Lowerer::symbol_expr(const Sym& sym) {
   for (const auto& l : k_.kernel_locals)
     if (l->name == sym.name)
       return local_ref(l);
+  if (object_values_.count(sym.name)) // bx.smallEnd(0), u.extent(1) (lower_view.cpp)
+    return param(sym.name, Type::Int);
   throw std::logic_error("lower: unknown symbol " + sym.name);
 }
 
@@ -638,7 +646,7 @@ void Lowerer::finish_accumulator(const VarDecl* v, SourceLocation loc) {
   accumulators_.erase(v);
   const Param* h = k_.find_param(a.array);
   order_after_later_stores(a.array);
-  ExprP r = read(a.array, a.index, h->elem, pos(loc), 0);
+  ExprP r = read(a.array, a.index, h->elem, pos(loc), {});
   std::const_pointer_cast<Expr>(r)->source = v->getNameAsString();
   k_.intermediates.insert(a.array);
   acc_.work_reads.push_back({a.array, cur_key(), next_store_seq_, a.index, path_, pos(loc)});

@@ -8,9 +8,39 @@
 
 namespace dpgen::lowering {
 
+ExprP Lowerer::opaque_symbol(const std::string& name, long long value) {
+  auto l = std::make_shared<LocalVar>();
+  l->name = name;
+  l->type_name = "std::ptrdiff_t";
+  l->def = int_const(value);
+  l->opaque = true;
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  local_names_.insert(l->name);
+  k_.kernel_locals.push_back(l);
+  return local_ref(l);
+}
+
 void Lowerer::header() {
-  if (isa<CXXMethodDecl>(fn_))
-    fail(fn_->getLocation(), "a DPGEN_KERNEL must be a free function, not a member function", "dpgen-signature");
+  // A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
+  // Heat1D): the members it reads are parameters before the method's own,
+  // the annotated ones arrays (Kernel::member_class).
+  const auto* method = dyn_cast<CXXMethodDecl>(fn_);
+  if (method && (method->isStatic() || method->getParent()->isLambda()))
+    method = nullptr; // (a static member function is a free function in a class)
+  if (method) {
+    const CXXRecordDecl* rd = method->getParent();
+    if (rd->isDependentContext() || isa<ClassTemplateSpecializationDecl>(rd))
+      fail(fn_->getLocation(), "a member kernel of a class template is outside the kernel "
+                               "subset: make the kernel a member of a class",
+           "dpgen-signature");
+    if (isa<CXXConstructorDecl>(method) || isa<CXXDestructorDecl>(method) ||
+        method->isOverloadedOperator())
+      fail(fn_->getLocation(), "a member kernel is a named method (not a constructor, "
+                               "destructor or operator)",
+           "dpgen-signature");
+    self_class_ = rd;
+  }
   // (a template kernel is lowered per instantiation, find.cpp)
   if (fn_->isTemplated() || (fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate &&
                              fn_->getTemplatedKind() !=
@@ -32,6 +62,11 @@ void Lowerer::header() {
     fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
 
   k_.name = fn_->getNameAsString();
+  if (self_class_) {
+    k_.member_class = self_class_->getQualifiedNameAsString();
+    k_.member_method = k_.name;
+    k_.name = fmt::format("{}_{}_members", self_class_->getNameAsString(), k_.member_method);
+  }
   k_.pos = pos(fn_->getLocation());
   for (const DeclContext* dc = fn_->getDeclContext(); dc; dc = dc->getParent())
     if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
@@ -41,7 +76,7 @@ void Lowerer::header() {
   // One parameter; an error in it is reported, the parameter poisoned (its
   // uses are not reported again) and the rest of the kernel still lowered,
   // so one run reports every error of the file.
-  auto parameter = [&](const ParmVarDecl* p) {
+  auto parameter = [&](const DeclaratorDecl* p) {
     Param out;
     out.name = p->getNameAsString();
     std::string ann = annotation(p);
@@ -78,7 +113,7 @@ void Lowerer::header() {
       out.kind = ParamKind::Scalar;
       out.tag = true;
       out.elem = Type::Bool; // (no number: never shown or checked)
-      out.name = fmt::format("dpgen_tag_{}", p->getFunctionScopeIndex());
+      out.name = fmt::format("dpgen_tag_{}", llvm::cast<ParmVarDecl>(p)->getFunctionScopeIndex());
       out.elem_name = type;
       out.spelling = "const " + type + "&";
       out.declaration = type + " " + out.name;
@@ -96,7 +131,18 @@ void Lowerer::header() {
     std::optional<Type> ref_scalar =
         q->isReferenceType() ? scalar_type(q.getNonReferenceType().getUnqualifiedType())
                              : std::nullopt;
-    if (ref_scalar && *ref_scalar != Type::Bool &&
+    const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
+    if (record && span_elem.isNull() && vector_element(q.getNonReferenceType()).isNull() &&
+        !record->isLambda()) {
+      // An array view (Array4, Kokkos::View, mdspan, ...), or an object
+      // of constants (AMReX's Box).
+      if (is_view_class(record))
+        view_param(p, ann, out);
+      else
+        object_param(p, ann, out);
+      any_in = any_in || out.kind == ParamKind::In;
+      any_out = any_out || out.kind == ParamKind::Out;
+    } else if (ref_scalar && *ref_scalar != Type::Bool &&
         (ann == "dpgen.in" || ann == "dpgen.out")) {
       QualType elem = q.getNonReferenceType();
       if (!is_real(*ref_scalar))
@@ -276,7 +322,7 @@ void Lowerer::header() {
       out.elem_name = spelled(q);
       out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
     }
-    out.spelling = spelled(p->getType(), /*keep_const=*/true);
+    out.spelling = out.view ? out.view_type : spelled(p->getType(), /*keep_const=*/true);
     {
       std::string decl;
       llvm::raw_string_ostream os(decl);
@@ -305,6 +351,25 @@ void Lowerer::header() {
     }
   };
   bool params_ok = true;
+  // The members first, in declaration order: those the method (and the
+  // lambdas and call operators of its class it runs) reads or writes.
+  if (self_class_) {
+    std::set<const FieldDecl*> used = used_fields();
+    for (const FieldDecl* f : self_class_->fields()) {
+      if (!used.count(f) && annotation(f).empty()) // (every annotated one: the signature's)
+        continue;
+      try {
+        size_t before = k_.params.size();
+        parameter(f);
+        for (size_t i = before; i < k_.params.size(); ++i)
+          k_.params[i].member = true;
+      } catch (const Rejected&) {
+        failed_ = true;
+        params_ok = false;
+        poisoned_.insert(f);
+      }
+    }
+  }
   for (const ParmVarDecl* p : fn_->parameters()) {
     try {
       parameter(p);
@@ -316,7 +381,7 @@ void Lowerer::header() {
   }
   if (returns) { // the return value: an output after every parameter
     Param r;
-    r.name = k_.name + "_return";
+    r.name = (self_class_ ? k_.member_method : k_.name) + "_return";
     r.kind = ParamKind::Out;
     r.elem = *returns;
     r.elem_name = spelled(ret.getUnqualifiedType());
@@ -342,24 +407,12 @@ void Lowerer::header() {
   if (!any_in && params_ok)
     fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                          "nothing to differentiate",
-                                         k_.name), "dpgen-signature");
+                                         k_.display_name()), "dpgen-signature");
   if (!any_out && params_ok)
-    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.name), "dpgen-signature");
+    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.display_name()), "dpgen-signature");
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
   // code, kRowSymbolValue, is only ever compared, never used as an address).
-  auto opaque_symbol = [&](const std::string& name, long long value) {
-    auto l = std::make_shared<LocalVar>();
-    l->name = name;
-    l->type_name = "std::ptrdiff_t";
-    l->def = int_const(value);
-    l->opaque = true;
-    l->id = next_local_id_++;
-    l->kernel_level = true;
-    local_names_.insert(l->name);
-    k_.kernel_locals.push_back(l);
-    return local_ref(l);
-  };
   for (const auto& p : k_.params)
     if (p.row_pointers) {
       row_lengths_[p.name] = opaque_symbol(
@@ -398,6 +451,12 @@ void Lowerer::header() {
     b.param = &p;
     if (p.global) {
       env_[global_decls_.at(p.name)] = b;
+      continue;
+    }
+    if (p.member) {
+      for (const FieldDecl* f : self_class_->fields())
+        if (f->getNameAsString() == p.name && !poisoned_.count(f))
+          fields_[f] = b;
       continue;
     }
     for (const ParmVarDecl* decl : fn_->parameters())

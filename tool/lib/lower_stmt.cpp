@@ -127,6 +127,13 @@ Escape Lowerer::lower(const Stmt* s) {
 Escape Lowerer::if_stmt(const IfStmt* s) {
   if (s->getInit() || s->getConditionVariable())
     fail(s->getBeginLoc(), "if with an initializer or a declaration is outside the subset");
+  if (s->isConstexpr()) { // `if constexpr`: only the branch the compiler keeps
+    bool taken = false;
+    if (!s->getCond()->EvaluateAsBooleanCondition(taken, ctx_))
+      fail(s->getBeginLoc(), "dpgen cannot evaluate the condition of this 'if constexpr'");
+    const Stmt* branch = taken ? s->getThen() : s->getElse();
+    return branch ? lower_recovering(branch) : Escape::None;
+  }
   ExprP c = cond(s->getCond());
   size_t depth = path_.size();
   auto env_before = env_;
@@ -232,6 +239,11 @@ ExprP Lowerer::make_local(const std::string& base, const VarDecl* decl, ExprP de
 }
 
 void Lowerer::declare(const Decl* d) {
+  // Declarations that make no value: type aliases (`using Tag = ...;`),
+  // static_assert, using-declarations and -directives.
+  if (isa<TypedefNameDecl>(d) || isa<StaticAssertDecl>(d) || isa<UsingDecl>(d) ||
+      isa<UsingDirectiveDecl>(d))
+    return;
   const auto* v = dyn_cast<VarDecl>(d);
   if (!v)
     fail(d->getLocation(), "only variable declarations are allowed in a kernel");
@@ -246,6 +258,13 @@ void Lowerer::declare(const Decl* d) {
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {
     declare_lambda(v, rd);
+    return;
+  }
+  if (declare_object(v)) // const auto lo = amrex::lbound(bx);
+    return;
+  if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
+      rd && is_functor_class(rd) && v->getInit()) { // const GradientFluxes f{phi, fx, ...};
+    env_[v] = functor_binding(v->getInit(), rd);
     return;
   }
   if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
@@ -327,14 +346,21 @@ void Lowerer::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
     fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
                                        "expression",
                                        v->getNameAsString()), "dpgen-lambda");
+  (void)rd;
+  env_[v] = lambda_binding(le, v->getNameAsString());
+}
+
+Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
   Binding b;
   b.kind = Binding::Lambda;
-  b.closure = rd;
+  b.closure = le->getLambdaClass();
   for (const LambdaCapture& c : le->captures()) {
+    if (c.capturesThis() && self_class_) // a member kernel's object: its members are read-only
+      continue;
     if (!c.capturesVariable() || le->isInitCapture(&c))
       fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
                                         "kernel's variables (this, or an init-capture)",
-                                        v->getNameAsString()), "dpgen-lambda");
+                                        name), "dpgen-lambda");
     if (c.getCaptureKind() != LCK_ByCopy)
       continue;
     const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
@@ -344,7 +370,7 @@ void Lowerer::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
     if (it != env_.end() && it->second.kind == Binding::LocalArray)
       b.captured_arrays.push_back({cv, it->second.elems});
   }
-  env_[v] = b;
+  return b;
 }
 
 // The element of a local array that `idx` names: it must be a constant.
@@ -609,6 +635,21 @@ bool Lowerer::is_prefix(const std::vector<PathCond>& prefix, const std::vector<P
 }
 
 void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc) {
+  // A sum into one element from the iterations of a library parallel-for
+  // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
+  // parallel semantics: refused, though a serial reading would be a sum.
+  if (accumulate && !library_loops_.empty()) {
+    auto pi = to_poly(idx);
+    for (const auto& l : loops_)
+      if (library_loops_.count(l.get()) && (!pi || !pi->mentions_counter(l->var)))
+        fail(loc, fmt::format("'+=' into '{}' in the body of a parallel-for ('{}'), at an "
+                              "element its iterations over '{}' share: a data race under the "
+                              "library's parallel semantics; write the sum as a loop nest of the "
+                              "kernel (a parallel_reduce is outside the kernel subset)",
+                              array, frames_.empty() ? "?" : frames_.front().fn->getNameAsString(),
+                              l->var),
+             "dpgen-loop");
+  }
   // Updating an element this nest stored, after a later nest stored the
   // array too: the update goes after that nest.
   if (auto it = nest_index_.find(cur_key()); it != nest_index_.end())
@@ -671,7 +712,7 @@ ExprP Lowerer::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
     if (Store* st = visible_store(k_.nests[nit->second], p->name + "_new", idx))
       return st->value;
   acc_.inout_reads.push_back({p->name, cur_key(), next_store_seq_, idx, {}, pos(loc)});
-  ExprP r = read(p->name, idx, p->elem, pos(loc), pointer_levels(*p));
+  ExprP r = read(p->name, idx, p->elem, pos(loc), shape_of(*p));
   std::const_pointer_cast<Expr>(r)->source = text(e);
   return r;
 }

@@ -64,36 +64,63 @@ std::optional<Sym> symbol_in(const Poly& p, const char* prefix) {
 }
 } // namespace
 
-std::string subscript(const Poly& index, int levels) {
-  if (levels >= 2) { // planes of rows: k * P + (j * R + i); plane 0 has no P
-    auto planes = symbol_in(index, "dpgen_planes_");
-    if (!planes)
-      return "[0]" + subscript(index, 1);
-    return "[" + index.coefficient(*planes).code() + "]" + subscript(index.without(*planes), 1);
+namespace {
+// The index of each level of a flat index, outermost first: [k, j, i] of
+// k * P + j * R + i (ir.hpp: row_symbol, plane_symbol); a missing symbol is
+// level 0 (row 0).
+std::vector<std::string> level_indices(const Poly& index, int levels) {
+  if (levels >= 3) { // a rank-4 view: n * C + (k * P + j * R + i)
+    auto cubes = symbol_in(index, "dpgen_cubes_");
+    std::vector<std::string> out = {cubes ? index.coefficient(*cubes).code() : "0"};
+    auto rest = level_indices(cubes ? index.without(*cubes) : index, 2);
+    out.insert(out.end(), rest.begin(), rest.end());
+    return out;
   }
-  if (levels == 1) { // rows: j * R + i; row 0 has no R
+  if (levels >= 2) {
+    auto planes = symbol_in(index, "dpgen_planes_");
+    std::vector<std::string> out = {planes ? index.coefficient(*planes).code() : "0"};
+    auto rest = level_indices(planes ? index.without(*planes) : index, 1);
+    out.insert(out.end(), rest.begin(), rest.end());
+    return out;
+  }
+  if (levels == 1) {
     auto rows = symbol_in(index, "dpgen_rows_");
     if (!rows)
-      return "[0][" + index.code() + "]";
-    return "[" + index.coefficient(*rows).code() + "][" + index.without(*rows).code() + "]";
+      return {"0", index.code()};
+    return {index.coefficient(*rows).code(), index.without(*rows).code()};
   }
-  if (symbol_in(index, "dpgen_rows_") || symbol_in(index, "dpgen_planes_"))
+  if (symbol_in(index, "dpgen_rows_") || symbol_in(index, "dpgen_planes_") ||
+      symbol_in(index, "dpgen_cubes_"))
     throw std::logic_error("internal error: subscript: a row or plane symbol in the index of a "
                            "flat array: " + index.code());
-  return "[" + index.code() + "]";
+  return {index.code()};
 }
 
-std::string subscript(const ExprP& index, int levels) {
+std::string written(const std::vector<std::string>& indices, bool view) {
+  if (view)
+    return "(" + fmt::format("{}", fmt::join(indices, ", ")) + ")";
+  std::string out;
+  for (const auto& i : indices)
+    out += "[" + i + "]";
+  return out;
+}
+} // namespace
+
+std::string subscript(const Poly& index, Shape shape) {
+  return written(level_indices(index, shape.levels), shape.view);
+}
+
+std::string subscript(const ExprP& index, Shape shape) {
   auto p = to_poly(index);
-  if (levels == 0) {
+  if (shape.levels == 0) {
     if (p)
-      (void)subscript(*p, 0); // throws on a row or plane symbol: the levels were lost
-    return "[" + print(index) + "]";
+      (void)level_indices(*p, 0); // throws on a row or plane symbol: the levels were lost
+    return written({print(index)}, shape.view);
   }
-  if (!p) // lower.cpp admits only affine indices of row-pointer arrays
+  if (!p) // lower.cpp admits only affine indices of row-pointer arrays and views
     throw std::logic_error("internal error: subscript: a non-affine index of a row-pointer "
                            "array: " + print(index));
-  return subscript(*p, levels);
+  return subscript(*p, shape);
 }
 
 std::string print(const ExprP& e) {
@@ -110,7 +137,7 @@ std::string print(const ExprP& e) {
   case Op::Local:
     return e->name;
   case Op::Read:
-    return e->name + subscript(e->ops[0], e->levels);
+    return e->name + subscript(e->ops[0], e->shape);
   case Op::Neg:
     return "-" + wrap(e->ops[0], op_info(Op::Neg).precedence + 1);
   case Op::Not:

@@ -14,9 +14,10 @@ std::string print(const ExprP& e);
 /// (pointer_levels(), ir.hpp) at this flat index: "[i + 1]" for a flat array;
 /// for row pointers (levels 1, the flat index j * R + i with R the row symbol)
 /// "[j][i]", and "[0][i]" where the row is 0 (no R in the index); planes
-/// (levels 2) likewise "[k][j][i]".
-std::string subscript(const ExprP& index, int levels);
-std::string subscript(const Poly& index, int levels);
+/// (levels 2) likewise "[k][j][i]". An array view (shape.view) is called
+/// instead: "(k, j, i)", "(i + 1)".
+std::string subscript(const ExprP& index, Shape shape);
+std::string subscript(const Poly& index, Shape shape);
 /// max(lo...) / min(hi...) of a bound set, as C++ ("std::max<int>({a, b})").
 std::string print_max(const std::vector<Poly>& set, const std::string& int_type);
 std::string print_min(const std::vector<Poly>& set, const std::string& int_type);

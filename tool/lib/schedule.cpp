@@ -66,8 +66,7 @@ std::optional<Decomposed> decompose(const Poly& index, const Nest& nest) {
   // Row-pointer symbols (ir.hpp): a term with one belongs to the row (or
   // plane) dimension, never to a unit-coefficient column.
   auto is_row_symbol = [](const Sym& s) {
-    return !s.is_counter() &&
-           (s.name.rfind("dpgen_rows_", 0) == 0 || s.name.rfind("dpgen_planes_", 0) == 0);
+    return !s.is_counter() && level_of_symbol(s.name) > 0;
   };
   auto row_symbol_of = [&](const Poly& p) -> std::optional<Sym> {
     for (const auto& [m, coef] : p.terms())

@@ -50,15 +50,6 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:                           int nx, int ny, double r) {
 // CPP-NEXT:   const std::ptrdiff_t dpgen_rows_u = 1099511627776;
 // CPP-NEXT:   const std::ptrdiff_t dpgen_rows_un = 1099511627776;
-// CPP-NEXT:   // Run-time check (not provable from the kernel alone): output 'un' is written once per element:
-// CPP-NEXT:   // its index steps by 'dpgen_rows_un' where the faster counters reach 'nx - 3'.
-// CPP-NEXT:   if ((1) < (nx - 1) && (1) < (ny - 1) && !((dpgen_rows_un - nx + 2) >= 0)) {
-// CPP-NEXT:     throw std::invalid_argument(
-// CPP-NEXT:         std::string("row_pointers.cpp:16: row_pointers_adjoint: these sizes break the rule that "
-// CPP-NEXT:                     "output 'un' is written once per element: its index steps by 'dpgen_rows_un' "
-// CPP-NEXT:                     "where the faster counters reach 'nx - 3', so the adjoint would be wrong (") +
-// CPP-NEXT:         "nx = " + std::to_string(nx) + ", " + "ny = " + std::to_string(ny) + ")");
-// CPP-NEXT:   }
 // CPP-NEXT:   // loop-invariant, hoisted: computed once here, the same expressions as in the loops below
 // CPP-NEXT:   const auto hoisted0 = 1.0 - r * 4.0;
 // CPP-NEXT:   // u_adj[c_j][c_i]: each cell gathers the reads of u made by the iterations (j, i)
