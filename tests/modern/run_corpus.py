@@ -273,11 +273,8 @@ def main():
             continue
         files.append(os.path.join(KDIR, f))
     ctx.main_o = os.path.join(ctx.work, "main.o")
-    # (main.cpp holds the one compiled copy of the adjoint checker, for
-    # targets that define DPGEN_TEST_CHECKER_COMPILED_ONCE; the corpus's test
-    # files do not, and compile it themselves.)
-    rc, out = run([ctx.cxx, "-std=c++17", "-O1", "-I" + TESTS, "-DDPGEN_TEST_CHECKER_COMPILED_ONCE",
-                   "-c", os.path.join(TESTS, "kernels", "main.cpp"), "-o", ctx.main_o], 300)
+    rc, out = run([ctx.cxx, "-std=c++17", "-O1", "-c", os.path.join(TESTS, "kernels", "main.cpp"),
+                   "-o", ctx.main_o], 300)
     if rc != 0:
         sys.exit("cannot build the doctest main:\n" + out)
 
