@@ -314,17 +314,12 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
     return cond.empty() ? std::string() : fmt::format("if ({})", cond);
   };
 
-  // A cell's stores come after all its sums: a store to an adjoint, which
-  // the compiler must assume may alias a primal input, then forces no reload
-  // of what the sums read.
   auto edge_body = [&]() {
     for (const auto* g : gs) {
       code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
       code.line("bool {} = false;", hit_name(*g));
       for (const auto& b : g->blocks)
         emit_block({k, hoist, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
-    }
-    for (const auto* g : gs) {
       code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
     }
@@ -358,7 +353,6 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
   code.close(";");
   if (any_bulk) {
     code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
-    std::vector<std::string> stores; // after every sum (see edge_body)
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
       bool has_bulk = false;
@@ -394,12 +388,9 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
         code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
       std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
       if (!cond.empty())
-        stores.push_back(cond);
-      stores.push_back(fmt::format("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(k, *g),
-                                   acc_name(*g)));
+        code.line("{}", cond);
+      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(k, *g), acc_name(*g));
     }
-    for (const auto& st : stores)
-      code.line("{}", st);
     code.close(";");
   }
 
