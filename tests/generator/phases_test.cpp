@@ -8,6 +8,7 @@
 #include "lib/emit.hpp"
 #include "lib/emit_file.hpp"
 #include "lib/find.hpp"
+#include "lib/hoist.hpp"
 #include "lib/loop_plan.hpp"
 #include "lib/ops.hpp"
 #include "lib/print.hpp"
@@ -260,6 +261,41 @@ TEST_CASE("emit: the adjoint's signature and body follow the signature rule") {
   // Printing is a pure function of the plan.
   const AdjointPlan again = schedule_of(k);
   CHECK(emit_file({plan_loops(again)}, "unit.cpp", "unit").source == f.source);
+}
+
+TEST_CASE("hoist: loop-invariant subexpressions, exactly as written, before the loops") {
+  Kernel k;
+  k.names = {"dx", "dt", "n", "u", "inv_dx", "i"};
+  const ExprP dx = param("dx", Type::Double), dt = param("dt", Type::Double);
+  const ExprP n = param("n", Type::Int), i = loop_var("i");
+  const ExprP u = read("u", i, Type::Double, {});
+  const ExprP one = real_const(1, Type::Double, "1.0"), zero0 = real_const(0, Type::Double, "0.0");
+  Hoister hoist(k);
+  // The partial of the upwind switch: the division under the condition goes,
+  // the one that reads u stays; the name avoids the kernel's `inv_dx`.
+  const ExprP upwind =
+      select(binary(Op::Le, binary(Op::Div, u, dx), zero0), binary(Op::Div, one, dx), zero0);
+  CHECK(print(hoist(upwind)) == "u[i] / dx <= 0.0 ? inv_dx_ : 0.0");
+  // The same expression again: the same local.
+  CHECK(print(hoist(binary(Op::Mul, binary(Op::Div, one, dx), u))) == "inv_dx_ * u[i]");
+  // A product that a sum uses stays next to it (a fused multiply-add may
+  // take both), its operands may go; a negation stays, its operand goes.
+  CHECK(print(hoist(binary(Op::Add, binary(Op::Mul, dt, dx), u))) == "dt * dx + u[i]");
+  CHECK(print(hoist(binary(Op::Mul, binary(Op::Mul, dt, dx), u))) == "hoisted1 * u[i]");
+  CHECK(print(hoist(binary(Op::Mul, unary(Op::Neg, binary(Op::Div, dt, dx)), u))) ==
+        "-(hoisted2 * u[i])");
+  // Only summed where the caller says so (`x += e`).
+  CHECK(print(hoist(binary(Op::Mul, dt, dx), true)) == "dt * dx");
+  // An integer division may trap where the source would not run it: stays.
+  const ExprP by_n = binary(Op::Div, one, cast(binary(Op::Div, int_const(100), n), Type::Double));
+  CHECK(print(hoist(binary(Op::Mul, by_n, u))) == "1.0 / static_cast<double>(100 / n) * u[i]");
+  Code code;
+  hoist.emit(code);
+  CHECK(code.str() == "// loop-invariant, hoisted: computed once here, the same expressions as in "
+                      "the loops below\n"
+                      "const auto inv_dx_ = 1.0 / dx;\n"
+                      "const auto hoisted1 = dt * dx;\n"
+                      "const auto hoisted2 = dt / dx;\n");
 }
 
 TEST_CASE("plan: the cell loop of a three-point stencil, its interior and the parallel test") {

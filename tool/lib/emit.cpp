@@ -7,6 +7,7 @@
 #include "emit_checked.hpp"
 #include "emit_forward.hpp"
 #include "emit_util.hpp"
+#include "hoist.hpp"
 #include "print.hpp"
 
 #include <fmt/format.h>
@@ -78,6 +79,7 @@ struct Factored;
 
 struct BlockContext {
   const Kernel& k;
+  Hoister& hoist; // the function's loop-invariant subexpressions
   const GatherGroup& g;
   Code& code;
   std::string acc;
@@ -129,15 +131,19 @@ const ExprP& nonzero_partial(const ExprP& partial) {
   return partial;
 }
 
-void emit_terms(Code& code, const Kernel& k, const Term& t, const Box& where,
+void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, const Box& where,
                 const std::vector<PathCond>& guards, const std::string& acc, const std::string& set_hit,
                 Factored* factored = nullptr) {
   Specializer spec(where);
-  ExprP partial = spec(nonzero_partial(t.partial));
-  ExprP seed_index = spec(t.store->index);
+  ExprP specialized = spec(nonzero_partial(t.partial));
+  // (Factored or not is decided on the partial as derived: hoisting makes a
+  // moved local kernel-level, which must not change the order of the sums.)
+  const bool same_everywhere = invariant(specialized);
+  ExprP partial = hoist(specialized);
+  ExprP seed_index = hoist(spec(t.store->index));
   std::vector<ExprP> gs;
   for (const auto& pc : guards)
-    gs.push_back(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond)));
+    gs.push_back(hoist(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond))));
   std::map<int, LocalP> locals;
   std::set<std::string> vars;
   collect(partial, locals, vars);
@@ -160,7 +166,7 @@ void emit_terms(Code& code, const Kernel& k, const Term& t, const Box& where,
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {},
                     k.shape_of(t.store->array));
-  if (factored && gs.empty() && invariant(partial)) {
+  if (factored && gs.empty() && same_everywhere) {
     std::string sum = factored->name_for(partial);
     code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
     code.line("{} += {};", sum, print(seed));
@@ -226,7 +232,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, cx.k, b.terms.front(), box, b.guards, cx.acc,
+    emit_terms(code, cx.k, cx.hoist, b.terms.front(), box, b.guards, cx.acc,
                cx.hit.empty() ? "" : cx.hit + " = true;", cx.factored);
     for (int i = 0; i < opened; ++i)
       code.close();
@@ -266,7 +272,7 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
 
 // One cell loop for one or more gather groups that share a layout and a cell
 // box (several inputs of one kernel, fused so the loop reads shared data once).
-void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
+void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& plan) {
   const std::vector<const GatherGroup*>& gs = plan.groups;
   const GatherGroup& g0 = *gs.front();
   const bool fused = gs.size() > 1;
@@ -313,7 +319,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
       code.line("bool {} = false;", hit_name(*g));
       for (const auto& b : g->blocks)
-        emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
+        emit_block({k, hoist, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
       code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
     }
@@ -370,7 +376,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       Code blocks(code.depth());
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         if (g->blocks[bi].bulk)
-          emit_block({k, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false,
+          emit_block({k, hoist, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false,
                       &plan.interior_boxes[gi][bi], guarded ? nullptr : &factored},
                      g->blocks[bi]);
       if (!factored.sums.empty())
@@ -508,10 +514,11 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
 
 // ---- scatter units ---------------------------------------------------------------
 
-void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
+void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit& u) {
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  const std::string out_sub = subscript(s.index, k.shape_of(s.array));
+  const ExprP out_index = hoist(s.index);
+  const std::string out_sub = subscript(out_index, k.shape_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
             u.array, u.array, s.array, out_sub);
@@ -531,15 +538,18 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
   std::set<int> done;
   std::set<std::string> vars;
   if (!s.path.empty()) {
-    std::map<int, LocalP> cond_locals;
+    std::vector<PathCond> path;
     for (const auto& pc : s.path)
+      path.push_back(hoist(pc));
+    std::map<int, LocalP> cond_locals;
+    for (const auto& pc : path)
       collect(pc.cond, cond_locals, vars);
     define_locals(code, cond_locals, done);
-    code.open(fmt::format("if ({})", conjunction(s.path)));
+    code.open(fmt::format("if ({})", conjunction(path)));
     ++opened;
   }
   std::map<int, LocalP> seed_locals;
-  collect(s.index, seed_locals, vars);
+  collect(out_index, seed_locals, vars);
   define_locals(code, seed_locals, done);
   const std::string seed = k.fresh("seed");
   code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
@@ -549,19 +559,24 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterUnit& u) {
               r.read->source);
     bool guarded = !r.conds.empty();
     if (guarded) {
-      std::map<int, LocalP> cond_locals;
+      std::vector<PathCond> conds;
       for (const auto& pc : r.conds)
+        conds.push_back(hoist(pc));
+      std::map<int, LocalP> cond_locals;
+      for (const auto& pc : conds)
         collect(pc.cond, cond_locals, vars);
       define_locals(code, cond_locals, done);
-      code.open(fmt::format("if ({})", conjunction(r.conds)));
+      code.open(fmt::format("if ({})", conjunction(conds)));
     }
+    ExprP partial = hoist(nonzero_partial(r.partial));
+    ExprP index = hoist(r.read->ops[0]);
     std::map<int, LocalP> locals;
-    collect(nonzero_partial(r.partial), locals, vars);
-    collect(r.read->ops[0], locals, vars);
+    collect(partial, locals, vars);
+    collect(index, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj{} += {};", r.read->name, subscript(r.read->ops[0], r.read->shape),
-              print(binary(Op::Mul, r.partial, param(seed, s.value->type))));
+    code.line("{}_adj{} += {};", r.read->name, subscript(index, r.read->shape),
+              print(binary(Op::Mul, partial, param(seed, s.value->type))));
     if (guarded)
       code.close();
   }
@@ -649,15 +664,19 @@ std::string flat_arguments(const Kernel& k) {
 // The statements of an adjoint function: kernel-level locals, size checks,
 // the gather loops (fused where they share a nest, layout and cell box) and
 // the scatter loops.
-void emit_body(Code& code, const LoopPlan& plan) {
+void emit_body(Code& out, const LoopPlan& plan) {
   const Kernel& k = *plan.adjoint->kernel;
   for (const auto& l : k.kernel_locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
-  emit_size_checks(code, k, k.name + "_adjoint");
+    out.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  emit_size_checks(out, k, k.name + "_adjoint");
+  // The loops go to a buffer first: the subexpressions they hoist are
+  // defined before them.
+  Hoister hoist(k);
+  Code code(out.depth());
   for (const auto& in : plan.inputs) {
     for (const auto& step : in.gathers) {
       if (!step.fused()) {
-        emit_gather(code, k, step.loops.front());
+        emit_gather(code, k, hoist, step.loops.front());
         continue;
       }
       // Fused when every input is active; one loop each when some adjoint
@@ -667,20 +686,22 @@ void emit_body(Code& code, const LoopPlan& plan) {
         if (!k.find_param(f->array)->view) // (a view has no null: always active)
           all.push_back(f->array + "_adj != nullptr");
       if (all.empty()) {
-        emit_gather(code, k, step.loops.front());
+        emit_gather(code, k, hoist, step.loops.front());
         continue;
       }
       code.open(fmt::format("if ({})", fmt::join(all, " && ")));
-      emit_gather(code, k, step.loops.front());
+      emit_gather(code, k, hoist, step.loops.front());
       code.close();
       code.open("else");
       for (size_t i = 1; i < step.loops.size(); ++i)
-        emit_gather(code, k, step.loops[i]);
+        emit_gather(code, k, hoist, step.loops[i]);
       code.close();
     }
     for (const auto* u : in.scatters)
-      emit_scatter(code, k, *u);
+      emit_scatter(code, k, hoist, *u);
   }
+  hoist.emit(out);
+  out.raw(code.str());
 }
 
 // `T* name` for a parameter of the forward kernel's declaration.

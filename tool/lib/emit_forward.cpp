@@ -1,6 +1,7 @@
 // Emit (phase 6): a forward kernel printed from the IR (emit_forward.hpp).
 #include "emit_forward.hpp"
 
+#include "hoist.hpp"
 #include "print.hpp"
 
 #include <fmt/format.h>
@@ -16,7 +17,7 @@ std::string bound(const ExprP& e) {
   return fmt::format("static_cast<{}>({})", kCellType, print(e));
 }
 
-void emit_nest(Code& code, const Nest& nest, const Kernel& k) {
+void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
   code.open("");
   int opened = 1;
   for (const auto& l : nest.loops) {
@@ -27,20 +28,25 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k) {
   std::set<int> done;
   std::set<std::string> vars;
   for (const auto& s : nest.stores) {
-    std::map<int, LocalP> cond_locals;
+    const ExprP index = hoist(s.index);
+    const ExprP value = hoist(s.value, s.accumulate); // `+=`: summed (hoist.hpp)
+    std::vector<PathCond> path;
     for (const auto& pc : s.path)
+      path.push_back(hoist(pc));
+    std::map<int, LocalP> cond_locals;
+    for (const auto& pc : path)
       collect(pc.cond, cond_locals, vars);
     define_locals(code, cond_locals, done);
-    bool guarded = !s.path.empty();
+    bool guarded = !path.empty();
     if (guarded)
-      code.open(fmt::format("if ({})", conjunction(s.path)));
+      code.open(fmt::format("if ({})", conjunction(path)));
     std::map<int, LocalP> locals;
-    collect(s.index, locals, vars);
-    collect(s.value, locals, vars);
+    collect(index, locals, vars);
+    collect(value, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}{} {} {};", s.array, subscript(s.index, k.shape_of(s.array)),
-              s.accumulate ? "+=" : "=", print(s.value));
+    code.line("{}{} {} {};", s.array, subscript(index, k.shape_of(s.array)),
+              s.accumulate ? "+=" : "=", print(value));
     if (guarded)
       code.close();
   }
@@ -72,8 +78,12 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
   for (const auto& l : k.kernel_locals)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
+  Code nests(code.depth());
   for (const auto& n : k.nests)
-    emit_nest(code, n, k);
+    emit_nest(nests, n, k, hoist);
+  hoist.emit(code);
+  code.raw(nests.str());
   code.close();
 }
 

@@ -9,6 +9,7 @@
 
 #include "derive.hpp"
 #include "emit_util.hpp"
+#include "hoist.hpp"
 #include "print.hpp"
 
 #include <fmt/format.h>
@@ -132,7 +133,7 @@ std::string bound(const ExprP& e) {
   return fmt::format("static_cast<{}>({})", kCellType, print(e));
 }
 
-void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
+void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
   const Nest& nest = tp.k->nests[n];
   code.open("");
   int opened = 1;
@@ -158,22 +159,28 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
   std::set<std::string> vars;
   for (size_t i = 0; i < nest.stores.size(); ++i) {
     const Store& s = nest.stores[i];
-    const ExprP& dot = tp.dot[n][i];
-    std::map<int, LocalP> cond_locals;
+    // `+=` adds the values to the elements (hoist.hpp: summed).
+    const ExprP index = hoist(s.index);
+    const ExprP value = hoist(s.value, s.accumulate);
+    const ExprP dot = is_zero(tp.dot[n][i]) ? tp.dot[n][i] : hoist(tp.dot[n][i], s.accumulate);
+    std::vector<PathCond> path;
     for (const auto& pc : s.path)
+      path.push_back(hoist(pc));
+    std::map<int, LocalP> cond_locals;
+    for (const auto& pc : path)
       collect(pc.cond, cond_locals, vars);
     define_locals(code, cond_locals, done);
-    bool guarded = !s.path.empty();
+    bool guarded = !path.empty();
     if (guarded)
-      code.open(fmt::format("if ({})", conjunction(s.path)));
+      code.open(fmt::format("if ({})", conjunction(path)));
     std::map<int, LocalP> locals;
-    collect(s.index, locals, vars);
-    collect(s.value, locals, vars);
+    collect(index, locals, vars);
+    collect(value, locals, vars);
     collect(dot, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
-    std::string idx = subscript(s.index, tp.k->shape_of(s.array));
+    std::string idx = subscript(index, tp.k->shape_of(s.array));
     std::string dot_text = !is_zero(dot)                             ? print(dot)
                            : type_spelling(s.value->type) == "float" ? "0.0f"
                                                                      : "0.0";
@@ -181,14 +188,14 @@ void emit_nest(Code& code, const TangentPlan& tp, size_t n) {
     if (twin && !twin->twin_of.empty()) {
       // In place: both values from the old element first, then the stores.
       const std::string& u = twin->twin_of;
-      const std::string value = tp.k->fresh(u + "_new_value");
+      const std::string new_value = tp.k->fresh(u + "_new_value");
       const std::string value_dot = tp.k->fresh(u + "_new_dot");
-      code.line("const {} {} = {};", type_spelling(s.value->type), value, print(s.value));
+      code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
       code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
-      code.line("{}{} = {};", u, idx, value);
+      code.line("{}{} = {};", u, idx, new_value);
       code.line("{}_dot{} = {};", u, idx, value_dot);
     } else {
-      code.line("{}{} {} {};", s.array, idx, op, print(s.value));
+      code.line("{}{} {} {};", s.array, idx, op, print(value));
       code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
     }
     if (guarded)
@@ -233,10 +240,16 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
     }
   emit_size_checks(code, k, k.name + "_tangent");
+  // The nests go to a buffer first: the subexpressions they hoist are defined
+  // before them.
+  Hoister hoist(k, &tp.locals.taken);
+  Code nests(code.depth());
   for (size_t n = 0; n < k.nests.size(); ++n) {
-    code.line("// loop nest {}: each store, then its tangent", n + 1);
-    emit_nest(code, tp, n);
+    nests.line("// loop nest {}: each store, then its tangent", n + 1);
+    emit_nest(nests, tp, hoist, n);
   }
+  hoist.emit(code);
+  code.raw(nests.str());
   code.close();
   if (shaped) {
     code.raw("} // namespace\n\n");

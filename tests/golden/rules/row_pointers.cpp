@@ -50,6 +50,8 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:                           int nx, int ny, double r) {
 // CPP-NEXT:   const std::ptrdiff_t dpgen_rows_u = 1099511627776;
 // CPP-NEXT:   const std::ptrdiff_t dpgen_rows_un = 1099511627776;
+// CPP-NEXT:   // loop-invariant, hoisted: computed once here, the same expressions as in the loops below
+// CPP-NEXT:   const auto hoisted0 = 1.0 - r * 4.0;
 // CPP-NEXT:   // u_adj[c_j][c_i]: each cell gathers the reads of u made by the iterations (j, i)
 // CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
@@ -60,7 +62,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
 // CPP-NEXT:         if (j >= 1 && j < ny - 1 && i >= 1 && i < nx - 1) {
-// CPP-NEXT:           acc += (1.0 - r * 4.0) * un_adj[j][i];
+// CPP-NEXT:           acc += hoisted0 * un_adj[j][i];
 // CPP-NEXT:           hit = true;
 // CPP-NEXT:         }
 // CPP-NEXT:       }
@@ -151,7 +153,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
 // CPP-NEXT:         acc_s1 += un_adj[j][i];
 // CPP-NEXT:       }
-// CPP-NEXT:       acc += (1.0 - r * 4.0) * acc_s0;
+// CPP-NEXT:       acc += hoisted0 * acc_s0;
 // CPP-NEXT:       acc += r * acc_s1;
 // CPP-NEXT:       u_adj[c_j][c_i] += acc;
 // CPP-NEXT:     };

@@ -1,0 +1,235 @@
+// Loop-invariant subexpressions hoisted out of generated loops (hoist.hpp).
+#include "hoist.hpp"
+
+#include "ir_walk.hpp"
+#include "print.hpp"
+
+#include <fmt/format.h>
+#include <functional>
+
+namespace dpgen {
+
+namespace {
+
+// The same in every iteration: no loop counter, no array read, and loop-level
+// locals only through definitions that are themselves invariant.
+bool invariant(const ExprP& e, std::map<const LocalVar*, bool>& memo) {
+  if (e->op == Op::LoopVar || e->op == Op::Read)
+    return false;
+  if (e->op == Op::Local) {
+    if (e->local->kernel_level)
+      return true;
+    auto it = memo.find(e->local.get());
+    if (it != memo.end())
+      return it->second;
+    return memo[e->local.get()] = invariant(e->local->def, memo);
+  }
+  for (const auto& o : e->ops)
+    if (!invariant(o, memo))
+      return false;
+  return true;
+}
+
+// Nothing in `e` can behave otherwise when evaluated where the source would
+// not evaluate it: no integer division or remainder (by zero), no shift (by
+// too much), no conversion of a real to an integer (out of range). Real
+// arithmetic and the math functions give a value for every argument.
+bool safe_anywhere(const ExprP& e) {
+  return !any_node(e, [](const ExprP& x) {
+    switch (x->op) {
+    case Op::Div:
+    case Op::Rem:
+      return !is_real(x->type);
+    case Op::Shl:
+    case Op::Shr:
+      return true;
+    case Op::Cast:
+      return !is_real(x->type) && is_real(x->ops[0]->type);
+    default:
+      return false;
+    }
+  });
+}
+
+// Costs an instruction worth saving (a lone cast or sum of parameters does not).
+bool worth_hoisting(const ExprP& e) {
+  return any_node(e, [](const ExprP& x) {
+    return x->op == Op::Div || x->op == Op::Mul || x->op == Op::Call;
+  });
+}
+
+bool is_leaf(const ExprP& e) {
+  switch (e->op) {
+  case Op::IntConst:
+  case Op::RealConst:
+  case Op::Param:
+  case Op::LoopVar:
+  case Op::Local:
+  case Op::Read:
+    return true;
+  default:
+    return false;
+  }
+}
+
+} // namespace
+
+bool Hoister::hoistable(const ExprP& e, bool summed) const {
+  if (!is_real(e->type) || is_leaf(e) || e->op == Op::Neg)
+    return false;
+  if (summed && e->op == Op::Mul) // a * b + c: may become one fused multiply-add
+    return false;
+  std::map<const LocalVar*, bool> memo;
+  if (!invariant(e, memo) || !safe_anywhere(e) || !worth_hoisting(e))
+    return false;
+  return locals_move(e); // its loop-level locals move with it
+}
+
+ExprP Hoister::operator()(const ExprP& e, bool summed) {
+  if (!e)
+    throw std::logic_error("internal error: hoist: a null expression");
+  return rewrite(e, summed);
+}
+
+PathCond Hoister::operator()(const PathCond& pc) { return {rewrite(pc.cond, false), pc.positive}; }
+
+ExprP Hoister::rewrite(const ExprP& e, bool summed) {
+  if (hoistable(e, summed))
+    return hoist(e);
+  if (e->op == Op::Local) {
+    if (e->local->kernel_level)
+      return e;
+    auto it = locals_.find(e->local.get());
+    if (it != locals_.end())
+      return it->second.second;
+    // An invariant local moves before the loops as it is; any other keeps
+    // its place, its definition rewritten (where the local is used is not
+    // known here: the definition counts as summed).
+    ExprP out = e;
+    if (movable(e)) {
+      out = move(e);
+    } else {
+      ExprP def = rewrite(e->local->def, true);
+      if (def != e->local->def) {
+        auto l = std::make_shared<LocalVar>(*e->local);
+        l->def = def;
+        out = local_ref(l);
+      }
+    }
+    locals_[e->local.get()] = {e->local, out};
+    return out;
+  }
+  std::vector<bool> sums(e->ops.size(), false);
+  switch (e->op) {
+  case Op::Add:
+  case Op::Sub:
+    sums.assign(e->ops.size(), true);
+    break;
+  case Op::Neg:
+    sums[0] = summed;
+    break;
+  case Op::Select:
+    sums[1] = sums[2] = summed;
+    break;
+  default:
+    break;
+  }
+  size_t i = 0;
+  return map_operands(e, [&](const ExprP& o) { return rewrite(o, sums[i++]); });
+}
+
+// A loop-level local that moves before the loops: a real (index arithmetic
+// stays where the index algebra sees it) whose definition is invariant, safe
+// anywhere and worth hoisting (`s = 0.0` stays), not a product (a sum may use
+// the local: see hoist.hpp), every local it uses moves too, and no other
+// local of its name moved with another definition (the emitter specializes
+// locals per box). The same test wherever the local is met, so a local is
+// defined either before the loops or in them, never both.
+bool Hoister::movable(const ExprP& e) const {
+  const ExprP& def = e->local->def;
+  std::map<const LocalVar*, bool> memo;
+  if (!is_real(def->type) || !invariant(def, memo) || !safe_anywhere(def) ||
+      !worth_hoisting(def) || def->op == Op::Mul ||
+      (def->op == Op::Neg && def->ops[0]->op == Op::Mul))
+    return false;
+  auto it = moved_.find(e->local->name);
+  if (it != moved_.end() && it->second.first != print(def))
+    return false;
+  return locals_move(def);
+}
+
+// Every loop-level local `e` uses (directly, not through definitions) moves.
+bool Hoister::locals_move(const ExprP& e) const {
+  bool ok = true;
+  std::set<const LocalVar*> seen;
+  walk(
+      e, [&](const ExprP&) { return ok; },
+      [&](const ExprP& l) {
+        ok = ok && (l->local->kernel_level || movable(l));
+        return false;
+      },
+      seen);
+  return ok;
+}
+
+ExprP Hoister::move(const ExprP& e) {
+  auto it = moved_.find(e->local->name);
+  if (it != moved_.end())
+    return it->second.second;
+  auto l = std::make_shared<LocalVar>(*e->local);
+  l->def = with_moved_locals(e->local->def);
+  l->kernel_level = true;
+  hoisted_.push_back(l);
+  ExprP out = local_ref(l);
+  moved_[l->name] = {print(e->local->def), out};
+  return out;
+}
+
+// `e` (invariant, its locals movable) with its loop-level locals replaced by
+// the ones moved before the loops.
+ExprP Hoister::with_moved_locals(const ExprP& e) {
+  if (e->op == Op::Local)
+    return e->local->kernel_level ? e : move(e);
+  return map_operands(e, [&](const ExprP& o) { return with_moved_locals(o); });
+}
+
+ExprP Hoister::hoist(const ExprP& e) {
+  ExprP def = with_moved_locals(e);
+  std::string text = print(def);
+  auto it = by_text_.find(text);
+  if (it != by_text_.end())
+    return local_ref(it->second);
+  auto l = std::make_shared<LocalVar>();
+  l->name = name_for(def);
+  l->type_name = "auto"; // the type the expression has in place
+  l->def = def;
+  l->kernel_level = true;
+  hoisted_.push_back(l);
+  by_text_[text] = l;
+  return local_ref(l);
+}
+
+// `inv_dx` for 1.0 / dx, else `hoisted<n>`; never a name of the kernel's
+// (Kernel::fresh), nor one given out before.
+std::string Hoister::name_for(const ExprP& e) {
+  std::string base = fmt::format("hoisted{}", names_.size());
+  if (e->op == Op::Div && is_const(e->ops[0], 1) &&
+      (e->ops[1]->op == Op::Param || e->ops[1]->op == Op::Local) && is_real(e->ops[1]->type))
+    base = "inv_" + e->ops[1]->name;
+  std::string name = k_.fresh(base);
+  while (names_.count(name) || (taken_ && taken_->count(name)))
+    name = k_.fresh(name + "_");
+  names_.insert(name);
+  return name;
+}
+
+void Hoister::emit(Code& code) const {
+  if (hoisted_.empty())
+    return;
+  code.line("// loop-invariant, hoisted: computed once here, the same expressions as in the "
+            "loops below");
+  for (const auto& l : hoisted_)
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+}
+
+} // namespace dpgen

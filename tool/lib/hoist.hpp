@@ -1,0 +1,75 @@
+// Emit (phase 6), shared by the emitters: loop-invariant subexpressions of
+// the code one generated function prints, hoisted out of its loops into
+// `const` locals defined once before them.
+#pragma once
+
+#include "emit_util.hpp"
+#include "ir.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dpgen {
+
+/// Replaces, in the expressions a generated function prints inside its
+/// loops, each loop-invariant subexpression (over parameters, constants and
+/// kernel-level locals only: `1.0 / dx`, `nu / (dx * dx)`) by a local that
+/// emit() defines before the loops. The local holds the very same expression
+/// tree, printed the same way and declared `auto`, so it has the type the
+/// expression had in place and every result stays bit-identical. Why: a
+/// derivative often copies a division of the forward into a conditional
+/// (`u[i] / dx <= 0.0 ? 1.0 / dx : 0.0`), and GCC will not evaluate a
+/// division that may trap where the source does not, so it does not
+/// vectorize such a loop; hoisted, the conditional selects between two values.
+///
+/// Not hoisted (the operands may be): a subtree that could behave otherwise
+/// when evaluated where the source would not evaluate it (integer division or
+/// remainder, shifts, a conversion to an integer), a lone negation (its
+/// operand is hoisted instead, so `-x` keeps its place in a product), and a
+/// product that a sum uses directly (`a * b + c`): the compiler may contract
+/// that pair into one fused multiply-add where it sees both, so the product
+/// stays next to its sum. A loop-level local whose whole definition is
+/// invariant moves as it is (same name, same type), under the same rules.
+class Hoister {
+public:
+  /// `taken`: names of generated locals the hoisted ones must not take
+  /// besides the kernel's (the tangent's `<local>_dot`); may be null.
+  explicit Hoister(const Kernel& k, const std::set<std::string>* taken = nullptr)
+      : k_(k), taken_(taken) {}
+  /// `e` with its hoistable subexpressions replaced. `summed`: the value is
+  /// added to something where it is used (`x += e`), so a product at its top
+  /// stays (see above).
+  ExprP operator()(const ExprP& e, bool summed = false);
+  /// The path condition with its condition rewritten.
+  PathCond operator()(const PathCond& pc);
+  bool empty() const { return hoisted_.empty(); }
+  /// The definitions, in order of first use, under a comment saying what
+  /// they are; nothing if there are none.
+  void emit(Code& code) const;
+
+private:
+  ExprP rewrite(const ExprP& e, bool summed);
+  bool hoistable(const ExprP& e, bool summed) const;
+  ExprP hoist(const ExprP& e);
+  bool movable(const ExprP& local) const;
+  bool locals_move(const ExprP& e) const;
+  ExprP move(const ExprP& local);
+  ExprP with_moved_locals(const ExprP& e);
+  std::string name_for(const ExprP& e);
+
+  const Kernel& k_;
+  const std::set<std::string>* taken_;
+  std::vector<LocalP> hoisted_;            // in order of definition
+  std::map<std::string, LocalP> by_text_;  // printed expression -> its local
+  std::set<std::string> names_;            // names given out
+  /// Loop-level locals seen, with what they became (the key kept alive, so
+  /// its address is not reused while it is a key).
+  std::map<const LocalVar*, std::pair<LocalP, ExprP>> locals_;
+  /// Locals moved before the loops, by name: their definition as printed, and
+  /// the reference to the moved one.
+  std::map<std::string, std::pair<std::string, ExprP>> moved_;
+};
+
+} // namespace dpgen
