@@ -45,3 +45,15 @@ DPGEN_KERNEL void lambda_for_each(DPGEN_IN const double* u, DPGEN_OUT double* ou
   auto square = [](double x) { return x * x; };
   for_interior(n, [&](int i) { out[i] = c * square(u[i + 1] - u[i - 1]) + u[i]; });
 }
+
+// A sum inside one iteration of the helper's loop (a window of half-width w
+// <= 1 per cell, a loop dpgen does not unroll): an accumulator of the body,
+// as in a loop nest of the kernel.
+DPGEN_KERNEL void lambda_window_sum(DPGEN_IN const double* u, DPGEN_OUT double* out, int n, int w) {
+  for_interior(n, [&](int i) {
+    double s = 0.0;
+    for (int m = -w; m <= w; ++m)
+      s += u[i + m] * u[i + m];
+    out[i] = std::sqrt(1.0 + s);
+  });
+}

@@ -57,5 +57,17 @@ TEST_CASE("styles: lambdas") {
       lambda_for_each_tangent(in[0], d[0], out[0], dout[0], n, 0.3);
     };
     dpgen_test::check_adjoint(e);
+
+    dpgen_test::Problem<double> w;
+    w.in_sizes = {N};
+    w.out_sizes = {N};
+    w.forward = [&](auto in, auto out) { lambda_window_sum(in[0], out[0], n, 1); };
+    w.adjoint = [&](auto in, auto adj, auto seed) {
+      lambda_window_sum_adjoint(in[0], adj[0], seed[0], n, 1);
+    };
+    w.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lambda_window_sum_tangent(in[0], d[0], out[0], dout[0], n, 1);
+    };
+    dpgen_test::check_adjoint(w);
   }
 }
