@@ -395,14 +395,13 @@ void Lowerer::check_layout(const FunctionDecl* op, const Param& p, SourceLocatio
   std::optional<Poly> index = poly(sub->getIdx());
   if (!index)
     why = "its index is not a sum of the indices times members or constants";
-  std::vector<Poly> strides;
-  for (unsigned d = 0; why.empty() && d < op->getNumParams(); ++d) {
-    Sym arg = Sym::counter(fmt::format("dpgen_arg{}", d));
+  if (why.empty())
     for (const auto& [m, c] : index->terms())
       if (std::count_if(m.begin(), m.end(), [](const Sym& s) { return s.is_counter(); }) > 1)
         why = "it multiplies two indices";
-    if (!why.empty())
-      break;
+  std::vector<Poly> strides;
+  for (unsigned d = 0; why.empty() && d < op->getNumParams(); ++d) {
+    Sym arg = Sym::counter(fmt::format("dpgen_arg{}", d));
     Poly stride = index->coefficient(arg);
     if (stride == Poly())
       why = fmt::format("its index does not depend on index {}", d + 1);
@@ -443,10 +442,8 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
     fail(oc->getBeginLoc(), fmt::format("view '{}': dpgen cannot see which operator() this is",
                                         p->name));
   const unsigned rank = oc->getNumArgs() - 1;
-  if (oc->getOperator() == OO_Subscript && rank != 1)
-    fail(oc->getBeginLoc(), fmt::format("view '{}': index it as {}(k, j, i)", p->name, p->name));
   if (oc->getOperator() == OO_Subscript)
-    fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with [] : index it with its "
+    fail(oc->getBeginLoc(), fmt::format("view '{}' is indexed with []: index it with its "
                                         "operator(), {}(i)",
                                         p->name, p->name));
   if (rank < 1 || rank > 4)
