@@ -594,6 +594,12 @@ private:
                                  "arrays as pointers",
                                  work_name(*k_.intermediates.begin()), p.name));
     std::map<std::string, std::vector<std::string>> ends;
+    auto add_end = [&](const std::string& array, const std::string& end) { // (once each)
+      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", end);
+      auto& v = ends[array];
+      if (std::find(v.begin(), v.end(), e) == v.end())
+        v.push_back(e);
+    };
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
         auto r = index_range(st, n);
@@ -604,8 +610,7 @@ private:
                                    st.array));
           continue;
         }
-        ends[st.array].push_back(
-            fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
+        add_end(st.array, (r->second + Poly::constant(1)).code());
       }
     // A later loop may read a work array beyond what was written (the
     // buffer holds NaN there): the buffer covers the reads too.
@@ -621,8 +626,7 @@ private:
                                 r.array));
         continue;
       }
-      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
-                                          (range->second + Poly::constant(1)).code()));
+      add_end(r.array, (range->second + Poly::constant(1)).code());
       // Provably outside every earlier store's range: an element no loop
       // writes, whose value is the caller's (the adjoint's buffer has NaN).
       bool outside_all = true, any_store = false;

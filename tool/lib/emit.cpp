@@ -722,8 +722,15 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   const Kernel& k = *plan.adjoint->kernel;
   const std::vector<Stage>& stages = plan.adjoint->stages; // schedule.cpp
   code.raw("namespace {\n");
+  // A nest whose stores have no derivative (a min/max reduction's scan and
+  // ties, lower_impl.hpp; a store of constants) has no adjoint stage.
+  auto idle = [&](size_t j) {
+    return stages[j].plan->gathers.empty() && stages[j].plan->scatters.empty();
+  };
   for (size_t j = 0; j < stages.size(); ++j) {
     const Kernel& s = *stages[j].kernel;
+    if (idle(j))
+      continue;
     code.line("// Adjoint of loop nest {} of {} ({}:{}).", j + 1, k.name, base_name(k.file),
               s.nests.front().stores.front().pos.line);
     code.open(fmt::format("void {}_adjoint({})", s.name, param_list(s, false)));
@@ -796,6 +803,8 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     code.line("{}({});", recompute, fmt::join(flat, ", "));
   for (size_t j = stages.size(); j-- > 0;) {
     const Kernel& s = *stages[j].kernel;
+    if (idle(j))
+      continue;
     std::vector<std::string> args;
     for (const auto& p : s.params) {
       bool work = k.intermediates.count(p.name) > 0;

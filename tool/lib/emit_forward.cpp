@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace dpgen {
 
 namespace {
@@ -29,7 +31,8 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
   std::set<std::string> vars;
   for (const auto& s : nest.stores) {
     const ExprP index = hoist(s.index);
-    const ExprP value = hoist(s.value, s.accumulate); // `+=`: summed (hoist.hpp)
+    // `+=`: summed (hoist.hpp)
+    const ExprP value = hoist(s.value, s.accumulate && s.extremum == 0);
     std::vector<PathCond> path;
     for (const auto& pc : s.path)
       path.push_back(hoist(pc));
@@ -45,8 +48,8 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
     collect(value, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}{} {} {};", s.array, subscript(index, k.shape_of(s.array)),
-              s.accumulate ? "+=" : "=", print(value));
+    code.line("{}", store_statement(s, s.array + subscript(index, k.shape_of(s.array)),
+                                    print(value)));
     if (guarded)
       code.close();
   }
@@ -70,9 +73,10 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
     ps.push_back(fmt::format("{}* {}", h.elem_name, h.name));
   code.line("// {} as its IR says, with the sums of its accumulators ({}) kept in arrays.",
             k.name, [&] {
-              std::vector<std::string> names;
+              std::vector<std::string> names; // (a min/max reduction has four)
               for (const auto& h : k.hidden)
-                names.push_back(h.spelling);
+                if (std::find(names.begin(), names.end(), h.spelling) == names.end())
+                  names.push_back(h.spelling);
               return fmt::format("{}", fmt::join(names, ", "));
             }());
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
