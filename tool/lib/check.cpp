@@ -566,11 +566,6 @@ private:
     if (k_.intermediates.empty() && !inout)
       return;
     for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && p.inout)
-        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with in-place array '{}': write the new "
-                                 "values of '{}' to a DPGEN_OUT array",
-                                 work_name(*k_.intermediates.begin()), p.name, p.name));
-    for (const auto& p : k_.params)
       if (k_.intermediates.count(p.name) && p.row_pointers)
         fail(k_.pos, "dpgen-work-array", fmt::format("work array '{}' (an output a later loop reads) has "
                                  "row pointers: the adjoint recomputes work arrays "

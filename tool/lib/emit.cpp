@@ -739,10 +739,14 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     code.raw("\n");
   }
   const std::string recompute = k.fresh(k.name + "_recompute");
-  if (!k.hidden.empty()) // the accumulators' sums: the user's kernel keeps them to itself
+  // The accumulators' sums (the user's kernel keeps them to itself), and an
+  // in-place array's old values (the user's kernel would overwrite them):
+  // recomputed by the forward as the IR says, into buffers.
+  const bool own_forward = !k.hidden.empty() || has_inout(k);
+  if (own_forward)
     emit_recompute(code, k, recompute);
   code.raw("} // namespace\n\n");
-  if (k.hidden.empty()) {
+  if (!own_forward) {
     code.line("// The forward kernel, which recomputes the work arrays.");
     code.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, forward_params(k));
     code.raw("\n");
@@ -797,7 +801,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
               b_of(h.name), n_of(h.name));
     flat.push_back(v_of(h.name) + ".data()");
   }
-  if (k.hidden.empty())
+  if (!own_forward)
     code.line("{}({});", k.name, fmt::join(fwd, ", "));
   else
     code.line("{}({});", recompute, fmt::join(flat, ", "));

@@ -62,8 +62,12 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
 void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
-    if (!p.twin_of.empty() || p.global)
+    if (p.global)
       continue;
+    if (!p.twin_of.empty()) { // an in-place array's new values: to a buffer
+      ps.push_back(fmt::format("{}* {}", p.elem_name, p.name));
+      continue;
+    }
     if (p.kind == ParamKind::Scalar)
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));
     else
