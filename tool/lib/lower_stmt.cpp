@@ -395,12 +395,16 @@ Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
 size_t Lowerer::local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n) {
   ExprP idx = expr(idx_expr);
   auto p = to_poly(idx);
-  if (!p || !p->is_constant())
+  // (an affine constant, or one C's integer operators give: `m % 2`, `m >> 1`
+  // of an unrolled counter)
+  std::optional<long long> value =
+      p && p->is_constant() ? std::optional<long long>(p->constant_term()) : int_value(idx);
+  if (!value)
     fail(idx_expr->getBeginLoc(),
          fmt::format("index of local array '{}' must be a constant (or the counter of a small "
                      "loop with constant bounds, which dpgen unrolls)",
                      v->getNameAsString()));
-  long long k = p->constant_term();
+  long long k = *value;
   if (k < 0 || k >= static_cast<long long>(n))
     fail(idx_expr->getBeginLoc(), fmt::format("index {} is outside local array '{}' of {} "
                                               "elements",
