@@ -32,6 +32,23 @@ const std::string& annotate_header() {
   return text;
 }
 
+// The headers the kernels may include: annotate.hpp, and the style corpus's
+// class headers (array views, member-kernel classes), by the names the seeds
+// use ("include/user_views.hpp") and the names they use among themselves.
+const std::vector<std::pair<std::string, std::string>>& headers() {
+  static const std::vector<std::pair<std::string, std::string>> h = [] {
+    std::vector<std::pair<std::string, std::string>> out = {
+        {"dpgen/annotate.hpp", annotate_header()}};
+    for (const char* name : {"user_views.hpp", "member_classes.hpp"}) {
+      std::string text = read_file((std::string(DPGEN_STYLE_INCLUDE_DIR) + "/" + name).c_str());
+      out.push_back({name, text});
+      out.push_back({std::string("include/") + name, text});
+    }
+    return out;
+  }();
+  return h;
+}
+
 dpgen::FrontendOptions options() {
   dpgen::FrontendOptions o;
   o.resource_dir = DPGEN_CLANG_RESOURCE_DIR;
@@ -43,10 +60,12 @@ dpgen::FrontendOptions options() {
 // Parses the generated source with its header; true when it compiles.
 bool compiles(const dpgen::EmittedFile& f) {
   std::vector<std::string> args = {"-std=c++17", "-w", "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
+  clang::tooling::FileContentMappings files = {{"fuzz_adjoint.hpp", f.header}};
+  for (const auto& [name, text] : headers())
+    files.push_back({name, text});
   return clang::tooling::runToolOnCodeWithArgs(
       std::make_unique<clang::SyntaxOnlyAction>(), f.source, args, "fuzz_adjoint.cpp",
-      DPGEN_CLANG_DRIVER, std::make_shared<clang::PCHContainerOperations>(),
-      {{"fuzz_adjoint.hpp", f.header}});
+      DPGEN_CLANG_DRIVER, std::make_shared<clang::PCHContainerOperations>(), files);
 }
 
 // The phases after lowering, as generate.cpp runs them: derive, schedule,
@@ -71,14 +90,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return 0;
   std::string code(reinterpret_cast<const char*>(data), size);
   std::vector<dpgen::Kernel> kernels;
-  if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels,
-                         {{"dpgen/annotate.hpp", annotate_header()}}))
+  if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels, headers()))
     return 0; // rejected with a diagnostic: fine
   dpgen::EmittedFile f = generate(kernels);
   // The output is a function of the kernel alone: the same input again, in
   // the same process, gives the same text (no counters that survive a run).
   std::vector<dpgen::Kernel> again;
-  dpgen::lower_code(code, "fuzz.cpp", options(), again, {{"dpgen/annotate.hpp", annotate_header()}});
+  dpgen::lower_code(code, "fuzz.cpp", options(), again, headers());
   dpgen::EmittedFile f2 = generate(again);
   if (f2.source != f.source || f2.header != f.header) {
     llvm::errs() << "fuzz: the same kernel generated different code on a second run:\n"

@@ -3,8 +3,10 @@
 
 The fuzzer hands the generator one buffer with no include path beyond
 dpgen/annotate.hpp, so a seed's own headers are inlined here: a
-`#include "x.hpp"` found next to the including file (or below it, as
-`include/user_views.hpp`) is replaced by that header's text, once per seed;
+`#include "x.hpp"` found next to the including file is replaced by that
+header's text, once per seed, except the style corpus's class headers
+(`include/user_views.hpp`: view and member classes must be in a header,
+and fuzz_generator.cpp maps them);
 the generated-declaration headers (`*kernels.hpp`, `operators.hpp`) become
 `#include "dpgen/annotate.hpp"` (they declare the kernels and include it).
 
@@ -30,6 +32,9 @@ def inline(path, seen):
             name = m.group(1)
             if name == "dpgen/annotate.hpp" or name.endswith("kernels.hpp") or name == "operators.hpp":
                 out.append(ANNOTATE + "\n")
+                continue
+            if name.startswith("include/"):  # (class headers: the fuzzer maps them)
+                out.append(line)
                 continue
             header = os.path.normpath(os.path.join(os.path.dirname(path), name))
             if not os.path.isfile(header):
