@@ -543,6 +543,14 @@ ExprP Lowerer::expr(const clang::Expr* e) {
   }
   if (auto acc = element(e)) {
     const Param* p = acc->param;
+    if (!acc->dims.empty()) { // a view at a periodic wrap
+      if (p->kind == ParamKind::Out)
+        fail(e->getBeginLoc(), fmt::format("output view '{}' is read back at a choice of "
+                                           "positions (a periodic wrap); read the input it "
+                                           "came from",
+                                           p->name));
+      return piecewise_read(*acc, 0, acc->dims, pos(e->getBeginLoc()), text(e));
+    }
     if (p->kind == ParamKind::Out) {
       // An output read back in the iteration that stored it: that value.
       order_after_later_stores(p->name);

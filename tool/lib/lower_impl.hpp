@@ -537,7 +537,18 @@ private:
   struct Access {
     const Param* param;
     ExprP index;
+    // A view of rank 2 or more indexed at a periodic wrap (`q(k, j, im)` with
+    // `im = i == 0 ? nx - 1 : i - 1`): its indices per dimension, some a
+    // select of affine arms. A read is then the select of the reads
+    // (piecewise_read); `index` is the first arms' (a store is an error).
+    std::vector<ExprP> dims;
   };
+  // The read of a view element at a piecewise index: the selects of the
+  // index, outermost first, made selects of affine reads.
+  ExprP piecewise_read(const Access& a, size_t d, std::vector<ExprP> idx, SourcePos at,
+                       const std::string& source);
+  // The flat index of view `p` at per-dimension indices `idx`.
+  ExprP view_flat(const Param& p, const std::vector<ExprP>& idx);
 
   std::optional<Access> element(const clang::Expr* e);
 

@@ -967,7 +967,7 @@ void Lowerer::start_element_reductions(const ForStmt* f, const VarDecl* counter_
     if (kind == 0)
       continue;
     auto acc = element(t.element);
-    if (!acc || acc->param->kind != ParamKind::Out || acc->param->inout || acc->param->global)
+    if (!acc || !acc->dims.empty() || acc->param->kind != ParamKind::Out || acc->param->inout || acc->param->global)
       continue;
     const Param* p = acc->param;
     auto nit = nest_index_.find(cur_key());

@@ -510,6 +510,11 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
     }
   if (auto acc = element(lhs)) {
     const Param* p = acc->param;
+    if (!acc->dims.empty())
+      fail(lhs->getBeginLoc(), fmt::format("view '{}' is written at a choice of positions (a "
+                                           "periodic wrap): write each element at an affine "
+                                           "index, with the wrap as a branch around the store",
+                                           p->name));
     if (p->inout) {
       // u[k] = v / u[k] += v on an in-place array: a store of the new value
       // into its twin; `+=` adds to the value u[k] has here (the old one, or

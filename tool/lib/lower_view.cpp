@@ -458,25 +458,75 @@ auto Lowerer::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Acces
   if (p->view_rank == 0) // k_.params owns it: the rank is known from here on
     const_cast<Param*>(p)->view_rank = static_cast<int>(rank);
   std::vector<ExprP> idx;
+  bool piecewise = false;
   for (unsigned d = 1; d <= rank; ++d) {
     ExprP x = expr(oc->getArg(d));
     if (x->type != Type::Int)
       fail(oc->getArg(d)->getBeginLoc(), "array index must be an integer");
-    if (rank > 1 && !to_poly(x))
-      fail(oc->getArg(d)->getBeginLoc(),
-           fmt::format("view '{}' is indexed at a data-dependent position; dpgen needs every "
-                       "index of a view of rank 2 to 4 affine in the loop counters and sizes",
-                       p->name));
+    if (rank > 1 && !to_poly(x)) {
+      // A periodic wrap, `i == 0 ? nx - 1 : i - 1` (through locals): a
+      // select whose arms are affine, or selects of such.
+      std::function<bool(const ExprP&)> arms = [&](const ExprP& y) {
+        if (y->op == Op::Local)
+          return arms(y->local->def);
+        if (y->op == Op::Select)
+          return arms(y->ops[1]) && arms(y->ops[2]);
+        return to_poly(y).has_value();
+      };
+      if (!arms(x))
+        fail(oc->getArg(d)->getBeginLoc(),
+             fmt::format("view '{}' is indexed at a data-dependent position; dpgen needs every "
+                         "index of a view of rank 2 to 4 affine in the loop counters and "
+                         "sizes, or a choice between affine ones (a periodic wrap)",
+                         p->name));
+      piecewise = true;
+    }
     idx.push_back(x);
   }
-  // a(k, j, i): k * P + j * R + i (the innermost index last); a(n, k, j, i)
-  // adds n * C
+  if (!piecewise)
+    return Access{p, view_flat(*p, idx), {}};
+  std::vector<ExprP> first = idx; // (the first arms: an affine index for messages)
+  for (auto& x : first)
+    while (!to_poly(x))
+      x = x->op == Op::Local ? x->local->def : x->ops[1];
+  return Access{p, view_flat(*p, first), idx};
+}
+
+// a(k, j, i): k * P + j * R + i (the innermost index last); a(n, k, j, i)
+// adds n * C.
+ExprP Lowerer::view_flat(const Param& p, const std::vector<ExprP>& idx) {
+  const size_t rank = idx.size();
   ExprP flat = idx.back();
-  for (unsigned d = 0; d + 1 < rank; ++d) {
+  for (size_t d = 0; d + 1 < rank; ++d) {
     int level = static_cast<int>(rank - 1 - d);
-    flat = binary(Op::Add, binary(Op::Mul, idx[d], level_symbol(*p, level)), flat);
+    flat = binary(Op::Add, binary(Op::Mul, idx[d], level_symbol(p, level)), flat);
   }
-  return Access{p, flat};
+  return flat;
+}
+
+// q(k, j, i == 0 ? nx - 1 : i - 1) is i == 0 ? q(k, j, nx - 1) : q(k, j, i - 1):
+// each arm an affine read, and the adjoint of a select is its arms' under
+// their conditions.
+ExprP Lowerer::piecewise_read(const Access& a, size_t d, std::vector<ExprP> idx, SourcePos at,
+                              const std::string& source) {
+  if (d == idx.size()) {
+    ExprP r = read(a.param->name, view_flat(*a.param, idx), a.param->elem, at, shape_of(*a.param));
+    std::const_pointer_cast<Expr>(r)->source = source;
+    return r;
+  }
+  ExprP x = idx[d];
+  while (x->op == Op::Local && !to_poly(x))
+    x = x->local->def;
+  if (to_poly(x)) {
+    idx[d] = x;
+    return piecewise_read(a, d + 1, idx, at, source);
+  }
+  auto arm = [&](const ExprP& y) {
+    std::vector<ExprP> with = idx;
+    with[d] = y;
+    return piecewise_read(a, d, with, at, source);
+  };
+  return select(x->ops[0], arm(x->ops[1]), arm(x->ops[2]));
 }
 
 std::optional<std::string> Lowerer::object_text(const clang::Expr* e) {
