@@ -537,17 +537,8 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
   // read guarded by the arms it sits in.
   std::set<int> done;
   std::set<std::string> vars;
-  if (!s.path.empty()) {
-    std::vector<PathCond> path;
-    for (const auto& pc : s.path)
-      path.push_back(hoist(pc));
-    std::map<int, LocalP> cond_locals;
-    for (const auto& pc : path)
-      collect(pc.cond, cond_locals, vars);
-    define_locals(code, cond_locals, done);
-    code.open(fmt::format("if ({})", conjunction(path)));
+  if (open_guard(code, s.path, hoist, done, vars))
     ++opened;
-  }
   std::map<int, LocalP> seed_locals;
   collect(out_index, seed_locals, vars);
   define_locals(code, seed_locals, done);
@@ -557,17 +548,7 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
               out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->shape),
               r.read->source);
-    bool guarded = !r.conds.empty();
-    if (guarded) {
-      std::vector<PathCond> conds;
-      for (const auto& pc : r.conds)
-        conds.push_back(hoist(pc));
-      std::map<int, LocalP> cond_locals;
-      for (const auto& pc : conds)
-        collect(pc.cond, cond_locals, vars);
-      define_locals(code, cond_locals, done);
-      code.open(fmt::format("if ({})", conjunction(conds)));
-    }
+    bool guarded = open_guard(code, r.conds, hoist, done, vars);
     ExprP partial = hoist(nonzero_partial(r.partial));
     ExprP index = hoist(r.read->ops[0]);
     std::map<int, LocalP> locals;

@@ -33,16 +33,7 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
     const ExprP index = hoist(s.index);
     // `+=`: summed (hoist.hpp)
     const ExprP value = hoist(s.value, s.accumulate && s.extremum == 0);
-    std::vector<PathCond> path;
-    for (const auto& pc : s.path)
-      path.push_back(hoist(pc));
-    std::map<int, LocalP> cond_locals;
-    for (const auto& pc : path)
-      collect(pc.cond, cond_locals, vars);
-    define_locals(code, cond_locals, done);
-    bool guarded = !path.empty();
-    if (guarded)
-      code.open(fmt::format("if ({})", conjunction(path)));
+    bool guarded = open_guard(code, s.path, hoist, done, vars);
     std::map<int, LocalP> locals;
     collect(index, locals, vars);
     collect(value, locals, vars);

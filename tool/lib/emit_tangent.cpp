@@ -164,16 +164,7 @@ void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
     const bool summed = s.accumulate && s.extremum == 0;
     const ExprP value = hoist(s.value, summed);
     const ExprP dot = is_zero(tp.dot[n][i]) ? tp.dot[n][i] : hoist(tp.dot[n][i], summed);
-    std::vector<PathCond> path;
-    for (const auto& pc : s.path)
-      path.push_back(hoist(pc));
-    std::map<int, LocalP> cond_locals;
-    for (const auto& pc : path)
-      collect(pc.cond, cond_locals, vars);
-    define_locals(code, cond_locals, done);
-    bool guarded = !path.empty();
-    if (guarded)
-      code.open(fmt::format("if ({})", conjunction(path)));
+    bool guarded = open_guard(code, s.path, hoist, done, vars);
     std::map<int, LocalP> locals;
     collect(index, locals, vars);
     collect(value, locals, vars);

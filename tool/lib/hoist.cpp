@@ -232,4 +232,19 @@ void Hoister::emit(Code& code) const {
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
 }
 
+bool open_guard(Code& code, const std::vector<PathCond>& conds, Hoister& hoist,
+                std::set<int>& done, std::set<std::string>& vars) {
+  if (conds.empty())
+    return false;
+  std::vector<PathCond> hoisted;
+  for (const auto& pc : conds)
+    hoisted.push_back(hoist(pc));
+  std::map<int, LocalP> cond_locals;
+  for (const auto& pc : hoisted)
+    collect(pc.cond, cond_locals, vars);
+  define_locals(code, cond_locals, done);
+  code.open(fmt::format("if ({})", conjunction(hoisted)));
+  return true;
+}
+
 } // namespace dpgen

@@ -72,4 +72,10 @@ private:
   std::map<std::string, std::pair<std::string, ExprP>> moved_;
 };
 
+/// Opens `if (<conds>)` for a guarded statement of a generated loop: each
+/// condition hoisted, the locals they use defined first (into `done`, as
+/// define_locals does). False, and nothing written, when `conds` is empty.
+bool open_guard(Code& code, const std::vector<PathCond>& conds, Hoister& hoist,
+                std::set<int>& done, std::set<std::string>& vars);
+
 } // namespace dpgen
