@@ -56,8 +56,11 @@ private:
   // A work array as the user knows it: a hidden one is their accumulator.
   std::string work_name(const std::string& array) const {
     for (const auto& h : k_.hidden)
-      if (h.name == array)
-        return fmt::format("the sum in '{}' (read after the loop that adds to it)", h.spelling);
+      if (h.name == array) {
+        if (h.name.rfind("dpgen_sum_", 0) == 0)
+          return fmt::format("the sum in '{}' (read after the loop that adds to it)", h.spelling);
+        return fmt::format("the min/max reduction '{}' (read after its loop)", h.spelling);
+      }
     return fmt::format("work array '{}' (an output a later loop reads)", array);
   }
 
@@ -80,6 +83,38 @@ private:
   // its iteration writes (anything else reads a value another iteration may
   // have updated: Gauss-Seidel), and never after a loop that wrote it.
   void check_inout() {
+    // Where an in-place array is written decides which seeds pass through;
+    // the adjoint's entry evaluates that before anything is recomputed, so
+    // the condition may not read what the kernel computes (a sum, a work
+    // array) in an earlier loop.
+    for (const auto& p : k_.params) {
+      if (!p.inout)
+        continue;
+      const std::string twin = p.name + "_new";
+      for (const auto& n : k_.nests)
+        for (const auto& st : n.stores) {
+          if (st.array != twin)
+            continue;
+          for (const auto& pc : st.path) {
+            const Expr* computed = nullptr;
+            any_node(pc.cond, [&](const ExprP& x) {
+              if (x->op == Op::Read && (hidden(x->name) || k_.intermediates.count(x->name)))
+                computed = x.get();
+              return computed != nullptr;
+            });
+            if (!computed)
+              continue;
+            fail(st.pos, "dpgen-inplace",
+                 fmt::format("in-place array '{}' is updated under a condition on {}, which "
+                             "the kernel computes in an earlier loop: the adjoint decides which "
+                             "elements pass through before it recomputes that; write the new "
+                             "values to a separate DPGEN_OUT array, or make the update "
+                             "unconditional (a select of the two values)",
+                             p.name, work_name(computed->name)));
+            break;
+          }
+        }
+    }
     for (const auto& r : a_.inout_reads)
       for (const auto& s : a_.inout_stores) { // the first store it conflicts with
         if (s.array != r.array)
@@ -386,31 +421,41 @@ private:
     if (!c.is_constant() || c.constant_term() == 0 || !(c == py->coefficient(Sym::counter(loop->var))) ||
         !d.is_constant() || d.constant_term() % c.constant_term() != 0)
       return false;
-    // x at t + k writes what y wrote at t (k > 0: later); k < 0: y at t - k
-    // writes what x wrote at t.
+    // x at t + k writes what y wrote at t, and y at t - k what x wrote at t;
+    // the one of the two iterations that runs later wins: t + k when the loop
+    // counts up and k > 0, when it counts down and k < 0.
     long long k = d.constant_term() / c.constant_term();
-    if (k == 0)
+    if (k == 0 || !to_poly(loop->lo))
       return false;
-    Store& dead = k > 0 ? y : x;
-    const Store& over = k > 0 ? x : y;
+    const bool y_dies = (k > 0) != loop->descending;
+    Store& dead = y_dies ? y : x;
+    const Store& over = y_dies ? x : y;
     if (!over.path.empty())
       return false;
-    long long shift = k > 0 ? k : -k;
-    ExprP later = binary(Op::Add, loop_var(loop->var), int_const(shift));
-    dead.path.push_back({binary(Op::Lt, later, loop->hi), false});
+    // The overwriting iteration, from the dead store's t: t + k (y dies) or
+    // t - k (x dies); it exists where it is inside the loop's range.
+    ExprP t = loop_var(loop->var);
+    ExprP later = binary(Op::Add, t, int_const(y_dies ? k : -k));
+    ExprP exists = loop->descending ? binary(Op::Ge, later, loop->lo)
+                                    : binary(Op::Lt, later, loop->hi);
+    dead.path.push_back({exists, false});
     return true;
   }
 
   // Condition `c` holds for one value of counter `var` at most: `i == 0`,
   // `i == n - 1`, `2 * t + 1 == k` (an equation linear in `var` with a
   // constant coefficient), or a conjunction with one such part.
-  static bool pins(const ExprP& c, bool positive, const std::string& var) {
+  // The rest of the equation may mention only counters in `free` (those
+  // that move the store's index: `if (i == j) d[i] = ...` pins j given i),
+  // never one that also stays (`if (i == j) tr[0] = ...` runs n times).
+  static bool pins(const ExprP& c, bool positive, const std::string& var,
+                   const std::set<std::string>& free) {
     if (positive && c->op == Op::And)
-      return pins(c->ops[0], true, var) || pins(c->ops[1], true, var);
+      return pins(c->ops[0], true, var, free) || pins(c->ops[1], true, var, free);
     if (!positive && c->op == Op::Or) // !(a || b): !a && !b
-      return pins(c->ops[0], false, var) || pins(c->ops[1], false, var);
+      return pins(c->ops[0], false, var, free) || pins(c->ops[1], false, var, free);
     if (!positive && c->op == Op::Not)
-      return pins(c->ops[0], true, var);
+      return pins(c->ops[0], true, var, free);
     if (c->op != (positive ? Op::Eq : Op::Ne))
       return false;
     auto a = to_poly(c->ops[0]), b = to_poly(c->ops[1]);
@@ -418,14 +463,22 @@ private:
       return false;
     Poly d = *a - *b;
     Poly coef = d.coefficient(Sym::counter(var));
-    return coef.is_constant() && coef.constant_term() != 0 &&
-           !(d - coef * Poly::counter(var)).mentions_counter(var);
+    if (!coef.is_constant() || coef.constant_term() == 0)
+      return false;
+    Poly rest = d - coef * Poly::counter(var);
+    for (const auto& [m, k] : rest.terms())
+      for (const auto& sym : m)
+        if (sym.is_counter() && !free.count(sym.name))
+          return false;
+    return true;
   }
-  // Store `s` runs in one iteration of loop `var` at most (its path pins the
-  // counter): `if (i == 0) out[0] = ...` writes its element once.
-  static bool pinned(const Store& s, const std::string& var) {
-    return std::any_of(s.path.begin(), s.path.end(),
-                       [&](const PathCond& pc) { return pins(pc.cond, pc.positive, var); });
+  // Store `s` runs in one iteration of loop `var` at most for each value of
+  // the counters in `free` (its path pins the counter): `if (i == 0) out[0] =
+  // ...` writes its element once.
+  static bool pinned(const Store& s, const std::string& var, const std::set<std::string>& free) {
+    return std::any_of(s.path.begin(), s.path.end(), [&](const PathCond& pc) {
+      return pins(pc.cond, pc.positive, var, free);
+    });
   }
 
   // One store's index: affine, each term with one counter at most, moving
@@ -441,6 +494,10 @@ private:
       return false;
     }
     std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
+    std::set<std::string> moving; // the counters the index moves with
+    for (const auto& l : nest.loops)
+      if (!(p->coefficient(Sym::counter(l.var)) == Poly()))
+        moving.insert(l.var);
     for (const auto& l : nest.loops) {
       Poly c = p->coefficient(Sym::counter(l.var));
       if (c.mentions_any_counter()) {
@@ -448,7 +505,7 @@ private:
         return false;
       }
       if (c == Poly()) {
-        if (s.accumulate || pinned(s, l.var))
+        if (s.accumulate || pinned(s, l.var, moving))
           continue; // a reduction: every iteration adds to the same element
         fail(s.pos, "dpgen-write-once", fmt::format("output '{}' is written at the same index by every "
                                 "iteration of loop '{}' (a reduction or a loop-carried "
@@ -692,7 +749,18 @@ private:
                                    st.array));
           continue;
         }
-        add_end(st.array, (r->second + Poly::constant(1)).code());
+        // A store at an element that stays while a loop around it runs (a
+        // sum, a pinned store) reaches it only if that loop runs: an
+        // in-place array's seed copy must not read u_adj[0] of an empty one.
+        std::string end = (r->second + Poly::constant(1)).code();
+        std::vector<std::string> runs;
+        auto pi = to_poly(st.index);
+        for (const auto& l : n.loops)
+          if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi))
+            runs.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+        if (!runs.empty())
+          end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
+        add_end(st.array, end);
       }
     // A later loop may read a work array beyond what was written (the
     // buffer holds NaN there): the buffer covers the reads too.

@@ -204,15 +204,20 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
       out.push_back({e.get(), conds});
     } else {
       // Read again under other conditions (one node in both arms of a
-      // select): it happens where any occurrence's conditions hold; keep the
-      // conditions all occurrences share.
+      // select, or in a condition and in a value): it happens where any
+      // occurrence's conditions hold; keep the conditions all occurrences
+      // share, wherever they stand in each list (`c ? x : 0` with x = `i == 0
+      // ? 0 : a[i - 1]` reads a[i - 1] under `i != 0` both in c and in the arm).
       for (auto& site : out)
         if (site.read == e.get()) {
-          size_t k = 0;
-          while (k < site.conds.size() && k < conds.size() &&
-                 site.conds[k].cond == conds[k].cond && site.conds[k].positive == conds[k].positive)
-            ++k;
-          site.conds.resize(k);
+          auto shared = [&](const PathCond& pc) {
+            return std::any_of(conds.begin(), conds.end(), [&](const PathCond& q) {
+              return q.cond == pc.cond && q.positive == pc.positive;
+            });
+          };
+          site.conds.erase(std::remove_if(site.conds.begin(), site.conds.end(),
+                                          [&](const PathCond& pc) { return !shared(pc); }),
+                           site.conds.end());
         }
     }
   }

@@ -307,6 +307,10 @@ struct Loop {
   std::string var;
   std::string type_name; // "int", "long", ...
   ExprP lo, hi;          // lo <= var < hi; both depend on parameters only
+  /// The source counts down (`for (j = n - 1; j >= 0; --j)`): the same
+  /// iterations, later ones at smaller counters (what "later" means when one
+  /// iteration overwrites another's element, check.cpp: last_writer).
+  bool descending = false;
 };
 
 /// One condition on a store's path: `cond` held (positive) or did not.

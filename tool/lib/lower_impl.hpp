@@ -412,7 +412,8 @@ private:
   // After the accumulating loop: `v` is the sum, a read of its element.
   void finish_accumulator(const VarDecl* v, SourceLocation loc);
 
-  static void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
+  void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
+  std::set<const CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
 
   int loop_step(const clang::Expr* inc, const VarDecl* var);
 

@@ -308,6 +308,7 @@ void Lowerer::for_loop(const ForStmt* f) {
   loop->type_name = spelled(var->getType());
   loop->lo = lo;
   loop->hi = hi;
+  loop->descending = step < 0;
   ExprP counter = loop_var(loop->var);
   if (step > 1) {
     // for (i = lo; i < hi; i += s): the loop runs over the steps t in
@@ -1036,6 +1037,42 @@ void Lowerer::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
     target(b->getLHS());
   if (const auto* u = dyn_cast<UnaryOperator>(s); u && u->isIncrementDecrementOp())
     target(u->getSubExpr());
+  // Assigned through a call: a local passed to a helper's non-const
+  // reference (`setv(s, x)`) or by address (`upd(&s, x)`), and what a lambda
+  // called here assigns among the variables it captures by reference (its
+  // body names them directly). Without this, `s` after the loop would keep
+  // the value it had before it.
+  if (const auto* c = dyn_cast<CallExpr>(s)) {
+    const FunctionDecl* f = c->getDirectCallee();
+    for (unsigned i = 0; i < c->getNumArgs(); ++i) {
+      const clang::Expr* a = c->getArg(i)->IgnoreParenImpCasts();
+      bool by_address = false;
+      if (const auto* u = dyn_cast<UnaryOperator>(a); u && u->getOpcode() == UO_AddrOf) {
+        a = u->getSubExpr();
+        by_address = true;
+      }
+      QualType pt = f && i < f->getNumParams() ? f->getParamDecl(i)->getType() : QualType();
+      bool writable = by_address || pt.isNull() ||
+                      (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified());
+      if (writable)
+        target(a);
+    }
+  }
+  if (const auto* r = dyn_cast<DeclRefExpr>(s)) {
+    const auto* rd = r->getType().getNonReferenceType()->getAsCXXRecordDecl();
+    if (rd && rd->isLambda() && lambdas_seen_.insert(rd).second) {
+      if (const CXXMethodDecl* call = rd->getLambdaCallOperator())
+        assigned_vars(call->getBody(), out);
+      lambdas_seen_.erase(rd);
+    }
+  }
+  if (const auto* le = dyn_cast<LambdaExpr>(s)) { // (a lambda written at its use)
+    if (lambdas_seen_.insert(le->getLambdaClass()).second) {
+      assigned_vars(le->getBody(), out);
+      lambdas_seen_.erase(le->getLambdaClass());
+    }
+    return;
+  }
   for (const Stmt* c : s->children())
     assigned_vars(c, out);
 }
