@@ -1,0 +1,93 @@
+// Line buffers the way HPC codes write them (issue 20): local arrays larger
+// than 64 elements (a macro, a constexpr, std::array), filled in one inner
+// loop and read in a later one of the same outer iteration. Each buffer
+// becomes a hidden work array with one row per iteration of the loops around
+// its uses, which the adjoint recomputes. VLAs and C99 pointer casts, which
+// are C: line_buffers_c.c.
+#include "dpgen/annotate.hpp"
+
+#include <array>
+#include <cmath>
+
+// NAS MG's resid, as written there (C89 counters, u1/u2 of a fixed size M
+// larger than any line, a[] of constant coefficients): r = v - A u.
+#define M 130
+DPGEN_KERNEL void mg_resid(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                           DPGEN_OUT double* r, const double* a, int n1, int n2, int n3) {
+  int i3, i2, i1;
+  double u1[M], u2[M];
+  for (i3 = 1; i3 < n3 - 1; i3++) {
+    for (i2 = 1; i2 < n2 - 1; i2++) {
+      for (i1 = 0; i1 < n1; i1++) {
+        u1[i1] = u[(i3 * n2 + i2 - 1) * n1 + i1] + u[(i3 * n2 + i2 + 1) * n1 + i1] +
+                 u[((i3 - 1) * n2 + i2) * n1 + i1] + u[((i3 + 1) * n2 + i2) * n1 + i1];
+        u2[i1] = u[((i3 - 1) * n2 + i2 - 1) * n1 + i1] + u[((i3 - 1) * n2 + i2 + 1) * n1 + i1] +
+                 u[((i3 + 1) * n2 + i2 - 1) * n1 + i1] + u[((i3 + 1) * n2 + i2 + 1) * n1 + i1];
+      }
+      for (i1 = 1; i1 < n1 - 1; i1++) {
+        r[(i3 * n2 + i2) * n1 + i1] = v[(i3 * n2 + i2) * n1 + i1] -
+                                     a[0] * u[(i3 * n2 + i2) * n1 + i1] -
+                                     a[2] * (u2[i1] + u1[i1 - 1] + u1[i1 + 1]) -
+                                     a[3] * (u2[i1 - 1] + u2[i1 + 1]);
+      }
+    }
+  }
+}
+
+// The same residual of a nonlinear operator, buffers declared in the row
+// loop with a constexpr length: r = v - A(u^3).
+constexpr int kLine = 96;
+DPGEN_KERNEL void mg_resid_cubic(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                 DPGEN_OUT double* r, int n1, int n2, int n3) {
+  for (int i3 = 1; i3 < n3 - 1; i3++)
+    for (int i2 = 1; i2 < n2 - 1; i2++) {
+      double c1[kLine], c0[kLine];
+      for (int i1 = 0; i1 < n1; i1++) {
+        const double un = u[((i3 - 1) * n2 + i2) * n1 + i1], us = u[((i3 + 1) * n2 + i2) * n1 + i1];
+        c1[i1] = un * un * un + us * us * us;
+        const double uc = u[(i3 * n2 + i2) * n1 + i1];
+        c0[i1] = uc * uc * uc;
+      }
+      for (int i1 = 1; i1 < n1 - 1; i1++)
+        r[(i3 * n2 + i2) * n1 + i1] =
+            v[(i3 * n2 + i2) * n1 + i1] - (4.0 * c0[i1] - c0[i1 - 1] - c0[i1 + 1] - c1[i1]);
+    }
+}
+
+// A buffer filled in one loop and read at i - 1 and i + 1 in the next: a
+// diffusion flux through a buffer of conductivities, length a constexpr.
+constexpr int kMaxN = 512;
+DPGEN_KERNEL void diffuse_buffered(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double kappa[kMaxN];
+  for (int i = 0; i < n; ++i)
+    kappa[i] = std::exp(-u[i] * u[i]);
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = 0.5 * (kappa[i + 1] + kappa[i]) * (u[i + 1] - u[i]) -
+             0.5 * (kappa[i] + kappa[i - 1]) * (u[i] - u[i - 1]);
+}
+
+// A std::array line buffer of 128 elements in a column sweep (the buffer
+// read back at the same element in the filling loop, and at neighbours
+// after it).
+DPGEN_KERNEL void column_std_array(DPGEN_IN const double* a, DPGEN_OUT double* b,
+                                   DPGEN_OUT double* c, int nx, int ny) {
+  for (int i = 0; i < nx; ++i) {
+    std::array<double, 128> col;
+    for (int j = 0; j < ny; ++j) {
+      col[j] = std::sin(a[j * nx + i]);
+      b[j * nx + i] = col[j] * col[j];
+    }
+    for (int j = 1; j < ny - 1; ++j)
+      c[j * nx + i] = col[j - 1] * col[j + 1];
+  }
+}
+
+// Float, a buffer read only at shifted elements it fully covers (reads
+// i + 2 of a fill over [2, n + 2)), counting down.
+DPGEN_KERNEL void shifted_float(DPGEN_IN const float* x, DPGEN_OUT float* y, int n) {
+  float t[200];
+  for (int i = n + 1; i >= 2; --i)
+    t[i] = x[i - 2] * x[i - 2];
+  for (int i = 0; i < n; ++i)
+    y[i] = t[i + 2] - 0.5f * x[i];
+}
