@@ -110,3 +110,29 @@ DPGEN_KERNEL void bad_casts(DPGEN_IN const double* u, const int* f, DPGEN_OUT do
   for (int i = 0; i < n; i++)
     out[i] = u[i];
 }
+
+// Written only where a condition holds, read everywhere; and reused for a
+// second purpose in the same iteration.
+DPGEN_KERNEL void arms(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int c) {
+  double tmp[100];
+  if (c > 0) {
+    for (int i = 0; i < n; ++i)
+      tmp[i] = a[i];
+  }
+  for (int i = 0; i < n; ++i)
+    out[i] = tmp[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:14: error: line buffer 'tmp' is read at 'tmp[i]', and no earlier loop of the kernel writes it wherever this read runs (line [[@LINE-4]] writes it under a condition that may not hold here){{.*}}[dpgen-buffer]
+}
+
+DPGEN_KERNEL void reused(DPGEN_IN const double* a, DPGEN_OUT double* o1, DPGEN_OUT double* o2, int n) {
+  double tmp[100];
+  for (int i = 0; i < n; ++i)
+    tmp[i] = a[i];
+  for (int i = 0; i < n; ++i)
+    o1[i] = tmp[i];
+  for (int i = 0; i < n; ++i)
+    tmp[i] = 2 * a[i] * a[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:5: error: line buffer 'tmp' is also written on line [[@LINE-5]] in another loop nest{{.*}}[dpgen-write-once]
+  for (int i = 0; i < n; ++i)
+    o2[i] = tmp[i];
+}

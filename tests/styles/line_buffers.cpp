@@ -91,3 +91,57 @@ DPGEN_KERNEL void shifted_float(DPGEN_IN const float* x, DPGEN_OUT float* y, int
   for (int i = 0; i < n; ++i)
     y[i] = t[i + 2] - 0.5f * x[i];
 }
+
+// A buffer filled by a helper through its pointer parameter (C style), read
+// at neighbours after the call.
+static void fill_squares(double* t, const double* a, int n) {
+  for (int i = 0; i < n; ++i)
+    t[i] = a[i] * a[i];
+}
+DPGEN_KERNEL void filled_by_helper(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double sq[100];
+  fill_squares(sq, a, n);
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = sq[i - 1] - sq[i + 1];
+}
+
+// Reads under a condition on the counter that keeps them inside the fill,
+// and at the row's ends after the filling loop (straight-line code in the
+// row loop).
+DPGEN_KERNEL void guarded_and_ends(DPGEN_IN const double* a, DPGEN_OUT double* out,
+                                   DPGEN_OUT double* ends, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    double t[256];
+    for (int i = 0; i < nx - 1; ++i)
+      t[i] = std::sin(a[j * nx + i]);
+    for (int i = 0; i < nx; ++i)
+      if (i > 0)
+        out[j * nx + i] = t[i - 1] * a[j * nx + i];
+    ends[j] = t[0] + t[nx - 2];
+  }
+}
+
+// A strided read loop over a buffer (every other element), and a row loop
+// that skips its first row with `continue` before the buffer is filled.
+DPGEN_KERNEL void strided_skip(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  if (nx < 1)
+    return;
+  for (int j = 0; j < ny; ++j) {
+    if (j == 0)
+      continue;
+    double e[300];
+    for (int i = 0; i < nx; ++i)
+      e[i] = std::exp(a[j * nx + i] - a[(j - 1) * nx + i]);
+    for (int i = 0; i < nx; i += 2)
+      out[j * nx + i] = e[i];
+  }
+}
+
+// Pointers to rows of a constant length over flat parameters (C++ casts).
+DPGEN_KERNEL void rows16_cast(DPGEN_IN const double* u_flat, DPGEN_OUT double* o_flat, int ny) {
+  const double(*u)[16] = reinterpret_cast<const double(*)[16]>(u_flat);
+  double(*o)[16] = (double(*)[16])o_flat;
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < 15; ++i)
+      o[j][i] = u[j - 1][i] + u[j + 1][i] - 2.0 * u[j][i] * u[j][i];
+}

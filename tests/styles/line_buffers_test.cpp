@@ -124,3 +124,76 @@ TEST_CASE("styles: shifted_float (float buffer, filled counting down)") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: filled_by_helper (a helper fills the buffer)") {
+  for (int n : {1, 3, 50, 100}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { filled_by_helper(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      filled_by_helper_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      filled_by_helper_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: guarded_and_ends (guarded reads, the row's ends)") {
+  for (auto [nx, ny] : {std::tuple{2, 1}, {3, 4}, {256, 2}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t N = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N, size_t(ny)};
+    p.forward = [&](auto in, auto out) { guarded_and_ends(in[0], out[0], out[1], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      guarded_and_ends_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      guarded_and_ends_tangent(in[0], d[0], out[0], dout[0], out[1], dout[1], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: strided_skip (strided reads, a skipped row)") {
+  for (auto [nx, ny] : {std::tuple{1, 1}, {4, 3}, {7, 2}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t N = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N};
+    p.forward = [&](auto in, auto out) { strided_skip(in[0], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      strided_skip_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      strided_skip_tangent(in[0], d[0], out[0], dout[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: rows16_cast (pointers to rows of 16 over flat arrays)") {
+  for (int ny : {1, 3, 6}) {
+    CAPTURE(ny);
+    const size_t N = size_t(16) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N};
+    p.forward = [&](auto in, auto out) { rows16_cast(in[0], out[0], ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      rows16_cast_adjoint(in[0], adj[0], seed[0], ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      rows16_cast_tangent(in[0], d[0], out[0], dout[0], ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -409,6 +409,7 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
     unsigned line;
   };
   std::vector<Written> written;
+  unsigned conditional = 0; // a store left out: its condition may not hold here
   std::vector<int> key = cur_key();
   Facts facts = facts_here();
   facts.push_back(*to_poly(b.length) - Poly::constant(1)); // (a VLA has an element at least)
@@ -423,8 +424,10 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
         continue;
       bool holds = std::all_of(st.path.begin(), st.path.end(),
                                [&](const PathCond& pc) { return holds_here(pc, facts); });
-      if (!holds)
-        continue; // under a condition that may not hold here
+      if (!holds) {
+        conditional = st.pos.line; // under a condition that may not hold here
+        continue;
+      }
       auto w = buffer_local(b, st.index);
       if (!w)
         continue;
@@ -505,12 +508,16 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
              "dpgen-buffer");
   if (written.empty())
     fail(loc, fmt::format("line buffer '{}' is read at '{}', and no earlier loop of {} writes "
-                          "it: a buffer holds values within one iteration of the loops around "
+                          "it{}: a buffer holds values within one iteration of the loops around "
                           "all its uses, so this would read an element never written in this "
                           "iteration (a value carried over from an earlier one, or "
                           "uninitialised), outside the kernel subset; write every element a "
                           "loop reads, with '=', in an earlier loop of the same iteration",
-                          name, text(e), rows),
+                          name, text(e), rows,
+                          conditional ? fmt::format(" wherever this read runs (line {} writes it "
+                                                    "under a condition that may not hold here)",
+                                                    conditional)
+                                      : ""),
          "dpgen-buffer");
   std::vector<std::string> ws;
   for (const auto& w : written)
