@@ -145,3 +145,14 @@ DPGEN_KERNEL void rows16_cast(DPGEN_IN const double* u_flat, DPGEN_OUT double* o
     for (int i = 1; i < 15; ++i)
       o[j][i] = u[j - 1][i] + u[j + 1][i] - 2.0 * u[j][i] * u[j][i];
 }
+
+// A buffer used as scratch within one iteration only (stored, then read back
+// at the same element), next to one the kernel declares and never uses.
+DPGEN_KERNEL void scratch_same_iteration(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double scratch[100], unused[1000];
+  (void)unused;
+  for (int i = 0; i < n; ++i) {
+    scratch[i] = a[i] * a[i];
+    out[i] = scratch[i] + std::cos(scratch[i]);
+  }
+}

@@ -197,3 +197,20 @@ TEST_CASE("styles: rows16_cast (pointers to rows of 16 over flat arrays)") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: scratch_same_iteration (read back in the iteration that stored it)") {
+  for (int n : {1, 9, 100}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { scratch_same_iteration(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      scratch_same_iteration_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      scratch_same_iteration_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

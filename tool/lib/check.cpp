@@ -615,6 +615,16 @@ private:
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
+    // A line buffer: a row of its length per iteration of its row loops
+    // (lowering proves, or checks on entry, that every element it writes
+    // lies in its row, and reads only what was written). The tangent needs
+    // it also where no later loop reads the buffer.
+    for (const auto& [array, b] : a_.buffers) {
+      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", to_poly(b.length)->code());
+      for (const auto& x : b.extents)
+        e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, to_poly(x)->code());
+      k_.extent[array] = fmt::format("std::max<std::ptrdiff_t>(0, {})", e);
+    }
     bool inout =
         std::any_of(k_.params.begin(), k_.params.end(), [](const Param& p) { return p.inout; });
     if (k_.intermediates.empty() && !inout)
@@ -648,15 +658,6 @@ private:
                                  "arrays as pointers",
                                  work_name(*k_.intermediates.begin()), p.name));
     std::map<std::string, std::vector<std::string>> ends;
-    // A line buffer: a row of its length per iteration of its row loops
-    // (lowering proves, or checks on entry, that every element it writes
-    // lies in its row, and reads only what was written).
-    for (const auto& [array, b] : a_.buffers) {
-      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", to_poly(b.length)->code());
-      for (const auto& x : b.extents)
-        e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, to_poly(x)->code());
-      ends[array].push_back(e);
-    }
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
         if (a_.buffers.count(st.array))

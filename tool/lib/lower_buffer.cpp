@@ -368,7 +368,7 @@ void Lowerer::check_buffer_store(const Param* p, const ExprP& flat, bool accumul
   // Per element (counters in range): 0 <= local <= length - 1.
   if (prove_nonneg(local, facts) && prove_nonneg(len - one - local, facts))
     return;
-  auto r = range_over(local, loops, b.depth, facts);
+  auto r = range_over(local, loops, 0, facts); // (over every loop: a bound for all rows)
   bool never = false;
   if (r && prove_or_check({r->first, len - one - r->second}, facts,
                           fmt::format("line buffer '{}' of {} elements holds the elements "
