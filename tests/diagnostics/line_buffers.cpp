@@ -6,7 +6,7 @@
 // element written outside the buffer are errors, each in one run. Parsed as
 // C (`-x c`), as VLA codes are.
 // RUN: rm -rf %t && mkdir -p %t
-// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc -x c 2>&1 | FileCheck %s
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc -x c -ferror-limit=0 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
@@ -135,4 +135,69 @@ DPGEN_KERNEL void reused(DPGEN_IN const double* a, DPGEN_OUT double* o1, DPGEN_O
   // CHECK: line_buffers.cpp:[[@LINE-1]]:5: error: line buffer 'tmp' is also written on line [[@LINE-5]] in another loop nest{{.*}}[dpgen-write-once]
   for (int i = 0; i < n; ++i)
     o2[i] = tmp[i];
+}
+
+// Round r5 (tests/adversary/r5_buffers.cpp has the accepted ones): an element
+// overwritten after its fill, a fill of even elements or one skipping an
+// element, a buffer first written with '+=', a fill one past a VLA's end,
+// and a fill of interleaved pairs (not contiguous: dpgen cannot follow it).
+DPGEN_KERNEL void overwrite0(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[200];
+  for (int i = 0; i < n; ++i)
+    t[i] = a[i];
+  t[0] = 1.0;
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:3: error: line buffer 't' is also written on line [[@LINE-2]] in another loop nest{{.*}}[dpgen-write-once]
+  for (int i = 0; i < n; ++i)
+    out[i] = t[i] * a[i];
+}
+
+DPGEN_KERNEL void even_only(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[200];
+  for (int i = 0; i < n; ++i)
+    if (i % 2 == 0)
+      t[i] = a[i];
+  for (int i = 0; i < n; ++i)
+    out[i] = t[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:14: error: line buffer 't' is read at 't[i]', and no earlier loop of the kernel writes it wherever this read runs (line [[@LINE-3]] writes it under a condition that may not hold here){{.*}}[dpgen-buffer]
+}
+
+DPGEN_KERNEL void skip3(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[200];
+  for (int i = 0; i < n; ++i) {
+    if (i == 3)
+      continue;
+    t[i] = a[i];
+  }
+  for (int i = 0; i < n; ++i)
+    out[i] = t[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:14: error: line buffer 't' is read at 't[i]', and no earlier loop of the kernel writes it wherever this read runs (line [[@LINE-4]] writes it under a condition that may not hold here){{.*}}[dpgen-buffer]
+}
+
+DPGEN_KERNEL void plus_first(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[200];
+  for (int i = 0; i < n; ++i)
+    t[i] += a[i];
+  for (int i = 0; i < n; ++i)
+    out[i] = t[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:14: error: line buffer 't' is read at 't[i]', and no earlier loop of the kernel writes it:{{.*}}[dpgen-buffer]
+}
+
+DPGEN_KERNEL void one_past(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[n];
+  for (int i = 0; i <= n; ++i)
+    t[i] = a[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:5: error: line buffer 't' of n elements is written at 't[i]' (elements 0 to n), which dpgen finds is not always within the buffer [dpgen-buffer]
+  for (int i = 0; i < n; ++i)
+    out[i] = t[i];
+}
+
+DPGEN_KERNEL void pairs(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[400];
+  for (int i = 0; i < n; ++i) {
+    t[2 * i] = a[i];
+    t[2 * i + 1] = a[i] * a[i];
+  }
+  for (int i = 0; i < 2 * n; ++i)
+    out[i] = t[i];
+  // CHECK: line_buffers.cpp:[[@LINE-1]]:14: error: line buffer 't' is read at 't[i]', and no earlier loop of the kernel writes it:{{.*}}[dpgen-buffer]
 }
