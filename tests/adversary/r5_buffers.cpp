@@ -106,3 +106,13 @@ DPGEN_KERNEL void c12_flag(DPGEN_IN const double* a, DPGEN_OUT double* out, int 
     }
   }
 }
+
+// A max reduction over a buffer's values (the reduction's hidden arrays next
+// to the buffer's).
+DPGEN_KERNEL void m2_maxofbuf(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double t[256];
+  for (int i = 0; i < n; ++i) t[i] = a[i] * a[i];
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::fmax(m, t[i]);
+  out[0] = m;
+}

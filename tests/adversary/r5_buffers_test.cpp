@@ -104,3 +104,9 @@ TEST_CASE("r5_buffers: c12_flag, 0") { for (int nx : {1, 2, 5}) for (int ny : {1
   p.adjoint = [&](auto in, auto adj, auto seed) { c12_flag_adjoint(in[0], adj[0], seed[0], nx, ny, 0); };
   p.tangent = [&](auto in, auto d, auto out, auto dout) { c12_flag_tangent(in[0], d[0], out[0], dout[0], nx, ny, 0); };
   dpgen_test::check_adjoint(p); } }
+TEST_CASE("r5_buffers: m2_maxofbuf") { for (int n : {1, 2, 7, 256}) { CAPTURE(n);
+  dpgen_test::Problem<double> p; p.in_sizes = {size_t(n)}; p.out_sizes = {1};
+  p.forward = [&](auto in, auto out) { m2_maxofbuf(in[0], out[0], n); };
+  p.adjoint = [&](auto in, auto adj, auto seed) { m2_maxofbuf_adjoint(in[0], adj[0], seed[0], n); };
+  p.tangent = [&](auto in, auto d, auto out, auto dout) { m2_maxofbuf_tangent(in[0], d[0], out[0], dout[0], n); };
+  dpgen_test::check_adjoint(p); } }

@@ -21,3 +21,26 @@ DPGEN_KERNEL void relax_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* ta
   for (i = 0; i < n; i++)
     u[i] = (1.0 - w) * u[i] + w * target[i] * target[i];
 }
+
+// In place across loop nests (issue 20): fluxes from the density's old
+// values in one loop, then the density updated from them in the next, as
+// finite-volume codes write it. The adjoint recomputes the fluxes from the
+// old values (its own forward, printed from the IR, writes the new ones to a
+// buffer: the user's kernel would overwrite u).
+DPGEN_KERNEL void advect_fluxes_inplace(DPGEN_INOUT double* rho, DPGEN_IN const double* u,
+                                        DPGEN_OUT double* flux, int n, double dt) {
+  for (int i = 1; i < n; ++i)
+    flux[i] = u[i] > 0.5 ? u[i] * rho[i - 1] : u[i] * rho[i];
+  for (int i = 1; i < n - 1; ++i)
+    rho[i] = rho[i] - dt * (flux[i + 1] - flux[i]);
+}
+
+// A norm of the old values (an accumulator), then every element rescaled.
+DPGEN_KERNEL void normalize_inplace(DPGEN_INOUT double* v, DPGEN_IN const double* w, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i)
+    s += w[i] * v[i] * v[i];
+  const double inv = 1.0 / std::sqrt(s);
+  for (int i = 0; i < n; ++i)
+    v[i] *= inv;
+}

@@ -105,3 +105,47 @@ TEST_CASE("relax_inplace: adjoint and tangent of an in-place update of every ele
         });
   }
 }
+
+TEST_CASE("advect_fluxes_inplace: fluxes from the old values, then the update in place") {
+  for (size_t n : {2u, 3u, 8u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    check_inplace(
+        n,
+        [&](Vec& rho, const Vec& u) {
+          Vec flux(n + 1, 0.0);
+          advect_fluxes_inplace(rho.data(), u.data(), flux.data(), ni, 0.3);
+        },
+        [&](const Vec& rho, Vec& rho_adj, const Vec& u, Vec& u_adj) {
+          Vec flux_adj(n + 1, 0.0); // (the fluxes' own seed: zero)
+          advect_fluxes_inplace_adjoint(rho.data(), rho_adj.data(), u.data(), u_adj.data(),
+                                        flux_adj.data(), ni, 0.3);
+        },
+        [&](Vec& rho, Vec& rho_dot, const Vec& u, const Vec& u_dot) {
+          Vec flux(n + 1, 0.0), flux_dot(n + 1, 0.0);
+          advect_fluxes_inplace_tangent(rho.data(), rho_dot.data(), u.data(), u_dot.data(),
+                                        flux.data(), flux_dot.data(), ni, 0.3);
+        });
+  }
+  // The adjoint reads the old values: the caller's rho is left as it was.
+  Vec rho = {0.2, 0.3, 0.4, 0.6}, u = {0.9, 0.9, 0.1, 0.9}, ra = {1, 1, 1, 1}, ua(4, 0.0),
+      fa(5, 0.0);
+  const Vec before = rho;
+  advect_fluxes_inplace_adjoint(rho.data(), ra.data(), u.data(), ua.data(), fa.data(), 4, 0.3);
+  CHECK(rho == before);
+}
+
+TEST_CASE("normalize_inplace: an accumulator of the old values, then a rescale in place") {
+  for (size_t n : {1u, 4u, 11u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    check_inplace(
+        n, [&](Vec& v, const Vec& w) { normalize_inplace(v.data(), w.data(), ni); },
+        [&](const Vec& v, Vec& va, const Vec& w, Vec& wa) {
+          normalize_inplace_adjoint(v.data(), va.data(), w.data(), wa.data(), ni);
+        },
+        [&](Vec& v, Vec& vd, const Vec& w, const Vec& wd) {
+          normalize_inplace_tangent(v.data(), vd.data(), w.data(), wd.data(), ni);
+        });
+  }
+}

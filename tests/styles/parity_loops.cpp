@@ -2,7 +2,8 @@
 // start alternates with the row (`i = 1 + (j + 1) % 2`) into a separate
 // output, a strided loop starting at the outer counter, and a constant
 // weight loop `m += 2` that dpgen unrolls (it used to unroll every m, not
-// every other one: a wrong adjoint and tangent).
+// every other one: a wrong adjoint and tangent), and a ring buffer indexed
+// by an unrolled counter's parity (b[m % 2]).
 #include "dpgen/annotate.hpp"
 
 DPGEN_KERNEL void rb_red_sweep(DPGEN_IN const double* u, DPGEN_IN const double* f,
@@ -26,5 +27,18 @@ DPGEN_KERNEL void even_weights(DPGEN_IN const double* u, DPGEN_OUT double* out, 
     for (int m = 0; m < 6; m += 2)
       s += w[m] * u[i + m] * u[i + m];
     out[i] = s;
+  }
+}
+
+// A two-slot ring buffer indexed by the parity of an unrolled counter
+// (`b[m % 2]`, `c[m >> 1]`): constants once m is, as C computes them.
+DPGEN_KERNEL void ring_parity(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 3; i < n; ++i) {
+    double b[2], c[2];
+    for (int m = 0; m < 4; ++m) {
+      b[m % 2] = a[i - m] * a[i - m];
+      c[m >> 1] = a[i - m] + (double)m;
+    }
+    out[i] = b[0] - 2.0 * b[1] + c[0] * c[1];
   }
 }

@@ -55,3 +55,18 @@ TEST_CASE("styles: strided_from_row, even_weights") {
     dpgen_test::check_adjoint(q);
   }
 }
+
+TEST_CASE("styles: ring_parity") {
+  for (int n : {3, 4, 9}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { ring_parity(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { ring_parity_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      ring_parity_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

@@ -305,11 +305,16 @@ private:
                 *to_poly(x.index) == *to_poly(y.index) ||
                 residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
                 rows_apart(x, nest, y, nest) || buffer_stores_apart(x, nest, y, nest) ||
-                (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)))
+                (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)) ||
+                fixed_apart(*to_poly(x.index), *to_poly(y.index)) || last_writer(nest, a, b))
               continue;
             fail(y.pos, "dpgen-write-once", fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                     "line {} of the same loop: dpgen cannot prove two "
-                                    "iterations never write the same element",
+                                    "iterations never write the same element (where one "
+                                    "overwrites the other's element in a later iteration, "
+                                    "dpgen credits the later writer only when the indices "
+                                    "differ by a constant step of one counter and the "
+                                    "overwriting store runs in every iteration)",
                                     y.array, print_index(y), print_index(x), x.pos.line));
             reported.insert(&y); // once per store
           }
@@ -383,9 +388,91 @@ private:
     return affine;
   }
 
+  // Two fixed elements (no counter: stores pinned to one iteration each,
+  // `if (i == 0) e[0] = ...; if (i == n - 1) e[1] = ...;`) a nonzero
+  // constant apart never meet.
+  static bool fixed_apart(const Poly& x, const Poly& y) {
+    Poly d = x - y;
+    return !x.mentions_any_counter() && !y.mentions_any_counter() && d.is_constant() &&
+           d.constant_term() != 0;
+  }
+
+  // Two stores of one nest that meet across iterations, the later writer
+  // winning (`K[j] = ...; K[j + 1] = ...;`: K[j + 1] of iteration j is
+  // overwritten by K[j'] of iteration j' = j + 1): the earlier instance
+  // contributes nothing, so its store gets the condition that no later
+  // iteration overwrites it (`!(j + 1 < n)`). Only for indices in one
+  // counter with the same constant coefficient and a constant difference,
+  // and an overwriting store that runs in every iteration; false (nothing
+  // changed) otherwise.
+  bool last_writer(const Nest& nest, size_t a, size_t b) {
+    Nest& n = const_cast<Nest&>(nest); // (the Kernel is check's to annotate)
+    Store &x = n.stores[a], &y = n.stores[b];
+    if (x.accumulate || y.accumulate)
+      return false;
+    auto px = to_poly(x.index), py = to_poly(y.index);
+    if (!px || !py)
+      return false;
+    const Loop* loop = nullptr;
+    for (const auto& l : nest.loops)
+      if (px->mentions_counter(l.var)) {
+        if (loop)
+          return false; // (a shift over several counters is not unique)
+        loop = &l;
+      }
+    if (!loop || !to_poly(loop->hi))
+      return false;
+    Poly c = px->coefficient(Sym::counter(loop->var));
+    Poly d = *py - *px;
+    if (!c.is_constant() || c.constant_term() == 0 || !(c == py->coefficient(Sym::counter(loop->var))) ||
+        !d.is_constant() || d.constant_term() % c.constant_term() != 0)
+      return false;
+    // x at t + k writes what y wrote at t (k > 0: later); k < 0: y at t - k
+    // writes what x wrote at t.
+    long long k = d.constant_term() / c.constant_term();
+    if (k == 0)
+      return false;
+    Store& dead = k > 0 ? y : x;
+    const Store& over = k > 0 ? x : y;
+    if (!over.path.empty())
+      return false;
+    long long shift = k > 0 ? k : -k;
+    ExprP later = binary(Op::Add, loop_var(loop->var), int_const(shift));
+    dead.path.push_back({binary(Op::Lt, later, loop->hi), false});
+    return true;
+  }
+
+  // Condition `c` holds for one value of counter `var` at most: `i == 0`,
+  // `i == n - 1`, `2 * t + 1 == k` (an equation linear in `var` with a
+  // constant coefficient), or a conjunction with one such part.
+  static bool pins(const ExprP& c, bool positive, const std::string& var) {
+    if (positive && c->op == Op::And)
+      return pins(c->ops[0], true, var) || pins(c->ops[1], true, var);
+    if (!positive && c->op == Op::Or) // !(a || b): !a && !b
+      return pins(c->ops[0], false, var) || pins(c->ops[1], false, var);
+    if (!positive && c->op == Op::Not)
+      return pins(c->ops[0], true, var);
+    if (c->op != (positive ? Op::Eq : Op::Ne))
+      return false;
+    auto a = to_poly(c->ops[0]), b = to_poly(c->ops[1]);
+    if (!a || !b)
+      return false;
+    Poly d = *a - *b;
+    Poly coef = d.coefficient(Sym::counter(var));
+    return coef.is_constant() && coef.constant_term() != 0 &&
+           !(d - coef * Poly::counter(var)).mentions_counter(var);
+  }
+  // Store `s` runs in one iteration of loop `var` at most (its path pins the
+  // counter): `if (i == 0) out[0] = ...` writes its element once.
+  static bool pinned(const Store& s, const std::string& var) {
+    return std::any_of(s.path.begin(), s.path.end(),
+                       [&](const PathCond& pc) { return pins(pc.cond, pc.positive, var); });
+  }
+
   // One store's index: affine, each term with one counter at most, moving
-  // with every loop around it (unless the store adds), one-to-one. Returns
-  // false where the index is not affine or multiplies counters.
+  // with every loop around it (unless the store adds, or runs in one
+  // iteration of that loop), one-to-one. Returns false where the index is
+  // not affine or multiplies counters.
   bool check_store(const Nest& nest, const Store& s) {
     auto p = to_poly(s.index);
     if (!p) {
@@ -402,7 +489,7 @@ private:
         return false;
       }
       if (c == Poly()) {
-        if (s.accumulate)
+        if (s.accumulate || pinned(s, l.var))
           continue; // a reduction: every iteration adds to the same element
         fail(s.pos, "dpgen-write-once", fmt::format("output '{}' is written at the same index by every "
                                 "iteration of loop '{}' (a reduction or a loop-carried "
@@ -630,11 +717,6 @@ private:
     if (k_.intermediates.empty() && !inout)
       return;
     for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && p.inout)
-        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with in-place array '{}': write the new "
-                                 "values of '{}' to a DPGEN_OUT array",
-                                 work_name(*k_.intermediates.begin()), p.name, p.name));
-    for (const auto& p : k_.params)
       if (k_.intermediates.count(p.name) && p.row_pointers)
         fail(k_.pos, "dpgen-work-array", fmt::format("work array '{}' (an output a later loop reads) has "
                                  "row pointers: the adjoint recomputes work arrays "
@@ -658,6 +740,12 @@ private:
                                  "arrays as pointers",
                                  work_name(*k_.intermediates.begin()), p.name));
     std::map<std::string, std::vector<std::string>> ends;
+    auto add_end = [&](const std::string& array, const std::string& end) { // (once each)
+      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", end);
+      auto& v = ends[array];
+      if (std::find(v.begin(), v.end(), e) == v.end())
+        v.push_back(e);
+    };
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
         if (a_.buffers.count(st.array))
@@ -670,8 +758,7 @@ private:
                                    st.array));
           continue;
         }
-        ends[st.array].push_back(
-            fmt::format("static_cast<std::ptrdiff_t>({})", (r->second + Poly::constant(1)).code()));
+        add_end(st.array, (r->second + Poly::constant(1)).code());
       }
     // A later loop may read a work array beyond what was written (the
     // buffer holds NaN there): the buffer covers the reads too.
@@ -687,8 +774,7 @@ private:
                                 r.array));
         continue;
       }
-      ends[r.array].push_back(fmt::format("static_cast<std::ptrdiff_t>({})",
-                                          (range->second + Poly::constant(1)).code()));
+      add_end(r.array, (range->second + Poly::constant(1)).code());
       // Provably outside every earlier store's range: an element no loop
       // writes, whose value is the caller's (the adjoint's buffer has NaN).
       bool outside_all = true, any_store = false;

@@ -722,8 +722,15 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   const Kernel& k = *plan.adjoint->kernel;
   const std::vector<Stage>& stages = plan.adjoint->stages; // schedule.cpp
   code.raw("namespace {\n");
+  // A nest whose stores have no derivative (a min/max reduction's scan and
+  // ties, lower_impl.hpp; a store of constants) has no adjoint stage.
+  auto idle = [&](size_t j) {
+    return stages[j].plan->gathers.empty() && stages[j].plan->scatters.empty();
+  };
   for (size_t j = 0; j < stages.size(); ++j) {
     const Kernel& s = *stages[j].kernel;
+    if (idle(j))
+      continue;
     code.line("// Adjoint of loop nest {} of {} ({}:{}).", j + 1, k.name, base_name(k.file),
               s.nests.front().stores.front().pos.line);
     code.open(fmt::format("void {}_adjoint({})", s.name, param_list(s, false)));
@@ -732,10 +739,14 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     code.raw("\n");
   }
   const std::string recompute = k.fresh(k.name + "_recompute");
-  if (!k.hidden.empty()) // the accumulators' sums: the user's kernel keeps them to itself
+  // The accumulators' sums (the user's kernel keeps them to itself), and an
+  // in-place array's old values (the user's kernel would overwrite them):
+  // recomputed by the forward as the IR says, into buffers.
+  const bool own_forward = !k.hidden.empty() || has_inout(k);
+  if (own_forward)
     emit_recompute(code, k, recompute);
   code.raw("} // namespace\n\n");
-  if (k.hidden.empty()) {
+  if (!own_forward) {
     code.line("// The forward kernel, which recomputes the work arrays.");
     code.line("{}void {}({});", k.c_linkage ? "extern \"C\" " : "", k.name, forward_params(k));
     code.raw("\n");
@@ -790,12 +801,14 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
               b_of(h.name), n_of(h.name));
     flat.push_back(v_of(h.name) + ".data()");
   }
-  if (k.hidden.empty())
+  if (!own_forward)
     code.line("{}({});", k.name, fmt::join(fwd, ", "));
   else
     code.line("{}({});", recompute, fmt::join(flat, ", "));
   for (size_t j = stages.size(); j-- > 0;) {
     const Kernel& s = *stages[j].kernel;
+    if (idle(j))
+      continue;
     std::vector<std::string> args;
     for (const auto& p : s.params) {
       bool work = k.intermediates.count(p.name) > 0;

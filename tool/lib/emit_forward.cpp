@@ -31,7 +31,8 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
   std::set<std::string> vars;
   for (const auto& s : nest.stores) {
     const ExprP index = hoist(s.index);
-    const ExprP value = hoist(s.value, s.accumulate); // `+=`: summed (hoist.hpp)
+    // `+=`: summed (hoist.hpp)
+    const ExprP value = hoist(s.value, s.accumulate && s.extremum == 0);
     std::vector<PathCond> path;
     for (const auto& pc : s.path)
       path.push_back(hoist(pc));
@@ -47,8 +48,8 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
     collect(value, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}{} {} {};", s.array, subscript(index, k.shape_of(s.array)),
-              s.accumulate ? "+=" : "=", print(value));
+    code.line("{}", store_statement(s, s.array + subscript(index, k.shape_of(s.array)),
+                                    print(value)));
     if (guarded)
       code.close();
   }
@@ -61,8 +62,12 @@ void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
 void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
-    if (!p.twin_of.empty() || p.global)
+    if (p.global)
       continue;
+    if (!p.twin_of.empty()) { // an in-place array's new values: to a buffer
+      ps.push_back(fmt::format("{}* {}", p.elem_name, p.name));
+      continue;
+    }
     if (p.kind == ParamKind::Scalar)
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));
     else
@@ -75,9 +80,10 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
                 ? "the sums of its accumulators"
                 : "the sums of its accumulators and the rows of its line buffers",
             [&] {
-              std::vector<std::string> names;
+              std::vector<std::string> names; // (a min/max reduction has four)
               for (const auto& h : k.hidden)
-                names.push_back(h.spelling);
+                if (std::find(names.begin(), names.end(), h.spelling) == names.end())
+                  names.push_back(h.spelling);
               return fmt::format("{}", fmt::join(names, ", "));
             }());
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));

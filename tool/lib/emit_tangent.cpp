@@ -161,8 +161,9 @@ void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
     const Store& s = nest.stores[i];
     // `+=` adds the values to the elements (hoist.hpp: summed).
     const ExprP index = hoist(s.index);
-    const ExprP value = hoist(s.value, s.accumulate);
-    const ExprP dot = is_zero(tp.dot[n][i]) ? tp.dot[n][i] : hoist(tp.dot[n][i], s.accumulate);
+    const bool summed = s.accumulate && s.extremum == 0;
+    const ExprP value = hoist(s.value, summed);
+    const ExprP dot = is_zero(tp.dot[n][i]) ? tp.dot[n][i] : hoist(tp.dot[n][i], summed);
     std::vector<PathCond> path;
     for (const auto& pc : s.path)
       path.push_back(hoist(pc));
@@ -194,6 +195,10 @@ void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
       code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
       code.line("{}{} = {};", u, idx, new_value);
       code.line("{}_dot{} = {};", u, idx, value_dot);
+    } else if (s.extremum != 0) {
+      // A min/max scan: a constant to derivatives (its tangent stays what
+      // its first store set, 0).
+      code.line("{}", store_statement(s, s.array + idx, print(value)));
     } else {
       code.line("{}{} {} {};", s.array, idx, op, print(value));
       code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);

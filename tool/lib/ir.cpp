@@ -79,6 +79,54 @@ ExprP zero(Type t) {
   return e;
 }
 
+std::optional<long long> int_value(const ExprP& e) {
+  if (e->type != Type::Int)
+    return std::nullopt;
+  if (e->op == Op::IntConst)
+    return e->ival;
+  if (e->op == Op::Local)
+    return int_value(e->local->def);
+  if (e->op == Op::Cast)
+    return int_value(e->ops[0]);
+  if (e->op == Op::Neg || e->op == Op::BitNot) {
+    auto a = int_value(e->ops[0]);
+    if (!a)
+      return std::nullopt;
+    return e->op == Op::Neg ? -*a : ~*a;
+  }
+  if (e->ops.size() != 2)
+    return std::nullopt;
+  auto a = int_value(e->ops[0]), b = int_value(e->ops[1]);
+  if (!a || !b)
+    return std::nullopt;
+  switch (e->op) {
+  case Op::Add:
+    return *a + *b;
+  case Op::Sub:
+    return *a - *b;
+  case Op::Mul:
+    return *a * *b;
+  case Op::Div:
+  case Op::Rem:
+    if (*b == 0)
+      return std::nullopt;
+    return e->op == Op::Div ? *a / *b : *a % *b;
+  case Op::Shl:
+  case Op::Shr:
+    if (*b < 0 || *b > 62 || *a < 0)
+      return std::nullopt;
+    return e->op == Op::Shl ? *a << *b : *a >> *b;
+  case Op::BitAnd:
+    return *a & *b;
+  case Op::BitOr:
+    return *a | *b;
+  case Op::BitXor:
+    return *a ^ *b;
+  default:
+    return std::nullopt;
+  }
+}
+
 bool is_zero(const ExprP& e) {
   if (!e)
     throw std::logic_error("internal error: a null expression where a derivative was expected "

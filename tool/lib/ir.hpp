@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -122,6 +123,10 @@ ExprP unary(Op op, ExprP a);
 ExprP binary(Op op, ExprP a, ExprP b);
 ExprP select(ExprP c, ExprP a, ExprP b);
 ExprP call(const std::string& fn, std::vector<ExprP> args, Type t);
+/// The value of an integer expression of constants only (after unrolling,
+/// `m % 2` with m = 3), with C's semantics (division truncates); nullopt if
+/// it depends on anything else, divides by zero or overflows a shift.
+std::optional<long long> int_value(const ExprP& e);
 ExprP cast(ExprP a, Type t);
 
 /// The exact zero of derivative code: a RealConst 0 of type `t`, marked
@@ -321,6 +326,11 @@ struct Store {
   /// rule does not apply (a reduction or a flux accumulation is fine), but a
   /// later `=` must not overwrite it.
   bool accumulate = false;
+  /// A min/max scan (`m = std::max(m, e)` in a loop, lower_loop.cpp): with
+  /// `accumulate`, +1 stores max(element, value), -1 min(element, value).
+  /// Its value is a constant to every derivative (dpgen_nograd): the
+  /// reduction's derivative comes from the separate sums lowering builds.
+  int extremum = 0;
   /// Program order of the store statements in the kernel.
   int seq = 0;
 };

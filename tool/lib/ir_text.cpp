@@ -130,7 +130,7 @@ std::string print_ir(const Kernel& k) {
     }
     for (const auto& s : nest.stores) {
       out += fmt::format("{}store #{} {}[{}] {} {}", indent, s.seq, s.array, print(s.index),
-                         s.accumulate ? "+=" : "=", print(s.value));
+                         store_operator(s), print(s.value));
       if (!s.path.empty())
         out += "  if " + path_text(s.path);
       out += fmt::format("  at {}\n", pos_text(s.pos));

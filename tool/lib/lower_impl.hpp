@@ -316,18 +316,88 @@ private:
     return std::any_of(k_.hidden.begin(), k_.hidden.end(),
                        [&](const Param& h) { return h.name == array; });
   }
+  // A min/max reduction (`m = std::max(m, e)`, fmax, a `?:` of m and e, or
+  // `if (e > m) m = e;` in a loop, `m` read after it) is exact in value, and
+  // its derivative goes to the elements equal to the extremum, split equally
+  // among ties (as torch.amax does; independent of the loop's order). Four
+  // hidden arrays per reduction, element c as for a sum:
+  //   S[c] = <m before the loop>                        start (differentiable)
+  //   M[c] = ng(S[c]);  in the loop M[c] max= ng(e)     the scan (constant)
+  //   T[c] = [S == M] + sum over the loop of [e == M]   the ties (constant)
+  //   R[c] = M + [S == M](S - M)/T + sum of [e == M](e - M)/T
+  // where ng() is dpgen_nograd and M, T are read through it: R equals M
+  // exactly (each added term is 0), and dR/de = [e == M]/T. The sums over
+  // the loop are loop nests lowering adds after the user's loop, one per
+  // update, with the update's loops and path (finish_accumulator); `m` after
+  // the loop is R[c].
+  struct ExtremumUpdate {
+    ExprP term;                 // e, lowered in the user's loop
+    std::vector<PathCond> path; // where the update runs
+    std::vector<Loop> loops;    // from the reducing loop in
+    SourcePos pos;
+  };
   struct Accumulator {
-    std::string array; // the hidden array
+    std::string array; // the hidden array (a min/max reduction's: its scan M)
     ExprP index;       // its element: the outer loops' iteration, mixed radix
+    int extremum = 0;  // +1 a max reduction, -1 a min, 0 a sum
+    std::string start, ties, result; // a min/max reduction's S, T, R
+    size_t depth = 0;                // loops_.size() outside the reducing loop
+    std::vector<ExtremumUpdate> updates;
   };
   std::map<const VarDecl*, Accumulator> accumulators_;
+
+  // What a min/max reduction updates: a local `v`, or an output element
+  // (`*err`, `err[0]`, `rowmax[j]`: `element`, of array `decl`) at the same
+  // index in every iteration of the reducing loop.
+  struct ReductionTarget {
+    const ValueDecl* decl = nullptr;
+    const clang::Expr* element = nullptr;
+  };
+  bool same_expr(const clang::Expr* a, const clang::Expr* b) const;
+  bool is_target(const clang::Expr* e, const ReductionTarget& t) const;
+  // The target of assignment `lhs`: a variable, or an element of an array
+  // parameter (`*p`, `p[...]`); decl null for anything else.
+  static ReductionTarget target_of(const clang::Expr* lhs);
+  // The term `e` of a min/max update of `t` (`v = std::max(v, e)`, `v =
+  // fmin(e, v)`, `v = v > e ? v : e`, ...), with `extremum` +1 for max and
+  // -1 for min; null for any other form.
+  const clang::Expr* extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
+                                   int& extremum) const;
+  // `if (e > v) v = e;` (no else; the body the one assignment): its `e`,
+  // target and kind; null for any other if.
+  const clang::Expr* extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum) const;
+  // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
+  // `t` of one kind, and there is at least one; 0 otherwise.
+  int extremum_kind(const Stmt* body, const ReductionTarget& t) const;
+  // Min/max reductions into output elements of the loop being lowered
+  // (`*err = fmax(*err, ...)`): the element's store before the loop becomes
+  // the reduction's start, and after the loop the element is stored its
+  // result.
+  struct ElementReduction {
+    ReductionTarget target;
+    std::string array; // the output
+    ExprP index;       // the element
+    Accumulator acc;
+  };
+  std::vector<ElementReduction> element_reductions_;
+  // Starts the element reductions of loop `f` (before its body is lowered).
+  void start_element_reductions(const ForStmt* f, const VarDecl* counter,
+                                const std::set<const VarDecl*>& assigned);
+  void finish_element_reductions(size_t from, SourceLocation loc);
+  // The update `v = max(v, e)` here: the scan's store, and the update kept
+  // for the sums after the loop.
+  void extremum_update(Accumulator& a, const clang::Expr* term, Type t, SourceLocation loc);
+  // After the reducing loop: the ties and the result (the struct above).
+  void finish_extremum(const Accumulator& a, SourceLocation loc);
+  // A read of hidden work array `array` at `idx` by a later nest.
+  ExprP hidden_read(const std::string& array, const ExprP& idx, SourceLocation loc);
 
   // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
   // where `e` does not mention v; null for any other form.
   static const clang::Expr* accumulated_term(const clang::Expr* rhs, const VarDecl* v,
                                              bool& negate);
 
-  static bool mentions(const Stmt* s, const VarDecl* v);
+  static bool mentions(const Stmt* s, const ValueDecl* v);
 
   // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
   // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
@@ -335,7 +405,10 @@ private:
 
   // Makes `v` (a real scalar with a value here) an accumulator of the loop
   // about to be lowered; false (and nothing done) where it cannot be one.
-  bool start_accumulator(const VarDecl* v, SourceLocation loc);
+  bool start_accumulator(const VarDecl* v, SourceLocation loc, int extremum = 0);
+  std::optional<Accumulator> make_accumulator(const std::string& name, const std::string& spelling,
+                                              ExprP init, int extremum, SourceLocation loc,
+                                              Store* start);
 
   // After the accumulating loop: `v` is the sum, a read of its element.
   void finish_accumulator(const VarDecl* v, SourceLocation loc);
@@ -416,8 +489,9 @@ private:
     return nullptr;
   }
 
+  // `extremum` (with accumulate): a min/max scan's store (Store::extremum).
   void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
-                 SourceLocation loc);
+                 SourceLocation loc, int extremum = 0);
   int next_store_seq_ = 0;
 
   // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------

@@ -345,25 +345,37 @@ void Lowerer::for_loop(const ForStmt* f) {
   // Scalar accumulators of this loop (`s += f(...)`, `s` read only after
   // the loop): a hidden work array each (start_accumulator).
   std::vector<const VarDecl*> accumulating;
-  for (const VarDecl* v : assigned)
-    if (in_loop_body_frame() && unrolling_ == 0 && is_accumulator(f->getBody(), v) &&
-        start_accumulator(v, f->getForLoc()))
+  const size_t element_reductions_before = element_reductions_.size();
+  if (in_loop_body_frame() && unrolling_ == 0)
+    start_element_reductions(f, var, assigned);
+  for (const VarDecl* v : assigned) {
+    if (!in_loop_body_frame() || unrolling_ != 0)
+      break;
+    int extremum = is_accumulator(f->getBody(), v) ? 0 : extremum_kind(f->getBody(), {v, nullptr});
+    if ((extremum != 0 || is_accumulator(f->getBody(), v)) &&
+        start_accumulator(v, f->getForLoc(), extremum))
       accumulating.push_back(v);
+  }
   for (const VarDecl* v : assigned) {
     if (!forget_value(v))
       continue;
-    if (accumulators_.count(v)) {
-      why_unset_[v] = fmt::format("'{}' accumulates in this loop ('+='): its sum is known "
-                                  "after the loop, read it there",
-                                  v->getNameAsString());
+    if (auto acc = accumulators_.find(v); acc != accumulators_.end()) {
+      why_unset_[v] = acc->second.extremum != 0
+                          ? fmt::format("'{}' is a {} reduction in this loop: its value is "
+                                        "known after the loop, read it there",
+                                        v->getNameAsString(),
+                                        acc->second.extremum > 0 ? "max" : "min")
+                          : fmt::format("'{}' accumulates in this loop ('+='): its sum is known "
+                                        "after the loop, read it there",
+                                        v->getNameAsString());
       continue;
     }
     why_unset_[v] = fmt::format(
         "'{}' is declared outside the loop and assigned inside it, and read here before it is "
         "assigned in this iteration: a value carried from one iteration to the next (a "
         "recurrence, or a running sum read inside its loop) is outside the kernel subset; "
-        "assign it before each use in the iteration, or only add to it in the loop "
-        "(`s += ...`) and read the sum after the loop",
+        "assign it before each use in the iteration, or only add to it (`s += ...`) or take "
+        "its min/max (`m = std::max(m, ...)`) in the loop and read it after the loop",
         v->getNameAsString());
   }
   // (after the accumulators' initial stores, which are outside the loop)
@@ -391,6 +403,7 @@ void Lowerer::for_loop(const ForStmt* f) {
   path_.resize(depth);
   env_ = env_before;
   why_unset_ = why_before;
+  finish_element_reductions(element_reductions_before, f->getEndLoc());
   // After the loop, a variable it assigned holds what the last iteration
   // left there: outside the subset; an accumulator holds its sum.
   for (const VarDecl* v : assigned) {
@@ -561,7 +574,7 @@ const clang::Expr* Lowerer::accumulated_term(const clang::Expr* rhs, const VarDe
   return term;
 }
 
-bool Lowerer::mentions(const Stmt* s, const VarDecl* v) {
+bool Lowerer::mentions(const Stmt* s, const ValueDecl* v) {
   if (!s)
     return false;
   if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v)
@@ -605,51 +618,405 @@ bool Lowerer::is_accumulator(const Stmt* body, const VarDecl* v) {
   return updates > 0 && !other;
 }
 
+bool Lowerer::same_expr(const clang::Expr* a, const clang::Expr* b) const {
+  llvm::FoldingSetNodeID x, y;
+  a->IgnoreParenImpCasts()->Profile(x, ctx_, true);
+  b->IgnoreParenImpCasts()->Profile(y, ctx_, true);
+  return x == y;
+}
+
+bool Lowerer::is_target(const clang::Expr* e, const ReductionTarget& t) const {
+  if (t.element)
+    return same_expr(e, t.element);
+  const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+  return r && r->getDecl() == t.decl;
+}
+
+Lowerer::ReductionTarget Lowerer::target_of(const clang::Expr* lhs) {
+  lhs = lhs->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(lhs))
+    return {dyn_cast<VarDecl>(r->getDecl()), nullptr};
+  const clang::Expr* base = nullptr;
+  if (const auto* u = dyn_cast<UnaryOperator>(lhs); u && u->getOpcode() == UO_Deref)
+    base = u->getSubExpr();
+  else if (const auto* sub = dyn_cast<ArraySubscriptExpr>(lhs))
+    base = sub->getBase();
+  while (base) { // p[j][i]: p
+    base = base->IgnoreParenImpCasts();
+    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(base)) {
+      base = sub->getBase();
+      continue;
+    }
+    if (const auto* r = dyn_cast<DeclRefExpr>(base))
+      if (isa<ParmVarDecl>(r->getDecl()))
+        return {r->getDecl(), lhs};
+    break;
+  }
+  return {};
+}
+
+// The term `e` of a min/max update of `t` (lower_impl.hpp).
+const clang::Expr* Lowerer::extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
+                                          int& extremum) const {
+  auto is_t = [&](const clang::Expr* e) { return is_target(e, t); };
+  rhs = rhs->IgnoreParenImpCasts();
+  // std::max(v, e), fmax(e, v), fminf(v, e), ...
+  if (const auto* c = dyn_cast<CallExpr>(rhs); c && c->getNumArgs() == 2) {
+    const FunctionDecl* f = c->getDirectCallee();
+    const MathFn* m = f ? find_math_function(f->getNameAsString()) : nullptr;
+    bool from_library = f && (sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
+                              f->getBuiltinID() != 0);
+    if (!m || !from_library || (m->name != "max" && m->name != "min"))
+      return nullptr;
+    const clang::Expr *a = c->getArg(0), *b = c->getArg(1);
+    const clang::Expr* term = is_t(a) ? b : is_t(b) ? a : nullptr;
+    if (!term || mentions(term, t.decl))
+      return nullptr;
+    extremum = m->name == "max" ? 1 : -1;
+    return term;
+  }
+  // v > e ? v : e, e < v ? v : e, v < e ? v : e (min), ... (a MAX macro)
+  const auto* co = dyn_cast<ConditionalOperator>(rhs);
+  if (!co)
+    return nullptr;
+  const auto* cmp = dyn_cast<BinaryOperator>(co->getCond()->IgnoreParenImpCasts());
+  if (!cmp || !cmp->isRelationalOp())
+    return nullptr;
+  const clang::Expr *yes = co->getTrueExpr(), *no = co->getFalseExpr();
+  const clang::Expr* term = is_t(yes) ? no : is_t(no) ? yes : nullptr;
+  if (!term || mentions(term, t.decl))
+    return nullptr;
+  // The comparison's sides are the target and the same e as the other arm.
+  const clang::Expr *l = cmp->getLHS(), *r = cmp->getRHS();
+  bool t_left = is_t(l) && same_expr(r, term), t_right = is_t(r) && same_expr(l, term);
+  if (!t_left && !t_right)
+    return nullptr;
+  // `l > r ? l : r` is a max, `l > r ? r : l` a min; `<` the other way.
+  bool greater = cmp->getOpcode() == BO_GT || cmp->getOpcode() == BO_GE;
+  bool picks_left = t_left ? is_t(yes) : !is_t(yes);
+  extremum = greater == picks_left ? 1 : -1;
+  return term;
+}
+
+// `if (e > v) v = e;` (lower_impl.hpp).
+const clang::Expr* Lowerer::extremum_if(const IfStmt* s, ReductionTarget& t,
+                                        int& extremum) const {
+  if (s->getElse() || s->getInit() || s->getConditionVariable() || s->isConstexpr())
+    return nullptr;
+  const Stmt* body = s->getThen();
+  if (const auto* cs = dyn_cast<CompoundStmt>(body)) {
+    if (cs->size() != 1)
+      return nullptr;
+    body = cs->body_front();
+  }
+  const auto* as = dyn_cast<BinaryOperator>(body);
+  if (!as || as->getOpcode() != BO_Assign)
+    return nullptr;
+  t = target_of(as->getLHS());
+  if (!t.decl)
+    return nullptr;
+  const auto* cmp = dyn_cast<BinaryOperator>(s->getCond()->IgnoreParenImpCasts());
+  if (!cmp || !cmp->isRelationalOp())
+    return nullptr;
+  const clang::Expr* term = as->getRHS();
+  if (mentions(term, t.decl))
+    return nullptr;
+  bool t_left = is_target(cmp->getLHS(), t) && same_expr(cmp->getRHS(), term);
+  bool t_right = is_target(cmp->getRHS(), t) && same_expr(cmp->getLHS(), term);
+  if (!t_left && !t_right)
+    return nullptr;
+  // `if (e > v) v = e` keeps the larger: a max; `if (v > e) v = e` a min.
+  bool greater = cmp->getOpcode() == BO_GT || cmp->getOpcode() == BO_GE;
+  extremum = greater == t_right ? 1 : -1;
+  return term;
+}
+
+// +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
+// `t` of one kind (lower_impl.hpp).
+int Lowerer::extremum_kind(const Stmt* body, const ReductionTarget& t) const {
+  int kind = 0, updates = 0;
+  bool other = false;
+  std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+    if (!s || other)
+      return;
+    int k = 0;
+    if (const auto* i = dyn_cast<IfStmt>(s)) {
+      ReductionTarget u;
+      bool same = extremum_if(i, u, k) && u.decl == t.decl &&
+                  (t.element ? u.element && same_expr(u.element, t.element) : !u.element);
+      if (same) {
+        other = other || (kind != 0 && k != kind);
+        kind = k;
+        ++updates;
+        return;
+      }
+    }
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
+      if (is_target(b->getLHS(), t)) {
+        if (b->getOpcode() != BO_Assign || !extremum_term(b->getRHS(), t, k) ||
+            (kind != 0 && k != kind)) {
+          other = true;
+          return;
+        }
+        kind = k;
+        ++updates;
+        return;
+      }
+    }
+    if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == t.decl) {
+      other = true;
+      return;
+    }
+    for (const Stmt* c : s->children())
+      visit(c);
+  };
+  visit(body);
+  return updates > 0 && !other ? kind : 0;
+}
+
+// A read of hidden work array `array` at `idx` by a later nest.
+ExprP Lowerer::hidden_read(const std::string& array, const ExprP& idx, SourceLocation loc) {
+  const Param* h = k_.find_param(array);
+  ExprP r = read(array, idx, h->elem, pos(loc), {});
+  std::const_pointer_cast<Expr>(r)->source = h->spelling;
+  k_.intermediates.insert(array);
+  acc_.work_reads.push_back({array, cur_key(), next_store_seq_, idx, path_, pos(loc)});
+  return r;
+}
+
+// The update `v = max(v, e)` here (lower_impl.hpp).
+void Lowerer::extremum_update(Accumulator& a, const clang::Expr* term, Type t,
+                              SourceLocation loc) {
+  ExprP e = cast(expr(term), t);
+  add_store(a.array, a.index, call("dpgen_nograd", {e}, t), true, pos(loc), loc, a.extremum);
+  ExtremumUpdate u;
+  u.term = e;
+  u.path = path_;
+  for (size_t d = a.depth; d < loops_.size(); ++d)
+    u.loops.push_back(*loops_[d]);
+  u.pos = pos(loc);
+  a.updates.push_back(u);
+}
+
+// After the reducing loop: the ties and the result (lower_impl.hpp).
+void Lowerer::finish_extremum(const Accumulator& a, SourceLocation loc) {
+  const Type t = k_.find_param(a.array)->elem;
+  auto ng = [&](const ExprP& x) { return call("dpgen_nograd", {x}, t); };
+  auto one = real_const(1, t), nil = real_const(0, t);
+  // A store after every nest so far that stores `array`'s inputs.
+  auto straight = [&](const std::string& reads, const std::string& array, auto&& value) {
+    order_after_later_stores(reads);
+    add_store(array, a.index, value(), false, pos(loc), loc);
+  };
+  // One nest per update, with the update's loops and path.
+  auto per_update = [&](const std::string& array, auto&& value) {
+    for (const auto& u : a.updates) {
+      auto path_before = path_;
+      for (const auto& l : u.loops) {
+        loops_.push_back(std::make_shared<Loop>(l));
+        loop_ids_.push_back(next_loop_id_++);
+        segments_.push_back(--next_segment_);
+      }
+      path_ = u.path;
+      add_store(array, a.index, value(u.term), true, u.pos, loc);
+      for (size_t i = 0; i < u.loops.size(); ++i) {
+        loops_.pop_back();
+        loop_ids_.pop_back();
+        segments_.pop_back();
+      }
+      path_ = path_before;
+    }
+  };
+  // T = [S == M] + sum [e == M]
+  straight(a.array, a.ties, [&] {
+    ExprP m = ng(hidden_read(a.array, a.index, loc));
+    return select(binary(Op::Eq, hidden_read(a.start, a.index, loc), m), one, nil);
+  });
+  per_update(a.ties, [&](const ExprP& e) {
+    ExprP m = ng(hidden_read(a.array, a.index, loc));
+    return select(binary(Op::Eq, e, m), one, nil);
+  });
+  // R = M + [S == M](S - M)/T + sum [e == M](e - M)/T
+  auto share = [&](const ExprP& x) {
+    ExprP m = ng(hidden_read(a.array, a.index, loc));
+    ExprP ties = ng(hidden_read(a.ties, a.index, loc));
+    return select(binary(Op::Eq, x, m), binary(Op::Div, binary(Op::Sub, x, m), ties), nil);
+  };
+  straight(a.ties, a.result, [&] {
+    return binary(Op::Add, ng(hidden_read(a.array, a.index, loc)),
+                  share(hidden_read(a.start, a.index, loc)));
+  });
+  per_update(a.result, share);
+}
+
 // Makes `v` (a real scalar with a value here) an accumulator of the loop
-// about to be lowered; false (and nothing done) where it cannot be one.
-bool Lowerer::start_accumulator(const VarDecl* v, SourceLocation loc) {
+// about to be lowered (a min/max reduction if `extremum`); false (and
+// nothing done) where it cannot be one.
+bool Lowerer::start_accumulator(const VarDecl* v, SourceLocation loc, int extremum) {
   auto it = env_.find(v);
   if (it == env_.end() || it->second.kind != Binding::Value || !it->second.value ||
       !is_real((*it->second.value)->type) || v->getType()->isReferenceType())
     return false;
+  auto a = make_accumulator(v->getNameAsString(), v->getNameAsString(), *it->second.value,
+                            extremum, loc, nullptr);
+  if (!a)
+    return false;
+  accumulators_[v] = *a;
+  return true;
+}
+
+// The hidden arrays of an accumulator of the loop about to be lowered, from
+// value `init`, and their stores before the loop (lower_impl.hpp); `start`:
+// a store of `init` to reuse as the start's.
+std::optional<Lowerer::Accumulator> Lowerer::make_accumulator(const std::string& name,
+                                                              const std::string& spelling,
+                                                              ExprP init, int extremum,
+                                                              SourceLocation loc, Store* start) {
   // One element per iteration of the enclosing loops: (outer - lo) * extent
   // of the inner ones + ..., which needs polynomial bounds.
   ExprP idx = int_const(0);
   for (size_t d = 0; d < loops_.size(); ++d) {
     const Loop& l = *loops_[d];
     if (!to_poly(l.lo) || !to_poly(l.hi))
-      return false;
+      return std::nullopt;
     ExprP here = binary(Op::Sub, loop_var(l.var), l.lo);
     idx = d == 0 ? here
                  : binary(Op::Add, binary(Op::Mul, idx, binary(Op::Sub, l.hi, l.lo)), here);
   }
-  if (k_.hidden.size() == k_.hidden.capacity())
-    return false; // (pointers into it must stay valid while lowering)
-  Param h;
-  h.name = "dpgen_sum_" + v->getNameAsString();
-  for (int n = 2; k_.find_param(h.name); ++n)
-    h.name = fmt::format("dpgen_sum_{}_{}", v->getNameAsString(), n);
-  h.kind = ParamKind::Out;
-  h.elem = (*it->second.value)->type;
-  h.elem_name = type_spelling(h.elem);
-  h.spelling = v->getNameAsString(); // the user's accumulator, for messages
-  h.declaration = fmt::format("{}* {}", h.elem_name, h.name);
-  k_.hidden.push_back(h);
-  add_store(h.name, idx, *it->second.value, false, pos(loc), loc);
-  accumulators_[v] = {h.name, idx};
-  return true;
+  if (k_.hidden.size() + (extremum ? 4 : 1) > k_.hidden.capacity())
+    return std::nullopt; // (pointers into it must stay valid while lowering)
+  const Type t = init->type;
+  auto hidden = [&](const char* what) {
+    Param h;
+    h.name = fmt::format("dpgen_{}_{}", what, name);
+    for (int n = 2; k_.find_param(h.name); ++n)
+      h.name = fmt::format("dpgen_{}_{}_{}", what, name, n);
+    h.kind = ParamKind::Out;
+    h.elem = t;
+    h.elem_name = type_spelling(h.elem);
+    h.spelling = spelling; // the user's accumulator, for messages
+    h.declaration = fmt::format("{}* {}", h.elem_name, h.name);
+    k_.hidden.push_back(h);
+    return h.name;
+  };
+  Accumulator a;
+  a.index = idx;
+  a.extremum = extremum;
+  a.depth = loops_.size();
+  if (extremum == 0) {
+    a.array = hidden("sum");
+    add_store(a.array, idx, init, false, pos(loc), loc);
+    return a;
+  }
+  a.start = hidden("start");
+  a.array = hidden("scan");
+  a.ties = hidden("ties");
+  a.result = hidden(extremum > 0 ? "max" : "min");
+  if (start) { // (before add_store, which may move it)
+    start->array = a.start;
+    start->index = idx;
+  } else {
+    add_store(a.start, idx, init, false, pos(loc), loc);
+  }
+  add_store(a.array, idx, call("dpgen_nograd", {init}, t), false, pos(loc), loc);
+  return a;
+}
+
+// The element reductions of loop `f` (lower_impl.hpp): assignments in its
+// body to an element of a DPGEN_OUT parameter at an index the loop does not
+// change, every one a min/max update of that element.
+void Lowerer::start_element_reductions(const ForStmt* f, const VarDecl* counter_decl,
+                                       const std::set<const VarDecl*>& assigned) {
+  std::vector<ReductionTarget> targets;
+  std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+    if (!s)
+      return;
+    const clang::Expr* lhs = nullptr;
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->getOpcode() == BO_Assign)
+      lhs = b->getLHS();
+    ReductionTarget t = lhs ? target_of(lhs) : ReductionTarget{};
+    if (t.element && isa<ParmVarDecl>(t.decl)) {
+      bool known = std::any_of(targets.begin(), targets.end(), [&](const ReductionTarget& o) {
+        return same_expr(o.element, t.element);
+      });
+      // (its subscripts mention neither the loop's counter nor a variable
+      // the loop assigns)
+      std::vector<const clang::Expr*> subscripts;
+      for (const clang::Expr* e = t.element->IgnoreParenImpCasts();
+           const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
+           e = sub->getBase()->IgnoreParenImpCasts())
+        subscripts.push_back(sub->getIdx());
+      bool loop_invariant = true;
+      for (const clang::Expr* x : subscripts) {
+        loop_invariant = loop_invariant && !mentions(x, counter_decl);
+        for (const VarDecl* v : assigned)
+          loop_invariant = loop_invariant && !mentions(x, v);
+      }
+      if (!known && loop_invariant)
+        targets.push_back(t);
+    }
+    for (const Stmt* c : s->children())
+      visit(c);
+  };
+  visit(f->getBody());
+  for (const auto& t : targets) {
+    bool active = std::any_of( // (an outer loop's reduction)
+        element_reductions_.begin(), element_reductions_.end(),
+        [&](const ElementReduction& r) { return same_expr(r.target.element, t.element); });
+    int kind = active ? 0 : extremum_kind(f->getBody(), t);
+    if (kind == 0)
+      continue;
+    auto acc = element(t.element);
+    if (!acc || acc->param->kind != ParamKind::Out || acc->param->inout || acc->param->global)
+      continue;
+    const Param* p = acc->param;
+    auto nit = nest_index_.find(cur_key());
+    Store* prev = nit == nest_index_.end()
+                      ? nullptr
+                      : visible_store(k_.nests[nit->second], p->name, acc->index);
+    if (!prev || prev->accumulate)
+      fail(t.element->getBeginLoc(),
+           fmt::format("the {} reduction into '{}' in this loop starts from the value it has "
+                       "before the loop, which the kernel does not set (the caller's, which the "
+                       "adjoint does not have): store the start value first (`{} = 0.0;`), or "
+                       "reduce into a local and store that after the loop",
+                       kind > 0 ? "max" : "min", text(t.element), text(t.element)),
+           "dpgen-reduction");
+    ExprP init = prev->value;
+    auto a = make_accumulator(p->name, text(t.element), init, kind, f->getForLoc(), prev);
+    if (!a)
+      fail(t.element->getBeginLoc(),
+           fmt::format("the {} reduction into '{}': dpgen cannot number the iterations of the "
+                       "loops around it (bounds that are not polynomials in the sizes)",
+                       kind > 0 ? "max" : "min", text(t.element)),
+           "dpgen-reduction");
+    element_reductions_.push_back({t, p->name, acc->index, *a});
+  }
+}
+
+// After the reducing loop: each element reduction started at or after `from`
+// is stored its result.
+void Lowerer::finish_element_reductions(size_t from, SourceLocation loc) {
+  while (element_reductions_.size() > from) {
+    const ElementReduction r = element_reductions_.back();
+    element_reductions_.pop_back();
+    finish_extremum(r.acc, loc);
+    order_after_later_stores(r.acc.result);
+    ExprP v = hidden_read(r.acc.result, r.acc.index, loc);
+    add_store(r.array, r.index, v, false, pos(loc), loc);
+  }
 }
 
 // After the accumulating loop: `v` is the sum, a read of its element.
 void Lowerer::finish_accumulator(const VarDecl* v, SourceLocation loc) {
   const Accumulator a = accumulators_.at(v);
   accumulators_.erase(v);
-  const Param* h = k_.find_param(a.array);
-  order_after_later_stores(a.array);
-  ExprP r = read(a.array, a.index, h->elem, pos(loc), {});
+  if (a.extremum != 0)
+    finish_extremum(a, loc);
+  const std::string& sum = a.extremum != 0 ? a.result : a.array;
+  order_after_later_stores(sum);
+  ExprP r = hidden_read(sum, a.index, loc);
   std::const_pointer_cast<Expr>(r)->source = v->getNameAsString();
-  k_.intermediates.insert(a.array);
-  acc_.work_reads.push_back({a.array, cur_key(), next_store_seq_, a.index, path_, pos(loc)});
   env_[v].value = r;
   why_unset_.erase(v);
 }

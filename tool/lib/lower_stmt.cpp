@@ -134,6 +134,24 @@ Escape Lowerer::if_stmt(const IfStmt* s) {
     const Stmt* branch = taken ? s->getThen() : s->getElse();
     return branch ? lower_recovering(branch) : Escape::None;
   }
+  // `if (e > m) m = e;` of a max reduction (min: `if (e < m) m = e;`): an update.
+  {
+    ReductionTarget target;
+    int kind = 0;
+    const clang::Expr* term = extremum_if(s, target, kind);
+    const auto* v = term && !target.element ? dyn_cast<VarDecl>(target.decl) : nullptr;
+    if (auto acc = v ? accumulators_.find(v) : accumulators_.end();
+        acc != accumulators_.end() && acc->second.extremum == kind) {
+      auto t = scalar_type(v->getType().getNonReferenceType());
+      extremum_update(acc->second, term, *t, s->getBeginLoc());
+      return Escape::None;
+    }
+    for (auto& r : element_reductions_)
+      if (term && target.element && r.acc.extremum == kind && is_target(target.element, r.target)) {
+        extremum_update(r.acc, term, k_.find_param(r.acc.array)->elem, s->getBeginLoc());
+        return Escape::None;
+      }
+  }
   ExprP c = cond(s->getCond());
   size_t depth = path_.size();
   auto env_before = env_;
@@ -392,12 +410,16 @@ Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
 size_t Lowerer::local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n) {
   ExprP idx = expr(idx_expr);
   auto p = to_poly(idx);
-  if (!p || !p->is_constant())
+  // (an affine constant, or one C's integer operators give: `m % 2`, `m >> 1`
+  // of an unrolled counter)
+  std::optional<long long> value =
+      p && p->is_constant() ? std::optional<long long>(p->constant_term()) : int_value(idx);
+  if (!value)
     fail(idx_expr->getBeginLoc(),
          fmt::format("index of local array '{}' must be a constant (or the counter of a small "
                      "loop with constant bounds, which dpgen unrolls)",
                      v->getNameAsString()));
-  long long k = p->constant_term();
+  long long k = *value;
   if (k < 0 || k >= static_cast<long long>(n))
     fail(idx_expr->getBeginLoc(), fmt::format("index {} is outside local array '{}' of {} "
                                               "elements",
@@ -492,6 +514,15 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
     slot = make_local(name, nullptr, cast(binary(bop, *slot, r), b.elem));
     return;
   }
+  for (auto& r : element_reductions_)
+    if (is_target(lhs, r.target)) { // *err = fmax(*err, e): the reduction's update
+      int kind = 0;
+      const clang::Expr* term = op == BO_Assign ? extremum_term(rhs, r.target, kind) : nullptr;
+      if (!term || kind != r.acc.extremum)
+        fail(loc, "internal error: an element reduction assigned in an unexpected form");
+      extremum_update(r.acc, term, k_.find_param(r.acc.array)->elem, lhs->getBeginLoc());
+      return;
+    }
   if (auto acc = element(lhs)) {
     const Param* p = acc->param;
     if (p->inout) {
@@ -579,6 +610,17 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
 // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
 // stands for).
 void Lowerer::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs, SourceLocation loc) {
+  if (auto acc = accumulators_.find(var); acc != accumulators_.end() && acc->second.extremum) {
+    // m = std::max(m, e), fmin(e, m), m > e ? m : e, ...: the scan's update.
+    int kind = 0;
+    const clang::Expr* term =
+        op == BO_Assign ? extremum_term(rhs, {var, nullptr}, kind) : nullptr;
+    if (!term || kind != acc->second.extremum)
+      fail(loc, fmt::format("internal error: reduction '{}' assigned in an unexpected form",
+                            var->getNameAsString()));
+    extremum_update(acc->second, term, t, lhs->getBeginLoc());
+    return;
+  }
   if (auto acc = accumulators_.find(var); acc != accumulators_.end()) {
     // s += e, s -= e, s = s + e, s = s - e, s = e + s: the hidden array's
     // element for this iteration of the outer loops gets += (-)e.
@@ -651,7 +693,7 @@ bool Lowerer::is_prefix(const std::vector<PathCond>& prefix, const std::vector<P
   return true;
 }
 
-void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc) {
+void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc, int extremum) {
   // A sum into one element from the iterations of a library parallel-for
   // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
   // parallel semantics: refused, though a serial reading would be a sum.
@@ -677,7 +719,14 @@ void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool a
   // `x[k] = a; ... x[k] += b;` stores a + b, and a store under a further
   // condition keeps the earlier value where that condition fails.
   if (Store* prev = visible_store(nest, array, idx)) {
-    ExprP updated = accumulate ? binary(Op::Add, prev->value, value) : value;
+    // (two min/max updates in one iteration: the scan takes the extremum of
+    // both, still a constant to derivatives)
+    ExprP updated = extremum ? call("dpgen_nograd",
+                                    {call(extremum > 0 ? "max" : "min", {prev->value, value},
+                                          value->type)},
+                                    value->type)
+                    : accumulate ? binary(Op::Add, prev->value, value)
+                                 : value;
     ExprP cond;
     for (size_t i = prev->path.size(); i < path_.size(); ++i) {
       ExprP c = path_[i].positive ? path_[i].cond : unary(Op::Not, path_[i].cond);
@@ -717,6 +766,7 @@ void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool a
   }
   Store st{array, idx, value, path_, p};
   st.accumulate = accumulate;
+  st.extremum = extremum;
   st.seq = next_store_seq_++;
   nest.stores.push_back(st);
 }

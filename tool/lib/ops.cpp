@@ -102,6 +102,10 @@ const std::vector<MathFn> kMath = {
         return mul(mul(r.value(), r.fn("log", {r.arg(0)})), db);
       }}},
     // piecewise constant: zero almost everywhere
+    // The value of its argument, as a constant to derivatives (a stop-gradient:
+    // the min/max reductions' scans and tie counts, lower_loop.cpp). Printed as
+    // a parenthesized argument.
+    {"dpgen_nograd", {}, 1, "", true, {}, nullptr},
     {"floor", {}, 1, "std::floor", true, {}, nullptr},
     {"ceil", {}, 1, "std::ceil", true, {}, nullptr},
     // d atan2(y, x) = (x·dy - y·dx) / (x² + y²)
@@ -174,6 +178,8 @@ const std::vector<MathFn>& math_functions() { return kMath; }
 const MathFn* find_math_function(const std::string& name) {
   auto lookup = [](const std::string& n) -> const MathFn* {
     for (const auto& f : kMath) {
+      if (f.printed.empty()) // dpgen's own, not a function a kernel calls
+        continue;
       if (f.name == n)
         return &f;
       for (const auto& a : f.aliases)
@@ -200,6 +206,8 @@ const MathFn& math_function(const std::string& name) {
 std::string supported_calls() {
   std::string s;
   for (const auto& f : kMath) {
+    if (f.printed.empty()) // (dpgen's own)
+      continue;
     if (!s.empty())
       s += ", ";
     s += f.printed.rfind("std::", 0) == 0 ? f.printed : "std::" + f.name;

@@ -178,6 +178,17 @@ std::string print(const ExprP& e) {
   unknown_op("print");
 }
 
+std::string store_statement(const Store& s, const std::string& target, const std::string& value) {
+  if (s.extremum != 0)
+    return fmt::format("{} = {}({}, {});", target, s.extremum > 0 ? "dpgen_max" : "dpgen_min",
+                       target, value);
+  return fmt::format("{} {} {};", target, s.accumulate ? "+=" : "=", value);
+}
+
+const char* store_operator(const Store& s) {
+  return s.extremum > 0 ? "max=" : s.extremum < 0 ? "min=" : s.accumulate ? "+=" : "=";
+}
+
 std::string print_max(const std::vector<Poly>& set, const std::string& int_type) {
   return bound_set(set, "max", int_type);
 }

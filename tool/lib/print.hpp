@@ -23,5 +23,10 @@ std::string print_max(const std::vector<Poly>& set, const std::string& int_type)
 std::string print_min(const std::vector<Poly>& set, const std::string& int_type);
 /// A real literal of type t ("2.0", "0.5f").
 std::string real_literal(double v, Type t);
+/// A store statement: "a[i] = v;", "a[i] += v;", or a min/max scan's
+/// "a[i] = dpgen_max(a[i], v);" (Store::extremum), `target` the element.
+std::string store_statement(const Store& s, const std::string& target, const std::string& value);
+/// The store's operator in the textual IR: "=", "+=", "max=", "min=".
+const char* store_operator(const Store& s);
 
 } // namespace dpgen

@@ -217,9 +217,8 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: // recomputed first.
 // CPP-NEXT: void work_array_adjoint(const double* q, double* q_adj, const double* flux_adj,
 // CPP-NEXT:                         const double* q_new_adj, int n, double c) {
-// CPP-NEXT:   const std::ptrdiff_t flux_n =
-// CPP-NEXT:       std::max<std::ptrdiff_t>({0, static_cast<std::ptrdiff_t>(n), static_cast<std::ptrdiff_t>(n),
-// CPP-NEXT:                                 static_cast<std::ptrdiff_t>(n - 1)});
+// CPP-NEXT:   const std::ptrdiff_t flux_n = std::max<std::ptrdiff_t>(
+// CPP-NEXT:       {0, static_cast<std::ptrdiff_t>(n), static_cast<std::ptrdiff_t>(n - 1)});
 // CPP-NEXT:   std::vector<double> flux_v(static_cast<std::size_t>(flux_n),
 // CPP-NEXT:                              std::numeric_limits<double>::quiet_NaN());
 // CPP-NEXT:   std::vector<double> flux_b(flux_adj, flux_adj + flux_n); // its seed, then more

@@ -1,0 +1,50 @@
+// Min/max reductions (tests/styles/minmax_reductions.cpp) that are not:
+// one into an output element the kernel never set before the loop (its start
+// would be the caller's value, which the adjoint does not have), an arg-max
+// index tracked beside the maximum, a maximum read inside its own loop, and
+// a variable that takes a max and a min in turn.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+#include <cmath>
+
+DPGEN_KERNEL void no_start(DPGEN_IN const double* r, DPGEN_OUT double* err, int n) {
+  for (int i = 0; i < n; ++i)
+    *err = fmax(*err, fabs(r[i]));
+  // CHECK: minmax_rules.cpp:[[@LINE-1]]:5: error: the max reduction into '*err' in this loop starts from the value it has before the loop, which the kernel does not set
+}
+
+DPGEN_KERNEL void argmax(DPGEN_IN const double* r, DPGEN_OUT double* out, int n) {
+  double m = r[0];
+  int im = 0;
+  for (int i = 1; i < n; ++i)
+    if (r[i] > m) {
+      // CHECK: minmax_rules.cpp:[[@LINE-1]]:16: error: 'm' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+      m = r[i];
+      im = i;
+    }
+  out[0] = m * im;
+  // CHECK: minmax_rules.cpp:[[@LINE-1]]:12: error: 'm' is read after the loop that assigns it
+}
+
+DPGEN_KERNEL void read_inside(DPGEN_IN const double* r, DPGEN_OUT double* out, int n) {
+  double m = 0;
+  for (int i = 0; i < n; ++i) {
+    m = fmax(m, r[i]);
+    // CHECK: minmax_rules.cpp:[[@LINE-1]]:14: error: 'm' is declared outside the loop
+    out[i + 1] = m;
+  }
+  out[0] = m;
+}
+
+DPGEN_KERNEL void max_then_min(DPGEN_IN const double* r, DPGEN_OUT double* out, int n) {
+  double m = 0;
+  for (int i = 0; i < n; ++i) {
+    m = fmax(m, r[i]);
+    // CHECK: minmax_rules.cpp:[[@LINE-1]]:14: error: 'm' is declared outside the loop
+    m = fmin(m, 2 * r[i]);
+  }
+  out[0] = m;
+}

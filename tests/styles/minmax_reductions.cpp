@@ -1,0 +1,91 @@
+// minmax_reductions (tests/styles/): min/max reductions written as solver
+// codes write them (issue 20): the residual's max norm (into a local and into
+// `*error`), a CFL time step, row maxima with a MAX macro, if-updates (C89
+// counters), two updates in one iteration, column minima into an output row.
+#include "dpgen/annotate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#define MAX(a, b) ((a) > (b) ? (a) : (b))
+
+// The residual's infinity norm, as Jacobi codes check convergence.
+DPGEN_KERNEL void red_maxnorm(DPGEN_IN const double* r, DPGEN_OUT double* err, int n) {
+  double e = 0.0;
+  for (int i = 0; i < n; ++i)
+    e = fmax(e, fabs(r[i]));
+  err[0] = e;
+}
+
+// A CFL step: dt = cfl * dx / max |u| + c (std::max, a local of the body).
+DPGEN_KERNEL void red_cfl(DPGEN_IN const double* u, DPGEN_OUT double* dt, double c, double dx,
+                          int n) {
+  double smax = 1e-12;
+  for (int i = 0; i < n; ++i) {
+    const double s = std::fabs(u[i]) + c;
+    smax = std::max(smax, s);
+  }
+  dt[0] = 0.5 * dx / smax;
+}
+
+// Row maxima of a 2D field with the MAX macro, started from the row's first.
+DPGEN_KERNEL void red_rowmax_macro(DPGEN_IN const double* a, DPGEN_OUT double* rowmax, int nx,
+                                   int ny) {
+  for (int j = 0; j < ny; ++j) {
+    double m = a[j * nx];
+    for (int i = 1; i < nx; ++i)
+      m = MAX(m, a[j * nx + i] * a[j * nx + i]);
+    rowmax[j] = m;
+  }
+}
+
+// if-update min over a 2D interior (C89 counters), scaled after the loops.
+DPGEN_KERNEL void red_min_if_c89(DPGEN_IN const double* h, DPGEN_OUT double* hmin, int nx,
+                                 int ny) {
+  int i, j;
+  double m = 1.0e30;
+  for (j = 1; j < ny - 1; j++)
+    for (i = 1; i < nx - 1; i++)
+      if (h[j * nx + i] - h[j * nx + i - 1] < m)
+        m = h[j * nx + i] - h[j * nx + i - 1];
+  hmin[0] = 2.0 * m;
+}
+
+// Two updates in one iteration and a second, separate max (of a squared
+// value) in the same kernel; float.
+DPGEN_KERNEL void red_two_updates_float(DPGEN_IN const float* a, DPGEN_IN const float* b,
+                                        DPGEN_OUT float* out, int n) {
+  float m = a[0];
+  float q = 0.0f;
+  for (int i = 0; i < n; ++i) {
+    m = std::max(m, a[i]);
+    m = std::max(b[i], m);
+    q = fmaxf(q, a[i] * b[i]);
+  }
+  out[0] = m + 3.0f * q;
+}
+
+// The residual's max norm into an output scalar, as C solvers write it
+// (`*error = fmax(*error, ...)`), over a 2D interior.
+DPGEN_KERNEL void red_jacobi_error(DPGEN_IN const double* u, DPGEN_IN const double* f,
+                                   DPGEN_OUT double* error, int nx, int ny, double h) {
+  *error = 0.0;
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i) {
+      const double r = f[j * nx + i] - (4.0 * u[j * nx + i] - u[j * nx + i - 1] -
+                                        u[j * nx + i + 1] - u[(j - 1) * nx + i] -
+                                        u[(j + 1) * nx + i]) / (h * h);
+      *error = fmax(*error, fabs(r));
+    }
+}
+
+// Column minima into an output row, an if-update per element.
+DPGEN_KERNEL void red_colmin_out(DPGEN_IN const double* a, DPGEN_OUT double* colmin, int nx,
+                                 int ny) {
+  for (int i = 0; i < nx; ++i) {
+    colmin[i] = a[i];
+    for (int j = 1; j < ny; ++j)
+      if (a[j * nx + i] < colmin[i])
+        colmin[i] = a[j * nx + i];
+  }
+}
