@@ -45,3 +45,12 @@ DPGEN_KERNEL void twice(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
     b[0] = a[i];
   // CHECK-DAG: ids.cpp:[[@LINE-1]]:5: error: output 'b' is written at the same index by every {{.*}} [dpgen-write-once]
 }
+
+DPGEN_KERNEL void buffered(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  double t[128];
+  for (int i = 0; i < n - 1; ++i)
+    t[i] = a[i];
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: ids.cpp:[[@LINE+1]]:{{[0-9]+}}: error: line buffer 't' is read at 't[i]' {{.*}} [dpgen-buffer]
+    b[i] = t[i];
+}

@@ -39,6 +39,8 @@ public:
     check_inout();
     if (check_outputs())
       output_extents();
+    for (auto& c : k_.size_checks)
+      c.what = user_names(c.what);
     return ok_;
   }
 
@@ -57,6 +59,8 @@ private:
   std::string work_name(const std::string& array) const {
     for (const auto& h : k_.hidden)
       if (h.name == array) {
+        if (a_.buffers.count(array))
+          return fmt::format("line buffer '{}'", h.spelling);
         if (h.name.rfind("dpgen_sum_", 0) == 0)
           return fmt::format("the sum in '{}' (read after the loop that adds to it)", h.spelling);
         return fmt::format("the min/max reduction '{}' (read after its loop)", h.spelling);
@@ -68,8 +72,44 @@ private:
   // dpgen-read-after-write, dpgen-work-array, dpgen-inplace,
   // dpgen-output-index.
   void fail(const SourcePos& at, const char* id, const std::string& msg) {
-    diag_.error(at, id, msg);
+    diag_.error(at, id, user_names(msg));
     ok_ = false;
+  }
+
+  // A message as the user reads it: a line buffer's hidden array named as
+  // the kernel names the buffer.
+  std::string user_names(std::string msg) const {
+    for (const auto& [array, b] : a_.buffers)
+      for (const auto& [from, to] :
+           {std::pair{"output '" + array + "'", "line buffer '" + b.name + "'"},
+            std::pair{"work array '" + array + "'", "line buffer '" + b.name + "'"},
+            std::pair{"'" + array + "'", "'" + b.name + "'"}})
+        for (size_t at = msg.find(from); at != std::string::npos; at = msg.find(from, at))
+          msg.replace(at, from.size(), to);
+    return msg;
+  }
+
+  // Two stores to a line buffer (check.hpp: Accesses::buffers) in nests
+  // inside its row loops: in one row, their elements (the indices as the
+  // kernel writes them, each inside the buffer: lowering checks that) lie
+  // apart, so they never write the same element.
+  bool buffer_stores_apart(const Store& x, const Nest& nx, const Store& y, const Nest& ny) const {
+    auto it = a_.buffers.find(x.array);
+    if (it == a_.buffers.end() || shared_loops(nx, ny) < it->second.depth)
+      return false;
+    const auto& b = it->second;
+    auto local = [&](const Store& s) {
+      Poly p = *to_poly(s.index);
+      return b.depth == 0 ? p : p - *to_poly(b.row) * *to_poly(b.length);
+    };
+    auto rx = index_range(local(x), x.path, nx), ry = index_range(local(y), y.path, ny);
+    if (!rx || !ry)
+      return false;
+    Facts facts = pair_facts(nx, x, ny, y);
+    Poly one = Poly::constant(1);
+    facts.push_back(*to_poly(b.length) - one); // (a VLA has at least one element)
+    return prove_nonneg(ry->first - rx->second - one, facts) ||
+           prove_nonneg(rx->first - ry->second - one, facts);
   }
 
   const Nest* nest_with_key(const std::vector<int>& key) const {
@@ -298,7 +338,7 @@ private:
                 exclusive(x.path, y.path) ||
                 *to_poly(x.index) == *to_poly(y.index) ||
                 residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
-                rows_apart(x, nest, y, nest) ||
+                rows_apart(x, nest, y, nest) || buffer_stores_apart(x, nest, y, nest) ||
                 (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)) ||
                 fixed_apart(*to_poly(x.index), *to_poly(y.index)) || last_writer(nest, a, b))
               continue;
@@ -333,7 +373,7 @@ private:
         const Nest &nx = *all[a].nest, &ny = *all[b].nest;
         const Store &x = *all[a].store, &y = *all[b].store;
         if (x.array != y.array || &nx == &ny || reported.count(&y) || not_affine.count(x.array) ||
-            exclusive(x.path, y.path))
+            exclusive(x.path, y.path) || buffer_stores_apart(x, nx, y, ny))
           continue;
         size_t shared = shared_loops(nx, ny);
         if (y.accumulate) {
@@ -515,6 +555,19 @@ private:
         return true;
       }
       dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+    }
+    if (auto b = a_.buffers.find(s.array); b != a_.buffers.end() && b->second.depth > 0) {
+      // A line buffer: rows apart (each element inside its row, which
+      // lowering checks), so one-to-one within a row, over the loops inside
+      // the row loops, at the index as the kernel writes it.
+      Poly local = *p - *to_poly(b->second.row) * *to_poly(b->second.length);
+      dims.clear();
+      for (size_t d = b->second.depth; d < nest.loops.size(); ++d) {
+        const Loop& l = nest.loops[d];
+        Poly c = local.coefficient(Sym::counter(l.var));
+        if (!(c == Poly()))
+          dims.push_back({c, *to_poly(l.hi) - *to_poly(l.lo)});
+      }
     }
     if (!s.accumulate)
       check_one_to_one(nest, s, dims);
@@ -705,6 +758,16 @@ private:
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
+    // A line buffer: a row of its length per iteration of its row loops
+    // (lowering proves, or checks on entry, that every element it writes
+    // lies in its row, and reads only what was written). The tangent needs
+    // it also where no later loop reads the buffer.
+    for (const auto& [array, b] : a_.buffers) {
+      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", to_poly(b.length)->code());
+      for (const auto& x : b.extents)
+        e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, to_poly(x)->code());
+      k_.extent[array] = fmt::format("std::max<std::ptrdiff_t>(0, {})", e);
+    }
     bool inout =
         std::any_of(k_.params.begin(), k_.params.end(), [](const Param& p) { return p.inout; });
     if (k_.intermediates.empty() && !inout)
@@ -741,6 +804,8 @@ private:
     };
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
+        if (a_.buffers.count(st.array))
+          continue;
         auto r = index_range(st, n);
         if (!r) {
           fail(st.pos, "dpgen-output-index", fmt::format("cannot bound the indices of output '{}', which the "
@@ -766,7 +831,7 @@ private:
     // buffer holds NaN there): the buffer covers the reads too.
     for (const auto& r : a_.work_reads) {
       const Nest* reader = nest_with_key(r.nest_key);
-      if (!reader)
+      if (!reader || a_.buffers.count(r.array))
         continue;
       Store probe{r.array, r.index, r.index, r.path, {}};
       auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;

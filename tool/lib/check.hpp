@@ -10,6 +10,7 @@
 
 #include "ir.hpp"
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,16 @@ struct Accesses {
   std::vector<Access> inout_stores;
   /// Reads of a work array outside every loop (not directly in a store).
   std::vector<std::pair<std::string, SourcePos>> kernel_level_work_reads;
+  /// Line buffers (local arrays of more than 64 elements, VLAs), by their
+  /// hidden array: the kernel's `tmp[e]` is element row * length + e, `row`
+  /// the iteration of the `depth` loops around all the buffer's uses.
+  struct Buffer {
+    std::string name; // as the kernel names it
+    size_t depth = 0;
+    ExprP row, length;
+    std::vector<ExprP> extents; // hi - lo of each row loop
+  };
+  std::map<std::string, Buffer> buffers;
 };
 
 /// Checks the lowered kernel: work arrays, in-place arrays, the write-once

@@ -773,8 +773,8 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     }
   }
   for (const auto& h : k.hidden) {
-    code.line("const std::ptrdiff_t {} = {}; // the sums of '{}'", n_of(h.name),
-              k.extent.at(h.name), h.spelling);
+    code.line("const std::ptrdiff_t {} = {}; // {} '{}'", n_of(h.name), k.extent.at(h.name),
+              is_buffer(h) ? "the rows of line buffer" : "the sums of", h.spelling);
     code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
               "std::numeric_limits<{}>::quiet_NaN());",
               h.elem_name, v_of(h.name), n_of(h.name), h.elem_name);

@@ -66,8 +66,11 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   }
   for (const auto& h : k.hidden)
     ps.push_back(fmt::format("{}* {}", h.elem_name, h.name));
-  code.line("// {} as its IR says, with the sums of its accumulators ({}) kept in arrays.",
-            k.name, [&] {
+  code.line("// {} as its IR says, with {} ({}) kept in arrays.", k.name,
+            std::all_of(k.hidden.begin(), k.hidden.end(), [](const Param& h) { return !is_buffer(h); })
+                ? "the sums of its accumulators"
+                : "the sums of its accumulators and the rows of its line buffers",
+            [&] {
               std::vector<std::string> names; // (a min/max reduction has four)
               for (const auto& h : k.hidden)
                 if (std::find(names.begin(), names.end(), h.spelling) == names.end())

@@ -459,4 +459,10 @@ struct Kernel {
 
 std::string type_spelling(Type t);
 
+/// A hidden array (Kernel::hidden) that holds a line buffer of the kernel
+/// (a local array of more than 64 elements or of a run-time length), one row
+/// per iteration of the loops around its uses, rather than an accumulator's
+/// sums.
+inline bool is_buffer(const Param& p) { return p.name.rfind("dpgen_buf_", 0) == 0; }
+
 } // namespace dpgen

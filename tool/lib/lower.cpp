@@ -53,6 +53,28 @@ bool Lowerer::run(Kernel& out) {
     body(fn_->getBody());
     if (failed_)
       return false; // every statement's error is reported; the checks need them all
+    // A line buffer that no loop reads after another wrote it (unused, or
+    // read back only in the iteration that stored it, where the read is the
+    // stored value) needs no hidden array: its stores reach no output.
+    auto dead = [&](const std::string& a) {
+      return buffers_.count(a) && !k_.intermediates.count(a);
+    };
+    std::vector<Nest> kept;
+    for (auto& n : k_.nests) {
+      size_t had = n.stores.size();
+      n.stores.erase(std::remove_if(n.stores.begin(), n.stores.end(),
+                                    [&](const Store& st) { return dead(st.array); }),
+                     n.stores.end());
+      if (n.stores.size() == had || !n.stores.empty())
+        kept.push_back(std::move(n)); // (a nest of such stores alone goes)
+    }
+    k_.nests = std::move(kept);
+    for (const auto& h : k_.hidden)
+      if (dead(h.name))
+        acc_.buffers.erase(h.name);
+    k_.hidden.erase(std::remove_if(k_.hidden.begin(), k_.hidden.end(),
+                                   [&](const Param& h) { return dead(h.name); }),
+                    k_.hidden.end());
     ClangDiagnostics diag(ctx_, fn_->getLocation());
     if (!check_kernel(k_, acc_, diag))
       return false;

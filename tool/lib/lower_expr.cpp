@@ -357,6 +357,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
         fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
                                               "its elements as {}[j][i]",
                                               p->name, p->name, p->name));
+      if (buffer_of(p->name))
+        return Access{p, buffer_index(p, int_const(0), e)};
       return Access{p, int_const(0)};
     }
     fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
@@ -372,6 +374,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     ExprP idx = expr(oc->getArg(1));
     if (idx->type != Type::Int)
       fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
+    if (buffer_of(p->name)) // t[i] of a std::array line buffer
+      return Access{p, buffer_index(p, idx, e)};
     return Access{p, idx};
   }
   const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
@@ -436,8 +440,11 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     ExprP extent;
     if (const auto* c = dyn_cast<ConstantArrayType>(at))
       extent = int_const(static_cast<long long>(c->getSize().getZExtValue()));
-    else if (const auto* v = dyn_cast<VariableArrayType>(at))
-      extent = expr(v->getSizeExpr());
+    else if (const auto* v = dyn_cast<VariableArrayType>(at)) {
+      // (a pointer's extents as evaluated at its declaration, lower_buffer.cpp)
+      auto vs = vla_sizes_.find(v->getSizeExpr());
+      extent = vs != vla_sizes_.end() ? vs->second : expr(v->getSizeExpr());
+    }
     else
       fail(base->getBeginLoc(), "this array type is outside the kernel subset");
     auto inner = element(row);
@@ -450,6 +457,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
                                          "value; index its elements as {}[j][i]",
                                          p->name, p->name, p->name));
+  if (buffer_of(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
+    return Access{p, buffer_index(p, idx, e)};
   check_index_width(sub->getIdx(), idx, p->name);
   return Access{p, idx};
 }
@@ -552,6 +561,8 @@ ExprP Lowerer::expr(const clang::Expr* e) {
       return piecewise_read(*acc, 0, acc->dims, pos(e->getBeginLoc()), text(e));
     }
     if (p->kind == ParamKind::Out) {
+      if (buffer_of(p->name)) // a line buffer: written earlier in this iteration
+        check_buffer_read(p, acc->index, e);
       // An output read back in the iteration that stored it: that value.
       order_after_later_stores(p->name);
       auto nit = nest_index_.find(cur_key());

@@ -139,7 +139,8 @@ private:
   // rule of the kernel subset it is about, which tests match instead of the
   // sentence. The ids: dpgen-signature (parameters and annotations),
   // dpgen-name (names the generated code needs), dpgen-loop (loop headers),
-  // dpgen-call (math functions and helpers), dpgen-lambda, and
+  // dpgen-call (math functions and helpers), dpgen-lambda, dpgen-buffer
+  // (line buffers: what each iteration writes and reads), and
   // dpgen-unsupported (any other construct outside the subset); the output
   // rules have theirs (check.cpp).
   void error(SourceLocation loc, const std::string& msg, const char* id = "dpgen-unsupported") {
@@ -414,6 +415,47 @@ private:
 
   void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
   std::set<const CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
+
+  // ---- line buffers (lower_buffer.cpp) ------------------------------------
+  //
+  // A local array of more than 64 elements or of a run-time length (`double
+  // u1[M]`, `double tmp[nx]`) is a hidden work array with one row of its
+  // length per iteration of the loops around all its uses (its row loops):
+  // `tmp[e]` is the element row * length + e. Each element is written with
+  // '=' once per row, inside the buffer, and read only after an earlier loop
+  // of the same row wrote it (or the same iteration stored it).
+  struct Buffer {
+    const VarDecl* decl = nullptr;
+    std::string array;  // the hidden array
+    ExprP length;       // elements per row
+    std::vector<int> decl_loop_ids; // the loops around the declaration
+    // The `for` statements between the declaration and the innermost
+    // statement that holds every use, outermost first.
+    std::vector<const ForStmt*> row_fors;
+    bool placed = false; // row loops fixed (at the first use)
+    size_t depth = 0;    // how many loops of the kernel are row loops
+    std::vector<int> row_ids;
+    ExprP row;
+  };
+  std::map<std::string, Buffer> buffers_; // by hidden array
+  const Buffer* buffer_of(const std::string& array) const;
+  void declare_buffer(const VarDecl* v, QualType elem, ExprP length);
+  // The flat element of index `local` of buffer `p` in this iteration.
+  ExprP buffer_index(const Param* p, const ExprP& local, const clang::Expr* at);
+  std::optional<Poly> buffer_local(const Buffer& b, const ExprP& flat) const;
+  void check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
+                          const clang::Expr* lhs);
+  void check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e);
+  Facts facts_here() const;
+  bool holds_here(const PathCond& pc, const Facts& facts) const;
+  std::vector<std::string> premises_here() const;
+  bool prove_or_check(const std::vector<Poly>& goals, const Facts& facts, const std::string& what,
+                      SourceLocation loc, bool& never);
+  // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`: u names the parameter.
+  bool declare_array_pointer(const VarDecl* v);
+  // The extents of such pointers' variable array types, as evaluated at
+  // their declaration (element() reads them there).
+  std::map<const clang::Expr*, ExprP> vla_sizes_;
 
   int loop_step(const clang::Expr* inc, const VarDecl* var);
 

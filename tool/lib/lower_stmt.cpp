@@ -270,9 +270,20 @@ void Lowerer::declare(const Decl* d) {
                                        "kernel subset",
                                        v->getNameAsString()));
   if (const auto* at = ctx_.getAsConstantArrayType(v->getType())) {
+    if (at->getSize().getZExtValue() > 64) { // a line buffer (lower_buffer.cpp)
+      declare_buffer(v, at->getElementType(),
+                     int_const(static_cast<long long>(at->getSize().getZExtValue())));
+      return;
+    }
     declare_array(v, at);
     return;
   }
+  if (const auto* vat = ctx_.getAsVariableArrayType(v->getType())) { // `double tmp[nx]`
+    declare_buffer(v, vat->getElementType(), expr(vat->getSizeExpr()));
+    return;
+  }
+  if (declare_array_pointer(v)) // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`
+    return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {
     declare_lambda(v, rd);
@@ -283,6 +294,10 @@ void Lowerer::declare(const Decl* d) {
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && is_functor_class(rd) && v->getInit()) { // const GradientFluxes f{phi, fx, ...};
     env_[v] = functor_binding(v->getInit(), rd);
+    return;
+  }
+  if (auto sa = std_array(v->getType()); sa && sa->second > 64) { // a line buffer
+    declare_buffer(v, sa->first, int_const(static_cast<long long>(sa->second)));
     return;
   }
   if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
@@ -566,6 +581,8 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
                             "and '-=' write outputs",
                             BinaryOperator::getOpcodeStr(op).str(), p->name));
     }
+    if (buffer_of(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)
+      check_buffer_store(p, acc->index, accumulate, lhs);
     add_store(p->name, acc->index, cast(value, p->elem), accumulate, pos(lhs->getBeginLoc()),
               lhs->getBeginLoc());
     return;
