@@ -38,3 +38,24 @@ DPGEN_KERNEL void lw_stride2_c89(DPGEN_IN const double* u, DPGEN_OUT double* e, 
     e[2 * j + 1] = u[j] * u[j];
   }
 }
+
+// The pair over a shorter loop after a guard; in a loop counting down, where
+// the later iteration is the smaller j (iteration j - 1 writes L[j] after
+// iteration j did, so L[j] = a[j-1]^2 for j >= 1 and L[0] = exp(a[0]), L[n]
+// = a[n-1]^2); a store pinned by an equation that is not affine (`i == n / 2`).
+DPGEN_KERNEL void lw_guarded_down(DPGEN_IN const double* a, DPGEN_OUT double* K,
+                                  DPGEN_OUT double* L, DPGEN_OUT double* mid, int n) {
+  if (n < 2)
+    return;
+  for (int j = 0; j < n - 1; j++) {
+    K[j] = a[j] * a[j + 1];
+    K[j + 1] = a[j + 1] - a[j];
+  }
+  for (int j = n - 1; j >= 0; --j) {
+    L[j] = std::exp(a[j]);
+    L[j + 1] = a[j] * a[j];
+  }
+  for (int i = 0; i < n; ++i)
+    if (i == n / 2)
+      mid[0] = a[i] * a[i];
+}

@@ -66,3 +66,31 @@ TEST_CASE("styles: lw_next_guess, lw_stride2_c89") {
   CHECK(a_adj[1] == doctest::Approx(4.0));
   CHECK(a_adj[2] == doctest::Approx(6.0 + 0.5));
 }
+
+TEST_CASE("styles: lw_guarded_down") {
+  for (int n : {2, 3, 8}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N, N + 1, 1};
+    p.forward = [&](auto in, auto out) { lw_guarded_down(in[0], out[0], out[1], out[2], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      lw_guarded_down_adjoint(in[0], adj[0], seed[0], seed[1], seed[2], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lw_guarded_down_tangent(in[0], d[0], out[0], dout[0], out[1], dout[1], out[2], dout[2], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // Counting down, the smaller j writes last: L[1] = a[0]^2, not exp(a[1]).
+  const double a[3] = {2.0, 0.5, 1.0};
+  double K[3], L[4], mid[1];
+  lw_guarded_down(a, K, L, mid, 3);
+  CHECK(L[1] == 4.0);
+  double a_adj[3] = {0, 0, 0};
+  const double zK[3] = {0, 0, 0}, sL[4] = {0, 1, 0, 0}, zm[1] = {0};
+  lw_guarded_down_adjoint(a, a_adj, zK, sL, zm, 3);
+  CHECK(a_adj[0] == doctest::Approx(4.0)); // d(a0^2)/da0
+  CHECK(a_adj[1] == 0.0);                  // exp(a[1]) was overwritten
+}

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #define MAX(a, b) ((a) > (b) ? (a) : (b))
 
@@ -88,4 +89,22 @@ DPGEN_KERNEL void red_colmin_out(DPGEN_IN const double* a, DPGEN_OUT double* col
       if (a[j * nx + i] < colmin[i])
         colmin[i] = a[j * nx + i];
   }
+}
+
+// Start values the library computes (std::numeric_limits, -HUGE_VAL), an
+// if-update with a second condition, and an element that exists only from
+// the second iteration on (a read under `i == 0 ? ... : a[i - 1]`).
+DPGEN_KERNEL void red_limits_and_cond(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double lo = std::numeric_limits<double>::max();
+  double hi = -HUGE_VAL;
+  double prev = std::numeric_limits<double>::lowest();
+  for (int i = 0; i < n; ++i) {
+    lo = std::min(lo, a[i] * a[i] + 0.5);
+    if (a[i] > hi && i % 2 == 0)
+      hi = a[i];
+    prev = fmax(prev, i == 0 ? -1.0 : a[i - 1] * a[i]);
+  }
+  out[0] = lo;
+  out[1] = hi;
+  out[2] = prev;
 }

@@ -159,3 +159,20 @@ TEST_CASE("styles: red_jacobi_error, red_colmin_out") {
     dpgen_test::check_adjoint(q);
   }
 }
+
+TEST_CASE("styles: red_limits_and_cond") {
+  for (int n : {1, 2, 7}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {3};
+    p.forward = [&](auto in, auto out) { red_limits_and_cond(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      red_limits_and_cond_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      red_limits_and_cond_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

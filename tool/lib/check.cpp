@@ -470,8 +470,19 @@ private:
     const bool y_dies = (k > 0) != loop->descending;
     Store& dead = y_dies ? y : x;
     const Store& over = y_dies ? x : y;
-    if (!over.path.empty())
-      return false;
+    // The overwriting store runs wherever the dead one does, one iteration
+    // away: its conditions must not depend on the counter and must be the
+    // dead store's too (a kernel guard, `if (n < 2) return;`).
+    for (const auto& pc : over.path) {
+      bool moves = any_node(pc.cond, [&](const ExprP& e) {
+        return e->op == Op::LoopVar && e->name == loop->var;
+      });
+      bool shared = std::any_of(dead.path.begin(), dead.path.end(), [&](const PathCond& q) {
+        return q.cond == pc.cond && q.positive == pc.positive;
+      });
+      if (moves || !shared)
+        return false;
+    }
     // The overwriting iteration, from the dead store's t: t + k (y dies) or
     // t - k (x dies); it exists where it is inside the loop's range.
     ExprP t = loop_var(loop->var);
@@ -499,8 +510,14 @@ private:
     if (c->op != (positive ? Op::Eq : Op::Ne))
       return false;
     auto a = to_poly(c->ops[0]), b = to_poly(c->ops[1]);
-    if (!a || !b)
-      return false;
+    if (!a || !b) { // `i == n / 2`: the counter against anything free of counters
+      auto counter_free = [](const ExprP& x) {
+        return !any_node(x, [](const ExprP& y) { return y->op == Op::LoopVar; });
+      };
+      auto is_var = [&](const ExprP& x) { return x->op == Op::LoopVar && x->name == var; };
+      return (is_var(c->ops[0]) && counter_free(c->ops[1])) ||
+             (is_var(c->ops[1]) && counter_free(c->ops[0]));
+    }
     Poly d = *a - *b;
     Poly coef = d.coefficient(Sym::counter(var));
     if (!coef.is_constant() || coef.constant_term() == 0)

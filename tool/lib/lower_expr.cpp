@@ -2,6 +2,8 @@
 // elements, casts, names, operators and math calls (lower_impl.hpp).
 #include "lower_impl.hpp"
 
+#include <cmath>
+
 namespace dpgen::lowering {
 
 // `e >= 0` wherever this statement runs: its loops run, the counters are
@@ -817,7 +819,8 @@ ExprP Lowerer::call_expr(const CallExpr* c) {
   if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
     fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
                                        f->getNameAsString()), "dpgen-call");
-  const MathFn* math = find_math_function(f->getNameAsString());
+  // (a member function named like one, std::numeric_limits<T>::max, is not)
+  const MathFn* math = isa<CXXMethodDecl>(f) ? nullptr : find_math_function(f->getNameAsString());
   bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                       f->getBuiltinID() != 0;
   if (!from_library && f->hasBody())
@@ -827,6 +830,25 @@ ExprP Lowerer::call_expr(const CallExpr* c) {
                                        "functions are inlined, so define '{}' in the kernel's "
                                        "file or a header it includes",
                                        f->getQualifiedNameAsString(), f->getNameAsString()), "dpgen-call");
+  if (!math) {
+    // A constant the library computes: std::numeric_limits<double>::lowest(),
+    // HUGE_VAL (__builtin_huge_val()), a constexpr function of constants.
+    clang::Expr::EvalResult r;
+    if (c->EvaluateAsRValue(r, ctx_) && !r.HasSideEffects) {
+      Type t = type_of(c);
+      if (r.Val.isInt() && t == Type::Int)
+        return int_const(r.Val.getInt().getSExtValue());
+      if (r.Val.isFloat() && is_real(t)) {
+        const llvm::APFloat& v = r.Val.getFloat();
+        if (v.isInfinity()) // (printed as <cmath> spells it)
+          return real_const(v.isNegative() ? -HUGE_VAL : HUGE_VAL, t,
+                            std::string(v.isNegative() ? "-" : "") +
+                                (t == Type::Float ? "HUGE_VALF" : "HUGE_VAL"));
+        if (!v.isNaN())
+          return real_const(v.convertToDouble(), t);
+      }
+    }
+  }
   if (!math)
     fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
                                        "kernel subset calls only {}",

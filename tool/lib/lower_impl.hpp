@@ -365,7 +365,11 @@ private:
                                    int& extremum) const;
   // `if (e > v) v = e;` (no else; the body the one assignment): its `e`,
   // target and kind; null for any other if.
-  const clang::Expr* extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum) const;
+  // `extra`: where the if's condition is `<comparison> && rest` (`if (e > m
+  // && i > 0)`), `rest`, the condition the update runs under (null for a
+  // plain comparison); with no `extra`, such an if is no update.
+  const clang::Expr* extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum,
+                                 const clang::Expr** extra = nullptr) const;
   // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
   // `t` of one kind, and there is at least one; 0 otherwise.
   int extremum_kind(const Stmt* body, const ReductionTarget& t) const;

@@ -664,7 +664,8 @@ const clang::Expr* Lowerer::extremum_term(const clang::Expr* rhs, const Reductio
   // std::max(v, e), fmax(e, v), fminf(v, e), ...
   if (const auto* c = dyn_cast<CallExpr>(rhs); c && c->getNumArgs() == 2) {
     const FunctionDecl* f = c->getDirectCallee();
-    const MathFn* m = f ? find_math_function(f->getNameAsString()) : nullptr;
+    const MathFn* m =
+        f && !isa<CXXMethodDecl>(f) ? find_math_function(f->getNameAsString()) : nullptr;
     bool from_library = f && (sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                               f->getBuiltinID() != 0);
     if (!m || !from_library || (m->name != "max" && m->name != "min"))
@@ -700,8 +701,8 @@ const clang::Expr* Lowerer::extremum_term(const clang::Expr* rhs, const Reductio
 }
 
 // `if (e > v) v = e;` (lower_impl.hpp).
-const clang::Expr* Lowerer::extremum_if(const IfStmt* s, ReductionTarget& t,
-                                        int& extremum) const {
+const clang::Expr* Lowerer::extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum,
+                                        const clang::Expr** extra) const {
   if (s->getElse() || s->getInit() || s->getConditionVariable() || s->isConstexpr())
     return nullptr;
   const Stmt* body = s->getThen();
@@ -717,8 +718,24 @@ const clang::Expr* Lowerer::extremum_if(const IfStmt* s, ReductionTarget& t,
   if (!t.decl)
     return nullptr;
   const auto* cmp = dyn_cast<BinaryOperator>(s->getCond()->IgnoreParenImpCasts());
+  // `if (e > m && i > 0) m = e;`: the update where the other conjunct holds.
+  const clang::Expr* rest = nullptr;
+  if (cmp && cmp->getOpcode() == BO_LAnd) {
+    for (const clang::Expr* side : {cmp->getLHS(), cmp->getRHS()}) {
+      const auto* b = dyn_cast<BinaryOperator>(side->IgnoreParenImpCasts());
+      if (b && b->isRelationalOp() && mentions(b, t.decl)) {
+        rest = side == cmp->getLHS() ? cmp->getRHS() : cmp->getLHS();
+        cmp = b;
+        break;
+      }
+    }
+    if (!rest || mentions(rest, t.decl) || !extra)
+      return nullptr;
+  }
   if (!cmp || !cmp->isRelationalOp())
     return nullptr;
+  if (extra)
+    *extra = rest;
   const clang::Expr* term = as->getRHS();
   if (mentions(term, t.decl))
     return nullptr;
@@ -743,7 +760,8 @@ int Lowerer::extremum_kind(const Stmt* body, const ReductionTarget& t) const {
     int k = 0;
     if (const auto* i = dyn_cast<IfStmt>(s)) {
       ReductionTarget u;
-      bool same = extremum_if(i, u, k) && u.decl == t.decl &&
+      const clang::Expr* rest = nullptr;
+      bool same = extremum_if(i, u, k, &rest) && u.decl == t.decl &&
                   (t.element ? u.element && same_expr(u.element, t.element) : !u.element);
       if (same) {
         other = other || (kind != 0 && k != kind);
@@ -1053,7 +1071,8 @@ void Lowerer::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
       }
       QualType pt = f && i < f->getNumParams() ? f->getParamDecl(i)->getType() : QualType();
       bool writable = by_address || pt.isNull() ||
-                      (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified());
+                      (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) ||
+                      (pt->isPointerType() && !pt->getPointeeType().isConstQualified());
       if (writable)
         target(a);
     }

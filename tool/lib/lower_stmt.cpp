@@ -138,17 +138,25 @@ Escape Lowerer::if_stmt(const IfStmt* s) {
   {
     ReductionTarget target;
     int kind = 0;
-    const clang::Expr* term = extremum_if(s, target, kind);
+    const clang::Expr* rest = nullptr;
+    const clang::Expr* term = extremum_if(s, target, kind, &rest);
+    // (under the other conjunct, if any: `if (e > m && i > 0)`)
+    auto update = [&](Accumulator& a, Type t) {
+      size_t depth = path_.size();
+      if (rest)
+        path_.push_back({cond(rest), true});
+      extremum_update(a, term, t, s->getBeginLoc());
+      path_.resize(depth);
+    };
     const auto* v = term && !target.element ? dyn_cast<VarDecl>(target.decl) : nullptr;
     if (auto acc = v ? accumulators_.find(v) : accumulators_.end();
         acc != accumulators_.end() && acc->second.extremum == kind) {
-      auto t = scalar_type(v->getType().getNonReferenceType());
-      extremum_update(acc->second, term, *t, s->getBeginLoc());
+      update(acc->second, *scalar_type(v->getType().getNonReferenceType()));
       return Escape::None;
     }
     for (auto& r : element_reductions_)
       if (term && target.element && r.acc.extremum == kind && is_target(target.element, r.target)) {
-        extremum_update(r.acc, term, k_.find_param(r.acc.array)->elem, s->getBeginLoc());
+        update(r.acc, k_.find_param(r.acc.array)->elem);
         return Escape::None;
       }
   }
