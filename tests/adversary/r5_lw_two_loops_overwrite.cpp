@@ -1,4 +1,4 @@
-// adversary: for j: K[j] = f; for j: K[j + 1] = g; (a later loop overwrites)
+// adversary: for j: K[j] = f; for j: K[j + 1] = g; (a later loop overwrites: a run-time check throws for n >= 2)
 #include "dpgen/annotate.hpp"
 #include <cmath>
 #include <algorithm>

@@ -1274,7 +1274,12 @@ DPGEN_KERNEL void r5_lw_then_statement(DPGEN_IN const double* a, DPGEN_OUT doubl
   K[0] = 0.5;
 }""", params=[("in","a",N),("out","K","n + 1"),("val","n")])
 
-K(name="lw_two_loops_overwrite", why="for j: K[j] = f; for j: K[j + 1] = g; (a later loop overwrites)", includes=CM,
+K(name="lw_two_loops_overwrite", why="for j: K[j] = f; for j: K[j + 1] = g; (a later loop overwrites: a run-time check throws for n >= 2)", includes=CM,
+  loop="for (int n : {0, 1})",
+  cases="""TEST_CASE("adversary: r5_lw_two_loops_overwrite n = 2 throws") {
+  std::vector<double> a(2, 0.5), a_adj(2, 0.0), K_seed(3, 1.0);
+  CHECK_THROWS_AS(r5_lw_two_loops_overwrite_adjoint(a.data(), a_adj.data(), K_seed.data(), 2), std::invalid_argument);
+}""",
   src="""
 DPGEN_KERNEL void r5_lw_two_loops_overwrite(DPGEN_IN const double* a, DPGEN_OUT double* K, int n) {
   for (int j = 0; j < n; ++j) K[j] = a[j] * a[j];
@@ -1292,7 +1297,11 @@ DPGEN_KERNEL void r5_lw_idx_macro(DPGEN_IN const double* a, DPGEN_OUT double* K,
 }""", params=[("in","a",N),("out","K","n + 1"),("val","n")])
 
 K(name="lw_param_shift", why="K[j] = f; K[j + s] = g; with s a parameter (0, 1, 2)", includes=CM,
-  loop="for (int s : {0, 1, 2}) for (int n : {0, 1, 2, 3, 7})", pre="CAPTURE(s);",
+  loop="for (int s : {1, 2}) for (int n : {0, 1, 2, 3, 7})", pre="CAPTURE(s);",
+  cases="""TEST_CASE("adversary: r5_lw_param_shift s = 0 throws") {
+  std::vector<double> a(3, 0.5), a_adj(3, 0.0), K_seed(5, 1.0);
+  CHECK_THROWS_AS(r5_lw_param_shift_adjoint(a.data(), a_adj.data(), K_seed.data(), 3, 0), std::invalid_argument);
+}""",
   src="""
 DPGEN_KERNEL void r5_lw_param_shift(DPGEN_IN const double* a, DPGEN_OUT double* K, int n, int s) {
   for (int j = 0; j < n; ++j) {
@@ -1613,3 +1622,266 @@ DPGEN_KERNEL void r5_ip_old_in_update_and_work(DPGEN_INOUT double* u, DPGEN_IN c
   for (int i = 1; i < n - 1; ++i) g[i] = k[i] * (u[i + 1] - 2.0 * u[i] + u[i - 1]);
   for (int i = 1; i < n - 1; ++i) u[i] = u[i] * std::exp(-0.1 * g[i]);
 }""", params=[("io","u",N),("in","k",N),("out","g",N),("val","n")])
+
+# ======================================================== more min/max
+K(name="mm_branchy_elem", why="the element is a data branch: fmax(m, a[i] > 0 ? a[i] : -2 * a[i])", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_branchy_elem(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, a[i] > 0.0 ? a[i] : -2.0 * a[i]);
+  out[0] = m * m;
+}""", params=P_A1)
+
+K(name="mm_gather_index", why="max over a[idx[i]] (a data-dependent read)", includes=CM,
+  pre="std::vector<int> idx(size_t(n)); for (int q = 0; q < n; ++q) idx[size_t(q)] = (3 * q + 1) % n;",
+  src="""
+DPGEN_KERNEL void r5_mm_gather_index(DPGEN_IN const double* a, const int* idx, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, a[idx[i]] * (1.0 + 0.1 * i));
+  out[0] = m;
+}""", params=[("in","a",N),("val","idx.data()"),("out","out","1"),("val","n")])
+
+K(name="mm_local_from_data", why="the element uses a kernel-level local computed from data", includes=CM, loop=L1p,
+  src="""
+DPGEN_KERNEL void r5_mm_local_from_data(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* out, int n) {
+  const double c = 1.0 + a[0] * a[0];
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, c * b[i]);
+  out[0] = m * c;
+}""", params=P)
+
+K(name="mm_rowmax_summed", why="per-row max fed into a sum over rows", includes=CM, loop=L2,
+  src="""
+DPGEN_KERNEL void r5_mm_rowmax_summed(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  double tot = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    double m = -1e3;
+    for (int i = 0; i < nx; ++i) m = fmax(m, a[j * nx + i]);
+    tot += m * m;
+  }
+  out[0] = tot;
+}""", params=[("in","a","n*m"),("out","out","1"),("val","n"),("val","m")])
+
+K(name="mm_max_of_rowmax", why="a global max of per-row maxima (a reduction over a reduction)", includes=CM, loop=L2,
+  src="""
+DPGEN_KERNEL void r5_mm_max_of_rowmax(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  double gm = -1e3;
+  for (int j = 0; j < ny; ++j) {
+    double m = -1e3;
+    for (int i = 0; i < nx; ++i) m = fmax(m, a[j * nx + i]);
+    gm = fmax(gm, 2.0 * m);
+  }
+  out[0] = gm;
+}""", params=[("in","a","n*m"),("out","out","1"),("val","n"),("val","m")],
+  cases=tie_case("r5_mm_max_of_rowmax", "r5_mm_max_of_rowmax", [("in","a","n*m"),("out","out","1"),("val","n"),("val","m")],
+                 {"a": [1.0, 3.0, 3.0, 0.0]}, {"n": "2", "m": "2"}, {"out": {0: 6.0}},
+                 # row maxima 3 (a1) and 3 (a2): global tie, half each, times 2
+                 {"a": [0, 1.0, 1.0, 0]}, "out"))
+
+K(name="mm_normalised_max_is_one", why="m1 = max a; m2 = max a[i] / m1 (= 1): its derivative is zero", includes=CM,
+  loop=L1p, ranges="{1.0, 2.0}",
+  src="""
+DPGEN_KERNEL void r5_mm_normalised_max_is_one(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m1 = 0.5;
+  for (int i = 0; i < n; ++i) m1 = fmax(m1, a[i]);
+  double m2 = 0.0;
+  for (int i = 0; i < n; ++i) m2 = fmax(m2, a[i] / m1);
+  out[0] = m2 + m1;
+}""", params=P_A1)
+
+K(name="mm_reduce_in_flag_arm", why="a reduction loop under if (flag), read after the if", includes=CM,
+  loop="for (int flag : {0, 1}) for (int n : {0, 1, 3, 7})", pre="CAPTURE(flag);",
+  src="""
+DPGEN_KERNEL void r5_mm_reduce_in_flag_arm(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, int flag) {
+  double m = 0.5;
+  if (flag) {
+    for (int i = 0; i < n; ++i) m = fmax(m, a[i] * a[i]);
+  }
+  out[0] = m * m;
+}""", params=[("in","a",N),("out","out","1"),("val","n"),("val","flag")])
+
+K(name="mm_two_if_updates", why="if (a[i] > m) m = a[i]; if (b[i] > m) m = b[i];", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_two_if_updates(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) {
+    if (a[i] > m) m = a[i];
+    if (b[i] * b[i] > m) m = b[i] * b[i];
+  }
+  out[0] = m;
+}""", params=P)
+
+K(name="mm_if_else_store", expect="reject", why="if (e > m) m = e; else u[i] = m; (the else arm reads the running max)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_if_else_store(DPGEN_IN const double* a, DPGEN_OUT double* u, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) {
+    u[i] = 0.0;
+    if (a[i] > m) m = a[i];
+    else u[i] = a[i] * 2.0;
+  }
+  out[0] = m;
+}""", params=a1(("u",N),("out","1")))
+
+K(name="mm_std_max_template_arg", why="std::max<double>(m, e) and std::fmax", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_std_max_template_arg(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = -4.0, q = -4.0;
+  for (int i = 0; i < n; ++i) {
+    m = std::max<double>(m, a[i] * a[i]);
+    q = std::fmax(q, -a[i]);
+  }
+  out[0] = m + q * q;
+}""", params=P_A1)
+
+K(name="mm_index_cond_elem", why="the element uses the counter: fmax(m, i == 0 ? 0 : a[i] - a[i - 1])", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_index_cond_elem(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, i == 0 ? 0.0 : a[i] - a[i - 1]);
+  out[0] = m * m;
+}""", params=P_A1)
+
+K(name="mm_start_of_accumulator", why="the max starts a later accumulator: s = m; s += a[i]", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_start_of_accumulator(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, a[i]);
+  double s = m;
+  for (int i = 0; i < n; ++i) s += a[i] * m;
+  out[0] = s * s;
+}""", params=P_A1)
+
+K(name="mm_fma_sensitive", why="element a*b + c (FMA-contractible): the scan and the tie test must agree bit for bit", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_fma_sensitive(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_IN const double* c, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, a[i] * b[i] + c[i]);
+  out[0] = m;
+}""", params=[("in","a",N),("in","b",N),("in","c",N),("out","out","1"),("val","n")])
+
+# ======================================================== more pinned
+K(name="pin_antidiag_same_elem", expect="reject", why="if (i + j == n - 1) s[0] = ...: n iterations store s[0]", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_pin_antidiag_same_elem(DPGEN_IN const double* a, DPGEN_OUT double* s, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i + j == n - 1) s[0] = a[j * n + i] * a[j * n + i];
+}""", params=[("in","a","n*n"),("out","s","1"),("val","n")])
+
+K(name="pin_i_eq_2j_same_elem", expect="reject", why="if (i == 2 * j) s[0] = ...: several iterations store s[0]", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_pin_i_eq_2j_same_elem(DPGEN_IN const double* a, DPGEN_OUT double* s, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i == 2 * j) s[0] = std::sin(a[j * n + i]);
+}""", params=[("in","a","n*n"),("out","s","1"),("val","n")])
+
+K(name="pin_antidiag_elem", why="if (i == n - 1 - j) anti[j] = ... (one per j)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_pin_antidiag_elem(DPGEN_IN const double* a, DPGEN_OUT double* anti, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i == n - 1 - j) anti[j] = a[j * n + i] * a[j * n + i];
+}""", params=[("in","a","n*n"),("out","anti",N),("val","n")])
+
+K(name="pin_diag_last_j", why="if (i == j && j == n - 1) c[0] = ...: one iteration", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_pin_diag_last_j(DPGEN_IN const double* a, DPGEN_OUT double* c, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i == j && j == n - 1) c[0] = a[j * n + i] * a[j * n + i];
+}""", params=[("in","a","n*n"),("out","c","1"),("val","n")])
+
+K(name="pin_3d_two_counters", expect="reject", why="if (i == k) in a 3D nest storing e[j]: nz iterations per element", includes=CM,
+  loop="for (int n : {0, 1, 2, 3})",
+  src="""
+DPGEN_KERNEL void r5_pin_3d_two_counters(DPGEN_IN const double* a, DPGEN_OUT double* e, int n) {
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (i == k) e[j] = a[(k * n + j) * n + i] * a[(k * n + j) * n + i];
+}""", params=[("in","a","n*n*n"),("out","e",N),("val","n")])
+
+# ======================================================== minimal reproducers
+K(name="min_helper_ref_after_loop", why="MINIMAL: a void helper assigning a kernel-level local through a reference inside a loop; the local read after the loop", includes=CM,
+  src="""
+static inline void setv(double& s, double e) { s = e; }
+DPGEN_KERNEL void r5_min_helper_ref_after_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i) setv(s, a[i] * a[i]);
+  out[0] = s;
+}""", params=P_A1)
+
+K(name="min_helper_ptr_accum", why="MINIMAL: a void helper summing into a kernel-level local through a pointer inside a loop", includes=CM,
+  src="""
+static inline void addp(double* s, double e) { *s += e; }
+DPGEN_KERNEL void r5_min_helper_ptr_accum(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) addp(&s, a[i] * a[i]);
+  out[0] = s;
+}""", params=P_A1)
+
+K(name="min_lambda_ref_after_loop", why="MINIMAL: a [&] lambda assigning a captured local inside a loop; the local read after the loop", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_min_lambda_ref_after_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  auto set = [&](double e) { s = e; };
+  for (int i = 0; i < n; ++i) set(a[i] * a[i]);
+  out[0] = s;
+}""", params=P_A1)
+
+K(name="min_helper_recurrence", expect="reject", why="MINIMAL: a recurrence s = 0.5 s + e hidden in a helper: accepted, the loop dropped", includes=CM,
+  src="""
+static inline void rec(double& s, double e) { s = 0.5 * s + e; }
+DPGEN_KERNEL void r5_min_helper_recurrence(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 1.0;
+  for (int i = 0; i < n; ++i) rec(s, a[i]);
+  out[0] = s;
+}""", params=P_A1)
+
+K(name="min_pin_two_counters", why="MINIMAL: if (i == j) tr[0] = a[i]: n iterations store tr[0], the adjoint credits all of them", includes=CM,
+  expect="reject",
+  src="""
+DPGEN_KERNEL void r5_min_pin_two_counters(DPGEN_IN const double* a, DPGEN_OUT double* tr, int n) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i == j) tr[0] = a[i];
+}""", params=a1(("tr","1")), linear=True)
+
+K(name="min_lw_countdown", why="MINIMAL: later writer in a loop counting down: iteration j - 1 runs after j, so K[j + 1] of iteration j - 1... the adjoint credits K[j] (ascending order assumed)",
+  src="""
+DPGEN_KERNEL void r5_min_lw_countdown(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* K, int n) {
+  for (int j = n - 1; j >= 0; --j) {
+    K[j] = a[j];
+    K[j + 1] = b[j];
+  }
+}""", params=ab(("K","n + 1")), linear=True)
+
+K(name="min_ip_cond_on_sum", why="MINIMAL: in-place update under a condition on an accumulator of the old values: the adjoint does not compile (dpgen_sum_s not declared)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_min_ip_cond_on_sum(DPGEN_INOUT double* v, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += v[i] * v[i];
+  for (int i = 0; i < n; ++i)
+    if (s > 1.0) v[i] = v[i] / s;
+}""", params=[("io","v",N),("val","n")], ranges="{-2.0, 2.0}")
+
+K(name="min_ip_cond_on_max", why="MINIMAL: in-place update under a condition on a max reduction of the old values: the adjoint does not compile (dpgen_max_m not declared)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_min_ip_cond_on_max(DPGEN_INOUT double* v, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, v[i]);
+  for (int i = 0; i < n; ++i)
+    if (v[i] > 0.5 * m) v[i] = v[i] * v[i];
+}""", params=[("io","v",N),("val","n")])
+
+K(name="min_ip_cond_on_work_local", why="MINIMAL: in-place update under a condition on a body local read from a work array: the adjoint does not compile ('w' not declared)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_min_ip_cond_on_work_local(DPGEN_INOUT double* v, DPGEN_OUT double* w, int n) {
+  for (int i = 0; i < n; ++i) w[i] = v[i] * 2.0;
+  for (int i = 0; i < n; ++i) {
+    const double t = w[i];
+    if (t > 0.0) v[i] = t * v[i];
+  }
+}""", params=[("io","v",N),("out","w",N),("val","n")])
