@@ -1297,10 +1297,12 @@ DPGEN_KERNEL void r5_lw_idx_macro(DPGEN_IN const double* a, DPGEN_OUT double* K,
 }""", params=[("in","a",N),("out","K","n + 1"),("val","n")])
 
 K(name="lw_param_shift", why="K[j] = f; K[j + s] = g; with s a parameter (0, 1, 2)", includes=CM,
-  loop="for (int s : {1, 2}) for (int n : {0, 1, 2, 3, 7})", pre="CAPTURE(s);",
-  cases="""TEST_CASE("adversary: r5_lw_param_shift s = 0 throws") {
+  loop="for (auto [n, s] : {std::pair{0, 1}, {1, 2}, {2, 2}, {1, 1}})", pre="CAPTURE(s);",
+  cases="""TEST_CASE("adversary: r5_lw_param_shift overlapping throws") {
+  // s = 0 (both stores on one element) and n > s (the stores meet across iterations): a run-time error
   std::vector<double> a(3, 0.5), a_adj(3, 0.0), K_seed(5, 1.0);
   CHECK_THROWS_AS(r5_lw_param_shift_adjoint(a.data(), a_adj.data(), K_seed.data(), 3, 0), std::invalid_argument);
+  CHECK_THROWS_AS(r5_lw_param_shift_adjoint(a.data(), a_adj.data(), K_seed.data(), 3, 1), std::invalid_argument);
 }""",
   src="""
 DPGEN_KERNEL void r5_lw_param_shift(DPGEN_IN const double* a, DPGEN_OUT double* K, int n, int s) {
@@ -1633,13 +1635,13 @@ DPGEN_KERNEL void r5_mm_branchy_elem(DPGEN_IN const double* a, DPGEN_OUT double*
 }""", params=P_A1)
 
 K(name="mm_gather_index", why="max over a[idx[i]] (a data-dependent read)", includes=CM,
-  pre="std::vector<int> idx(size_t(n)); for (int q = 0; q < n; ++q) idx[size_t(q)] = (3 * q + 1) % n;",
+  pre="std::vector<int> perm(size_t(n)); for (int q = 0; q < n; ++q) perm[size_t(q)] = (3 * q + 1) % n;",
   src="""
 DPGEN_KERNEL void r5_mm_gather_index(DPGEN_IN const double* a, const int* idx, DPGEN_OUT double* out, int n) {
   double m = -4.0;
   for (int i = 0; i < n; ++i) m = fmax(m, a[idx[i]] * (1.0 + 0.1 * i));
   out[0] = m;
-}""", params=[("in","a",N),("val","idx.data()"),("out","out","1"),("val","n")])
+}""", params=[("in","a",N),("val","perm.data()"),("out","out","1"),("val","n")])
 
 K(name="mm_local_from_data", why="the element uses a kernel-level local computed from data", includes=CM, loop=L1p,
   src="""
@@ -1885,3 +1887,57 @@ DPGEN_KERNEL void r5_min_ip_cond_on_work_local(DPGEN_INOUT double* v, DPGEN_OUT 
     if (t > 0.0) v[i] = t * v[i];
   }
 }""", params=[("io","v",N),("out","w",N),("val","n")])
+
+K(name="ip_pinned_update", why="a sum of the old values, then only u[0] updated (pinned store in the update loop)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_ip_pinned_update(DPGEN_INOUT double* u, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) s += u[i] * u[i];
+  for (int i = 0; i < n; ++i)
+    if (i == 0) u[0] = s;
+}""", params=[("io","u",N),("val","n")])
+
+K(name="ip_lastwriter_update", why="the update loop is a later-writer pair over u (reads only a work array)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_ip_lastwriter_update(DPGEN_INOUT double* u, DPGEN_OUT double* w, int n) {
+  for (int i = 0; i < n; ++i) w[i] = u[i] * u[i + 1];
+  for (int j = 0; j < n; ++j) {
+    u[j] = w[j];
+    u[j + 1] = 2.0 * w[j];
+  }
+}""", params=[("io","u","n + 1"),("out","w",N),("val","n")])
+
+K(name="mm_inout_err", why="err DPGEN_INOUT: err[0] = fmax(err[0], |r|) starts from the caller's value, an input here", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_mm_inout_err(DPGEN_INOUT double* err, DPGEN_IN const double* r, int n) {
+  for (int i = 0; i < n; ++i) err[0] = fmax(err[0], fabs(r[i]));
+}""", params=[("io","err","1"),("in","r",N),("val","n")])
+
+K(name="ip_max_ties", why="in place: v / (1 + max|v|) with ties in the max (hand-computed)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_ip_max_ties(DPGEN_INOUT double* v, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, fabs(v[i]));
+  for (int i = 0; i < n; ++i) v[i] = v[i] / (1.0 + m);
+}""", params=[("io","v",N),("val","n")],
+  cases="""TEST_CASE("adversary: r5_ip_max_ties ties") {
+  // v = {2, -2, 1}: m = 2 at v0 and v1 (half each, with the sign); seed e_0 on the new v:
+  // d v0'/d v0 = 1/3 - 2/9 * 1/2 = 2/9, d v0'/d v1 = -2/9 * (-1/2) = 1/9, d v0'/d v2 = 0
+  std::vector<double> v = {2.0, -2.0, 1.0}, va = {1.0, 0.0, 0.0};
+  r5_ip_max_ties_adjoint(v.data(), va.data(), 3);
+  CHECK(va[0] == doctest::Approx(2.0 / 9));
+  CHECK(va[1] == doctest::Approx(1.0 / 9));
+  CHECK(va[2] == doctest::Approx(0.0));
+  std::vector<double> vt = v, vd = {0.0, 1.0, 0.0};
+  r5_ip_max_ties_tangent(vt.data(), vd.data(), 3);
+  CHECK(vt[0] == doctest::Approx(2.0 / 3));
+  CHECK(vd[0] == doctest::Approx(1.0 / 9));
+}""")
+
+K(name="min_mm_ternary_oob", why="MINIMAL: the element of a max is an index-guarded ternary reading a[i - 1]: the adjoint's cell range starts at -1 and adds 0.0 to a_adj[-1] (heap out-of-bounds write)", includes=CM,
+  src="""
+DPGEN_KERNEL void r5_min_mm_ternary_oob(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = -4.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, i == 0 ? 0.0 : a[i - 1]);
+  out[0] = m;
+}""", params=P_A1)
