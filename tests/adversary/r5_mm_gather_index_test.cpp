@@ -11,7 +11,7 @@
 DPGEN_KERNEL void r5_mm_gather_index(DPGEN_IN const double* a, const int* idx, DPGEN_OUT double* out, int n);
 TEST_CASE("adversary: r5_mm_gather_index") {
   for (int n : {0, 1, 2, 3, 4, 7, 16}) {
-    std::vector<int> perm(size_t(n)); for (int q = 0; q < n; ++q) perm[size_t(q)] = (3 * q + 1) % n;
+    std::vector<int> perm(static_cast<size_t>(n)); for (int q = 0; q < n; ++q) perm[size_t(q)] = (3 * q + 1) % n;
     CAPTURE(n);
     dpgen_test::Problem<double> p;
     p.in_sizes = {size_t(n)};

@@ -1635,7 +1635,7 @@ DPGEN_KERNEL void r5_mm_branchy_elem(DPGEN_IN const double* a, DPGEN_OUT double*
 }""", params=P_A1)
 
 K(name="mm_gather_index", why="max over a[idx[i]] (a data-dependent read)", includes=CM,
-  pre="std::vector<int> perm(size_t(n)); for (int q = 0; q < n; ++q) perm[size_t(q)] = (3 * q + 1) % n;",
+  pre="std::vector<int> perm(static_cast<size_t>(n)); for (int q = 0; q < n; ++q) perm[size_t(q)] = (3 * q + 1) % n;",
   src="""
 DPGEN_KERNEL void r5_mm_gather_index(DPGEN_IN const double* a, const int* idx, DPGEN_OUT double* out, int n) {
   double m = -4.0;
