@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 # Writes tests/adversary/<name>.cpp and <name>_test.cpp from the specs in
 # specs.py. Params: ("in", name, size[, cast]) ("out", name, size[, cast])
-# ("val", expr). reject=True: dpgen must refuse the kernel (no test run).
+# ("val", expr), ("io", name, size): a DPGEN_INOUT array (round r5; an input
+# and an output of the Problem: the forward copies it, the adjoint adds the
+# returned adjoint of the old values, the tangent copies value and direction).
+# "cases": raw test cases appended (hand-computed ties: name them "... ties").
+# reject=True: dpgen must refuse the kernel (no test run).
 import os, re, sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
@@ -23,11 +27,22 @@ def emit(s):
         return
     protos = re.findall(r"DPGEN_KERNEL[^{;]*?\)(?=\s*\{)", src, re.S)
     P = s["params"]; fname = s.get("kernel", name)
-    ins = [p for p in P if p[0] in ("in", "inr")]; outs = [p for p in P if p[0] in ("out", "outr")]
+    ins = [p for p in P if p[0] in ("in", "inr", "io")]; outs = [p for p in P if p[0] in ("out", "outr", "io")]
     fw, ad, tg = [], [], []
     pf, pa, pt = [], [], []  # row-pointer tables built inside each lambda
     ki = ko = 0
+    post_a = []
+    T = s.get("T", "double")
     for p in P:
+        if p[0] == "io":
+            S = "size_t(%s)" % p[2]
+            pf.append("std::copy(in[%d], in[%d] + %s, out[%d]);" % (ki, ki, S, ko)); fw.append("out[%d]" % ko)
+            pa.append("std::vector<%s> t%d(seed[%d], seed[%d] + %s);" % (T, ko, ko, ko, S)); ad += ["in[%d]" % ki, "t%d.data()" % ko]
+            post_a.append("for (size_t z = 0; z < t%d.size(); ++z) adj[%d][z] += t%d[z];" % (ko, ki, ko))
+            pt += ["std::copy(in[%d], in[%d] + %s, out[%d]);" % (ki, ki, S, ko), "std::copy(dir[%d], dir[%d] + %s, outd[%d]);" % (ki, ki, S, ko)]
+            tg += ["out[%d]" % ko, "outd[%d]" % ko]
+            ki += 1; ko += 1
+            continue
         if p[0] in ("inr", "outr"):
             # ("inr"/"outr", name, rows, cols): double** over a flat rows x cols buffer
             R, C = p[2], p[3]
@@ -53,7 +68,6 @@ def emit(s):
             tg += ["%sout[%d]" % (cst(c, 0), ko), "%soutd[%d]" % (cst(c, 0), ko)]; ko += 1
         else:
             fw.append(p[1]); ad.append(p[1]); tg.append(p[1])
-    T = s.get("T", "double")
     rng = s.get("ranges", "")
     sz = lambda p: "size_t(%s) * size_t(%s)" % (p[2], p[3]) if p[0] in ("inr", "outr") else "size_t(%s)" % p[2]
     t = ['#include "support/adjoint_check.hpp"', '#include "styles/styles_support.hpp"', '#include <algorithm>', '#include <stdexcept>', head.strip(),
@@ -67,12 +81,13 @@ def emit(s):
     if rng: t.append("    p.in_ranges = {%s};" % rng)
     if s.get("linear"): t.append("    p.linear = true;")
     t += ["    p.forward = [&](auto in, auto out) { %s%s(%s); };" % (" ".join(pf + [""]), fname, ", ".join(fw)),
-          "    p.adjoint = [&](auto in, auto adj, auto seed) { %s%s_adjoint(%s); };" % (" ".join(pa + [""]), fname, ", ".join(ad))]
+          "    p.adjoint = [&](auto in, auto adj, auto seed) { %s%s_adjoint(%s);%s };" % (" ".join(pa + [""]), fname, ", ".join(ad), "".join(" " + x for x in post_a))]
     if not s.get("notangent"):
         t.append("    p.tangent = [&](auto in, auto dir, auto out, auto outd) { %s%s_tangent(%s); };" % (" ".join(pt + [""]), fname, ", ".join(tg)))
     t += ["    dpgen_test::check_adjoint(p);", "  }"]
     t += ["  " + l for l in s.get("extra", "").splitlines()]
     t += ["}", ""]
+    if s.get("cases"): t += [s["cases"].strip(), ""]
     open(os.path.join(here, name + "_test.cpp"), "w").write("\n".join(t))
 
 only = sys.argv[1:]

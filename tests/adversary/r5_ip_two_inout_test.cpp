@@ -1,0 +1,23 @@
+#include "support/adjoint_check.hpp"
+#include "styles/styles_support.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+#include "r5_ip_two_inout_adjoint.hpp"
+#include "r5_ip_two_inout_tangent.hpp"
+
+DPGEN_KERNEL void r5_ip_two_inout(DPGEN_INOUT double* u, DPGEN_INOUT double* v, DPGEN_OUT double* f, int n);
+TEST_CASE("adversary: r5_ip_two_inout") {
+  for (int n : {0, 1, 2, 3, 4, 7, 16}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n), size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { std::copy(in[0], in[0] + size_t(n), out[0]); std::copy(in[1], in[1] + size_t(n), out[1]); r5_ip_two_inout(out[0], out[1], out[2], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { std::vector<double> t0(seed[0], seed[0] + size_t(n)); std::vector<double> t1(seed[1], seed[1] + size_t(n)); r5_ip_two_inout_adjoint(in[0], t0.data(), in[1], t1.data(), seed[2], n); for (size_t z = 0; z < t0.size(); ++z) adj[0][z] += t0[z]; for (size_t z = 0; z < t1.size(); ++z) adj[1][z] += t1[z]; };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { std::copy(in[0], in[0] + size_t(n), out[0]); std::copy(dir[0], dir[0] + size_t(n), outd[0]); std::copy(in[1], in[1] + size_t(n), out[1]); std::copy(dir[1], dir[1] + size_t(n), outd[1]); r5_ip_two_inout_tangent(out[0], outd[0], out[1], outd[1], out[2], outd[2], n); };
+    dpgen_test::check_adjoint(p);
+  }
+}

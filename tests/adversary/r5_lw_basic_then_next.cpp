@@ -1,0 +1,11 @@
+// adversary: K[j] = f; K[j + 1] = g;
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+
+DPGEN_KERNEL void r5_lw_basic_then_next(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* K, int n) {
+  for (int j = 0; j < n; ++j) {
+    K[j] = a[j] * b[j];
+    K[j + 1] = std::sin(a[j]) + b[j];
+  }
+}

@@ -1,0 +1,11 @@
+// adversary: if (!(e <= m)) m = e;
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+
+DPGEN_KERNEL void r5_mm_if_not_le(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* out, int n) {
+  double m = -0.3;
+  for (int i = 0; i < n; ++i)
+    if (!(a[i] <= m)) m = a[i];
+  out[0] = std::exp(0.5 * m);
+}

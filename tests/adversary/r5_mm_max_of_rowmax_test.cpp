@@ -1,0 +1,47 @@
+#include "support/adjoint_check.hpp"
+#include "styles/styles_support.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+#include "r5_mm_max_of_rowmax_adjoint.hpp"
+#include "r5_mm_max_of_rowmax_tangent.hpp"
+
+DPGEN_KERNEL void r5_mm_max_of_rowmax(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny);
+TEST_CASE("adversary: r5_mm_max_of_rowmax") {
+  for (auto [n, m] : {std::pair{0, 0}, {1, 1}, {1, 3}, {3, 1}, {2, 2}, {4, 3}, {5, 6}}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n*m)};
+    p.out_sizes = {size_t(1)};
+    p.forward = [&](auto in, auto out) { r5_mm_max_of_rowmax(in[0], out[0], n, m); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { r5_mm_max_of_rowmax_adjoint(in[0], adj[0], seed[0], n, m); };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { r5_mm_max_of_rowmax_tangent(in[0], dir[0], out[0], outd[0], n, m); };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("adversary: r5_mm_max_of_rowmax ties") {
+  const auto n = 2;
+  const auto m = 2;
+  std::vector<double> a = {1.0, 3.0, 3.0, 0.0};
+  std::vector<double> a_adj(4, 0), a_dir(4, 0);
+  std::vector<double> out(size_t(1), 0), out_seed(size_t(1), 0), out_t(size_t(1), 0), out_dot(size_t(1), 0);
+  out_seed[0] = 1;
+  r5_mm_max_of_rowmax(a.data(), out.data(), n, m);
+  CHECK(double(out[0]) == doctest::Approx(6.0).epsilon(1e-12));
+  r5_mm_max_of_rowmax_adjoint(a.data(), a_adj.data(), out_seed.data(), n, m);
+  CHECK_MESSAGE(double(a_adj[0]) == doctest::Approx(0.0).epsilon(1e-12), "adjoint a[0]");
+  CHECK_MESSAGE(double(a_adj[1]) == doctest::Approx(1.0).epsilon(1e-12), "adjoint a[1]");
+  CHECK_MESSAGE(double(a_adj[2]) == doctest::Approx(1.0).epsilon(1e-12), "adjoint a[2]");
+  CHECK_MESSAGE(double(a_adj[3]) == doctest::Approx(0.0).epsilon(1e-12), "adjoint a[3]");
+  { std::fill(out_dot.begin(), out_dot.end(), double(0)); a_dir[0] = 1; r5_mm_max_of_rowmax_tangent(a.data(), a_dir.data(), out_t.data(), out_dot.data(), n, m); a_dir[0] = 0;
+    CHECK_MESSAGE(double(out_dot[0]) == doctest::Approx(0.0).epsilon(1e-12), "tangent along a[0]"); }
+  { std::fill(out_dot.begin(), out_dot.end(), double(0)); a_dir[1] = 1; r5_mm_max_of_rowmax_tangent(a.data(), a_dir.data(), out_t.data(), out_dot.data(), n, m); a_dir[1] = 0;
+    CHECK_MESSAGE(double(out_dot[0]) == doctest::Approx(1.0).epsilon(1e-12), "tangent along a[1]"); }
+  { std::fill(out_dot.begin(), out_dot.end(), double(0)); a_dir[2] = 1; r5_mm_max_of_rowmax_tangent(a.data(), a_dir.data(), out_t.data(), out_dot.data(), n, m); a_dir[2] = 0;
+    CHECK_MESSAGE(double(out_dot[0]) == doctest::Approx(1.0).epsilon(1e-12), "tangent along a[2]"); }
+  { std::fill(out_dot.begin(), out_dot.end(), double(0)); a_dir[3] = 1; r5_mm_max_of_rowmax_tangent(a.data(), a_dir.data(), out_t.data(), out_dot.data(), n, m); a_dir[3] = 0;
+    CHECK_MESSAGE(double(out_dot[0]) == doctest::Approx(0.0).epsilon(1e-12), "tangent along a[3]"); }
+}

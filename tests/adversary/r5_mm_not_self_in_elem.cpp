@@ -1,0 +1,10 @@
+// adversary: m = fmax(m, 0.5 * m + a[i]): the element reads m
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+
+DPGEN_KERNEL void r5_mm_not_self_in_elem(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = fmax(m, 0.5 * m + a[i]);
+  out[0] = m;
+}

@@ -1,0 +1,24 @@
+#include "support/adjoint_check.hpp"
+#include "styles/styles_support.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include "dpgen/annotate.hpp"
+#include <cmath>
+#include <algorithm>
+#define IDX(i, j) ((j) * nx + (i))
+#include "r5_mm_omp_reduction_pragma_adjoint.hpp"
+#include "r5_mm_omp_reduction_pragma_tangent.hpp"
+
+DPGEN_KERNEL void r5_mm_omp_reduction_pragma(DPGEN_IN const double* u, DPGEN_IN const double* f, DPGEN_OUT double* res, int nx, int ny);
+TEST_CASE("adversary: r5_mm_omp_reduction_pragma") {
+  for (auto [n, m] : {std::pair{0, 0}, {1, 1}, {1, 3}, {3, 1}, {2, 2}, {4, 3}, {5, 6}}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n*m), size_t(n*m)};
+    p.out_sizes = {size_t(1)};
+    p.forward = [&](auto in, auto out) { r5_mm_omp_reduction_pragma(in[0], in[1], out[0], n, m); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { r5_mm_omp_reduction_pragma_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, m); };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) { r5_mm_omp_reduction_pragma_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, m); };
+    dpgen_test::check_adjoint(p);
+  }
+}

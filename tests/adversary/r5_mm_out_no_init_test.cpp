@@ -1,0 +1,1 @@
+// r5_mm_out_no_init: dpgen must reject this kernel (no test).
