@@ -838,8 +838,12 @@ private:
         std::vector<std::string> runs;
         auto pi = to_poly(st.index);
         for (const auto& l : n.loops)
-          if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi))
-            runs.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+          if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi)) {
+            std::string run =
+                fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code());
+            if (std::find(runs.begin(), runs.end(), run) == runs.end())
+              runs.push_back(run);
+          }
         if (!runs.empty())
           end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
         add_end(st.array, end);
