@@ -1062,15 +1062,18 @@ void Lowerer::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
   // the value it had before it.
   if (const auto* c = dyn_cast<CallExpr>(s)) {
     const FunctionDecl* f = c->getDirectCallee();
-    for (unsigned i = 0; i < c->getNumArgs(); ++i) {
+    // (a member operator's call, `v(i, j, k)`: argument 0 is the object)
+    const unsigned shift = isa<CXXOperatorCallExpr>(c) && f && isa<CXXMethodDecl>(f) ? 1 : 0;
+    for (unsigned i = shift; i < c->getNumArgs(); ++i) {
       const clang::Expr* a = c->getArg(i)->IgnoreParenImpCasts();
       bool by_address = false;
       if (const auto* u = dyn_cast<UnaryOperator>(a); u && u->getOpcode() == UO_AddrOf) {
         a = u->getSubExpr();
         by_address = true;
       }
-      QualType pt = f && i < f->getNumParams() ? f->getParamDecl(i)->getType() : QualType();
-      bool writable = by_address || pt.isNull() ||
+      const unsigned pi = i - shift;
+      QualType pt = f && pi < f->getNumParams() ? f->getParamDecl(pi)->getType() : QualType();
+      bool writable = by_address || (pt.isNull() && !f) ||
                       (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) ||
                       (pt->isPointerType() && !pt->getPointeeType().isConstQualified());
       if (writable)
