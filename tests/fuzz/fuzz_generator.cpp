@@ -59,7 +59,10 @@ dpgen::FrontendOptions options() {
 
 // Parses the generated source with its header; true when it compiles.
 bool compiles(const dpgen::EmittedFile& f) {
-  std::vector<std::string> args = {"-std=c++17", "-w", "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
+  // (-I.: the mapped headers include each other by these names, as
+  // include/member_classes.hpp includes "dpgen/annotate.hpp")
+  std::vector<std::string> args = {"-std=c++17", "-w", "-I.",
+                                   "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
   clang::tooling::FileContentMappings files = {{"fuzz_adjoint.hpp", f.header}};
   for (const auto& [name, text] : headers())
     files.push_back({name, text});
