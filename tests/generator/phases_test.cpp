@@ -386,6 +386,19 @@ TEST_CASE("ops table: rows in enum order, a rule per argument, aliases") {
   }
   CHECK(op_info(Op::Lt).negated == Op::Ge);
   CHECK(op_info(Op::Le).mirror == Op::Ge);
+  // The lowering maps the source's binary operators through the symbol
+  // column: each binary row is found by its symbol, `-` is the subtraction
+  // (not the negation), and an operator the IR lacks has none.
+  for (const auto& row : ops)
+    if (row.arity == 2 && *row.symbol) {
+      CAPTURE(row.name);
+      CHECK(binary_op(row.symbol) == &row);
+    }
+  CHECK(binary_op("-")->op == Op::Sub);
+  CHECK(binary_op("<<")->op == Op::Shl);
+  CHECK(binary_op("<=>") == nullptr);
+  CHECK(binary_op(",") == nullptr);
+  CHECK(binary_op("!") == nullptr);
   for (const auto& f : math_functions()) {
     CAPTURE(f.name);
     bool rule = f.piecewise_constant || f.whole;

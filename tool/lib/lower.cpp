@@ -49,7 +49,7 @@ private:
 
 bool Lowerer::run(Kernel& out) {
   try {
-    header();
+    sig_.header();
     body(fn_->getBody());
     if (failed_)
       return false; // every statement's error is reported; the checks need them all
@@ -57,7 +57,7 @@ bool Lowerer::run(Kernel& out) {
     // read back only in the iteration that stored it, where the read is the
     // stored value) needs no hidden array: its stores reach no output.
     auto dead = [&](const std::string& a) {
-      return buffers_.count(a) && !k_.intermediates.count(a);
+      return bufs_.is_buffer(a) && !k_.intermediates.count(a);
     };
     std::vector<Nest> kept;
     for (auto& n : k_.nests) {
@@ -178,6 +178,79 @@ Type Lowerer::type_of(const clang::Expr* e) {
                                       "(only int, float, double and bool values)",
                                       e->getType().getAsString()));
   return *t;
+}
+
+// ---- names ---------------------------------------------------------------
+
+ExprP Lowerer::opaque_symbol(const std::string& name, long long value) {
+  auto l = std::make_shared<LocalVar>();
+  l->name = name;
+  l->type_name = "std::ptrdiff_t";
+  l->def = int_const(value);
+  l->opaque = true;
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  local_names_.insert(l->name);
+  k_.kernel_locals.push_back(l);
+  return local_ref(l);
+}
+
+// Names a local or a loop counter must not keep (it is renamed <name>_1):
+// a parameter, an enclosing counter, a name the signature rule gives an
+// adjoint or tangent parameter (<array>_adj, <array>_dot), the prefix
+// dpgen_ of generated helpers, or a C++ keyword (a C kernel's `new`: the
+// generated code is C++).
+bool Lowerer::is_reserved(const std::string& name) const {
+  if (k_.find_param(name) || contract_name_of(name) || name.rfind("dpgen_", 0) == 0 ||
+      is_cxx_only_keyword(name))
+    return true;
+  for (const auto& l : loops_)
+    if (l->var == name)
+      return true;
+  return false;
+}
+
+// The array parameter whose adjoint or tangent the signature rule names
+// `name` (<array>_adj, <array>_dot), or null.
+const Param* Lowerer::contract_name_of(const std::string& name) const {
+  for (const char* suffix : {"_adj", "_dot"}) {
+    size_t n = std::char_traits<char>::length(suffix);
+    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
+      if (const Param* p = k_.find_param(name.substr(0, name.size() - n));
+          p && p->kind != ParamKind::Scalar)
+        return p;
+  }
+  return nullptr;
+}
+
+bool Lowerer::is_cxx_only_keyword(const std::string& name) {
+  static const std::set<std::string> keywords = {
+      "alignas",    "alignof",      "and",       "and_eq",      "asm",
+      "bitand",     "bitor",        "bool",      "catch",       "char8_t",
+      "char16_t",   "char32_t",     "class",     "compl",       "concept",
+      "consteval",  "constexpr",    "constinit", "const_cast",  "co_await",
+      "co_return",  "co_yield",     "decltype",  "delete",      "dynamic_cast",
+      "explicit",   "export",       "false",     "friend",      "mutable",
+      "namespace",  "new",          "noexcept",  "not",         "not_eq",
+      "nullptr",    "operator",     "or",        "or_eq",       "private",
+      "protected",  "public",       "reinterpret_cast", "requires", "static_assert",
+      "static_cast", "template",    "this",      "thread_local", "throw",
+      "true",       "try",          "typeid",    "typename",    "using",
+      "virtual",    "wchar_t",      "xor",       "xor_eq"};
+  return keywords.count(name) > 0;
+}
+
+// Every name the generated code takes from the kernel (Kernel::names).
+void Lowerer::collect_names() {
+  for (const auto& p : k_.params) {
+    k_.names.insert(p.name);
+    if (p.kind != ParamKind::Scalar) {
+      k_.names.insert(p.name + "_adj");
+      k_.names.insert(p.name + "_dot");
+    }
+  }
+  k_.names.insert(local_names_.begin(), local_names_.end());
+  k_.names.insert(loop_names_.begin(), loop_names_.end());
 }
 
 } // namespace dpgen::lowering

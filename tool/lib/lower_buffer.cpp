@@ -51,17 +51,17 @@ std::string loop_var_in(const ExprP& e) {
 
 } // namespace
 
-const Lowerer::Buffer* Lowerer::buffer_of(const std::string& array) const {
+const LineBuffers::Buffer* LineBuffers::buffer_of(const std::string& array) const {
   auto it = buffers_.find(array);
   return it == buffers_.end() ? nullptr : &it->second;
 }
 
 // `double u1[M]` (M > 64), `double tmp[nx]`, `std::array<double, 200> t`.
-void Lowerer::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
+void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
   const std::string name = v->getNameAsString();
-  auto t = scalar_type(elem);
-  if (!t || !is_real(*t) || ctx_.getAsArrayType(elem))
-    fail(v->getLocation(), fmt::format("local array '{}' of type '{}' is outside the kernel "
+  auto t = L.scalar_type(elem);
+  if (!t || !is_real(*t) || L.ctx_.getAsArrayType(elem))
+    L.fail(v->getLocation(), fmt::format("local array '{}' of type '{}' is outside the kernel "
                                        "subset: a line buffer (a local array of more than 64 "
                                        "elements, or of a run-time length) holds float or "
                                        "double values, one dimension",
@@ -69,7 +69,7 @@ void Lowerer::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
   if (const clang::Expr* init = v->getInit()) {
     const auto* ctor = dyn_cast<CXXConstructExpr>(init);
     if (!ctor || ctor->getNumArgs() != 0 || ctor->requiresZeroInitialization())
-      fail(init->getBeginLoc(),
+      L.fail(init->getBeginLoc(),
            fmt::format("line buffer '{}' has an initializer: a buffer of more than 64 elements "
                        "(or of a run-time length) is filled by the kernel's loops, each element "
                        "written before it is read in the same iteration; initialise it in a loop",
@@ -77,37 +77,37 @@ void Lowerer::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
   }
   auto len = to_poly(length);
   if (!len || len->mentions_any_counter())
-    fail(v->getLocation(), fmt::format("the length of line buffer '{}' must be a polynomial in "
+    L.fail(v->getLocation(), fmt::format("the length of line buffer '{}' must be a polynomial in "
                                        "the integer parameters (not in loop counters)",
                                        name));
-  if (k_.hidden.size() == k_.hidden.capacity())
-    fail(v->getLocation(), fmt::format("line buffer '{}': a kernel has at most {} buffers and "
+  if (L.k_.hidden.size() == L.k_.hidden.capacity())
+    L.fail(v->getLocation(), fmt::format("line buffer '{}': a kernel has at most {} buffers and "
                                        "accumulators",
-                                       name, kMaxAccumulators));
+                                       name, Lowerer::kMaxAccumulators));
   Param h;
   h.name = "dpgen_buf_" + name;
-  for (int n = 2; k_.find_param(h.name); ++n)
+  for (int n = 2; L.k_.find_param(h.name); ++n)
     h.name = fmt::format("dpgen_buf_{}_{}", name, n);
   h.kind = ParamKind::Out;
   h.elem = *t;
   h.elem_name = type_spelling(h.elem);
   h.spelling = name;
   h.declaration = fmt::format("{}* {}", h.elem_name, h.name);
-  k_.hidden.push_back(h);
+  L.k_.hidden.push_back(h);
 
   Buffer b;
   b.decl = v;
   b.array = h.name;
   b.length = length;
-  b.decl_loop_ids = loop_ids_;
+  b.decl_loop_ids = L.loop_ids_;
   // The loops around every use: the `for` statements above the innermost
   // statement that holds all the uses, below the declaration's scope.
   const Stmt* scope = nullptr;
   {
-    auto ps = ctx_.getParents(*v);
+    auto ps = L.ctx_.getParents(*v);
     const Stmt* ds = ps.empty() ? nullptr : ps[0].get<Stmt>();
     if (ds) {
-      auto pp = ctx_.getParents(*ds);
+      auto pp = L.ctx_.getParents(*ds);
       scope = pp.empty() ? nullptr : pp[0].get<Stmt>();
     }
   }
@@ -119,11 +119,11 @@ void Lowerer::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
     const Stmt* s = u;
     while (s && s != scope) {
       chain.push_back(s);
-      auto pp = ctx_.getParents(*s);
+      auto pp = L.ctx_.getParents(*s);
       s = pp.empty() ? nullptr : pp[0].get<Stmt>();
     }
     if (s != scope)
-      fail(u->getBeginLoc(), fmt::format("internal error: a use of line buffer '{}' outside "
+      L.fail(u->getBeginLoc(), fmt::format("internal error: a use of line buffer '{}' outside "
                                          "its scope",
                                          name));
     std::reverse(chain.begin(), chain.end());
@@ -144,60 +144,60 @@ void Lowerer::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
   buffers_[h.name] = b;
   Binding bind;
   bind.kind = Binding::ArrayParam;
-  bind.param = &k_.hidden.back();
-  env_[v] = bind;
+  bind.param = &L.k_.hidden.back();
+  L.env_[v] = bind;
 }
 
 // The flat element of `local` (the index as the kernel writes it) of buffer
 // `p`: row * length + local, the row of the current iteration.
-ExprP Lowerer::buffer_index(const Param* p, const ExprP& local, const clang::Expr* at) {
+ExprP LineBuffers::buffer_index(const Param* p, const ExprP& local, const clang::Expr* at) {
   Buffer& b = buffers_.at(p->name);
   const std::string& name = b.decl->getNameAsString();
   SourceLocation loc = at->getBeginLoc();
   if (!to_poly(local))
-    fail(loc, fmt::format("line buffer '{}' is indexed at '{}', which is not a polynomial in the "
+    L.fail(loc, fmt::format("line buffer '{}' is indexed at '{}', which is not a polynomial in the "
                           "loop counters and sizes (a data-dependent or conditional index): dpgen "
                           "follows which elements of a buffer each loop writes and reads; index "
                           "it by loop counters",
-                          name, text(at)),
+                          name, L.text(at)),
          "dpgen-buffer");
   const size_t decl_depth = b.decl_loop_ids.size();
-  if (loop_ids_.size() < decl_depth ||
-      !std::equal(b.decl_loop_ids.begin(), b.decl_loop_ids.end(), loop_ids_.begin()))
-    fail(loc, fmt::format("line buffer '{}' is used outside the loops it is declared in",
+  if (L.loop_ids_.size() < decl_depth ||
+      !std::equal(b.decl_loop_ids.begin(), b.decl_loop_ids.end(), L.loop_ids_.begin()))
+    L.fail(loc, fmt::format("line buffer '{}' is used outside the loops it is declared in",
                           name));
   // Each loop around all the uses is a loop of the kernel here, in order.
   for (size_t k = 0; k < b.row_fors.size(); ++k) {
     const ForStmt* f = b.row_fors[k];
     const VarDecl* c = counter_of(f);
-    auto it = c ? env_.find(c) : env_.end();
-    if (it != env_.end() && it->second.kind == Binding::Value)
-      fail(loc, fmt::format("line buffer '{}' is used in every iteration of loop '{}', which "
+    auto it = c ? L.env_.find(c) : L.env_.end();
+    if (it != L.env_.end() && it->second.kind == Binding::Value)
+      L.fail(loc, fmt::format("line buffer '{}' is used in every iteration of loop '{}', which "
                             "dpgen unrolls (constant bounds, at most 16 iterations): its "
                             "copies would share one row of the buffer; declare the buffer "
                             "inside that loop",
                             name, c->getNameAsString()));
-    std::string var = it != env_.end() && it->second.kind == Binding::LoopVar && it->second.value
+    std::string var = it != L.env_.end() && it->second.kind == Binding::LoopVar && it->second.value
                           ? loop_var_in(*it->second.value)
                           : "";
     size_t d = decl_depth + k;
-    if (var.empty() || d >= loops_.size() || loops_[d]->var != var)
-      fail(loc, fmt::format("line buffer '{}': dpgen cannot place this use in the loops around "
+    if (var.empty() || d >= L.loops_.size() || L.loops_[d]->var != var)
+      L.fail(loc, fmt::format("line buffer '{}': dpgen cannot place this use in the loops around "
                             "its uses (a buffer is used in one function, inside the loops of "
                             "its declaration)",
                             name));
   }
   const size_t depth = decl_depth + b.row_fors.size();
-  std::vector<int> ids(loop_ids_.begin(), loop_ids_.begin() + depth);
+  std::vector<int> ids(L.loop_ids_.begin(), L.loop_ids_.begin() + depth);
   if (!b.placed) {
     // One row per iteration of the row loops: (outer - lo) * extent of the
     // inner ones + ..., as for an accumulator's sums.
     ExprP row = int_const(0);
     std::vector<ExprP> extents;
     for (size_t d = 0; d < depth; ++d) {
-      const Loop& l = *loops_[d];
+      const Loop& l = *L.loops_[d];
       if (!to_poly(l.lo) || !to_poly(l.hi))
-        fail(loc, fmt::format("line buffer '{}' is used in loop '{}', whose bounds are not "
+        L.fail(loc, fmt::format("line buffer '{}' is used in loop '{}', whose bounds are not "
                               "polynomials in the sizes",
                               name, l.var));
       ExprP here = binary(Op::Sub, loop_var(l.var), l.lo);
@@ -209,9 +209,9 @@ ExprP Lowerer::buffer_index(const Param* p, const ExprP& local, const clang::Exp
     b.depth = depth;
     b.row_ids = ids;
     b.row = row;
-    acc_.buffers[p->name] = {name, depth, row, b.length, extents};
+    L.acc_.buffers[p->name] = {name, depth, row, b.length, extents};
   } else if (ids != b.row_ids) {
-    fail(loc, fmt::format("internal error: line buffer '{}' is used in different loops", name));
+    L.fail(loc, fmt::format("internal error: line buffer '{}' is used in different loops", name));
   }
   if (depth == 0)
     return local;
@@ -219,7 +219,7 @@ ExprP Lowerer::buffer_index(const Param* p, const ExprP& local, const clang::Exp
 }
 
 // The index as the kernel wrote it, from the flat element of a buffer.
-std::optional<Poly> Lowerer::buffer_local(const Buffer& b, const ExprP& flat) const {
+std::optional<Poly> LineBuffers::buffer_local(const Buffer& b, const ExprP& flat) const {
   auto p = to_poly(flat);
   if (!p)
     return std::nullopt;
@@ -230,13 +230,13 @@ std::optional<Poly> Lowerer::buffer_local(const Buffer& b, const ExprP& flat) co
 
 // Facts where the current statement runs: its loops run, their counters are
 // in range, its path holds (counters included).
-Facts Lowerer::facts_here() const {
+Facts LineBuffers::facts_here() const {
   Facts f;
-  for (const auto& l : loops_) {
+  for (const auto& l : L.loops_) {
     add_nonempty(*l, f);
     add_counter_range(*l, f);
   }
-  for (const auto& pc : path_)
+  for (const auto& pc : L.path_)
     add_facts_with_counters(pc, f);
   return f;
 }
@@ -245,8 +245,8 @@ Facts Lowerer::facts_here() const {
 // it is on the current path, the facts here imply it, or it says two
 // integers differ (`pad[0]` and `pad[nx + 1]` are apart) and they provably
 // do here.
-bool Lowerer::holds_here(const PathCond& pc, const Facts& facts) const {
-  if (std::any_of(path_.begin(), path_.end(), [&](const PathCond& q) {
+bool LineBuffers::holds_here(const PathCond& pc, const Facts& facts) const {
+  if (std::any_of(L.path_.begin(), L.path_.end(), [&](const PathCond& q) {
         return q.cond == pc.cond && q.positive == pc.positive;
       }))
     return true;
@@ -287,11 +287,11 @@ static std::optional<std::pair<Poly, Poly>> range_over(Poly p, const std::vector
 
 // The C++ conditions under which a check on this statement applies: its
 // loops run and the conditions on its path that the sizes decide hold.
-std::vector<std::string> Lowerer::premises_here() const {
+std::vector<std::string> LineBuffers::premises_here() const {
   std::vector<std::string> out;
-  for (const auto& l : loops_)
+  for (const auto& l : L.loops_)
     out.push_back(fmt::format("({}) < ({})", to_poly(l->lo)->code(), to_poly(l->hi)->code()));
-  for (const auto& pc : path_) {
+  for (const auto& pc : L.path_) {
     Facts f;
     add_facts(pc, f);
     for (const auto& p : f)
@@ -305,7 +305,7 @@ std::vector<std::string> Lowerer::premises_here() const {
 // `goals` (each >= 0) hold here: proved, or (where they depend on the sizes
 // alone and can hold) checked at run time. Otherwise an error `why` (with
 // "provably" or "cannot prove" filled in by `never`).
-bool Lowerer::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
+bool LineBuffers::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
                              const std::string& what, SourceLocation loc, bool& never) {
   never = false;
   std::vector<std::string> must;
@@ -325,8 +325,8 @@ bool Lowerer::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
     c.premises = premises_here();
     c.must_hold = fmt::format("{}", fmt::join(must, " && "));
     c.what = what;
-    c.pos = pos(loc);
-    k_.size_checks.push_back(c);
+    c.pos = L.pos(loc);
+    L.k_.size_checks.push_back(c);
   }
   return true;
 }
@@ -334,25 +334,25 @@ bool Lowerer::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
 // A store to a buffer: with '=', it moves with every loop inside the row
 // loops (else it would carry a value from one iteration to the next), and
 // stays inside the buffer.
-void Lowerer::check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
+void LineBuffers::check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
                                  const clang::Expr* lhs) {
   const Buffer& b = buffers_.at(p->name);
   const std::string name = b.decl->getNameAsString();
   SourceLocation loc = lhs->getBeginLoc();
   Poly local = *buffer_local(b, flat);
   if (!accumulate)
-    for (size_t d = b.depth; d < loops_.size(); ++d)
-      if (!local.mentions_counter(loops_[d]->var))
-        fail(loc, fmt::format("line buffer '{}' is written at the same element '{}' by every "
+    for (size_t d = b.depth; d < L.loops_.size(); ++d)
+      if (!local.mentions_counter(L.loops_[d]->var))
+        L.fail(loc, fmt::format("line buffer '{}' is written at the same element '{}' by every "
                               "iteration of loop '{}': its value would carry from one iteration "
                               "to the next (a recurrence through a buffer), outside the kernel "
                               "subset; a buffer holds one value per element {}, written before "
                               "it is read",
-                              name, text(lhs), loops_[d]->var, b.depth == 0 ? std::string(
+                              name, L.text(lhs), L.loops_[d]->var, b.depth == 0 ? std::string(
                                   "for the whole kernel where it is used outside every loop") : [&] {
                                 std::vector<std::string> v;
                                 for (size_t i = 0; i < b.depth; ++i)
-                                  v.push_back("'" + loops_[i]->var + "'");
+                                  v.push_back("'" + L.loops_[i]->var + "'");
                                 return fmt::format("in each iteration of the loops around all "
                                                    "its uses ({})",
                                                    fmt::join(v, ", "));
@@ -360,7 +360,7 @@ void Lowerer::check_buffer_store(const Param* p, const ExprP& flat, bool accumul
              "dpgen-buffer");
   Facts facts = facts_here();
   std::vector<Loop> loops;
-  for (const auto& l : loops_)
+  for (const auto& l : L.loops_)
     loops.push_back(*l);
   Poly len = *to_poly(b.length);
   const Poly one = Poly::constant(1);
@@ -373,12 +373,12 @@ void Lowerer::check_buffer_store(const Param* p, const ExprP& flat, bool accumul
   if (r && prove_or_check({r->first, len - one - r->second}, facts,
                           fmt::format("line buffer '{}' of {} elements holds the elements "
                                       "written at '{}' (from {} to {})",
-                                      name, len.str(), text(lhs), r->first.str(), r->second.str()),
+                                      name, len.str(), L.text(lhs), r->first.str(), r->second.str()),
                           loc, never))
     return;
-  fail(loc, fmt::format("line buffer '{}' of {} elements is written at '{}'{}, which dpgen "
+  L.fail(loc, fmt::format("line buffer '{}' of {} elements is written at '{}'{}, which dpgen "
                         "{} within the buffer",
-                        name, len.str(), text(lhs),
+                        name, len.str(), L.text(lhs),
                         r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str())
                           : "",
                         never ? "finds is not always" : "cannot prove is"),
@@ -388,19 +388,19 @@ void Lowerer::check_buffer_store(const Param* p, const ExprP& flat, bool accumul
 // A read of a buffer element that this iteration did not store just before
 // (visible_store): some earlier loop of the same iteration of the row loops,
 // sharing no other loop with the read, wrote it with '='.
-void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e) {
+void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e) {
   const Buffer& b = buffers_.at(p->name);
   const std::string name = b.decl->getNameAsString();
   SourceLocation loc = e->getBeginLoc();
-  auto nit = nest_index_.find(cur_key());
-  if (nit != nest_index_.end() && visible_store(k_.nests[nit->second], p->name, flat))
+  auto nit = L.nest_index_.find(L.cur_key());
+  if (nit != L.nest_index_.end() && L.visible_store(L.k_.nests[nit->second], p->name, flat))
     return; // stored earlier in this iteration, at this element
   Poly local = *buffer_local(b, flat);
   std::string rows = "the kernel";
   if (b.depth > 0) {
     std::vector<std::string> v;
     for (size_t i = 0; i < b.depth; ++i)
-      v.push_back("'" + loops_[i]->var + "'");
+      v.push_back("'" + L.loops_[i]->var + "'");
     rows = fmt::format("an iteration of loop{} {}", b.depth > 1 ? "s" : "", fmt::join(v, ", "));
   }
   // The intervals earlier loops of this iteration wrote.
@@ -410,10 +410,10 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
   };
   std::vector<Written> written;
   unsigned conditional = 0; // a store left out: its condition may not hold here
-  std::vector<int> key = cur_key();
+  std::vector<int> key = L.cur_key();
   Facts facts = facts_here();
   facts.push_back(*to_poly(b.length) - Poly::constant(1)); // (a VLA has an element at least)
-  for (const auto& n : k_.nests) {
+  for (const auto& n : L.k_.nests) {
     size_t shared = 0;
     while (shared < n.key.size() && shared < key.size() && n.key[shared] == key[shared])
       ++shared;
@@ -479,7 +479,7 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
     if (prove_nonneg(local - w.lo, facts) && prove_nonneg(w.hi - local, facts))
       return;
   std::vector<Loop> loops;
-  for (const auto& l : loops_)
+  for (const auto& l : L.loops_)
     loops.push_back(*l);
   auto r = range_over(local, loops, b.depth, facts);
   if (r) {
@@ -489,31 +489,31 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
       if (prove_or_check({r->first - written[0].lo, written[0].hi - r->second}, facts,
                          fmt::format("line buffer '{}' is read at '{}' (elements {} to {}) only "
                                      "where the loop on line {} wrote it (elements {} to {})",
-                                     name, text(e), r->first.str(), r->second.str(),
+                                     name, L.text(e), r->first.str(), r->second.str(),
                                      written[0].line, written[0].lo.str(), written[0].hi.str()),
                          loc, never))
         return;
     }
   }
-  if (nit != nest_index_.end())
-    for (const auto& st : k_.nests[nit->second].stores)
+  if (nit != L.nest_index_.end())
+    for (const auto& st : L.k_.nests[nit->second].stores)
       if (st.array == p->name)
-        fail(loc, fmt::format("line buffer '{}' is read at '{}', an element this iteration does "
+        L.fail(loc, fmt::format("line buffer '{}' is read at '{}', an element this iteration does "
                               "not write before (it writes '{}' on line {}): a value carried from "
                               "another iteration{} (a recurrence) is outside the kernel subset; "
                               "fill the buffer in one loop, read it in a later one",
-                              name, text(e), name + subscript(*buffer_local(b, st.index), {}),
+                              name, L.text(e), name + subscript(*buffer_local(b, st.index), {}),
                               st.pos.line,
-                              loops_.empty() ? "" : " of loop '" + loops_.back()->var + "'"),
+                              L.loops_.empty() ? "" : " of loop '" + L.loops_.back()->var + "'"),
              "dpgen-buffer");
   if (written.empty())
-    fail(loc, fmt::format("line buffer '{}' is read at '{}', and no earlier loop of {} writes "
+    L.fail(loc, fmt::format("line buffer '{}' is read at '{}', and no earlier loop of {} writes "
                           "it{}: a buffer holds values within one iteration of the loops around "
                           "all its uses, so this would read an element never written in this "
                           "iteration (a value carried over from an earlier one, or "
                           "uninitialised), outside the kernel subset; write every element a "
                           "loop reads, with '=', in an earlier loop of the same iteration",
-                          name, text(e), rows,
+                          name, L.text(e), rows,
                           conditional ? fmt::format(" wherever this read runs (line {} writes it "
                                                     "under a condition that may not hold here)",
                                                     conditional)
@@ -522,12 +522,12 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
   std::vector<std::string> ws;
   for (const auto& w : written)
     ws.push_back(fmt::format("{} to {} (line {})", w.lo.str(), w.hi.str(), w.line));
-  fail(loc, fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
+  L.fail(loc, fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
                         "earlier loops of {} wrote every element read (they write elements {}): "
                         "a read of an element not written in this iteration (a value carried "
                         "over from an earlier one, or uninitialised) is outside the kernel "
                         "subset; read only elements the filling loop writes",
-                        name, text(e),
+                        name, L.text(e),
                         r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str())
                           : "",
                         rows, fmt::join(ws, ", ")),
@@ -537,9 +537,9 @@ void Lowerer::check_buffer_read(const Param* p, const ExprP& flat, const clang::
 // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`: `u[k][j][i]` is the flat
 // element (k * n + j) * n + i of the parameter. False if `v` is no such
 // pointer.
-bool Lowerer::declare_array_pointer(const VarDecl* v) {
+bool LineBuffers::declare_array_pointer(const VarDecl* v) {
   QualType t = v->getType();
-  if (!t->isPointerType() || !ctx_.getAsArrayType(t->getPointeeType()))
+  if (!t->isPointerType() || !L.ctx_.getAsArrayType(t->getPointeeType()))
     return false;
   const std::string name = v->getNameAsString();
   const clang::Expr* init = v->getInit();
@@ -553,45 +553,45 @@ bool Lowerer::declare_array_pointer(const VarDecl* v) {
   }
   const auto* ref = src ? dyn_cast<DeclRefExpr>(src) : nullptr;
   const auto* pv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
-  auto it = pv ? env_.find(pv) : env_.end();
-  const Param* p = it != env_.end() && it->second.kind == Binding::ArrayParam ? it->second.param
+  auto it = pv ? L.env_.find(pv) : L.env_.end();
+  const Param* p = it != L.env_.end() && it->second.kind == Binding::ArrayParam ? it->second.param
                                                                                : nullptr;
   if (!p || p->row_pointers || p->view || !p->container.empty() || p->scalar_ref ||
       !p->rows.empty() || buffer_of(p->name) || p->global)
-    fail(v->getLocation(), fmt::format("pointer '{}' to arrays must be initialised with a cast "
+    L.fail(v->getLocation(), fmt::format("pointer '{}' to arrays must be initialised with a cast "
                                        "of a flat array parameter of the kernel ('double "
                                        "(*{})[n][n] = (double (*)[n][n]) u;')",
                                        name, name));
   // The element type is the parameter's.
   QualType el = t->getPointeeType();
-  while (const auto* at = ctx_.getAsArrayType(el)) {
+  while (const auto* at = L.ctx_.getAsArrayType(el)) {
     if (const auto* vat = dyn_cast<VariableArrayType>(at)) {
       // The extent as it is here: kept for every later u[k][j] (a local in
       // it may be assigned later; the pointer's rows do not change).
-      ExprP x = expr(vat->getSizeExpr());
+      ExprP x = L.expr(vat->getSizeExpr());
       auto px = to_poly(x);
       if (!px || px->mentions_any_counter())
-        fail(vat->getSizeExpr()->getBeginLoc(),
+        L.fail(vat->getSizeExpr()->getBeginLoc(),
              fmt::format("the extent '{}' of pointer '{}' must be a polynomial in the integer "
                          "parameters (not in loop counters)",
-                         text(vat->getSizeExpr()), name));
+                         L.text(vat->getSizeExpr()), name));
       vla_sizes_[vat->getSizeExpr()] = x;
     } else if (!isa<ConstantArrayType>(at)) {
-      fail(v->getLocation(), fmt::format("pointer '{}' has an array type outside the kernel "
+      L.fail(v->getLocation(), fmt::format("pointer '{}' has an array type outside the kernel "
                                          "subset",
                                          name));
     }
     el = at->getElementType();
   }
-  auto et = scalar_type(el);
+  auto et = L.scalar_type(el);
   if (!et || *et != p->elem)
-    fail(v->getLocation(), fmt::format("pointer '{}' has elements of type '{}', parameter '{}' "
+    L.fail(v->getLocation(), fmt::format("pointer '{}' has elements of type '{}', parameter '{}' "
                                        "of '{}': the cast must keep the element type",
                                        name, el.getAsString(), p->name, p->elem_name));
   Binding b;
   b.kind = Binding::ArrayParam;
   b.param = p;
-  env_[v] = b;
+  L.env_[v] = b;
   return true;
 }
 

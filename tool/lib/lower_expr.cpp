@@ -164,7 +164,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
   unsigned first = 0;
   std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
   if (const auto* m = dyn_cast<CXXMethodDecl>(def);
-      m && (m->getParent()->isLambda() || is_functor_class(m->getParent()))) {
+      m && (m->getParent()->isLambda() || objects_.is_functor_class(m->getParent()))) {
     const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
     const auto* ref =
         oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
@@ -253,7 +253,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
     QualType pt = pd->getType();
     // A library parallel-for's body (`template <class F> void ParallelFor(Box
     // const& box, F&& f)`): a lambda, a view or an object of the caller.
-    if (std::optional<Binding> b = class_argument(pd, arg, def)) {
+    if (std::optional<Binding> b = objects_.class_argument(pd, arg, def)) {
       binds.push_back({pd, *b});
       continue;
     }
@@ -347,7 +347,7 @@ ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
-    if (auto a = view_element(oc))
+    if (auto a = views_.view_element(oc))
       return a;
   if (const Param* p = scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
     return Access{p, int_const(0)};
@@ -359,8 +359,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
         fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
                                               "its elements as {}[j][i]",
                                               p->name, p->name, p->name));
-      if (buffer_of(p->name))
-        return Access{p, buffer_index(p, int_const(0), e)};
+      if (bufs_.is_buffer(p->name))
+        return Access{p, bufs_.buffer_index(p, int_const(0), e)};
       return Access{p, int_const(0)};
     }
     fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
@@ -376,8 +376,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     ExprP idx = expr(oc->getArg(1));
     if (idx->type != Type::Int)
       fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
-    if (buffer_of(p->name)) // t[i] of a std::array line buffer
-      return Access{p, buffer_index(p, idx, e)};
+    if (bufs_.is_buffer(p->name)) // t[i] of a std::array line buffer
+      return Access{p, bufs_.buffer_index(p, idx, e)};
     return Access{p, idx};
   }
   const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
@@ -444,8 +444,9 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
       extent = int_const(static_cast<long long>(c->getSize().getZExtValue()));
     else if (const auto* v = dyn_cast<VariableArrayType>(at)) {
       // (a pointer's extents as evaluated at its declaration, lower_buffer.cpp)
-      auto vs = vla_sizes_.find(v->getSizeExpr());
-      extent = vs != vla_sizes_.end() ? vs->second : expr(v->getSizeExpr());
+      extent = bufs_.vla_size(v->getSizeExpr());
+      if (!extent)
+        extent = expr(v->getSizeExpr());
     }
     else
       fail(base->getBeginLoc(), "this array type is outside the kernel subset");
@@ -459,8 +460,8 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
                                          "value; index its elements as {}[j][i]",
                                          p->name, p->name, p->name));
-  if (buffer_of(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
-    return Access{p, buffer_index(p, idx, e)};
+  if (bufs_.is_buffer(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
+    return Access{p, bufs_.buffer_index(p, idx, e)};
   check_index_width(sub->getIdx(), idx, p->name);
   return Access{p, idx};
 }
@@ -507,7 +508,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     if (b && b->kind == Binding::Value && b->value)
       return *b->value;
   }
-  if (auto v = object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
+  if (auto v = objects_.object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
     return *v;
   if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
     return cast_expr(c, c->getSubExpr());
@@ -560,11 +561,11 @@ ExprP Lowerer::expr(const clang::Expr* e) {
                                            "positions (a periodic wrap); read the input it "
                                            "came from",
                                            p->name));
-      return piecewise_read(*acc, 0, acc->dims, pos(e->getBeginLoc()), text(e));
+      return views_.piecewise_read(*acc, 0, acc->dims, pos(e->getBeginLoc()), text(e));
     }
     if (p->kind == ParamKind::Out) {
-      if (buffer_of(p->name)) // a line buffer: written earlier in this iteration
-        check_buffer_read(p, acc->index, e);
+      if (bufs_.is_buffer(p->name)) // a line buffer: written earlier in this iteration
+        bufs_.check_buffer_read(p, acc->index, e);
       // An output read back in the iteration that stored it: that value.
       order_after_later_stores(p->name);
       auto nit = nest_index_.find(cur_key());
@@ -768,48 +769,16 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
     return binary(b->getOpcode() == BO_LAnd ? Op::And : Op::Or, cond(b->getLHS()),
                   cond(b->getRHS()));
   ExprP l = expr(b->getLHS()), r = expr(b->getRHS());
-  switch (b->getOpcode()) {
-  case BO_Add:
-    return binary(Op::Add, l, r);
-  case BO_Sub:
-    if (b->getType()->isUnsignedIntegerType())
-      check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
-                            fmt::format("unsigned difference '{}'", text(b)), b);
-    return binary(Op::Sub, l, r);
-  case BO_Mul:
-    return binary(Op::Mul, l, r);
-  case BO_Div:
-    return binary(Op::Div, l, r);
-  case BO_Rem:
-    return binary(Op::Rem, l, r);
-  case BO_LT:
-    return binary(Op::Lt, l, r);
-  case BO_LE:
-    return binary(Op::Le, l, r);
-  case BO_GT:
-    return binary(Op::Gt, l, r);
-  case BO_GE:
-    return binary(Op::Ge, l, r);
-  case BO_EQ:
-    return binary(Op::Eq, l, r);
-  case BO_NE:
-    return binary(Op::Ne, l, r);
-  case BO_Shl:
-  case BO_Shr:
-  case BO_And:
-  case BO_Or:
-  case BO_Xor:
-    // integer bit logic (index and branch conditions); never on reals in C++
-    return binary(b->getOpcode() == BO_Shl   ? Op::Shl
-                  : b->getOpcode() == BO_Shr ? Op::Shr
-                  : b->getOpcode() == BO_And ? Op::BitAnd
-                  : b->getOpcode() == BO_Or  ? Op::BitOr
-                                             : Op::BitXor,
-                  l, r);
-  default:
+  // Arithmetic, comparisons and integer bit logic (index and branch
+  // conditions; never on reals in C++): the op table's row of the symbol.
+  const OpInfo* row = binary_op(b->getOpcodeStr().str());
+  if (!row)
     fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
                                           b->getOpcodeStr().str()));
-  }
+  if (row->op == Op::Sub && b->getType()->isUnsignedIntegerType())
+    check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
+                          fmt::format("unsigned difference '{}'", text(b)), b);
+  return binary(row->op, l, r);
 }
 
 ExprP Lowerer::call_expr(const CallExpr* c) {
@@ -862,6 +831,28 @@ ExprP Lowerer::call_expr(const CallExpr* c) {
     fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
                                        fnname, math->arity), "dpgen-call");
   return call(fnname, args, t);
+}
+
+// What `e` names: a variable or a member of the kernel's object (lower_impl.hpp).
+const Binding* Lowerer::bound(const clang::Expr* e) const {
+  e = e->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
+    const auto* v = dyn_cast<VarDecl>(r->getDecl());
+    if (!v)
+      return nullptr;
+    if (poisoned_.count(v))
+      throw Rejected{};
+    auto it = env_.find(v);
+    return it == env_.end() ? nullptr : &it->second;
+  }
+  const auto* m = dyn_cast<MemberExpr>(e);
+  const auto* f = m ? dyn_cast<FieldDecl>(m->getMemberDecl()) : nullptr;
+  if (!f || !isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
+    return nullptr;
+  if (poisoned_.count(f))
+    throw Rejected{};
+  auto it = fields_.find(f);
+  return it == fields_.end() ? nullptr : &it->second;
 }
 
 } // namespace dpgen::lowering

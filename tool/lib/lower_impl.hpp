@@ -1,9 +1,11 @@
 // The lowering's internals (lower.hpp is its interface), shared by the files
 // it is split into along its seams: lower.cpp (the driver: run, statements'
 // error recovery, the checks), lower_signature.cpp (parameters and names),
-// lower_stmt.cpp (statements, declarations, stores), lower_loop.cpp (loops,
-// their bounds, accumulators), lower_expr.cpp (expressions, helper calls,
-// array elements). Included by those files only.
+// lower_stmt.cpp (statements, declarations, stores), lower_loop.cpp (loops
+// and their bounds), lower_reduce.{hpp,cpp} (accumulators and min/max
+// reductions: a part with its own state), lower_expr.cpp (expressions, helper
+// calls, array elements), lower_buffer.cpp (line buffers), lower_view.cpp
+// (views, objects, member kernels). Included by those files only.
 #pragma once
 
 #include "lower.hpp"
@@ -13,6 +15,12 @@
 
 #include "affine.hpp"
 #include "prove.hpp"
+#include "lower_buffer.hpp"
+#include "lower_common.hpp"
+#include "lower_object.hpp"
+#include "lower_view.hpp"
+#include "lower_reduce.hpp"
+#include "lower_signature.hpp"
 
 #include <clang/AST/ASTContext.h>
 #include <clang/AST/Attr.h>
@@ -38,37 +46,6 @@ namespace dpgen::lowering {
 
 using namespace clang;
 
-// What a name in the kernel body refers to.
-struct Binding {
-  enum Kind { ScalarParam, ArrayParam, LoopVar, Value, LocalArray, Lambda } kind;
-  // Lambda: the closure's class, and the value each variable captured by copy
-  // had when the lambda was made (a call checks it has not changed since).
-  const clang::CXXRecordDecl* closure = nullptr;
-  std::vector<std::pair<const clang::VarDecl*, std::optional<ExprP>>> captured;
-  std::vector<std::pair<const clang::VarDecl*, std::vector<std::optional<ExprP>>>>
-      captured_arrays; // local arrays captured by copy: their elements then
-  std::optional<ExprP> value;              // Value: current SSA value (none: uninitialised)
-  std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
-  Type elem = Type::Double; // LocalArray: element type
-  const Param* param = nullptr;
-  bool kernel_level = false; // Value defined outside every loop
-  // Value: a helper's pointer parameter bound to a caller's local (`&f`),
-  // used only as `*p`; the binding holds the local's value.
-  bool deref_only = false;
-  // Lambda: a functor object (a class with a void operator()), run like a
-  // lambda; its members' bindings (`GradMagnitude{phi, gsq, 0.5 * dxinv}`),
-  // or null for `*this` of a member kernel (whose members are fields_).
-  bool functor = false;
-  std::shared_ptr<std::map<const clang::FieldDecl*, Binding>> fields;
-};
-
-// An error at `loc` through Clang (which shows the line and any macro
-// expansion behind it), ending with its id: "message [dpgen-loop]".
-void report_error(ASTContext& ctx, SourceLocation loc, const std::string& msg,
-                  const std::string& id);
-
-// Thrown to abandon a kernel after its diagnostic has been reported.
-struct Rejected {};
 
 enum class Escape { None, Always };
 class Lowerer {
@@ -189,10 +166,6 @@ private:
 
   Type type_of(const clang::Expr* e);
 
-  // ---- the function header -----------------------------------------------
-
-  void header();
-
   // ---- statements ----------------------------------------------------------
 
   void body(const Stmt* s);
@@ -234,11 +207,6 @@ private:
 
   static bool is_cxx_only_keyword(const std::string& name);
 
-  // The parameters keep their names in every generated function, so a name
-  // the generated code needs for something else is an error: the adjoint or
-  // tangent of another parameter (<array>_adj, <array>_dot), the size dpgen
-  // passes for a vector, the prefix dpgen_, a C++ keyword.
-  void check_parameter_names();
 
   // Every name the generated code takes from the kernel (Kernel::names).
   void collect_names();
@@ -302,164 +270,24 @@ private:
   // remainder of a non-negative value), sums of those. Null otherwise.
   std::optional<ExprP> smallest(const ExprP& e) const;
 
-  // ---- scalar accumulators ------------------------------------------------
-  //
-  // `double s = 0; for (...) s += f(a[i]); out[0] = g(s);` and per-row sums:
-  // `s` becomes a hidden work array H (Kernel::hidden) with one element per
-  // iteration of the loops around the accumulating loop: `H[c] = <s before
-  // the loop>` there, `H[c] += f(...)` in the loop, and `s` after the loop is
-  // the work-array read H[c]. The output rules, the staged adjoint (which
-  // recomputes H) and the tangent then treat it like any work array.
-
+  // Hidden work arrays a kernel may have (accumulators, min/max reductions,
+  // line buffers): k_.hidden's capacity, so pointers into it stay valid.
   static constexpr size_t kMaxAccumulators = 32;
   bool is_hidden(const std::string& array) const {
     return std::any_of(k_.hidden.begin(), k_.hidden.end(),
                        [&](const Param& h) { return h.name == array; });
   }
-  // A min/max reduction (`m = std::max(m, e)`, fmax, a `?:` of m and e, or
-  // `if (e > m) m = e;` in a loop, `m` read after it) is exact in value, and
-  // its derivative goes to the elements equal to the extremum, split equally
-  // among ties (as torch.amax does; independent of the loop's order). Four
-  // hidden arrays per reduction, element c as for a sum:
-  //   S[c] = <m before the loop>                        start (differentiable)
-  //   M[c] = ng(S[c]);  in the loop M[c] max= ng(e)     the scan (constant)
-  //   T[c] = [S == M] + sum over the loop of [e == M]   the ties (constant)
-  //   R[c] = M + [S == M](S - M)/T + sum of [e == M](e - M)/T
-  // where ng() is dpgen_nograd and M, T are read through it: R equals M
-  // exactly (each added term is 0), and dR/de = [e == M]/T. The sums over
-  // the loop are loop nests lowering adds after the user's loop, one per
-  // update, with the update's loops and path (finish_accumulator); `m` after
-  // the loop is R[c].
-  struct ExtremumUpdate {
-    ExprP term;                 // e, lowered in the user's loop
-    std::vector<PathCond> path; // where the update runs
-    std::vector<Loop> loops;    // from the reducing loop in
-    SourcePos pos;
-  };
-  struct Accumulator {
-    std::string array; // the hidden array (a min/max reduction's: its scan M)
-    ExprP index;       // its element: the outer loops' iteration, mixed radix
-    int extremum = 0;  // +1 a max reduction, -1 a min, 0 a sum
-    std::string start, ties, result; // a min/max reduction's S, T, R
-    size_t depth = 0;                // loops_.size() outside the reducing loop
-    std::vector<ExtremumUpdate> updates;
-  };
-  std::map<const VarDecl*, Accumulator> accumulators_;
+  // Scalar accumulators and min/max reductions (lower_reduce.hpp).
+  friend class Reductions;
+  Reductions red_{*this};
 
-  // What a min/max reduction updates: a local `v`, or an output element
-  // (`*err`, `err[0]`, `rowmax[j]`: `element`, of array `decl`) at the same
-  // index in every iteration of the reducing loop.
-  struct ReductionTarget {
-    const ValueDecl* decl = nullptr;
-    const clang::Expr* element = nullptr;
-  };
-  bool same_expr(const clang::Expr* a, const clang::Expr* b) const;
-  bool is_target(const clang::Expr* e, const ReductionTarget& t) const;
-  // The target of assignment `lhs`: a variable, or an element of an array
-  // parameter (`*p`, `p[...]`); decl null for anything else.
-  static ReductionTarget target_of(const clang::Expr* lhs);
-  // The term `e` of a min/max update of `t` (`v = std::max(v, e)`, `v =
-  // fmin(e, v)`, `v = v > e ? v : e`, ...), with `extremum` +1 for max and
-  // -1 for min; null for any other form.
-  const clang::Expr* extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
-                                   int& extremum) const;
-  // `if (e > v) v = e;` (no else; the body the one assignment): its `e`,
-  // target and kind; null for any other if.
-  // `extra`: where the if's condition is `<comparison> && rest` (`if (e > m
-  // && i > 0)`), `rest`, the condition the update runs under (null for a
-  // plain comparison); with no `extra`, such an if is no update.
-  const clang::Expr* extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum,
-                                 const clang::Expr** extra = nullptr) const;
-  // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
-  // `t` of one kind, and there is at least one; 0 otherwise.
-  int extremum_kind(const Stmt* body, const ReductionTarget& t) const;
-  // Min/max reductions into output elements of the loop being lowered
-  // (`*err = fmax(*err, ...)`): the element's store before the loop becomes
-  // the reduction's start, and after the loop the element is stored its
-  // result.
-  struct ElementReduction {
-    ReductionTarget target;
-    std::string array; // the output
-    ExprP index;       // the element
-    Accumulator acc;
-  };
-  std::vector<ElementReduction> element_reductions_;
-  // Starts the element reductions of loop `f` (before its body is lowered).
-  void start_element_reductions(const ForStmt* f, const VarDecl* counter,
-                                const std::set<const VarDecl*>& assigned);
-  void finish_element_reductions(size_t from, SourceLocation loc);
-  // The update `v = max(v, e)` here: the scan's store, and the update kept
-  // for the sums after the loop.
-  void extremum_update(Accumulator& a, const clang::Expr* term, Type t, SourceLocation loc);
-  // After the reducing loop: the ties and the result (the struct above).
-  void finish_extremum(const Accumulator& a, SourceLocation loc);
-  // A read of hidden work array `array` at `idx` by a later nest.
-  ExprP hidden_read(const std::string& array, const ExprP& idx, SourceLocation loc);
-
-  // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
-  // where `e` does not mention v; null for any other form.
-  static const clang::Expr* accumulated_term(const clang::Expr* rhs, const VarDecl* v,
-                                             bool& negate);
-
-  static bool mentions(const Stmt* s, const ValueDecl* v);
-
-  // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
-  // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
-  static bool is_accumulator(const Stmt* body, const VarDecl* v);
-
-  // Makes `v` (a real scalar with a value here) an accumulator of the loop
-  // about to be lowered; false (and nothing done) where it cannot be one.
-  bool start_accumulator(const VarDecl* v, SourceLocation loc, int extremum = 0);
-  std::optional<Accumulator> make_accumulator(const std::string& name, const std::string& spelling,
-                                              ExprP init, int extremum, SourceLocation loc,
-                                              Store* start);
-
-  // After the accumulating loop: `v` is the sum, a read of its element.
-  void finish_accumulator(const VarDecl* v, SourceLocation loc);
 
   void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
   std::set<const CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
 
-  // ---- line buffers (lower_buffer.cpp) ------------------------------------
-  //
-  // A local array of more than 64 elements or of a run-time length (`double
-  // u1[M]`, `double tmp[nx]`) is a hidden work array with one row of its
-  // length per iteration of the loops around all its uses (its row loops):
-  // `tmp[e]` is the element row * length + e. Each element is written with
-  // '=' once per row, inside the buffer, and read only after an earlier loop
-  // of the same row wrote it (or the same iteration stored it).
-  struct Buffer {
-    const VarDecl* decl = nullptr;
-    std::string array;  // the hidden array
-    ExprP length;       // elements per row
-    std::vector<int> decl_loop_ids; // the loops around the declaration
-    // The `for` statements between the declaration and the innermost
-    // statement that holds every use, outermost first.
-    std::vector<const ForStmt*> row_fors;
-    bool placed = false; // row loops fixed (at the first use)
-    size_t depth = 0;    // how many loops of the kernel are row loops
-    std::vector<int> row_ids;
-    ExprP row;
-  };
-  std::map<std::string, Buffer> buffers_; // by hidden array
-  const Buffer* buffer_of(const std::string& array) const;
-  void declare_buffer(const VarDecl* v, QualType elem, ExprP length);
-  // The flat element of index `local` of buffer `p` in this iteration.
-  ExprP buffer_index(const Param* p, const ExprP& local, const clang::Expr* at);
-  std::optional<Poly> buffer_local(const Buffer& b, const ExprP& flat) const;
-  void check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
-                          const clang::Expr* lhs);
-  void check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e);
-  Facts facts_here() const;
-  bool holds_here(const PathCond& pc, const Facts& facts) const;
-  std::vector<std::string> premises_here() const;
-  bool prove_or_check(const std::vector<Poly>& goals, const Facts& facts, const std::string& what,
-                      SourceLocation loc, bool& never);
-  // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`: u names the parameter.
-  bool declare_array_pointer(const VarDecl* v);
-  // The extents of such pointers' variable array types, as evaluated at
-  // their declaration (element() reads them there).
-  std::map<const clang::Expr*, ExprP> vla_sizes_;
+  // Line buffers and pointers to arrays (lower_buffer.hpp).
+  friend class LineBuffers;
+  LineBuffers bufs_{*this};
 
   int loop_step(const clang::Expr* inc, const VarDecl* var);
 
@@ -579,24 +407,6 @@ private:
            isa<CXXThisExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
   }
 
-  // An element of an array parameter: `a[k]`, `a[j][i]` of a multi-dimensional
-  // array (flattened row-major), `*p` (element 0: a scalar passed by pointer).
-  struct Access {
-    const Param* param;
-    ExprP index;
-    // A view of rank 2 or more indexed at a periodic wrap (`q(k, j, im)` with
-    // `im = i == 0 ? nx - 1 : i - 1`): its indices per dimension, some a
-    // select of affine arms. A read is then the select of the reads
-    // (piecewise_read); `index` is the first arms' (a store is an error).
-    std::vector<ExprP> dims;
-  };
-  // The read of a view element at a piecewise index: the selects of the
-  // index, outermost first, made selects of affine reads.
-  ExprP piecewise_read(const Access& a, size_t d, std::vector<ExprP> idx, SourcePos at,
-                       const std::string& source);
-  // The flat index of view `p` at per-dimension indices `idx`.
-  ExprP view_flat(const Param& p, const std::vector<ExprP>& idx);
-
   std::optional<Access> element(const clang::Expr* e);
 
   // ---- member kernels (lower_view.cpp) ---------------------------------------
@@ -605,52 +415,20 @@ private:
   // bindings (Param::member), as env_ binds variables.
   const CXXRecordDecl* self_class_ = nullptr;
   std::map<const FieldDecl*, Binding> fields_;
-  // The members of self_class_ that the kernel's method, the lambdas in it
-  // and the class's call operators name through `this`.
-  std::set<const FieldDecl*> used_fields() const;
   // What `e` names: a variable (env_) or a member of the kernel's object
   // (`u_`, `this->u_`: fields_); null for anything else. Throws Rejected for
   // a poisoned one (its error is reported already).
   const Binding* bound(const clang::Expr* e) const;
 
-  // ---- array views and objects (lower_view.cpp) ----------------------------
+  // ---- the signature (lower_signature.hpp) ----------------------------------
+  friend class Signature;
+  Signature sig_{*this};
 
-  // A class with an operator() or operator[]: a parameter of it is a view.
-  bool is_view_class(const CXXRecordDecl* rd) const;
-  // The Param of a view parameter (Param::view), or of an object one
-  // (Param::object); fail on what is outside the subset.
-  void view_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
-  void object_param(const DeclaratorDecl* p, const std::string& ann, Param& out);
-  std::string mutable_view_type(const DeclaratorDecl* p) const;
-  std::string without_element_const(QualType t, bool& changed) const;
-  // The kernel file's #include line that brings in class `rd` (for the
-  // generated headers); fails if the kernel file defines it.
-  std::string include_for(const CXXRecordDecl* rd, SourceLocation use, const std::string& what);
-  // v(k, j, i) of a view parameter: its flat element; nullopt if `oc` is no
-  // call of a view parameter's operator.
-  std::optional<Access> view_element(const CXXOperatorCallExpr* oc);
-  // The operator() a view is called with maps indices one-to-one (a layout).
-  void check_layout(const FunctionDecl* op, const Param& p, SourceLocation use);
-  std::set<const FunctionDecl*> layouts_ok_;
-  // The row (level 1) or plane (level 2) symbol of a view or row-pointer array.
-  ExprP level_symbol(const Param& p, int level);
-  // A value read from an object or view parameter or an object local
-  // (`bx.smallEnd(0)`, `u.extent(1)`, `lo.x`, `grid.dx`): a constant of the
-  // kernel spelled as C++ over those names; nullopt for anything else.
-  std::optional<ExprP> object_value(const clang::Expr* e);
-  std::optional<std::string> object_text(const clang::Expr* e);
-  std::set<std::string> object_values_; // the integer ones, as spelled
-  // `const auto lo = amrex::lbound(bx);`: a local object made from objects,
-  // declared again in every generated function. False if `v` is none.
-  bool declare_object(const VarDecl* v);
-  std::map<const VarDecl*, std::string> object_locals_; // -> its name in generated code
-  // A helper's parameter of a class type bound to the caller's argument: a
-  // lambda (Binding::Lambda, as a local holding it would be), a view
-  // parameter (Binding::ArrayParam), an object (its spelling, in
-  // object_aliases_: a Binding::Value without value). nullopt: not a class.
-  std::optional<Binding> class_argument(const ParmVarDecl* pd, const clang::Expr* arg,
-                                        const FunctionDecl* helper);
-  std::map<const VarDecl*, std::string> object_aliases_;
+  // ---- array views and objects (lower_view.hpp, lower_object.hpp) ----------
+  friend class Views;
+  friend class Objects;
+  Views views_{*this};
+  Objects objects_{*this};
   // Loops of an inlined helper or lambda (a library parallel-for's): their
   // iterations run in parallel under the library's semantics.
   std::set<const Loop*> library_loops_;
@@ -660,16 +438,9 @@ private:
     if (frames_.empty())
       return true;
     const auto* m = dyn_cast<CXXMethodDecl>(frames_.back().fn);
-    return m && (m->getParent()->isLambda() || is_functor_class(m->getParent())) &&
+    return m && (m->getParent()->isLambda() || objects_.is_functor_class(m->getParent())) &&
            m->getReturnType()->isVoidType();
   }
-  // A class whose operator() returns void: a functor (a parallel-for body).
-  bool is_functor_class(const CXXRecordDecl* rd) const;
-  // The binding of a functor object made by `init`: `*this` of a member
-  // kernel, an aggregate initialization from the kernel's views, arrays and
-  // values; fails on anything else.
-  Binding functor_binding(const clang::Expr* init, const CXXRecordDecl* rd);
-  std::optional<std::string> materialize(const clang::Expr* e, const CXXRecordDecl* rd);
   // The Binding of a lambda expression, its captures by copy recorded
   // (declare_lambda, a lambda passed to a helper).
   Binding lambda_binding(const LambdaExpr* le, const std::string& name);
@@ -679,9 +450,6 @@ private:
 
   // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
   const Param* scalar_ref_param(const clang::Expr* e) const;
-  // The globals the kernel body reads, as Params (Param::global), bound in
-  // header() like parameters.
-  void globals(const Stmt* body);
   std::map<std::string, const VarDecl*> global_decls_;
   const Param* array_base(const clang::Expr* base);
 

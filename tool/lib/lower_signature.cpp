@@ -1,5 +1,5 @@
 // Lowering, the signature: parameters, their annotations and shapes, and the
-// names generated code will need (lower_impl.hpp).
+// names generated code will need (lower_signature.hpp).
 #include "lower_impl.hpp"
 
 #include "print.hpp"
@@ -8,69 +8,56 @@
 
 namespace dpgen::lowering {
 
-ExprP Lowerer::opaque_symbol(const std::string& name, long long value) {
-  auto l = std::make_shared<LocalVar>();
-  l->name = name;
-  l->type_name = "std::ptrdiff_t";
-  l->def = int_const(value);
-  l->opaque = true;
-  l->id = next_local_id_++;
-  l->kernel_level = true;
-  local_names_.insert(l->name);
-  k_.kernel_locals.push_back(l);
-  return local_ref(l);
-}
-
-void Lowerer::header() {
+void Signature::header() {
   // A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
   // Heat1D): the members it reads are parameters before the method's own,
   // the annotated ones arrays (Kernel::member_class).
-  const auto* method = dyn_cast<CXXMethodDecl>(fn_);
+  const auto* method = dyn_cast<CXXMethodDecl>(L.fn_);
   if (method && (method->isStatic() || method->getParent()->isLambda()))
     method = nullptr; // (a static member function is a free function in a class)
   if (method) {
     const CXXRecordDecl* rd = method->getParent();
     if (rd->isDependentContext() || isa<ClassTemplateSpecializationDecl>(rd))
-      fail(fn_->getLocation(), "a member kernel of a class template is outside the kernel "
+      L.fail(L.fn_->getLocation(), "a member kernel of a class template is outside the kernel "
                                "subset: make the kernel a member of a class",
            "dpgen-signature");
     if (isa<CXXConstructorDecl>(method) || isa<CXXDestructorDecl>(method) ||
         method->isOverloadedOperator())
-      fail(fn_->getLocation(), "a member kernel is a named method (not a constructor, "
+      L.fail(L.fn_->getLocation(), "a member kernel is a named method (not a constructor, "
                                "destructor or operator)",
            "dpgen-signature");
-    self_class_ = rd;
+    L.self_class_ = rd;
   }
   // (a template kernel is lowered per instantiation, find.cpp)
-  if (fn_->isTemplated() || (fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate &&
-                             fn_->getTemplatedKind() !=
+  if (L.fn_->isTemplated() || (L.fn_->getTemplatedKind() != FunctionDecl::TK_NonTemplate &&
+                             L.fn_->getTemplatedKind() !=
                                  FunctionDecl::TK_FunctionTemplateSpecialization))
-    fail(fn_->getLocation(), "this kind of template kernel is outside the kernel subset "
+    L.fail(L.fn_->getLocation(), "this kind of template kernel is outside the kernel subset "
                              "(a function template at namespace scope is in it)",
          "dpgen-signature");
-  QualType ret = fn_->getReturnType();
+  QualType ret = L.fn_->getReturnType();
   std::optional<Type> returns;
   if (!ret->isVoidType()) {
-    returns = scalar_type(ret.getUnqualifiedType());
+    returns = L.scalar_type(ret.getUnqualifiedType());
     if (!returns || !is_real(*returns))
-      fail(fn_->getLocation(), fmt::format("a DPGEN_KERNEL returns void, float or double, not "
+      L.fail(L.fn_->getLocation(), fmt::format("a DPGEN_KERNEL returns void, float or double, not "
                                            "'{}'; other results go to DPGEN_OUT arrays",
                                            ret.getAsString()),
            "dpgen-signature");
   }
-  if (fn_->isVariadic())
-    fail(fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
+  if (L.fn_->isVariadic())
+    L.fail(L.fn_->getLocation(), "a DPGEN_KERNEL must not be variadic", "dpgen-signature");
 
-  k_.name = fn_->getNameAsString();
-  if (self_class_) {
-    k_.member_class = self_class_->getQualifiedNameAsString();
-    k_.member_method = k_.name;
-    k_.name = fmt::format("{}_{}_members", self_class_->getNameAsString(), k_.member_method);
+  L.k_.name = L.fn_->getNameAsString();
+  if (L.self_class_) {
+    L.k_.member_class = L.self_class_->getQualifiedNameAsString();
+    L.k_.member_method = L.k_.name;
+    L.k_.name = fmt::format("{}_{}_members", L.self_class_->getNameAsString(), L.k_.member_method);
   }
-  k_.pos = pos(fn_->getLocation());
-  for (const DeclContext* dc = fn_->getDeclContext(); dc; dc = dc->getParent())
+  L.k_.pos = L.pos(L.fn_->getLocation());
+  for (const DeclContext* dc = L.fn_->getDeclContext(); dc; dc = dc->getParent())
     if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
-      k_.namespaces.insert(k_.namespaces.begin(), ns->getNameAsString());
+      L.k_.namespaces.insert(L.k_.namespaces.begin(), ns->getNameAsString());
 
   bool any_in = false, any_out = false;
   // One parameter; an error in it is reported, the parameter poisoned (its
@@ -86,13 +73,13 @@ void Lowerer::header() {
       // generated functions take it as well, under a name of their own.
       const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
       if (!rd || !rd->hasDefinition() || !rd->isEmpty() || !ann.empty())
-        fail(p->getLocation(), "every kernel parameter needs a name (an unnamed one may only "
+        L.fail(p->getLocation(), "every kernel parameter needs a name (an unnamed one may only "
                                "be an unannotated tag: a value of an empty class type)",
              "dpgen-signature");
       // Generated code takes it by const reference, so that a declaration of
       // its class is enough: `struct XDir;` (or <type_traits> for
       // std::integral_constant and its aliases).
-      std::string type = spelled(p->getType().getNonReferenceType().getUnqualifiedType());
+      std::string type = Lowerer::spelled(p->getType().getNonReferenceType().getUnqualifiedType());
       if (type.rfind("std::integral_constant<", 0) == 0 || type == "std::true_type" ||
           type == "std::false_type") {
         out.tag_declaration = "#include <type_traits>";
@@ -105,7 +92,7 @@ void Lowerer::header() {
             decl = fmt::format("namespace {} {{ {} }}", ns->getNameAsString(), decl);
         out.tag_declaration = decl;
       } else {
-        fail(p->getLocation(), fmt::format("tag parameter of type '{}': a tag is a class at "
+        L.fail(p->getLocation(), fmt::format("tag parameter of type '{}': a tag is a class at "
                                            "namespace scope or a std::integral_constant",
                                            type),
              "dpgen-signature");
@@ -117,61 +104,61 @@ void Lowerer::header() {
       out.elem_name = type;
       out.spelling = "const " + type + "&";
       out.declaration = type + " " + out.name;
-      k_.params.push_back(out);
+      L.k_.params.push_back(out);
       return;
     }
     QualType q = p->getType();
     std::optional<Param> size_param;
     std::optional<Param> inout_twin;
     // std::span<T> u (by value; C++20), with the element's constness.
-    QualType span_elem = q->isReferenceType() ? QualType() : vector_element(q, "span");
+    QualType span_elem = q->isReferenceType() ? QualType() : L.vector_element(q, "span");
     // A scalar by reference: `const double& dx` (a value, like `double dx`),
     // `DPGEN_OUT double& mass` / `DPGEN_IN const double& c` (a one-element
     // array, Param::scalar_ref).
     std::optional<Type> ref_scalar =
-        q->isReferenceType() ? scalar_type(q.getNonReferenceType().getUnqualifiedType())
+        q->isReferenceType() ? L.scalar_type(q.getNonReferenceType().getUnqualifiedType())
                              : std::nullopt;
     const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
-    if (record && span_elem.isNull() && vector_element(q.getNonReferenceType()).isNull() &&
+    if (record && span_elem.isNull() && L.vector_element(q.getNonReferenceType()).isNull() &&
         !record->isLambda()) {
       // An array view (Array4, Kokkos::View, mdspan, ...), or an object
       // of constants (AMReX's Box).
-      if (is_view_class(record))
-        view_param(p, ann, out);
+      if (L.views_.is_view_class(record))
+        L.views_.view_param(p, ann, out);
       else
-        object_param(p, ann, out);
+        L.objects_.object_param(p, ann, out);
       any_in = any_in || out.kind == ParamKind::In;
       any_out = any_out || out.kind == ParamKind::Out;
     } else if (ref_scalar && *ref_scalar != Type::Bool &&
         (ann == "dpgen.in" || ann == "dpgen.out")) {
       QualType elem = q.getNonReferenceType();
       if (!is_real(*ref_scalar))
-        fail(p->getLocation(), fmt::format("{} parameter '{}' must be float or double",
+        L.fail(p->getLocation(), fmt::format("{} parameter '{}' must be float or double",
                                            ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT", out.name),
              "dpgen-signature");
       if (ann == "dpgen.out" && elem.isConstQualified())
-        fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is a const reference",
+        L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is a const reference",
                                            out.name), "dpgen-signature");
       out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
       (ann == "dpgen.in" ? any_in : any_out) = true;
       out.elem = *ref_scalar;
-      out.elem_name = spelled(elem.getUnqualifiedType());
+      out.elem_name = Lowerer::spelled(elem.getUnqualifiedType());
       out.scalar_ref = true;
     } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
       // const double& dx: read like a value; the adjoint takes it the same way.
       out.kind = ParamKind::Scalar;
       out.elem = *ref_scalar;
-      out.elem_name = spelled(q.getNonReferenceType().getUnqualifiedType());
+      out.elem_name = Lowerer::spelled(q.getNonReferenceType().getUnqualifiedType());
       out.is_unsigned = *ref_scalar == Type::Int &&
                         q.getNonReferenceType()->isUnsignedIntegerType();
     } else if (ref_scalar && ann.empty()) {
-      fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+      L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
                                          "mark it DPGEN_OUT, or make it const",
                                          out.name), "dpgen-signature");
     } else if (q->isReferenceType() || !span_elem.isNull()) {
-      QualType elem = !span_elem.isNull() ? span_elem : vector_element(q.getNonReferenceType());
+      QualType elem = !span_elem.isNull() ? span_elem : L.vector_element(q.getNonReferenceType());
       if (elem.isNull())
-        fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
+        L.fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
                                            "and arrays as pointers, std::vector<T>& or "
                                            "std::span<T>",
                                            out.name), "dpgen-signature");
@@ -182,30 +169,30 @@ void Lowerer::header() {
                                           : q.getNonReferenceType().isConstQualified();
       elem = elem.getUnqualifiedType();
       out.span = !span_elem.isNull();
-      auto et = scalar_type(elem);
+      auto et = L.scalar_type(elem);
       if (!et || *et == Type::Bool)
-        fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
+        L.fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
                                            "float, double or an integer type",
                                            out.name, elem.getAsString()), "dpgen-signature");
       out.elem = *et;
-      out.elem_name = spelled(elem);
+      out.elem_name = Lowerer::spelled(elem);
       out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
       if (ann == "dpgen.inout")
-        fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+        L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
                                            "to non-const float or double (pass {}.data())",
                                            out.name, out.name), "dpgen-signature");
       if (ann == "dpgen.in" || ann == "dpgen.out") {
         if (!is_real(*et))
-          fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
+          L.fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
                                              ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
                                              out.name), "dpgen-signature");
         if (ann == "dpgen.out" && is_const)
-          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
+          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
         out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
         (ann == "dpgen.in" ? any_in : any_out) = true;
       } else {
         if (!is_const)
-          fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+          L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
                                              "mark it DPGEN_OUT, or make it const",
                                              out.name), "dpgen-signature");
         out.kind = ParamKind::ConstArray;
@@ -224,11 +211,11 @@ void Lowerer::header() {
       // or, in C, double a[n][n] (a variable-length row: flat in the
       // generated signature).
       bool const_rows = elem.isConstQualified();
-      while (const clang::ArrayType* at = ctx_.getAsArrayType(elem)) {
+      while (const clang::ArrayType* at = L.ctx_.getAsArrayType(elem)) {
         if (const auto* c = dyn_cast<ConstantArrayType>(at))
           out.rows += fmt::format("[{}]", c->getSize().getZExtValue());
         else if (!isa<VariableArrayType>(at))
-          fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
+          L.fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
                                              "kernel subset",
                                              out.name), "dpgen-signature");
         elem = at->getElementType();
@@ -244,43 +231,43 @@ void Lowerer::header() {
           elem = elem->getPointeeType();
           out.plane_pointers = true;
         }
-        if (elem->isPointerType() || ctx_.getAsArrayType(elem))
-          fail(p->getLocation(),
+        if (elem->isPointerType() || L.ctx_.getAsArrayType(elem))
+          L.fail(p->getLocation(),
                fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
                            "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
                            "flat pointer indexed {}[(k * ny + j) * nx + i]",
                            out.name, q.getAsString(), out.name, out.name, out.name), "dpgen-signature");
         if (ann == "dpgen.inout")
-          fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
+          L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
                                              "pointer to non-const float or double",
                                              out.name), "dpgen-signature");
         out.row_pointers = true;
       } else if (elem->isPointerType()) {
-        fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
+        L.fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
                                            "row pointers, outside the kernel subset",
                                            out.name, q.getAsString()), "dpgen-signature");
       }
-      auto et = scalar_type(elem);
+      auto et = L.scalar_type(elem);
       // (a bool mask, `const bool* solid`, is a constant array: not differentiated)
       if (!et || (*et == Type::Bool && (!ann.empty() && ann != "dpgen.const")))
-        fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
+        L.fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
                                            "float, double or an integer type (or bool, "
                                            "for an unmarked mask)",
                                            out.name,
-                                           elem.getAsString(PrintingPolicy(ctx_.getLangOpts()))),
+                                           elem.getAsString(PrintingPolicy(L.ctx_.getLangOpts()))),
              "dpgen-signature");
       out.elem = *et;
-      out.elem_name = spelled(elem);
+      out.elem_name = Lowerer::spelled(elem);
       if (ann == "dpgen.in") {
         if (!is_real(*et))
-          fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
+          L.fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
                                              "double, not '{}'",
                                              out.name, elem.getAsString()), "dpgen-signature");
         out.kind = ParamKind::In;
         any_in = true;
       } else if (ann == "dpgen.inout") {
         if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
-          fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+          L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
                                              "to non-const float or double",
                                              out.name), "dpgen-signature");
         out.kind = ParamKind::In;
@@ -296,293 +283,235 @@ void Lowerer::header() {
         inout_twin = twin;
       } else if (ann == "dpgen.out") {
         if (!is_real(*et))
-          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
+          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
                                              "double, not '{}'",
                                              out.name, elem.getAsString()), "dpgen-signature");
         if (elem.isConstQualified())
-          fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
+          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
         out.kind = ParamKind::Out;
         any_out = true;
       } else {
         out.kind = ParamKind::ConstArray;
       }
     } else {
-      auto t = scalar_type(q);
+      auto t = L.scalar_type(q);
       if (!t)
-        fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
+        L.fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
                                            "subset",
                                            out.name, q.getAsString()), "dpgen-signature");
       if (!ann.empty() && ann != "dpgen.const")
-        fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
+        L.fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
                                            "parameters (pass a one-element array to "
                                            "differentiate a scalar)",
                                            out.name), "dpgen-signature");
       out.kind = ParamKind::Scalar;
       out.elem = *t;
-      out.elem_name = spelled(q);
+      out.elem_name = Lowerer::spelled(q);
       out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
     }
-    out.spelling = out.view ? out.view_type : spelled(p->getType(), /*keep_const=*/true);
+    out.spelling = out.view ? out.view_type : Lowerer::spelled(p->getType(), /*keep_const=*/true);
     {
       std::string decl;
       llvm::raw_string_ostream os(decl);
-      PrintingPolicy policy(ctx_.getLangOpts());
+      PrintingPolicy policy(L.ctx_.getLangOpts());
       policy.SuppressTagKeyword = true;
       p->getType().getCanonicalType().print(os, policy, out.name);
       out.declaration = os.str();
     }
-    k_.params.push_back(out);
+    L.k_.params.push_back(out);
     if (inout_twin) {
-      for (const auto& other : k_.params)
+      for (const auto& other : L.k_.params)
         if (other.name == inout_twin->name)
-          fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
+          L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
                                              "for the new values of in-place array '{}'",
                                              other.name, out.name), "dpgen-signature");
-      k_.params.push_back(*inout_twin);
+      L.k_.params.push_back(*inout_twin);
       inout_twin.reset();
     }
     if (size_param) {
-      for (const auto& other : k_.params)
+      for (const auto& other : L.k_.params)
         if (other.name == size_param->name)
-          fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
+          L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
                                              "for vector '{}'",
                                              other.name, out.name), "dpgen-signature");
-      k_.params.push_back(*size_param);
+      L.k_.params.push_back(*size_param);
     }
   };
   bool params_ok = true;
   // The members first, in declaration order: those the method (and the
   // lambdas and call operators of its class it runs) reads or writes.
-  if (self_class_) {
+  if (L.self_class_) {
     std::set<const FieldDecl*> used = used_fields();
-    for (const FieldDecl* f : self_class_->fields()) {
+    for (const FieldDecl* f : L.self_class_->fields()) {
       if (!used.count(f) && annotation(f).empty()) // (every annotated one: the signature's)
         continue;
       try {
-        size_t before = k_.params.size();
+        size_t before = L.k_.params.size();
         parameter(f);
-        for (size_t i = before; i < k_.params.size(); ++i)
-          k_.params[i].member = true;
+        for (size_t i = before; i < L.k_.params.size(); ++i)
+          L.k_.params[i].member = true;
       } catch (const Rejected&) {
-        failed_ = true;
+        L.failed_ = true;
         params_ok = false;
-        poisoned_.insert(f);
+        L.poisoned_.insert(f);
       }
     }
   }
-  for (const ParmVarDecl* p : fn_->parameters()) {
+  for (const ParmVarDecl* p : L.fn_->parameters()) {
     try {
       parameter(p);
     } catch (const Rejected&) {
-      failed_ = true;
+      L.failed_ = true;
       params_ok = false;
-      poisoned_.insert(p);
+      L.poisoned_.insert(p);
     }
   }
   if (returns) { // the return value: an output after every parameter
     Param r;
-    r.name = (self_class_ ? k_.member_method : k_.name) + "_return";
+    r.name = (L.self_class_ ? L.k_.member_method : L.k_.name) + "_return";
     r.kind = ParamKind::Out;
     r.elem = *returns;
-    r.elem_name = spelled(ret.getUnqualifiedType());
+    r.elem_name = Lowerer::spelled(ret.getUnqualifiedType());
     r.spelling = r.elem_name + "&";
     r.declaration = r.elem_name + "& " + r.name;
     r.scalar_ref = true;
     r.returned = true;
-    for (const auto& other : k_.params)
+    for (const auto& other : L.k_.params)
       if (other.name == r.name)
-        fail(fn_->getLocation(), fmt::format("parameter '{}' has the name dpgen gives the return "
+        L.fail(L.fn_->getLocation(), fmt::format("parameter '{}' has the name dpgen gives the return "
                                              "value of '{}'; rename it",
-                                             r.name, k_.name),
+                                             r.name, L.k_.name),
              "dpgen-name");
-    k_.params.push_back(r);
-    k_.return_type = r.elem_name;
+    L.k_.params.push_back(r);
+    L.k_.return_type = r.elem_name;
     any_out = true;
   }
-  globals(fn_->getBody());
-  for (const auto& p : k_.params)
+  globals(L.fn_->getBody());
+  for (const auto& p : L.k_.params)
     any_in = any_in || (p.global && p.kind == ParamKind::In);
   check_parameter_names();
   // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
   if (!any_in && params_ok)
-    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
+    L.fail(L.fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                          "nothing to differentiate",
-                                         k_.display_name()), "dpgen-signature");
+                                         L.k_.display_name()), "dpgen-signature");
   if (!any_out && params_ok)
-    fail(fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", k_.display_name()), "dpgen-signature");
+    L.fail(L.fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", L.k_.display_name()), "dpgen-signature");
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
   // code, kRowSymbolValue, is only ever compared, never used as an address).
-  for (const auto& p : k_.params)
+  for (const auto& p : L.k_.params)
     if (p.row_pointers) {
-      row_lengths_[p.name] = opaque_symbol(
+      L.row_lengths_[p.name] = L.opaque_symbol(
           row_symbol(p.name), p.plane_pointers ? kPlaneRowSymbolValue : kRowSymbolValue);
       if (p.plane_pointers)
-        plane_lengths_[p.name] = opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
+        L.plane_lengths_[p.name] = L.opaque_symbol(plane_symbol(p.name), kPlaneSymbolValue);
     }
   // Unsigned integer parameters (`unsigned n`, `size_t n`, a vector's
   // size) are read through a signed 64-bit copy defined first in every
   // generated function (`const std::ptrdiff_t n_signed = n;`): index
   // arithmetic in the adjoint goes below zero (`-n + 1`, `i = c_i + n - 1`),
   // which unsigned arithmetic would wrap to huge values.
-  for (const auto& p : k_.params)
+  for (const auto& p : L.k_.params)
     if (p.kind == ParamKind::Scalar && p.elem == Type::Int && p.is_unsigned) {
       auto l = std::make_shared<LocalVar>();
       l->name = p.name + "_signed";
-      for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
-        l->name = fmt::format("{}_signed_{}", unprefixed(p.name), n);
+      for (int n = 1; L.is_reserved(l->name) || L.local_names_.count(l->name); ++n)
+        l->name = fmt::format("{}_signed_{}", L.unprefixed(p.name), n);
       l->type_name = "std::ptrdiff_t";
       l->def = param(p.name, Type::Int);
-      l->id = next_local_id_++;
+      l->id = L.next_local_id_++;
       l->kernel_level = true;
       l->opaque = true;
-      local_names_.insert(l->name);
-      k_.kernel_locals.push_back(l);
-      signed_views_[p.name] = local_ref(l);
+      L.local_names_.insert(l->name);
+      L.k_.kernel_locals.push_back(l);
+      L.signed_views_[p.name] = local_ref(l);
     }
-  k_.hidden.reserve(kMaxAccumulators); // (start_accumulator: pointers stay valid)
+  L.k_.hidden.reserve(Lowerer::kMaxAccumulators); // (start_accumulator: pointers stay valid)
   // Bind parameters (after the vector is complete, so pointers stay valid).
   // By name: a rejected parameter has no Param (and is poisoned).
-  for (const auto& p : k_.params) {
+  for (const auto& p : L.k_.params) {
     if (p.synthetic || !p.twin_of.empty())
       continue;
     Binding b;
     b.kind = p.kind == ParamKind::Scalar ? Binding::ScalarParam : Binding::ArrayParam;
     b.param = &p;
     if (p.global) {
-      env_[global_decls_.at(p.name)] = b;
+      L.env_[L.global_decls_.at(p.name)] = b;
       continue;
     }
     if (p.member) {
-      for (const FieldDecl* f : self_class_->fields())
-        if (f->getNameAsString() == p.name && !poisoned_.count(f))
-          fields_[f] = b;
+      for (const FieldDecl* f : L.self_class_->fields())
+        if (f->getNameAsString() == p.name && !L.poisoned_.count(f))
+          L.fields_[f] = b;
       continue;
     }
-    for (const ParmVarDecl* decl : fn_->parameters())
-      if (decl->getNameAsString() == p.name && !poisoned_.count(decl))
-        env_[decl] = b;
+    for (const ParmVarDecl* decl : L.fn_->parameters())
+      if (decl->getNameAsString() == p.name && !L.poisoned_.count(decl))
+        L.env_[decl] = b;
   }
   // Mixed precision between inputs and outputs is almost always a mistake.
   std::optional<Type> real;
-  for (const auto& p : k_.params)
+  for (const auto& p : L.k_.params)
     if (p.kind == ParamKind::In || p.kind == ParamKind::Out) {
       if (real && *real != p.elem)
-        fail(fn_->getLocation(), fmt::format("kernel '{}' mixes float and double arrays "
+        L.fail(L.fn_->getLocation(), fmt::format("kernel '{}' mixes float and double arrays "
                                              "('{}' is {}); use one precision for all "
                                              "DPGEN_IN and DPGEN_OUT arrays",
-                                             k_.name, p.name, type_spelling(p.elem)), "dpgen-signature");
+                                             L.k_.name, p.name, type_spelling(p.elem)), "dpgen-signature");
       real = p.elem;
     }
-}
-
-// Names a local or a loop counter must not keep (it is renamed <name>_1):
-// a parameter, an enclosing counter, a name the signature rule gives an
-// adjoint or tangent parameter (<array>_adj, <array>_dot), the prefix
-// dpgen_ of generated helpers, or a C++ keyword (a C kernel's `new`: the
-// generated code is C++).
-bool Lowerer::is_reserved(const std::string& name) const {
-  if (k_.find_param(name) || contract_name_of(name) || name.rfind("dpgen_", 0) == 0 ||
-      is_cxx_only_keyword(name))
-    return true;
-  for (const auto& l : loops_)
-    if (l->var == name)
-      return true;
-  return false;
-}
-
-// The array parameter whose adjoint or tangent the signature rule names
-// `name` (<array>_adj, <array>_dot), or null.
-const Param* Lowerer::contract_name_of(const std::string& name) const {
-  for (const char* suffix : {"_adj", "_dot"}) {
-    size_t n = std::char_traits<char>::length(suffix);
-    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
-      if (const Param* p = k_.find_param(name.substr(0, name.size() - n));
-          p && p->kind != ParamKind::Scalar)
-        return p;
-  }
-  return nullptr;
-}
-
-bool Lowerer::is_cxx_only_keyword(const std::string& name) {
-  static const std::set<std::string> keywords = {
-      "alignas",    "alignof",      "and",       "and_eq",      "asm",
-      "bitand",     "bitor",        "bool",      "catch",       "char8_t",
-      "char16_t",   "char32_t",     "class",     "compl",       "concept",
-      "consteval",  "constexpr",    "constinit", "const_cast",  "co_await",
-      "co_return",  "co_yield",     "decltype",  "delete",      "dynamic_cast",
-      "explicit",   "export",       "false",     "friend",      "mutable",
-      "namespace",  "new",          "noexcept",  "not",         "not_eq",
-      "nullptr",    "operator",     "or",        "or_eq",       "private",
-      "protected",  "public",       "reinterpret_cast", "requires", "static_assert",
-      "static_cast", "template",    "this",      "thread_local", "throw",
-      "true",       "try",          "typeid",    "typename",    "using",
-      "virtual",    "wchar_t",      "xor",       "xor_eq"};
-  return keywords.count(name) > 0;
 }
 
 // The parameters keep their names in every generated function, so a name
 // the generated code needs for something else is an error: the adjoint or
 // tangent of another parameter (<array>_adj, <array>_dot), the size dpgen
 // passes for a vector, the prefix dpgen_, a C++ keyword.
-void Lowerer::check_parameter_names() {
-  for (const ParmVarDecl* decl : fn_->parameters()) {
+void Signature::check_parameter_names() {
+  for (const ParmVarDecl* decl : L.fn_->parameters()) {
     std::string name = decl->getNameAsString();
-    if (const Param* a = contract_name_of(name))
-      error(decl->getLocation(),
+    if (const Param* a = L.contract_name_of(name))
+      L.error(decl->getLocation(),
             fmt::format("parameter '{}' has the name that the generated {} gives the {} of "
                         "array '{}'; rename it",
                         name, name.back() == 'j' ? "adjoint" : "tangent",
                         name.back() == 'j' ? "adjoint" : "tangent", a->name), "dpgen-name");
     else if (name.rfind("dpgen_", 0) == 0)
-      error(decl->getLocation(), fmt::format("parameter '{}': names starting with 'dpgen_' "
+      L.error(decl->getLocation(), fmt::format("parameter '{}': names starting with 'dpgen_' "
                                              "are reserved for generated code; rename it",
                                              name), "dpgen-name");
-    else if (is_cxx_only_keyword(name))
-      error(decl->getLocation(), fmt::format("parameter '{}' is a C++ keyword, and the "
+    else if (L.is_cxx_only_keyword(name))
+      L.error(decl->getLocation(), fmt::format("parameter '{}' is a C++ keyword, and the "
                                              "generated adjoint is C++; rename it",
                                              name), "dpgen-name");
   }
-  for (const auto& p : k_.params)
+  for (const auto& p : L.k_.params)
     if (p.synthetic)
-      for (const auto& other : k_.params)
+      for (const auto& other : L.k_.params)
         if (!other.synthetic && other.name == p.name)
-          for (const ParmVarDecl* decl : fn_->parameters())
+          for (const ParmVarDecl* decl : L.fn_->parameters())
             if (decl->getNameAsString() == p.name)
-              error(decl->getLocation(),
+              L.error(decl->getLocation(),
                     fmt::format("parameter '{}' clashes with the size dpgen passes for vector "
                                 "'{}'; rename it",
                                 p.name, p.name.substr(0, p.name.size() - 5)), "dpgen-name");
 }
 
-// Every name the generated code takes from the kernel (Kernel::names).
-void Lowerer::collect_names() {
-  for (const auto& p : k_.params) {
-    k_.names.insert(p.name);
-    if (p.kind != ParamKind::Scalar) {
-      k_.names.insert(p.name + "_adj");
-      k_.names.insert(p.name + "_dot");
-    }
-  }
-  k_.names.insert(local_names_.begin(), local_names_.end());
-  k_.names.insert(loop_names_.begin(), loop_names_.end());
-}
-
-void Lowerer::globals(const Stmt* body) {
+void Signature::globals(const Stmt* body) {
   std::vector<const VarDecl*> found;
   std::function<void(const Stmt*)> scan = [&](const Stmt* s) {
     if (!s)
       return;
     if (const auto* r = dyn_cast<DeclRefExpr>(s))
       if (const auto* v = dyn_cast<VarDecl>(r->getDecl());
-          v && v->hasGlobalStorage() && !v->isStaticLocal() && !global_decls_.count(v->getNameAsString()) &&
+          v && v->hasGlobalStorage() && !v->isStaticLocal() && !L.global_decls_.count(v->getNameAsString()) &&
           std::find(found.begin(), found.end(), v) == found.end())
         found.push_back(v);
     for (const Stmt* c : s->children())
       scan(c);
   };
   scan(body);
-  PrintingPolicy policy(ctx_.getLangOpts());
+  PrintingPolicy policy(L.ctx_.getLangOpts());
   policy.SuppressTagKeyword = true;
   policy.Bool = true;
   for (const VarDecl* v : found) {
@@ -603,9 +532,9 @@ void Lowerer::globals(const Stmt* body) {
     QualType elem = q->isPointerType() ? q->getPointeeType()
                     : array ? QualType(q->getArrayElementTypeNoTypeQual(), 0)
                             : q;
-    auto t = scalar_type(elem.getUnqualifiedType());
+    auto t = L.scalar_type(elem.getUnqualifiedType());
     if (!t || elem->isPointerType() || elem->isArrayType()) {
-      error(v->getLocation(), fmt::format("global '{}' of type '{}' is outside the kernel "
+      L.error(v->getLocation(), fmt::format("global '{}' of type '{}' is outside the kernel "
                                           "subset (a scalar, a pointer to numbers or a "
                                           "one-dimensional array)",
                                           g.name, q.getAsString(policy)),
@@ -613,11 +542,11 @@ void Lowerer::globals(const Stmt* body) {
       continue;
     }
     g.elem = *t;
-    g.elem_name = spelled(elem.getUnqualifiedType());
+    g.elem_name = Lowerer::spelled(elem.getUnqualifiedType());
     g.spelling = g.elem_name;
     if (ann == "dpgen.in") {
       if (!array || !is_real(*t) || elem.isConstQualified()) {
-        error(v->getLocation(), fmt::format("DPGEN_IN global '{}' must be a pointer to or an "
+        L.error(v->getLocation(), fmt::format("DPGEN_IN global '{}' must be a pointer to or an "
                                             "array of non-const float or double",
                                             g.name),
               "dpgen-global");
@@ -625,7 +554,7 @@ void Lowerer::globals(const Stmt* body) {
       }
       g.kind = ParamKind::In;
     } else if (!ann.empty()) {
-      error(v->getLocation(), fmt::format("global '{}' is marked {}; a global is read only: "
+      L.error(v->getLocation(), fmt::format("global '{}' is marked {}; a global is read only: "
                                           "unmarked (a constant) or DPGEN_IN (differentiated)",
                                           g.name, ann == "dpgen.out" ? "DPGEN_OUT" : ann),
             "dpgen-global");
@@ -642,7 +571,7 @@ void Lowerer::globals(const Stmt* body) {
       // linkage: the generated files hold a copy of its values.
       const APValue* val = v->evaluateValue();
       if (!val || !val->isArray()) {
-        error(v->getLocation(), fmt::format("constant global array '{}' has no value dpgen "
+        L.error(v->getLocation(), fmt::format("constant global array '{}' has no value dpgen "
                                             "can read (initialise it with constants)",
                                             g.name),
               "dpgen-global");
@@ -658,7 +587,7 @@ void Lowerer::globals(const Stmt* body) {
       g.global_declaration = fmt::format("static {} = {{{}}};", decl, fmt::join(vals, ", "));
     } else {
       if (v->getStorageClass() == SC_Static || v->isInAnonymousNamespace()) {
-        error(v->getLocation(), fmt::format("global '{}' is static: the generated files, "
+        L.error(v->getLocation(), fmt::format("global '{}' is static: the generated files, "
                                             "another translation unit, cannot read it; give it "
                                             "external linkage or pass it as a parameter",
                                             g.name),
@@ -668,13 +597,44 @@ void Lowerer::globals(const Stmt* body) {
       g.global_declaration = "extern " + decl + ";";
     }
     g.declaration = decl;
-    for (const auto& other : k_.params)
+    for (const auto& other : L.k_.params)
       if (other.name == g.name)
-        error(v->getLocation(), fmt::format("global '{}' has the name of a parameter", g.name),
+        L.error(v->getLocation(), fmt::format("global '{}' has the name of a parameter", g.name),
               "dpgen-global");
-    global_decls_[g.name] = v;
-    k_.params.push_back(g);
+    L.global_decls_[g.name] = v;
+    L.k_.params.push_back(g);
   }
+}
+
+// The members of the kernel's class it names through `this` (lower_impl.hpp).
+std::set<const FieldDecl*> Signature::used_fields() const {
+  std::set<const FieldDecl*> out;
+  std::set<const FunctionDecl*> seen;
+  std::function<void(const Stmt*)> walk = [&](const Stmt* s) {
+    if (!s)
+      return;
+    if (const auto* mc = dyn_cast<CXXMemberCallExpr>(s)) // a method on this: its body too
+      if (const CXXMethodDecl* md = mc->getMethodDecl();
+          md && md->getParent() == L.self_class_ && md->hasBody() &&
+          isa<CXXThisExpr>(mc->getImplicitObjectArgument()->IgnoreParenImpCasts()) &&
+          seen.insert(md).second)
+        walk(md->getBody());
+    if (const auto* m = dyn_cast<MemberExpr>(s))
+      if (const auto* f = dyn_cast<FieldDecl>(m->getMemberDecl());
+          f && f->getParent() == L.self_class_ &&
+          isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
+        out.insert(f);
+    if (const auto* le = dyn_cast<LambdaExpr>(s))
+      walk(le->getBody());
+    for (const Stmt* c : s->children())
+      walk(c);
+  };
+  walk(L.fn_->getBody());
+  // the class's call operators (a functor run by a parallel-for on *this)
+  for (const CXXMethodDecl* m : L.self_class_->methods())
+    if (m->isOverloadedOperator() && m->getOverloadedOperator() == OO_Call && m->hasBody())
+      walk(m->getBody());
+  return out;
 }
 
 } // namespace dpgen::lowering

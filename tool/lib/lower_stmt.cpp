@@ -135,31 +135,8 @@ Escape Lowerer::if_stmt(const IfStmt* s) {
     return branch ? lower_recovering(branch) : Escape::None;
   }
   // `if (e > m) m = e;` of a max reduction (min: `if (e < m) m = e;`): an update.
-  {
-    ReductionTarget target;
-    int kind = 0;
-    const clang::Expr* rest = nullptr;
-    const clang::Expr* term = extremum_if(s, target, kind, &rest);
-    // (under the other conjunct, if any: `if (e > m && i > 0)`)
-    auto update = [&](Accumulator& a, Type t) {
-      size_t depth = path_.size();
-      if (rest)
-        path_.push_back({cond(rest), true});
-      extremum_update(a, term, t, s->getBeginLoc());
-      path_.resize(depth);
-    };
-    const auto* v = term && !target.element ? dyn_cast<VarDecl>(target.decl) : nullptr;
-    if (auto acc = v ? accumulators_.find(v) : accumulators_.end();
-        acc != accumulators_.end() && acc->second.extremum == kind) {
-      update(acc->second, *scalar_type(v->getType().getNonReferenceType()));
-      return Escape::None;
-    }
-    for (auto& r : element_reductions_)
-      if (term && target.element && r.acc.extremum == kind && is_target(target.element, r.target)) {
-        update(r.acc, k_.find_param(r.acc.array)->elem);
-        return Escape::None;
-      }
-  }
+  if (red_.if_update(s))
+    return Escape::None;
   ExprP c = cond(s->getCond());
   size_t depth = path_.size();
   auto env_before = env_;
@@ -279,7 +256,7 @@ void Lowerer::declare(const Decl* d) {
                                        v->getNameAsString()));
   if (const auto* at = ctx_.getAsConstantArrayType(v->getType())) {
     if (at->getSize().getZExtValue() > 64) { // a line buffer (lower_buffer.cpp)
-      declare_buffer(v, at->getElementType(),
+      bufs_.declare_buffer(v, at->getElementType(),
                      int_const(static_cast<long long>(at->getSize().getZExtValue())));
       return;
     }
@@ -287,25 +264,25 @@ void Lowerer::declare(const Decl* d) {
     return;
   }
   if (const auto* vat = ctx_.getAsVariableArrayType(v->getType())) { // `double tmp[nx]`
-    declare_buffer(v, vat->getElementType(), expr(vat->getSizeExpr()));
+    bufs_.declare_buffer(v, vat->getElementType(), expr(vat->getSizeExpr()));
     return;
   }
-  if (declare_array_pointer(v)) // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`
+  if (bufs_.declare_array_pointer(v)) // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {
     declare_lambda(v, rd);
     return;
   }
-  if (declare_object(v)) // const auto lo = amrex::lbound(bx);
+  if (objects_.declare_object(v)) // const auto lo = amrex::lbound(bx);
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
-      rd && is_functor_class(rd) && v->getInit()) { // const GradientFluxes f{phi, fx, ...};
-    env_[v] = functor_binding(v->getInit(), rd);
+      rd && objects_.is_functor_class(rd) && v->getInit()) { // const GradientFluxes f{phi, fx, ...};
+    env_[v] = objects_.functor_binding(v->getInit(), rd);
     return;
   }
   if (auto sa = std_array(v->getType()); sa && sa->second > 64) { // a line buffer
-    declare_buffer(v, sa->first, int_const(static_cast<long long>(sa->second)));
+    bufs_.declare_buffer(v, sa->first, int_const(static_cast<long long>(sa->second)));
     return;
   }
   if (auto sa = std_array(v->getType())) { // a coefficient table, a small buffer
@@ -522,15 +499,8 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
     slot = make_local(name, nullptr, cast(binary(bop, *slot, r), b.elem));
     return;
   }
-  for (auto& r : element_reductions_)
-    if (is_target(lhs, r.target)) { // *err = fmax(*err, e): the reduction's update
-      int kind = 0;
-      const clang::Expr* term = op == BO_Assign ? extremum_term(rhs, r.target, kind) : nullptr;
-      if (!term || kind != r.acc.extremum)
-        fail(loc, "internal error: an element reduction assigned in an unexpected form");
-      extremum_update(r.acc, term, k_.find_param(r.acc.array)->elem, lhs->getBeginLoc());
-      return;
-    }
+  if (red_.element_update(lhs, op, rhs, loc)) // *err = fmax(*err, e)
+    return;
   if (auto acc = element(lhs)) {
     const Param* p = acc->param;
     if (!acc->dims.empty())
@@ -589,8 +559,8 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
                             "and '-=' write outputs",
                             BinaryOperator::getOpcodeStr(op).str(), p->name));
     }
-    if (buffer_of(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)
-      check_buffer_store(p, acc->index, accumulate, lhs);
+    if (bufs_.is_buffer(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)
+      bufs_.check_buffer_store(p, acc->index, accumulate, lhs);
     add_store(p->name, acc->index, cast(value, p->elem), accumulate, pos(lhs->getBeginLoc()),
               lhs->getBeginLoc());
     return;
@@ -623,32 +593,8 @@ void Lowerer::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang:
 // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
 // stands for).
 void Lowerer::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs, SourceLocation loc) {
-  if (auto acc = accumulators_.find(var); acc != accumulators_.end() && acc->second.extremum) {
-    // m = std::max(m, e), fmin(e, m), m > e ? m : e, ...: the scan's update.
-    int kind = 0;
-    const clang::Expr* term =
-        op == BO_Assign ? extremum_term(rhs, {var, nullptr}, kind) : nullptr;
-    if (!term || kind != acc->second.extremum)
-      fail(loc, fmt::format("internal error: reduction '{}' assigned in an unexpected form",
-                            var->getNameAsString()));
-    extremum_update(acc->second, term, t, lhs->getBeginLoc());
+  if (red_.local_update(var, t, lhs, op, rhs, loc)) // s += e, m = std::max(m, e)
     return;
-  }
-  if (auto acc = accumulators_.find(var); acc != accumulators_.end()) {
-    // s += e, s -= e, s = s + e, s = s - e, s = e + s: the hidden array's
-    // element for this iteration of the outer loops gets += (-)e.
-    const clang::Expr* term = rhs;
-    bool negate = op == BO_SubAssign;
-    if (op == BO_Assign)
-      term = accumulated_term(rhs, var, negate);
-    if (!term)
-      fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
-                            var->getNameAsString()));
-    ExprP e = expr(term);
-    add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t),
-              true, pos(lhs->getBeginLoc()), lhs->getBeginLoc());
-    return;
-  }
   Binding& b = env_[var];
   ExprP value;
   if (op == BO_Assign) {

@@ -160,6 +160,13 @@ const std::vector<MathFn> kMath = {
 
 const std::vector<OpInfo>& op_table() { return kOps; }
 
+const OpInfo* binary_op(const std::string& symbol) {
+  for (const auto& row : kOps)
+    if (row.arity == 2 && symbol == row.symbol)
+      return &row;
+  return nullptr;
+}
+
 const OpInfo& op_info(Op op) {
   auto i = static_cast<size_t>(op);
   if (i >= kOps.size() || kOps[i].op != op)

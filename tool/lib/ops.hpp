@@ -38,6 +38,11 @@ const OpInfo& op_info(Op op);
 /// Every row, in the order of the enum (a unit test checks the order).
 const std::vector<OpInfo>& op_table();
 
+/// The row of the binary operation C++ spells `symbol` ("+", "<<", "!="),
+/// or null where the IR has none (the lowering's map from the source's
+/// operators: the spelling column, not a second list).
+const OpInfo* binary_op(const std::string& symbol);
+
 /// What a derivative rule of a math function gets: the call's arguments, the
 /// derivative of each (zero() where an argument carries none), and the means
 /// to build the result. Rules are written once and serve both modes: the

@@ -1,0 +1,247 @@
+// Lowering, the forms of reductions (reduction_forms.hpp): which statements
+// of a loop body are updates of an accumulator or of a min/max reduction.
+// Pure syntax over Clang's AST; the Reductions part lowers what it finds.
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+// The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
+// where `e` does not mention v; null for any other form.
+const clang::Expr* ReductionForms::accumulated_term(const clang::Expr* rhs, const VarDecl* v, bool& negate) {
+  const auto* b = dyn_cast<BinaryOperator>(rhs->IgnoreParenImpCasts());
+  if (!b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
+    return nullptr;
+  auto is_v = [&](const clang::Expr* e) {
+    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+    return r && r->getDecl() == v;
+  };
+  const clang::Expr* term = nullptr;
+  if (is_v(b->getLHS()))
+    term = b->getRHS();
+  else if (b->getOpcode() == BO_Add && is_v(b->getRHS()))
+    term = b->getLHS();
+  if (!term || mentions(term, v))
+    return nullptr;
+  negate = b->getOpcode() == BO_Sub;
+  return term;
+}
+
+bool ReductionForms::mentions(const Stmt* s, const ValueDecl* v) {
+  if (!s)
+    return false;
+  if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v)
+    return true;
+  for (const Stmt* c : s->children())
+    if (mentions(c, v))
+      return true;
+  return false;
+}
+
+// Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
+// `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+bool ReductionForms::is_accumulator(const Stmt* body, const VarDecl* v) {
+  int updates = 0;
+  bool other = false;
+  std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+    if (!s || other)
+      return;
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
+      const auto* r = dyn_cast<DeclRefExpr>(b->getLHS()->IgnoreParenImpCasts());
+      if (r && r->getDecl() == v) {
+        bool negate = false;
+        bool ok = b->getOpcode() == BO_AddAssign || b->getOpcode() == BO_SubAssign
+                      ? !mentions(b->getRHS(), v)
+                      : b->getOpcode() == BO_Assign &&
+                            accumulated_term(b->getRHS(), v, negate) != nullptr;
+        if (!ok)
+          other = true;
+        ++updates;
+        return;
+      }
+    }
+    if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v) {
+      other = true;
+      return;
+    }
+    for (const Stmt* c : s->children())
+      visit(c);
+  };
+  visit(body);
+  return updates > 0 && !other;
+}
+
+bool ReductionForms::same_expr(const clang::Expr* a, const clang::Expr* b) const {
+  llvm::FoldingSetNodeID x, y;
+  a->IgnoreParenImpCasts()->Profile(x, ctx_, true);
+  b->IgnoreParenImpCasts()->Profile(y, ctx_, true);
+  return x == y;
+}
+
+bool ReductionForms::is_target(const clang::Expr* e, const ReductionTarget& t) const {
+  if (t.element)
+    return same_expr(e, t.element);
+  const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+  return r && r->getDecl() == t.decl;
+}
+
+ReductionTarget ReductionForms::target_of(const clang::Expr* lhs) {
+  lhs = lhs->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(lhs))
+    return {dyn_cast<VarDecl>(r->getDecl()), nullptr};
+  const clang::Expr* base = nullptr;
+  if (const auto* u = dyn_cast<UnaryOperator>(lhs); u && u->getOpcode() == UO_Deref)
+    base = u->getSubExpr();
+  else if (const auto* sub = dyn_cast<ArraySubscriptExpr>(lhs))
+    base = sub->getBase();
+  while (base) { // p[j][i]: p
+    base = base->IgnoreParenImpCasts();
+    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(base)) {
+      base = sub->getBase();
+      continue;
+    }
+    if (const auto* r = dyn_cast<DeclRefExpr>(base))
+      if (isa<ParmVarDecl>(r->getDecl()))
+        return {r->getDecl(), lhs};
+    break;
+  }
+  return {};
+}
+
+// The term `e` of a min/max update of `t` (lower_impl.hpp).
+const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
+                                          int& extremum) const {
+  auto is_t = [&](const clang::Expr* e) { return is_target(e, t); };
+  rhs = rhs->IgnoreParenImpCasts();
+  // std::max(v, e), fmax(e, v), fminf(v, e), ...
+  if (const auto* c = dyn_cast<CallExpr>(rhs); c && c->getNumArgs() == 2) {
+    const FunctionDecl* f = c->getDirectCallee();
+    const MathFn* m =
+        f && !isa<CXXMethodDecl>(f) ? find_math_function(f->getNameAsString()) : nullptr;
+    bool from_library = f && (sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
+                              f->getBuiltinID() != 0);
+    if (!m || !from_library || (m->name != "max" && m->name != "min"))
+      return nullptr;
+    const clang::Expr *a = c->getArg(0), *b = c->getArg(1);
+    const clang::Expr* term = is_t(a) ? b : is_t(b) ? a : nullptr;
+    if (!term || mentions(term, t.decl))
+      return nullptr;
+    extremum = m->name == "max" ? 1 : -1;
+    return term;
+  }
+  // v > e ? v : e, e < v ? v : e, v < e ? v : e (min), ... (a MAX macro)
+  const auto* co = dyn_cast<ConditionalOperator>(rhs);
+  if (!co)
+    return nullptr;
+  const auto* cmp = dyn_cast<BinaryOperator>(co->getCond()->IgnoreParenImpCasts());
+  if (!cmp || !cmp->isRelationalOp())
+    return nullptr;
+  const clang::Expr *yes = co->getTrueExpr(), *no = co->getFalseExpr();
+  const clang::Expr* term = is_t(yes) ? no : is_t(no) ? yes : nullptr;
+  if (!term || mentions(term, t.decl))
+    return nullptr;
+  // The comparison's sides are the target and the same e as the other arm.
+  const clang::Expr *l = cmp->getLHS(), *r = cmp->getRHS();
+  bool t_left = is_t(l) && same_expr(r, term), t_right = is_t(r) && same_expr(l, term);
+  if (!t_left && !t_right)
+    return nullptr;
+  // `l > r ? l : r` is a max, `l > r ? r : l` a min; `<` the other way.
+  bool greater = cmp->getOpcode() == BO_GT || cmp->getOpcode() == BO_GE;
+  bool picks_left = t_left ? is_t(yes) : !is_t(yes);
+  extremum = greater == picks_left ? 1 : -1;
+  return term;
+}
+
+// `if (e > v) v = e;` (lower_impl.hpp).
+const clang::Expr* ReductionForms::extremum_if(const IfStmt* s, ReductionTarget& t, int& extremum,
+                                        const clang::Expr** extra) const {
+  if (s->getElse() || s->getInit() || s->getConditionVariable() || s->isConstexpr())
+    return nullptr;
+  const Stmt* body = s->getThen();
+  if (const auto* cs = dyn_cast<CompoundStmt>(body)) {
+    if (cs->size() != 1)
+      return nullptr;
+    body = cs->body_front();
+  }
+  const auto* as = dyn_cast<BinaryOperator>(body);
+  if (!as || as->getOpcode() != BO_Assign)
+    return nullptr;
+  t = target_of(as->getLHS());
+  if (!t.decl)
+    return nullptr;
+  const auto* cmp = dyn_cast<BinaryOperator>(s->getCond()->IgnoreParenImpCasts());
+  // `if (e > m && i > 0) m = e;`: the update where the other conjunct holds.
+  const clang::Expr* rest = nullptr;
+  if (cmp && cmp->getOpcode() == BO_LAnd) {
+    for (const clang::Expr* side : {cmp->getLHS(), cmp->getRHS()}) {
+      const auto* b = dyn_cast<BinaryOperator>(side->IgnoreParenImpCasts());
+      if (b && b->isRelationalOp() && mentions(b, t.decl)) {
+        rest = side == cmp->getLHS() ? cmp->getRHS() : cmp->getLHS();
+        cmp = b;
+        break;
+      }
+    }
+    if (!rest || mentions(rest, t.decl) || !extra)
+      return nullptr;
+  }
+  if (!cmp || !cmp->isRelationalOp())
+    return nullptr;
+  if (extra)
+    *extra = rest;
+  const clang::Expr* term = as->getRHS();
+  if (mentions(term, t.decl))
+    return nullptr;
+  bool t_left = is_target(cmp->getLHS(), t) && same_expr(cmp->getRHS(), term);
+  bool t_right = is_target(cmp->getRHS(), t) && same_expr(cmp->getLHS(), term);
+  if (!t_left && !t_right)
+    return nullptr;
+  // `if (e > v) v = e` keeps the larger: a max; `if (v > e) v = e` a min.
+  bool greater = cmp->getOpcode() == BO_GT || cmp->getOpcode() == BO_GE;
+  extremum = greater == t_right ? 1 : -1;
+  return term;
+}
+
+// +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
+// `t` of one kind (lower_impl.hpp).
+int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t) const {
+  int kind = 0, updates = 0;
+  bool other = false;
+  std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
+    if (!s || other)
+      return;
+    int k = 0;
+    if (const auto* i = dyn_cast<IfStmt>(s)) {
+      ReductionTarget u;
+      const clang::Expr* rest = nullptr;
+      bool same = extremum_if(i, u, k, &rest) && u.decl == t.decl &&
+                  (t.element ? u.element && same_expr(u.element, t.element) : !u.element);
+      if (same) {
+        other = other || (kind != 0 && k != kind);
+        kind = k;
+        ++updates;
+        return;
+      }
+    }
+    if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
+      if (is_target(b->getLHS(), t)) {
+        if (b->getOpcode() != BO_Assign || !extremum_term(b->getRHS(), t, k) ||
+            (kind != 0 && k != kind)) {
+          other = true;
+          return;
+        }
+        kind = k;
+        ++updates;
+        return;
+      }
+    }
+    if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == t.decl) {
+      other = true;
+      return;
+    }
+    for (const Stmt* c : s->children())
+      visit(c);
+  };
+  visit(body);
+  return updates > 0 && !other ? kind : 0;
+}
+
+} // namespace dpgen::lowering

@@ -1,0 +1,70 @@
+// Lowering, the forms of reductions (reduction_forms.cpp): which statements
+// of a loop body update an accumulator (`s += e`, `s = s + e`) or a min/max
+// reduction (`m = std::max(m, e)`, `fmin`, a `?:` of m and e, `if (e > m) m =
+// e;`), and of what. Pure syntax over Clang's AST, no state of the lowering;
+// the Reductions part (lower_reduce.hpp) lowers what it finds. Included by
+// lower_impl.hpp only.
+#pragma once
+
+namespace clang {
+class ASTContext;
+class Expr;
+class IfStmt;
+class SourceManager;
+class Stmt;
+class ValueDecl;
+class VarDecl;
+} // namespace clang
+
+namespace dpgen::lowering {
+
+// What a min/max reduction updates: a local `v`, or an output element
+// (`*err`, `err[0]`, `rowmax[j]`: `element`, of array `decl`) at the same
+// index in every iteration of the reducing loop.
+struct ReductionTarget {
+  const clang::ValueDecl* decl = nullptr;
+  const clang::Expr* element = nullptr;
+};
+
+class ReductionForms {
+public:
+  ReductionForms(clang::ASTContext& ctx, clang::SourceManager& sm) : ctx_(ctx), sm_(sm) {}
+
+  // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
+  // where `e` does not mention v; null for any other form.
+  static const clang::Expr* accumulated_term(const clang::Expr* rhs, const clang::VarDecl* v,
+                                             bool& negate);
+  // `s` mentions `v`.
+  static bool mentions(const clang::Stmt* s, const clang::ValueDecl* v);
+  // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
+  // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+  static bool is_accumulator(const clang::Stmt* body, const clang::VarDecl* v);
+
+  // The same expression, up to parentheses and implicit conversions.
+  bool same_expr(const clang::Expr* a, const clang::Expr* b) const;
+  bool is_target(const clang::Expr* e, const ReductionTarget& t) const;
+  // The target of assignment `lhs`: a variable, or an element of an array
+  // parameter (`*p`, `p[...]`); decl null for anything else.
+  static ReductionTarget target_of(const clang::Expr* lhs);
+  // The term `e` of a min/max update of `t` (`v = std::max(v, e)`, `v =
+  // fmin(e, v)`, `v = v > e ? v : e`, ...), with `extremum` +1 for max and
+  // -1 for min; null for any other form.
+  const clang::Expr* extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
+                                   int& extremum) const;
+  // `if (e > v) v = e;` (no else; the body the one assignment): its `e`,
+  // target and kind; null for any other if.
+  // `extra`: where the if's condition is `<comparison> && rest` (`if (e > m
+  // && i > 0)`), `rest`, the condition the update runs under (null for a
+  // plain comparison); with no `extra`, such an if is no update.
+  const clang::Expr* extremum_if(const clang::IfStmt* s, ReductionTarget& t, int& extremum,
+                                 const clang::Expr** extra = nullptr) const;
+  // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
+  // `t` of one kind, and there is at least one; 0 otherwise.
+  int extremum_kind(const clang::Stmt* body, const ReductionTarget& t) const;
+
+private:
+  clang::ASTContext& ctx_;
+  clang::SourceManager& sm_;
+};
+
+} // namespace dpgen::lowering
