@@ -239,6 +239,21 @@ private:
   // it: forgets it. False if `v` is no such variable.
   bool forget_value(const VarDecl* v);
   void for_loop(const ForStmt* f);
+  // A `for` statement's header: the counter, its range [lo, hi) and step;
+  // for a triangular nest the original bounds (made conditions on the body's
+  // path: (bound, is the upper one)); for a strided loop whose start moves
+  // with outer counters, that start and the step (the body runs where
+  // counter >= start and (counter - start) % step == 0).
+  struct ForHeader {
+    const VarDecl* var = nullptr;
+    ExprP lo, hi;
+    int step = 1;
+    std::vector<std::pair<ExprP, bool>> triangle;
+    ExprP parity_start;
+    int parity_step = 0;
+  };
+  ForHeader for_header(const ForStmt* f);
+  bool unroll(const ForStmt* f, const ForHeader& h);
 
   // The bound of a loop condition as `counter op bound` (op returned in `op`):
   // `i < n`, `i + 1 < n` (i < n - 1), `n > i` (i < n). Null when the sides do

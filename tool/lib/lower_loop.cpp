@@ -42,7 +42,9 @@ bool Lowerer::forget_value(const VarDecl* v) {
   return true;
 }
 
-void Lowerer::for_loop(const ForStmt* f) {
+// The header of `for` statement `f`: its counter, its range [lo, hi) with
+// the step, and what makes the box rectangular (lower_impl.hpp).
+Lowerer::ForHeader Lowerer::for_header(const ForStmt* f) {
   // A loop in a void helper (a library parallel-for: `ParallelFor(box, f)`
   // runs f(i, j, k) in a nest) is a loop of the kernel; a helper that
   // returns a value computes it without loops.
@@ -254,9 +256,18 @@ void Lowerer::for_loop(const ForStmt* f) {
                                 "std::min(n, i + w + 1), a strided start 1 + (j + 1) % 2)",
                                 what, var->getNameAsString(), s.name), "dpgen-loop");
   }
+  return {var, lo, hi, step, triangle, parity_start, parity_step};
+}
+
+// A small loop with constant bounds that should_unroll() picks: its body
+// lowered once per value of the counter; false (nothing done) for any other.
+bool Lowerer::unroll(const ForStmt* f, const ForHeader& h) {
+  const VarDecl* const var = h.var;
+  const ExprP &lo = h.lo, &hi = h.hi;
+  const int step = h.step;
   {
     auto plo = to_poly(lo), phi = to_poly(hi);
-    if (plo->is_constant() && phi->is_constant() && triangle.empty() && !parity_start &&
+    if (plo->is_constant() && phi->is_constant() && h.triangle.empty() && !h.parity_start &&
         should_unroll(f, plo->constant_term(), phi->constant_term())) {
       check_not_assigned(f->getBody(), var);
       auto saved = env_.count(var) ? std::optional<Binding>(env_[var]) : std::nullopt;
@@ -289,9 +300,20 @@ void Lowerer::for_loop(const ForStmt* f) {
       } else {
         env_.erase(var);
       }
-      return;
+      return true;
     }
   }
+  return false;
+}
+
+void Lowerer::for_loop(const ForStmt* f) {
+  const ForHeader h = for_header(f);
+  if (unroll(f, h))
+    return;
+  const VarDecl* const var = h.var;
+  const ExprP &lo = h.lo, &hi = h.hi, &parity_start = h.parity_start;
+  const int step = h.step, parity_step = h.parity_step;
+  const auto& triangle = h.triangle;
   if (loops_.size() == kMaxLoopDepth)
     fail(f->getBeginLoc(), fmt::format("loops nest at most {} deep in the kernel subset",
                                        kMaxLoopDepth),

@@ -59,284 +59,7 @@ void Signature::header() {
     if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
       L.k_.namespaces.insert(L.k_.namespaces.begin(), ns->getNameAsString());
 
-  bool any_in = false, any_out = false;
-  // One parameter; an error in it is reported, the parameter poisoned (its
-  // uses are not reported again) and the rest of the kernel still lowered,
-  // so one run reports every error of the file.
-  auto parameter = [&](const DeclaratorDecl* p) {
-    Param out;
-    out.name = p->getNameAsString();
-    std::string ann = annotation(p);
-    if (out.name.empty()) {
-      // An unnamed parameter of an empty class type (struct XDir {};,
-      // std::integral_constant<int, 0>) is a tag choosing an overload; the
-      // generated functions take it as well, under a name of their own.
-      const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
-      if (!rd || !rd->hasDefinition() || !rd->isEmpty() || !ann.empty())
-        L.fail(p->getLocation(), "every kernel parameter needs a name (an unnamed one may only "
-                               "be an unannotated tag: a value of an empty class type)",
-             "dpgen-signature");
-      // Generated code takes it by const reference, so that a declaration of
-      // its class is enough: `struct XDir;` (or <type_traits> for
-      // std::integral_constant and its aliases).
-      std::string type = Lowerer::spelled(p->getType().getNonReferenceType().getUnqualifiedType());
-      if (type.rfind("std::integral_constant<", 0) == 0 || type == "std::true_type" ||
-          type == "std::false_type") {
-        out.tag_declaration = "#include <type_traits>";
-      } else if (!isa<ClassTemplateSpecializationDecl>(rd) &&
-                 rd->getDeclContext()->getRedeclContext()->isFileContext()) {
-        std::string decl = fmt::format("{} {};", rd->isClass() ? "class" : "struct",
-                                       rd->getNameAsString());
-        for (const DeclContext* dc = rd->getDeclContext(); dc; dc = dc->getParent())
-          if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
-            decl = fmt::format("namespace {} {{ {} }}", ns->getNameAsString(), decl);
-        out.tag_declaration = decl;
-      } else {
-        L.fail(p->getLocation(), fmt::format("tag parameter of type '{}': a tag is a class at "
-                                           "namespace scope or a std::integral_constant",
-                                           type),
-             "dpgen-signature");
-      }
-      out.kind = ParamKind::Scalar;
-      out.tag = true;
-      out.elem = Type::Bool; // (no number: never shown or checked)
-      out.name = fmt::format("dpgen_tag_{}", llvm::cast<ParmVarDecl>(p)->getFunctionScopeIndex());
-      out.elem_name = type;
-      out.spelling = "const " + type + "&";
-      out.declaration = type + " " + out.name;
-      L.k_.params.push_back(out);
-      return;
-    }
-    QualType q = p->getType();
-    std::optional<Param> size_param;
-    std::optional<Param> inout_twin;
-    // std::span<T> u (by value; C++20), with the element's constness.
-    QualType span_elem = q->isReferenceType() ? QualType() : L.vector_element(q, "span");
-    // A scalar by reference: `const double& dx` (a value, like `double dx`),
-    // `DPGEN_OUT double& mass` / `DPGEN_IN const double& c` (a one-element
-    // array, Param::scalar_ref).
-    std::optional<Type> ref_scalar =
-        q->isReferenceType() ? L.scalar_type(q.getNonReferenceType().getUnqualifiedType())
-                             : std::nullopt;
-    const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
-    if (record && span_elem.isNull() && L.vector_element(q.getNonReferenceType()).isNull() &&
-        !record->isLambda()) {
-      // An array view (Array4, Kokkos::View, mdspan, ...), or an object
-      // of constants (AMReX's Box).
-      if (L.views_.is_view_class(record))
-        L.views_.view_param(p, ann, out);
-      else
-        L.objects_.object_param(p, ann, out);
-      any_in = any_in || out.kind == ParamKind::In;
-      any_out = any_out || out.kind == ParamKind::Out;
-    } else if (ref_scalar && *ref_scalar != Type::Bool &&
-        (ann == "dpgen.in" || ann == "dpgen.out")) {
-      QualType elem = q.getNonReferenceType();
-      if (!is_real(*ref_scalar))
-        L.fail(p->getLocation(), fmt::format("{} parameter '{}' must be float or double",
-                                           ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT", out.name),
-             "dpgen-signature");
-      if (ann == "dpgen.out" && elem.isConstQualified())
-        L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is a const reference",
-                                           out.name), "dpgen-signature");
-      out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
-      (ann == "dpgen.in" ? any_in : any_out) = true;
-      out.elem = *ref_scalar;
-      out.elem_name = Lowerer::spelled(elem.getUnqualifiedType());
-      out.scalar_ref = true;
-    } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
-      // const double& dx: read like a value; the adjoint takes it the same way.
-      out.kind = ParamKind::Scalar;
-      out.elem = *ref_scalar;
-      out.elem_name = Lowerer::spelled(q.getNonReferenceType().getUnqualifiedType());
-      out.is_unsigned = *ref_scalar == Type::Int &&
-                        q.getNonReferenceType()->isUnsignedIntegerType();
-    } else if (ref_scalar && ann.empty()) {
-      L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
-                                         "mark it DPGEN_OUT, or make it const",
-                                         out.name), "dpgen-signature");
-    } else if (q->isReferenceType() || !span_elem.isNull()) {
-      QualType elem = !span_elem.isNull() ? span_elem : L.vector_element(q.getNonReferenceType());
-      if (elem.isNull())
-        L.fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
-                                           "and arrays as pointers, std::vector<T>& or "
-                                           "std::span<T>",
-                                           out.name), "dpgen-signature");
-      // std::vector<T>& u (or std::span<T> u): elements u[i], size u.size();
-      // the generated entry point takes the vectors (spans), its flat twin
-      // u.data() and u.size().
-      bool is_const = !span_elem.isNull() ? elem.isConstQualified()
-                                          : q.getNonReferenceType().isConstQualified();
-      elem = elem.getUnqualifiedType();
-      out.span = !span_elem.isNull();
-      auto et = L.scalar_type(elem);
-      if (!et || *et == Type::Bool)
-        L.fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
-                                           "float, double or an integer type",
-                                           out.name, elem.getAsString()), "dpgen-signature");
-      out.elem = *et;
-      out.elem_name = Lowerer::spelled(elem);
-      out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
-      if (ann == "dpgen.inout")
-        L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
-                                           "to non-const float or double (pass {}.data())",
-                                           out.name, out.name), "dpgen-signature");
-      if (ann == "dpgen.in" || ann == "dpgen.out") {
-        if (!is_real(*et))
-          L.fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
-                                             ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
-                                             out.name), "dpgen-signature");
-        if (ann == "dpgen.out" && is_const)
-          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
-        out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
-        (ann == "dpgen.in" ? any_in : any_out) = true;
-      } else {
-        if (!is_const)
-          L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
-                                             "mark it DPGEN_OUT, or make it const",
-                                             out.name), "dpgen-signature");
-        out.kind = ParamKind::ConstArray;
-      }
-      Param sz;
-      sz.name = out.name + "_size";
-      sz.kind = ParamKind::Scalar;
-      sz.elem = Type::Int;
-      sz.elem_name = sz.spelling = "unsigned long";
-      sz.synthetic = true;
-      sz.is_unsigned = true;
-      size_param = sz;
-    } else if (q->isPointerType()) {
-      QualType elem = q->getPointeeType();
-      // Rows of a multi-dimensional array: double (*a)[64], double a[][64],
-      // or, in C, double a[n][n] (a variable-length row: flat in the
-      // generated signature).
-      bool const_rows = elem.isConstQualified();
-      while (const clang::ArrayType* at = L.ctx_.getAsArrayType(elem)) {
-        if (const auto* c = dyn_cast<ConstantArrayType>(at))
-          out.rows += fmt::format("[{}]", c->getSize().getZExtValue());
-        else if (!isa<VariableArrayType>(at))
-          L.fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
-                                             "kernel subset",
-                                             out.name), "dpgen-signature");
-        elem = at->getElementType();
-        const_rows = const_rows || elem.isConstQualified();
-      }
-      if (const_rows)
-        elem.addConst();
-      if (elem->isPointerType() && out.rows.empty()) {
-        // double** a, const double* const* a: rows through pointers, each
-        // row an array of its own (documented assumption).
-        elem = elem->getPointeeType();
-        if (elem->isPointerType()) { // double*** a: planes of rows
-          elem = elem->getPointeeType();
-          out.plane_pointers = true;
-        }
-        if (elem->isPointerType() || L.ctx_.getAsArrayType(elem))
-          L.fail(p->getLocation(),
-               fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
-                           "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
-                           "flat pointer indexed {}[(k * ny + j) * nx + i]",
-                           out.name, q.getAsString(), out.name, out.name, out.name), "dpgen-signature");
-        if (ann == "dpgen.inout")
-          L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
-                                             "pointer to non-const float or double",
-                                             out.name), "dpgen-signature");
-        out.row_pointers = true;
-      } else if (elem->isPointerType()) {
-        L.fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
-                                           "row pointers, outside the kernel subset",
-                                           out.name, q.getAsString()), "dpgen-signature");
-      }
-      auto et = L.scalar_type(elem);
-      // (a bool mask, `const bool* solid`, is a constant array: not differentiated)
-      if (!et || (*et == Type::Bool && (!ann.empty() && ann != "dpgen.const")))
-        L.fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
-                                           "float, double or an integer type (or bool, "
-                                           "for an unmarked mask)",
-                                           out.name,
-                                           elem.getAsString(PrintingPolicy(L.ctx_.getLangOpts()))),
-             "dpgen-signature");
-      out.elem = *et;
-      out.elem_name = Lowerer::spelled(elem);
-      if (ann == "dpgen.in") {
-        if (!is_real(*et))
-          L.fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
-                                             "double, not '{}'",
-                                             out.name, elem.getAsString()), "dpgen-signature");
-        out.kind = ParamKind::In;
-        any_in = true;
-      } else if (ann == "dpgen.inout") {
-        if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
-          L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
-                                             "to non-const float or double",
-                                             out.name), "dpgen-signature");
-        out.kind = ParamKind::In;
-        out.inout = true;
-        any_in = any_out = true;
-        Param twin;
-        twin.name = out.name + "_new";
-        twin.kind = ParamKind::Out;
-        twin.elem = *et;
-        twin.elem_name = out.elem_name;
-        twin.twin_of = out.name;
-        twin.declaration = twin.spelling = fmt::format("{}* {}", out.elem_name, twin.name);
-        inout_twin = twin;
-      } else if (ann == "dpgen.out") {
-        if (!is_real(*et))
-          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
-                                             "double, not '{}'",
-                                             out.name, elem.getAsString()), "dpgen-signature");
-        if (elem.isConstQualified())
-          L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
-        out.kind = ParamKind::Out;
-        any_out = true;
-      } else {
-        out.kind = ParamKind::ConstArray;
-      }
-    } else {
-      auto t = L.scalar_type(q);
-      if (!t)
-        L.fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
-                                           "subset",
-                                           out.name, q.getAsString()), "dpgen-signature");
-      if (!ann.empty() && ann != "dpgen.const")
-        L.fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
-                                           "parameters (pass a one-element array to "
-                                           "differentiate a scalar)",
-                                           out.name), "dpgen-signature");
-      out.kind = ParamKind::Scalar;
-      out.elem = *t;
-      out.elem_name = Lowerer::spelled(q);
-      out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
-    }
-    out.spelling = out.view ? out.view_type : Lowerer::spelled(p->getType(), /*keep_const=*/true);
-    {
-      std::string decl;
-      llvm::raw_string_ostream os(decl);
-      PrintingPolicy policy(L.ctx_.getLangOpts());
-      policy.SuppressTagKeyword = true;
-      p->getType().getCanonicalType().print(os, policy, out.name);
-      out.declaration = os.str();
-    }
-    L.k_.params.push_back(out);
-    if (inout_twin) {
-      for (const auto& other : L.k_.params)
-        if (other.name == inout_twin->name)
-          L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
-                                             "for the new values of in-place array '{}'",
-                                             other.name, out.name), "dpgen-signature");
-      L.k_.params.push_back(*inout_twin);
-      inout_twin.reset();
-    }
-    if (size_param) {
-      for (const auto& other : L.k_.params)
-        if (other.name == size_param->name)
-          L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
-                                             "for vector '{}'",
-                                             other.name, out.name), "dpgen-signature");
-      L.k_.params.push_back(*size_param);
-    }
-  };
+  any_in_ = any_out_ = false;
   bool params_ok = true;
   // The members first, in declaration order: those the method (and the
   // lambdas and call operators of its class it runs) reads or writes.
@@ -384,18 +107,18 @@ void Signature::header() {
              "dpgen-name");
     L.k_.params.push_back(r);
     L.k_.return_type = r.elem_name;
-    any_out = true;
+    any_out_ = true;
   }
   globals(L.fn_->getBody());
   for (const auto& p : L.k_.params)
-    any_in = any_in || (p.global && p.kind == ParamKind::In);
+    any_in_ = any_in_ || (p.global && p.kind == ParamKind::In);
   check_parameter_names();
   // (no DPGEN_IN or DPGEN_OUT may only mean that one was rejected)
-  if (!any_in && params_ok)
+  if (!any_in_ && params_ok)
     L.fail(L.fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_IN parameter: there is "
                                          "nothing to differentiate",
                                          L.k_.display_name()), "dpgen-signature");
-  if (!any_out && params_ok)
+  if (!any_out_ && params_ok)
     L.fail(L.fn_->getLocation(), fmt::format("kernel '{}' has no DPGEN_OUT parameter and returns nothing", L.k_.display_name()), "dpgen-signature");
   // Row-pointer arrays: a[j][i] is the flat j * R + i for a row length R
   // that is larger than any column (a symbol; its value in the generated
@@ -462,6 +185,319 @@ void Signature::header() {
       real = p.elem;
     }
 }
+
+// One parameter; an error in it is reported, the parameter poisoned (its
+// uses are not reported again) and the rest of the kernel still lowered,
+// so one run reports every error of the file.
+void Signature::parameter(const DeclaratorDecl* p) {
+  Param out;
+  out.name = p->getNameAsString();
+  std::string ann = annotation(p);
+  if (out.name.empty()) { // a tag
+    tag_parameter(p, ann, out);
+    return;
+  }
+  QualType q = p->getType();
+  std::optional<Param> size_param;
+  std::optional<Param> inout_twin;
+  // std::span<T> u (by value; C++20), with the element's constness.
+  QualType span_elem = q->isReferenceType() ? QualType() : L.vector_element(q, "span");
+  // A scalar by reference: `const double& dx` (a value, like `double dx`),
+  // `DPGEN_OUT double& mass` / `DPGEN_IN const double& c` (a one-element
+  // array, Param::scalar_ref).
+  std::optional<Type> ref_scalar =
+      q->isReferenceType() ? L.scalar_type(q.getNonReferenceType().getUnqualifiedType())
+                           : std::nullopt;
+  const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
+  if (record && span_elem.isNull() && L.vector_element(q.getNonReferenceType()).isNull() &&
+      !record->isLambda()) {
+    // An array view (Array4, Kokkos::View, mdspan, ...), or an object
+    // of constants (AMReX's Box).
+    if (L.views_.is_view_class(record))
+      L.views_.view_param(p, ann, out);
+    else
+      L.objects_.object_param(p, ann, out);
+    any_in_ = any_in_ || out.kind == ParamKind::In;
+    any_out_ = any_out_ || out.kind == ParamKind::Out;
+  } else if (ref_scalar && *ref_scalar != Type::Bool &&
+      (ann == "dpgen.in" || ann == "dpgen.out")) {
+    scalar_ref_parameter(p, ann, *ref_scalar, out);
+  } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
+    // const double& dx: read like a value; the adjoint takes it the same way.
+    out.kind = ParamKind::Scalar;
+    out.elem = *ref_scalar;
+    out.elem_name = Lowerer::spelled(q.getNonReferenceType().getUnqualifiedType());
+    out.is_unsigned = *ref_scalar == Type::Int &&
+                      q.getNonReferenceType()->isUnsignedIntegerType();
+  } else if (ref_scalar && ann.empty()) {
+    L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+                                       "mark it DPGEN_OUT, or make it const",
+                                       out.name), "dpgen-signature");
+  } else if (q->isReferenceType() || !span_elem.isNull()) {
+    size_param = container_parameter(p, ann, span_elem, out);
+  } else if (q->isPointerType()) {
+    inout_twin = pointer_parameter(p, ann, out);
+  } else {
+    value_parameter(p, ann, out);
+  }
+  out.spelling = out.view ? out.view_type : Lowerer::spelled(p->getType(), /*keep_const=*/true);
+  {
+    std::string decl;
+    llvm::raw_string_ostream os(decl);
+    PrintingPolicy policy(L.ctx_.getLangOpts());
+    policy.SuppressTagKeyword = true;
+    p->getType().getCanonicalType().print(os, policy, out.name);
+    out.declaration = os.str();
+  }
+  L.k_.params.push_back(out);
+  if (inout_twin) {
+    for (const auto& other : L.k_.params)
+      if (other.name == inout_twin->name)
+        L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
+                                           "for the new values of in-place array '{}'",
+                                           other.name, out.name), "dpgen-signature");
+    L.k_.params.push_back(*inout_twin);
+    inout_twin.reset();
+  }
+  if (size_param) {
+    for (const auto& other : L.k_.params)
+      if (other.name == size_param->name)
+        L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
+                                           "for vector '{}'",
+                                           other.name, out.name), "dpgen-signature");
+    L.k_.params.push_back(*size_param);
+  }
+}
+
+void Signature::tag_parameter(const DeclaratorDecl* p, const std::string& ann, Param& out) {
+  // An unnamed parameter of an empty class type (struct XDir {};,
+  // std::integral_constant<int, 0>) is a tag choosing an overload; the
+  // generated functions take it as well, under a name of their own.
+  const CXXRecordDecl* rd = p->getType().getNonReferenceType()->getAsCXXRecordDecl();
+  if (!rd || !rd->hasDefinition() || !rd->isEmpty() || !ann.empty())
+    L.fail(p->getLocation(), "every kernel parameter needs a name (an unnamed one may only "
+                           "be an unannotated tag: a value of an empty class type)",
+         "dpgen-signature");
+  // Generated code takes it by const reference, so that a declaration of
+  // its class is enough: `struct XDir;` (or <type_traits> for
+  // std::integral_constant and its aliases).
+  std::string type = Lowerer::spelled(p->getType().getNonReferenceType().getUnqualifiedType());
+  if (type.rfind("std::integral_constant<", 0) == 0 || type == "std::true_type" ||
+      type == "std::false_type") {
+    out.tag_declaration = "#include <type_traits>";
+  } else if (!isa<ClassTemplateSpecializationDecl>(rd) &&
+             rd->getDeclContext()->getRedeclContext()->isFileContext()) {
+    std::string decl = fmt::format("{} {};", rd->isClass() ? "class" : "struct",
+                                   rd->getNameAsString());
+    for (const DeclContext* dc = rd->getDeclContext(); dc; dc = dc->getParent())
+      if (const auto* ns = dyn_cast<NamespaceDecl>(dc))
+        decl = fmt::format("namespace {} {{ {} }}", ns->getNameAsString(), decl);
+    out.tag_declaration = decl;
+  } else {
+    L.fail(p->getLocation(), fmt::format("tag parameter of type '{}': a tag is a class at "
+                                       "namespace scope or a std::integral_constant",
+                                       type),
+         "dpgen-signature");
+  }
+  out.kind = ParamKind::Scalar;
+  out.tag = true;
+  out.elem = Type::Bool; // (no number: never shown or checked)
+  out.name = fmt::format("dpgen_tag_{}", llvm::cast<ParmVarDecl>(p)->getFunctionScopeIndex());
+  out.elem_name = type;
+  out.spelling = "const " + type + "&";
+  out.declaration = type + " " + out.name;
+  L.k_.params.push_back(out);
+}
+
+// `DPGEN_OUT double& mass`, `DPGEN_IN const double& c`: a one-element array
+// (Param::scalar_ref).
+void Signature::scalar_ref_parameter(const DeclaratorDecl* p, const std::string& ann, Type ref_scalar,
+                                     Param& out) {
+  QualType q = p->getType();
+  QualType elem = q.getNonReferenceType();
+  if (!is_real(ref_scalar))
+    L.fail(p->getLocation(), fmt::format("{} parameter '{}' must be float or double",
+                                       ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT", out.name),
+         "dpgen-signature");
+  if (ann == "dpgen.out" && elem.isConstQualified())
+    L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is a const reference",
+                                       out.name), "dpgen-signature");
+  out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
+  (ann == "dpgen.in" ? any_in_ : any_out_) = true;
+  out.elem = ref_scalar;
+  out.elem_name = Lowerer::spelled(elem.getUnqualifiedType());
+  out.scalar_ref = true;
+}
+
+// std::vector<T>& u or std::span<T> u: the Param, and that of its size.
+std::optional<Param> Signature::container_parameter(const DeclaratorDecl* p, const std::string& ann,
+                                                    QualType span_elem, Param& out) {
+  QualType q = p->getType();
+  QualType elem = !span_elem.isNull() ? span_elem : L.vector_element(q.getNonReferenceType());
+  if (elem.isNull())
+    L.fail(p->getLocation(), fmt::format("parameter '{}' is a reference; pass scalars by value, "
+                                       "and arrays as pointers, std::vector<T>& or "
+                                       "std::span<T>",
+                                       out.name), "dpgen-signature");
+  // std::vector<T>& u (or std::span<T> u): elements u[i], size u.size();
+  // the generated entry point takes the vectors (spans), its flat twin
+  // u.data() and u.size().
+  bool is_const = !span_elem.isNull() ? elem.isConstQualified()
+                                      : q.getNonReferenceType().isConstQualified();
+  elem = elem.getUnqualifiedType();
+  out.span = !span_elem.isNull();
+  auto et = L.scalar_type(elem);
+  if (!et || *et == Type::Bool)
+    L.fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
+                                       "float, double or an integer type",
+                                       out.name, elem.getAsString()), "dpgen-signature");
+  out.elem = *et;
+  out.elem_name = Lowerer::spelled(elem);
+  out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
+  if (ann == "dpgen.inout")
+    L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                       "to non-const float or double (pass {}.data())",
+                                       out.name, out.name), "dpgen-signature");
+  if (ann == "dpgen.in" || ann == "dpgen.out") {
+    if (!is_real(*et))
+      L.fail(p->getLocation(), fmt::format("{} parameter '{}' must hold float or double",
+                                         ann == "dpgen.in" ? "DPGEN_IN" : "DPGEN_OUT",
+                                         out.name), "dpgen-signature");
+    if (ann == "dpgen.out" && is_const)
+      L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' is const", out.name), "dpgen-signature");
+    out.kind = ann == "dpgen.in" ? ParamKind::In : ParamKind::Out;
+    (ann == "dpgen.in" ? any_in_ : any_out_) = true;
+  } else {
+    if (!is_const)
+      L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
+                                         "mark it DPGEN_OUT, or make it const",
+                                         out.name), "dpgen-signature");
+    out.kind = ParamKind::ConstArray;
+  }
+  Param sz;
+  sz.name = out.name + "_size";
+  sz.kind = ParamKind::Scalar;
+  sz.elem = Type::Int;
+  sz.elem_name = sz.spelling = "unsigned long";
+  sz.synthetic = true;
+  sz.is_unsigned = true;
+  return sz;
+}
+
+// A pointer: flat, rows (double (*a)[64], a[][64], a C VLA row), row pointers
+// (double**, double***); the twin of a DPGEN_INOUT array, if one.
+std::optional<Param> Signature::pointer_parameter(const DeclaratorDecl* p, const std::string& ann,
+                                                  Param& out) {
+  QualType q = p->getType();
+  QualType elem = q->getPointeeType();
+  // Rows of a multi-dimensional array: double (*a)[64], double a[][64],
+  // or, in C, double a[n][n] (a variable-length row: flat in the
+  // generated signature).
+  bool const_rows = elem.isConstQualified();
+  while (const clang::ArrayType* at = L.ctx_.getAsArrayType(elem)) {
+    if (const auto* c = dyn_cast<ConstantArrayType>(at))
+      out.rows += fmt::format("[{}]", c->getSize().getZExtValue());
+    else if (!isa<VariableArrayType>(at))
+      L.fail(p->getLocation(), fmt::format("parameter '{}' has an array type outside the "
+                                         "kernel subset",
+                                         out.name), "dpgen-signature");
+    elem = at->getElementType();
+    const_rows = const_rows || elem.isConstQualified();
+  }
+  if (const_rows)
+    elem.addConst();
+  if (elem->isPointerType() && out.rows.empty()) {
+    // double** a, const double* const* a: rows through pointers, each
+    // row an array of its own (documented assumption).
+    elem = elem->getPointeeType();
+    if (elem->isPointerType()) { // double*** a: planes of rows
+      elem = elem->getPointeeType();
+      out.plane_pointers = true;
+    }
+    if (elem->isPointerType() || L.ctx_.getAsArrayType(elem))
+      L.fail(p->getLocation(),
+           fmt::format("parameter '{}' ('{}') has more than two levels of row pointers: "
+                       "pass 'double** {}' (a[j][i]), 'double*** {}' (a[k][j][i]) or a "
+                       "flat pointer indexed {}[(k * ny + j) * nx + i]",
+                       out.name, q.getAsString(), out.name, out.name, out.name), "dpgen-signature");
+    if (ann == "dpgen.inout")
+      L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat "
+                                         "pointer to non-const float or double",
+                                         out.name), "dpgen-signature");
+    out.row_pointers = true;
+  } else if (elem->isPointerType()) {
+    L.fail(p->getLocation(), fmt::format("parameter '{}' ('{}') mixes fixed-length rows and "
+                                       "row pointers, outside the kernel subset",
+                                       out.name, q.getAsString()), "dpgen-signature");
+  }
+  auto et = L.scalar_type(elem);
+  // (a bool mask, `const bool* solid`, is a constant array: not differentiated)
+  if (!et || (*et == Type::Bool && (!ann.empty() && ann != "dpgen.const")))
+    L.fail(p->getLocation(), fmt::format("parameter '{}' points to '{}'; arrays must hold "
+                                       "float, double or an integer type (or bool, "
+                                       "for an unmarked mask)",
+                                       out.name,
+                                       elem.getAsString(PrintingPolicy(L.ctx_.getLangOpts()))),
+         "dpgen-signature");
+  out.elem = *et;
+  out.elem_name = Lowerer::spelled(elem);
+  if (ann == "dpgen.in") {
+    if (!is_real(*et))
+      L.fail(p->getLocation(), fmt::format("DPGEN_IN parameter '{}' must point to float or "
+                                         "double, not '{}'",
+                                         out.name, elem.getAsString()), "dpgen-signature");
+    out.kind = ParamKind::In;
+    any_in_ = true;
+  } else if (ann == "dpgen.inout") {
+    if (!is_real(*et) || elem.isConstQualified() || !out.rows.empty())
+      L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
+                                         "to non-const float or double",
+                                         out.name), "dpgen-signature");
+    out.kind = ParamKind::In;
+    out.inout = true;
+    any_in_ = any_out_ = true;
+    Param twin;
+    twin.name = out.name + "_new";
+    twin.kind = ParamKind::Out;
+    twin.elem = *et;
+    twin.elem_name = out.elem_name;
+    twin.twin_of = out.name;
+    twin.declaration = twin.spelling = fmt::format("{}* {}", out.elem_name, twin.name);
+    return twin;
+  } else if (ann == "dpgen.out") {
+    if (!is_real(*et))
+      L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' must point to float or "
+                                         "double, not '{}'",
+                                         out.name, elem.getAsString()), "dpgen-signature");
+    if (elem.isConstQualified())
+      L.fail(p->getLocation(), fmt::format("DPGEN_OUT parameter '{}' points to const", out.name), "dpgen-signature");
+    out.kind = ParamKind::Out;
+    any_out_ = true;
+  } else {
+    out.kind = ParamKind::ConstArray;
+  }
+  return std::nullopt;
+}
+
+// A scalar by value (or a const reference to one, read alike).
+void Signature::value_parameter(const DeclaratorDecl* p, const std::string& ann, Param& out) {
+  QualType q = p->getType();
+  auto t = L.scalar_type(q);
+  if (!t)
+    L.fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
+                                       "subset",
+                                       out.name, q.getAsString()), "dpgen-signature");
+  if (!ann.empty() && ann != "dpgen.const")
+    L.fail(p->getLocation(), fmt::format("'{}' is a scalar: DPGEN_IN/DPGEN_OUT mark pointer "
+                                       "parameters (pass a one-element array to "
+                                       "differentiate a scalar)",
+                                       out.name), "dpgen-signature");
+  out.kind = ParamKind::Scalar;
+  out.elem = *t;
+  out.elem_name = Lowerer::spelled(q);
+  out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
+}
+
 
 // The parameters keep their names in every generated function, so a name
 // the generated code needs for something else is an error: the adjoint or

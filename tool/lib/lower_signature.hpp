@@ -7,9 +7,14 @@
 
 #include "lower_common.hpp"
 
+#include <clang/AST/Type.h>
+
+#include <optional>
 #include <set>
+#include <string>
 
 namespace clang {
+class DeclaratorDecl;
 class FieldDecl;
 class Stmt;
 } // namespace clang
@@ -28,6 +33,28 @@ public:
 
 private:
   Lowerer& L;
+
+  // One parameter: its Param (k_.params), by its shape; an error in it is
+  // reported, the parameter poisoned (its uses are not reported again) and
+  // the rest of the kernel still lowered, so one run reports every error.
+  void parameter(const clang::DeclaratorDecl* p);
+  // The shapes, each filling `out` (name and annotation `ann` known):
+  // an unnamed tag (a value of an empty class type choosing an overload);
+  void tag_parameter(const clang::DeclaratorDecl* p, const std::string& ann, Param& out);
+  // `DPGEN_OUT double& mass`, `DPGEN_IN const double& c` (Param::scalar_ref);
+  void scalar_ref_parameter(const clang::DeclaratorDecl* p, const std::string& ann,
+                            Type ref_scalar, Param& out);
+  // std::vector<T>& or std::span<T> (returns the Param of its size);
+  std::optional<Param> container_parameter(const clang::DeclaratorDecl* p,
+                                           const std::string& ann, clang::QualType span_elem,
+                                           Param& out);
+  // a pointer: flat, rows, row pointers (returns a DPGEN_INOUT array's twin);
+  std::optional<Param> pointer_parameter(const clang::DeclaratorDecl* p, const std::string& ann,
+                                         Param& out);
+  // a scalar by value.
+  void value_parameter(const clang::DeclaratorDecl* p, const std::string& ann, Param& out);
+  // Some parameter (or member, or global) is a DPGEN_IN / a DPGEN_OUT.
+  bool any_in_ = false, any_out_ = false;
 
   // The parameters keep their names in every generated function, so a name
   // the generated code needs for something else is an error: the adjoint or
