@@ -48,3 +48,14 @@ DPGEN_KERNEL void max_then_min(DPGEN_IN const double* r, DPGEN_OUT double* out, 
   }
   out[0] = m;
 }
+
+// err[0] reduces, but the loop also writes err[i], which may be err[0]:
+// only elements at other constant indices are apart from the target.
+DPGEN_KERNEL void element_and_field(DPGEN_IN const double* u, DPGEN_OUT double* err, int n) {
+  err[0] = 0.0;
+  for (int i = 1; i < n; ++i) {
+    err[0] = fmax(err[0], u[i]);
+    err[i] = u[i] * u[i];
+  }
+  // CHECK: minmax_rules.cpp:[[@LINE-2]]:5: error: output 'err' may be written twice in one iteration
+}

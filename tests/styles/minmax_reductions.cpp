@@ -108,3 +108,15 @@ DPGEN_KERNEL void red_limits_and_cond(DPGEN_IN const double* a, DPGEN_OUT double
   out[1] = hi;
   out[2] = prev;
 }
+
+// The range of a field in one sweep, into two elements of one output (a
+// max into err[0] and a min into err[1], one with an if-update).
+DPGEN_KERNEL void red_range_two_elements(DPGEN_IN const double* u, DPGEN_OUT double* err, int n) {
+  err[0] = -1e300;
+  err[1] = 1e300;
+  for (int i = 0; i < n; ++i) {
+    err[0] = std::fmax(err[0], u[i] * u[i]);
+    if (u[i] < err[1])
+      err[1] = u[i];
+  }
+}

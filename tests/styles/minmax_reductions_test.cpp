@@ -176,3 +176,20 @@ TEST_CASE("styles: red_limits_and_cond") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: red_range_two_elements") {
+  for (int n : {1, 2, 9}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {2};
+    p.forward = [&](auto in, auto out) { red_range_two_elements(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      red_range_two_elements_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      red_range_two_elements_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

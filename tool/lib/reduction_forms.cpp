@@ -202,6 +202,32 @@ const clang::Expr* ReductionForms::extremum_if(const IfStmt* s, ReductionTarget&
 
 // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
 // `t` of one kind (lower_impl.hpp).
+// `*p` (element 0) or `p[c]` of a parameter, c an integer constant: p and c.
+std::optional<std::pair<const ValueDecl*, long long>>
+ReductionForms::constant_element(const clang::Expr* e) const {
+  e = e->IgnoreParenImpCasts();
+  const clang::Expr* base = nullptr;
+  long long index = 0;
+  if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
+    base = u->getSubExpr();
+  } else if (const auto* sub = dyn_cast<ArraySubscriptExpr>(e)) {
+    clang::Expr::EvalResult r;
+    if (sub->getIdx()->isValueDependent() || !sub->getIdx()->EvaluateAsInt(r, ctx_))
+      return std::nullopt;
+    base = sub->getBase();
+    index = r.Val.getInt().getExtValue();
+  }
+  const auto* ref = base ? dyn_cast<DeclRefExpr>(base->IgnoreParenImpCasts()) : nullptr;
+  if (!ref || !isa<ParmVarDecl>(ref->getDecl()))
+    return std::nullopt;
+  return std::pair{ref->getDecl(), index};
+}
+
+bool ReductionForms::apart(const clang::Expr* a, const clang::Expr* b) const {
+  auto x = constant_element(a), y = constant_element(b);
+  return x && y && x->first == y->first && x->second != y->second;
+}
+
 int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t) const {
   int kind = 0, updates = 0;
   bool other = false;
@@ -233,6 +259,10 @@ int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t) co
         return;
       }
     }
+    // Another element of the target's array at a constant index (`err[1]`
+    // beside the reduction into `err[0]`): a different element, no mention.
+    if (const auto* e = dyn_cast<clang::Expr>(s); e && t.element && apart(e, t.element))
+      return;
     if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == t.decl) {
       other = true;
       return;

@@ -6,6 +6,9 @@
 // lower_impl.hpp only.
 #pragma once
 
+#include <optional>
+#include <utility>
+
 namespace clang {
 class ASTContext;
 class Expr;
@@ -63,6 +66,12 @@ public:
   int extremum_kind(const clang::Stmt* body, const ReductionTarget& t) const;
 
 private:
+  // `*p` (element 0) or `p[c]` of a parameter p at an integer constant c.
+  std::optional<std::pair<const clang::ValueDecl*, long long>>
+  constant_element(const clang::Expr* e) const;
+  // Two elements of one parameter at different constant indices.
+  bool apart(const clang::Expr* a, const clang::Expr* b) const;
+
   clang::ASTContext& ctx_;
   clang::SourceManager& sm_;
 };
