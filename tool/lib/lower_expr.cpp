@@ -151,199 +151,6 @@ void Lowerer::check_index_width(const clang::Expr* e, const ExprP& idx, const st
                      array, ctx_.getTypeSize(t), t.getAsString(), p->degree(), p->str());
 }
 
-ExprP Lowerer::inline_call(const CallExpr* c, const FunctionDecl* f) {
-  const FunctionDecl* def = nullptr;
-  f->hasBody(def);
-  for (const auto& fr : frames_)
-    if (fr.fn->getCanonicalDecl() == def->getCanonicalDecl())
-      fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
-                                         def->getNameAsString()));
-  if (frames_.size() == 16)
-    fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
-  // A lambda of the kernel: its call operator, the closure object first.
-  unsigned first = 0;
-  std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
-  if (const auto* m = dyn_cast<CXXMethodDecl>(def);
-      m && (m->getParent()->isLambda() || objects_.is_functor_class(m->getParent()))) {
-    const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
-    const auto* ref =
-        oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
-    const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
-    if (lv && poisoned_.count(lv))
-      throw Rejected{}; // its declaration's error is reported already
-    auto it = lv ? env_.find(lv) : env_.end();
-    if (it == env_.end() || it->second.kind != Binding::Lambda)
-      fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
-                             "(auto f = [&](...) {...}; f(...))");
-    if (it->second.functor && it->second.fields) // its members, while its body runs
-      functor_fields = it->second.fields;
-    if (!m->isConst())
-      fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
-                                         "changes from one call to the next, which inlining "
-                                         "does not; make it a plain lambda",
-                                         lv->getNameAsString()));
-    for (const auto& [cv, was] : it->second.captured_arrays)
-      if (env_[cv].elems != was)
-        fail(c->getBeginLoc(), fmt::format("lambda '{}' captured local array '{}' by copy, "
-                                           "and '{}' changed before this call; capture it by "
-                                           "reference, or make the lambda after the change",
-                                           lv->getNameAsString(), cv->getNameAsString(),
-                                           cv->getNameAsString()));
-    for (const auto& [cv, was] : it->second.captured)
-      if (env_[cv].value != was)
-        fail(c->getBeginLoc(), fmt::format("lambda '{}' captured '{}' by copy, and '{}' "
-                                           "changed before this call; capture it by "
-                                           "reference, or make the lambda after the change",
-                                           lv->getNameAsString(), cv->getNameAsString(),
-                                           cv->getNameAsString()));
-    first = 1;
-  } else if ((isa<CXXMethodDecl>(def) && !this_call(c)) || def->isVariadic()) {
-    fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
-                                       "free helper functions only",
-                                       def->getNameAsString()));
-  }
-  const bool is_void = def->getReturnType()->isVoidType();
-  auto rt = is_void ? std::optional<Type>(Type::Double) : scalar_type(def->getReturnType());
-  if (!rt || def->getReturnType()->isReferenceType())
-    fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
-                                       "returns an int, float, double or bool value (or "
-                                       "void, with its results in out-parameters)",
-                                       def->getNameAsString(),
-                                       def->getReturnType().getAsString()));
-  if (c->getNumArgs() != def->getNumParams() + first)
-    fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
-  // Bind the parameters (arguments are evaluated in the caller's scope).
-  std::vector<std::pair<const VarDecl*, Binding>> binds;
-  // Out-parameters: `double& f` and `double* f` (called with `&x`) bound to
-  // a local x of the caller: copied in, and copied back after the body
-  // (the same as a reference while no two of them name one local).
-  std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
-  auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
-    const clang::Expr* a = arg->IgnoreParenImpCasts();
-    if (pointer) {
-      const auto* u = dyn_cast<UnaryOperator>(a);
-      a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
-    }
-    const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
-    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = v ? env_.find(v) : env_.end();
-    if (it == env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
-      fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
-                                           "be {}a local variable of the caller",
-                                           pd->getNameAsString(), def->getNameAsString(),
-                                           pointer ? "the address of " : ""));
-    for (const auto& [q, w] : outs)
-      if (w == v)
-        fail(arg->getBeginLoc(), fmt::format("local '{}' is passed to two out-parameters of "
-                                             "helper '{}'",
-                                             v->getNameAsString(), def->getNameAsString()));
-    if (!is_void)
-      fail(pd->getLocation(), fmt::format("helper '{}' returns a value and has out-parameter "
-                                          "'{}': return void and put every result in an "
-                                          "out-parameter, or return the one result",
-                                          def->getNameAsString(), pd->getNameAsString()));
-    Binding b = it->second;
-    b.deref_only = pointer;
-    binds.push_back({pd, b});
-    outs.push_back({pd, v});
-  };
-  for (unsigned i = 0; i < def->getNumParams(); ++i) {
-    const ParmVarDecl* pd = def->getParamDecl(i);
-    const clang::Expr* arg = c->getArg(i + first);
-    QualType pt = pd->getType();
-    // A library parallel-for's body (`template <class F> void ParallelFor(Box
-    // const& box, F&& f)`): a lambda, a view or an object of the caller.
-    if (std::optional<Binding> b = objects_.class_argument(pd, arg, def)) {
-      binds.push_back({pd, *b});
-      continue;
-    }
-    if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
-        scalar_type(pt->getPointeeType()) && [&] {
-          const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
-          return u && u->getOpcode() == UO_AddrOf;
-        }()) {
-      out_param(pd, arg, true);
-      continue;
-    }
-    if (pt->isPointerType()) {
-      const clang::Expr* base = arg->IgnoreParenImpCasts();
-      const Param* ap = isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? array_base(base) : nullptr;
-      if (!ap)
-        fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
-                                             "'{}' must be an array parameter of the kernel "
-                                             "itself (no pointer arithmetic)",
-                                             pd->getNameAsString(), def->getNameAsString()));
-      Binding b;
-      b.kind = Binding::ArrayParam;
-      b.param = ap;
-      binds.push_back({pd, b});
-      continue;
-    }
-    if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) {
-      if (!scalar_type(pt.getNonReferenceType()))
-        fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', "
-                                            "outside the kernel subset",
-                                            pd->getNameAsString(), def->getNameAsString(),
-                                            pt.getAsString()));
-      out_param(pd, arg, false);
-      continue;
-    }
-    auto t = scalar_type(pt.getNonReferenceType());
-    if (!t)
-      fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
-                                          "the kernel subset",
-                                          pd->getNameAsString(), def->getNameAsString(),
-                                          pt.getAsString()));
-    Binding b;
-    b.kind = Binding::Value;
-    b.value = make_local(pd->getNameAsString(), pd, cast(expr(arg), *t));
-    binds.push_back({pd, b});
-  }
-  for (const auto& [pd, b] : binds)
-    env_[pd] = b;
-  frames_.push_back({def, path_.size(), loops_.size(), *rt, {}, is_void});
-  std::map<const FieldDecl*, Binding> outer_fields;
-  if (functor_fields) {
-    outer_fields = fields_;
-    fields_ = *functor_fields;
-  }
-  Escape e;
-  try {
-    e = lower(def->getBody());
-  } catch (const Rejected&) {
-    path_.resize(frames_.back().path_depth);
-    frames_.pop_back();
-    if (functor_fields)
-      fields_ = outer_fields;
-    throw;
-  }
-  if (functor_fields)
-    fields_ = outer_fields;
-  InlineFrame fr = frames_.back();
-  frames_.pop_back();
-  path_.resize(fr.path_depth);
-  if (is_void) {
-    for (const auto& [pd, v] : outs)
-      env_[v].value = env_[pd].value;
-    return nullptr;
-  }
-  if (e != Escape::Always || fr.returns.empty())
-    fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
-                                                  "returning a value",
-                                                  def->getNameAsString()));
-  // The last return is reached when no earlier one was.
-  ExprP v = fr.returns.back().second;
-  for (size_t i = fr.returns.size() - 1; i-- > 0;) {
-    ExprP cond;
-    for (const auto& pc : fr.returns[i].first) {
-      ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
-      cond = cond ? binary(Op::And, cond, c1) : c1;
-    }
-    v = cond ? select(cond, fr.returns[i].second, v) : fr.returns[i].second;
-  }
-  return v;
-}
-
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
@@ -641,7 +448,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     // a method of the member kernel's (or the running functor's) object,
     // on the same object: inlined like a helper, reading the same members
     if (this_call(m) && md && md->hasBody() && !md->isVirtual())
-      return inline_call(m, md);
+      return inl_.inline_call(m, md);
     fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
                           "parameter, the kernel may call size())");
   }
@@ -793,7 +600,7 @@ ExprP Lowerer::call_expr(const CallExpr* c) {
   bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                       f->getBuiltinID() != 0;
   if (!from_library && f->hasBody())
-    return inline_call(c, f);
+    return inl_.inline_call(c, f);
   if (!from_library)
     fail(c->getBeginLoc(), fmt::format("call to '{}', whose body dpgen cannot see: helper "
                                        "functions are inlined, so define '{}' in the kernel's "

@@ -17,6 +17,7 @@
 #include "prove.hpp"
 #include "lower_buffer.hpp"
 #include "lower_common.hpp"
+#include "lower_inline.hpp"
 #include "lower_object.hpp"
 #include "lower_view.hpp"
 #include "lower_reduce.hpp"
@@ -218,11 +219,6 @@ private:
   // constant loops count as constants: those loops are unrolled).
   void declare_array(const VarDecl* v, const ConstantArrayType* at);
 
-  // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
-  // variable captured by copy must still have the value it had here when the
-  // lambda is called; init-captures and `this` are outside the subset.
-  void declare_lambda(const VarDecl* v, const CXXRecordDecl* rd);
-
   // The element of a local array that `idx` names: it must be a constant.
   size_t local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n);
 
@@ -412,8 +408,10 @@ private:
     bool is_void = false; // results through out-parameters, or stores
   };
   std::vector<InlineFrame> frames_;
+  // The inlining of helpers and lambdas (lower_inline.hpp).
+  friend class Inliner;
+  Inliner inl_{*this};
 
-  ExprP inline_call(const CallExpr* c, const FunctionDecl* f);
   // `flux(a, b)` / `this->flux(a, b)` inside a member kernel or a functor's
   // call operator: a call of a method on the same object.
   bool this_call(const CallExpr* c) const {
@@ -456,9 +454,6 @@ private:
     return m && (m->getParent()->isLambda() || objects_.is_functor_class(m->getParent())) &&
            m->getReturnType()->isVoidType();
   }
-  // The Binding of a lambda expression, its captures by copy recorded
-  // (declare_lambda, a lambda passed to a helper).
-  Binding lambda_binding(const LambdaExpr* le, const std::string& name);
   // A kernel-level symbol the index algebra cannot see into (its value only
   // ever compared in generated code).
   ExprP opaque_symbol(const std::string& name, long long value);

@@ -219,7 +219,7 @@ std::optional<Binding> Objects::class_argument(const ParmVarDecl* pd, const clan
   }
   if (rd->isLambda() || is_functor_class(rd)) {
     if (const auto* le = dyn_cast<LambdaExpr>(a))
-      return L.lambda_binding(le, pd->getNameAsString());
+      return L.inl_.lambda_binding(le, pd->getNameAsString());
     if (!isa<DeclRefExpr>(a))
       return functor_binding(a, rd);
     if (const auto* r = dyn_cast<DeclRefExpr>(a))

@@ -271,7 +271,7 @@ void Lowerer::declare(const Decl* d) {
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {
-    declare_lambda(v, rd);
+    inl_.declare_lambda(v, rd);
     return;
   }
   if (objects_.declare_object(v)) // const auto lo = amrex::lbound(bx);
@@ -352,43 +352,6 @@ void Lowerer::declare_array(const VarDecl* v, const ConstantArrayType* at) {
       b.elems[i] = cast(int_const(0), *t);
   }
   env_[v] = b;
-}
-
-// `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
-// variable captured by copy must still have the value it had here when the
-// lambda is called; init-captures and `this` are outside the subset.
-void Lowerer::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
-  const clang::Expr* init = v->getInit();
-  const auto* le = init ? dyn_cast<LambdaExpr>(init->IgnoreImplicit()) : nullptr;
-  if (!le)
-    fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
-                                       "expression",
-                                       v->getNameAsString()), "dpgen-lambda");
-  (void)rd;
-  env_[v] = lambda_binding(le, v->getNameAsString());
-}
-
-Binding Lowerer::lambda_binding(const LambdaExpr* le, const std::string& name) {
-  Binding b;
-  b.kind = Binding::Lambda;
-  b.closure = le->getLambdaClass();
-  for (const LambdaCapture& c : le->captures()) {
-    if (c.capturesThis() && self_class_) // a member kernel's object: its members are read-only
-      continue;
-    if (!c.capturesVariable() || le->isInitCapture(&c))
-      fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
-                                        "kernel's variables (this, or an init-capture)",
-                                        name), "dpgen-lambda");
-    if (c.getCaptureKind() != LCK_ByCopy)
-      continue;
-    const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
-    auto it = cv ? env_.find(cv) : env_.end();
-    if (it != env_.end() && it->second.kind == Binding::Value)
-      b.captured.push_back({cv, it->second.value});
-    if (it != env_.end() && it->second.kind == Binding::LocalArray)
-      b.captured_arrays.push_back({cv, it->second.elems});
-  }
-  return b;
 }
 
 // The element of a local array that `idx` names: it must be a constant.

@@ -1,0 +1,239 @@
+// Lowering, helpers and lambdas (lower_inline.hpp): a call of a user's function
+// or lambda is lowered by inlining its body, its parameters bound to the
+// arguments' values (arrays to the kernel's arrays) and its returns made one
+// value, selected by the conditions under which each is reached.
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
+  const FunctionDecl* def = nullptr;
+  f->hasBody(def);
+  for (const auto& fr : L.frames_)
+    if (fr.fn->getCanonicalDecl() == def->getCanonicalDecl())
+      L.fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
+                                         def->getNameAsString()));
+  if (L.frames_.size() == 16)
+    L.fail(c->getBeginLoc(), "helper calls nest more than 16 deep");
+  // A lambda of the kernel: its call operator, the closure object first.
+  unsigned first = 0;
+  std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
+  if (const auto* m = dyn_cast<CXXMethodDecl>(def);
+      m && (m->getParent()->isLambda() || L.objects_.is_functor_class(m->getParent()))) {
+    const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
+    const auto* ref =
+        oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
+    const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+    if (lv && L.poisoned_.count(lv))
+      throw Rejected{}; // its declaration's error is reported already
+    auto it = lv ? L.env_.find(lv) : L.env_.end();
+    if (it == L.env_.end() || it->second.kind != Binding::Lambda)
+      L.fail(c->getBeginLoc(), "a lambda is called through a local of the kernel that holds it "
+                             "(auto f = [&](...) {...}; f(...))");
+    if (it->second.functor && it->second.fields) // its members, while its body runs
+      functor_fields = it->second.fields;
+    if (!m->isConst())
+      L.fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
+                                         "changes from one call to the next, which inlining "
+                                         "does not; make it a plain lambda",
+                                         lv->getNameAsString()));
+    for (const auto& [cv, was] : it->second.captured_arrays)
+      if (L.env_[cv].elems != was)
+        L.fail(c->getBeginLoc(), fmt::format("lambda '{}' captured local array '{}' by copy, "
+                                           "and '{}' changed before this call; capture it by "
+                                           "reference, or make the lambda after the change",
+                                           lv->getNameAsString(), cv->getNameAsString(),
+                                           cv->getNameAsString()));
+    for (const auto& [cv, was] : it->second.captured)
+      if (L.env_[cv].value != was)
+        L.fail(c->getBeginLoc(), fmt::format("lambda '{}' captured '{}' by copy, and '{}' "
+                                           "changed before this call; capture it by "
+                                           "reference, or make the lambda after the change",
+                                           lv->getNameAsString(), cv->getNameAsString(),
+                                           cv->getNameAsString()));
+    first = 1;
+  } else if ((isa<CXXMethodDecl>(def) && !L.this_call(c)) || def->isVariadic()) {
+    L.fail(c->getBeginLoc(), fmt::format("'{}' is a member or variadic function; a kernel calls "
+                                       "free helper functions only",
+                                       def->getNameAsString()));
+  }
+  const bool is_void = def->getReturnType()->isVoidType();
+  auto rt = is_void ? std::optional<Type>(Type::Double) : L.scalar_type(def->getReturnType());
+  if (!rt || def->getReturnType()->isReferenceType())
+    L.fail(c->getBeginLoc(), fmt::format("helper '{}' returns '{}'; a helper called from a kernel "
+                                       "returns an int, float, double or bool value (or "
+                                       "void, with its results in out-parameters)",
+                                       def->getNameAsString(),
+                                       def->getReturnType().getAsString()));
+  if (c->getNumArgs() != def->getNumParams() + first)
+    L.fail(c->getBeginLoc(), "call with default arguments is outside the kernel subset");
+  // Bind the parameters (arguments are evaluated in the caller's scope).
+  std::vector<std::pair<const VarDecl*, Binding>> binds;
+  // Out-parameters: `double& f` and `double* f` (called with `&x`) bound to
+  // a local x of the caller: copied in, and copied back after the body
+  // (the same as a reference while no two of them name one local).
+  std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
+  auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
+    const clang::Expr* a = arg->IgnoreParenImpCasts();
+    if (pointer) {
+      const auto* u = dyn_cast<UnaryOperator>(a);
+      a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
+    }
+    const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? L.env_.find(v) : L.env_.end();
+    if (it == L.env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
+      L.fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
+                                           "be {}a local variable of the caller",
+                                           pd->getNameAsString(), def->getNameAsString(),
+                                           pointer ? "the address of " : ""));
+    for (const auto& [q, w] : outs)
+      if (w == v)
+        L.fail(arg->getBeginLoc(), fmt::format("local '{}' is passed to two out-parameters of "
+                                             "helper '{}'",
+                                             v->getNameAsString(), def->getNameAsString()));
+    if (!is_void)
+      L.fail(pd->getLocation(), fmt::format("helper '{}' returns a value and has out-parameter "
+                                          "'{}': return void and put every result in an "
+                                          "out-parameter, or return the one result",
+                                          def->getNameAsString(), pd->getNameAsString()));
+    Binding b = it->second;
+    b.deref_only = pointer;
+    binds.push_back({pd, b});
+    outs.push_back({pd, v});
+  };
+  for (unsigned i = 0; i < def->getNumParams(); ++i) {
+    const ParmVarDecl* pd = def->getParamDecl(i);
+    const clang::Expr* arg = c->getArg(i + first);
+    QualType pt = pd->getType();
+    // A library parallel-for's body (`template <class F> void ParallelFor(Box
+    // const& box, F&& f)`): a lambda, a view or an object of the caller.
+    if (std::optional<Binding> b = L.objects_.class_argument(pd, arg, def)) {
+      binds.push_back({pd, *b});
+      continue;
+    }
+    if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
+        L.scalar_type(pt->getPointeeType()) && [&] {
+          const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
+          return u && u->getOpcode() == UO_AddrOf;
+        }()) {
+      out_param(pd, arg, true);
+      continue;
+    }
+    if (pt->isPointerType()) {
+      const clang::Expr* base = arg->IgnoreParenImpCasts();
+      const Param* ap = isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? L.array_base(base) : nullptr;
+      if (!ap)
+        L.fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
+                                             "'{}' must be an array parameter of the kernel "
+                                             "itself (no pointer arithmetic)",
+                                             pd->getNameAsString(), def->getNameAsString()));
+      Binding b;
+      b.kind = Binding::ArrayParam;
+      b.param = ap;
+      binds.push_back({pd, b});
+      continue;
+    }
+    if (pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified()) {
+      if (!L.scalar_type(pt.getNonReferenceType()))
+        L.fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', "
+                                            "outside the kernel subset",
+                                            pd->getNameAsString(), def->getNameAsString(),
+                                            pt.getAsString()));
+      out_param(pd, arg, false);
+      continue;
+    }
+    auto t = L.scalar_type(pt.getNonReferenceType());
+    if (!t)
+      L.fail(pd->getLocation(), fmt::format("parameter '{}' of helper '{}' has type '{}', outside "
+                                          "the kernel subset",
+                                          pd->getNameAsString(), def->getNameAsString(),
+                                          pt.getAsString()));
+    Binding b;
+    b.kind = Binding::Value;
+    b.value = L.make_local(pd->getNameAsString(), pd, cast(L.expr(arg), *t));
+    binds.push_back({pd, b});
+  }
+  for (const auto& [pd, b] : binds)
+    L.env_[pd] = b;
+  L.frames_.push_back({def, L.path_.size(), L.loops_.size(), *rt, {}, is_void});
+  std::map<const FieldDecl*, Binding> outer_fields;
+  if (functor_fields) {
+    outer_fields = L.fields_;
+    L.fields_ = *functor_fields;
+  }
+  Escape e;
+  try {
+    e = L.lower(def->getBody());
+  } catch (const Rejected&) {
+    L.path_.resize(L.frames_.back().path_depth);
+    L.frames_.pop_back();
+    if (functor_fields)
+      L.fields_ = outer_fields;
+    throw;
+  }
+  if (functor_fields)
+    L.fields_ = outer_fields;
+  Lowerer::InlineFrame fr = L.frames_.back();
+  L.frames_.pop_back();
+  L.path_.resize(fr.path_depth);
+  if (is_void) {
+    for (const auto& [pd, v] : outs)
+      L.env_[v].value = L.env_[pd].value;
+    return nullptr;
+  }
+  if (e != Escape::Always || fr.returns.empty())
+    L.fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
+                                                  "returning a value",
+                                                  def->getNameAsString()));
+  // The last return is reached when no earlier one was.
+  ExprP v = fr.returns.back().second;
+  for (size_t i = fr.returns.size() - 1; i-- > 0;) {
+    ExprP cond;
+    for (const auto& pc : fr.returns[i].first) {
+      ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
+      cond = cond ? binary(Op::And, cond, c1) : c1;
+    }
+    v = cond ? select(cond, fr.returns[i].second, v) : fr.returns[i].second;
+  }
+  return v;
+}
+
+// `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
+// variable captured by copy must still have the value it had here when the
+// lambda is called; init-captures and `this` are outside the subset.
+void Inliner::declare_lambda(const VarDecl* v, const CXXRecordDecl* rd) {
+  const clang::Expr* init = v->getInit();
+  const auto* le = init ? dyn_cast<LambdaExpr>(init->IgnoreImplicit()) : nullptr;
+  if (!le)
+    L.fail(v->getLocation(), fmt::format("lambda '{}' must be initialised with a lambda "
+                                       "expression",
+                                       v->getNameAsString()), "dpgen-lambda");
+  (void)rd;
+  L.env_[v] = lambda_binding(le, v->getNameAsString());
+}
+
+Binding Inliner::lambda_binding(const LambdaExpr* le, const std::string& name) {
+  Binding b;
+  b.kind = Binding::Lambda;
+  b.closure = le->getLambdaClass();
+  for (const LambdaCapture& c : le->captures()) {
+    if (c.capturesThis() && L.self_class_) // a member kernel's object: its members are read-only
+      continue;
+    if (!c.capturesVariable() || le->isInitCapture(&c))
+      L.fail(c.getLocation(), fmt::format("lambda '{}' captures something other than the "
+                                        "kernel's variables (this, or an init-capture)",
+                                        name), "dpgen-lambda");
+    if (c.getCaptureKind() != LCK_ByCopy)
+      continue;
+    const auto* cv = dyn_cast<VarDecl>(c.getCapturedVar());
+    auto it = cv ? L.env_.find(cv) : L.env_.end();
+    if (it != L.env_.end() && it->second.kind == Binding::Value)
+      b.captured.push_back({cv, it->second.value});
+    if (it != L.env_.end() && it->second.kind == Binding::LocalArray)
+      b.captured_arrays.push_back({cv, it->second.elems});
+  }
+  return b;
+}
+
+} // namespace dpgen::lowering

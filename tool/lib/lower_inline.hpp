@@ -1,0 +1,46 @@
+// Lowering, helpers and lambdas (lower_inline.cpp): a part of the lowering
+// with no state of its own beyond the stack of calls being inlined, which
+// the statement lowering reads too (Lowerer::frames_). A user function
+// called from a kernel (a limiter, a flux, minmod) or a lambda is
+// differentiated by inlining: its parameters are bound to the arguments'
+// values (arrays to the kernel's arrays), its body is lowered like the
+// kernel's, and its returns become one value, selected by the conditions
+// under which each return is reached. Included by lower_impl.hpp only.
+#pragma once
+
+#include "lower_common.hpp"
+
+#include <string>
+
+namespace clang {
+class CallExpr;
+class CXXRecordDecl;
+class FunctionDecl;
+class LambdaExpr;
+class VarDecl;
+} // namespace clang
+
+namespace dpgen::lowering {
+
+class Lowerer;
+
+class Inliner {
+public:
+  explicit Inliner(Lowerer& lowerer) : L(lowerer) {}
+
+  // The value of call `c` of helper `f` (void helpers: their stores and
+  // out-parameters, and a null value).
+  ExprP inline_call(const clang::CallExpr* c, const clang::FunctionDecl* f);
+  // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
+  // variable captured by copy must still have the value it had here when the
+  // lambda is called; init-captures and `this` are outside the subset.
+  void declare_lambda(const clang::VarDecl* v, const clang::CXXRecordDecl* rd);
+  // The Binding of a lambda expression, its captures by copy recorded
+  // (declare_lambda, a lambda passed to a helper).
+  Binding lambda_binding(const clang::LambdaExpr* le, const std::string& name);
+
+private:
+  Lowerer& L;
+};
+
+} // namespace dpgen::lowering
