@@ -54,101 +54,12 @@ bool Lowerer::provably_nonneg(const ExprP& e, const std::vector<PathCond>& more)
   return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
 }
 
-// The value of `e` only goes into an array index (through + - * and
-// conversions): if it wraps, the kernel itself reads out of bounds.
-bool Lowerer::feeds_index_only(const clang::Expr* e) {
-  const clang::Stmt* child = e;
-  for (int depth = 0; depth < 32; ++depth) {
-    auto parents = ctx_.getParents(*child);
-    if (parents.size() != 1)
-      return false;
-    const clang::Stmt* up = parents[0].get<clang::Stmt>();
-    if (!up)
-      return false;
-    if (const auto* sub = dyn_cast<ArraySubscriptExpr>(up))
-      return sub->getIdx()->IgnoreParenImpCasts() == child ||
-             sub->getIdx() == child;
-    if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(up))
-      return oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2 &&
-             oc->getArg(1)->IgnoreParenImpCasts() == static_cast<const clang::Expr*>(child)->IgnoreParens();
-    if (const auto* b = dyn_cast<BinaryOperator>(up)) {
-      if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub && b->getOpcode() != BO_Mul)
-        return false;
-    } else if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
-      // an arm (`i == 0 ? n - 1 : i - 1`): taken only where it is the index
-      if (c->getCond() == child || c->getCond()->IgnoreParenImpCasts() == child)
-        return false;
-    } else if (!isa<ParenExpr>(up) && !isa<ImplicitCastExpr>(up)) {
-      return false;
-    }
-    child = up;
-  }
-  return false;
-}
-
-// The conditions of the ternaries `e` is an arm of (`i == 0 ? n - 1 : i - 1`).
-std::vector<PathCond> Lowerer::arm_conditions(const clang::Expr* e) {
-  std::vector<PathCond> out;
-  const clang::Stmt* child = e;
-  for (int depth = 0; depth < 32; ++depth) {
-    auto parents = ctx_.getParents(*child);
-    if (parents.size() != 1)
-      break;
-    const clang::Stmt* up = parents[0].get<clang::Stmt>();
-    if (!up || !isa<clang::Expr>(up))
-      break;
-    if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
-      bool in_true = c->getTrueExpr() == child, in_false = c->getFalseExpr() == child;
-      if (in_true || in_false)
-        out.push_back({cond(c->getCond()), in_true});
-    }
-    child = up;
-  }
-  return out;
-}
-
-void Lowerer::check_unsigned_result(const ExprP& value, SourceLocation loc, const std::string& what, const clang::Expr* node) {
-  if (in_loop_bounds_ || feeds_index_only(node) || provably_nonneg(value) ||
-      provably_nonneg(value, arm_conditions(node)))
-    return;
-  fail(loc, fmt::format("{} may go below zero here, where the kernel's unsigned arithmetic "
-                        "wraps around but dpgen's index arithmetic (signed, 64 bits) does not: "
-                        "compute it in a signed type, or guard it so that it stays >= 0 (dpgen "
-                        "proves that from the loop bounds and the conditions around it)",
-                        what));
-}
-
 bool Lowerer::paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
   for (const auto& x : a)
     for (const auto& y : b)
       if (x.cond == y.cond && x.positive != y.positive)
         return true;
   return false;
-}
-
-// An index that multiplies three or more sizes and counters (a 3D
-// `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
-// 32-bit type it overflows, in the forward kernel and in its adjoint alike.
-void Lowerer::check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array) {
-  QualType t = e->IgnoreImpCasts()->getType();
-  if (ctx_.getTypeSize(t) >= 64)
-    return;
-  auto p = to_poly(idx);
-  if (!p || p->degree() < 3)
-    return;
-  // The forward kernel has the same limit; the adjoint computes its indices
-  // in 64 bits, so this is a warning about the user's code, not an error.
-  if (warned_width_)
-    return; // once per kernel
-  warned_width_ = true;
-  auto& d = ctx_.getDiagnostics();
-  unsigned id = d.getCustomDiagID(DiagnosticsEngine::Warning, "%0");
-  d.Report(e->getBeginLoc(), id)
-      << fmt::format("index of '{}' is computed in the {}-bit type '{}' but multiplies {} sizes "
-                     "and counters ('{}'): past 2^31 elements it overflows in this kernel (the "
-                     "generated adjoint computes it in 64 bits); compute it in std::ptrdiff_t "
-                     "or long [dpgen-index-width]",
-                     array, ctx_.getTypeSize(t), t.getAsString(), p->degree(), p->str());
 }
 
 auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
@@ -269,7 +180,7 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
                                          p->name, p->name, p->name));
   if (bufs_.is_buffer(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
     return Access{p, bufs_.buffer_index(p, idx, e)};
-  check_index_width(sub->getIdx(), idx, p->name);
+  ints_.check_index_width(sub->getIdx(), idx, p->name);
   return Access{p, idx};
 }
 
@@ -411,7 +322,7 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     case UO_Minus: {
       ExprP x = expr(u->getSubExpr());
       if (u->getType()->isUnsignedIntegerType())
-        check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
+        ints_.check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
                               fmt::format("unsigned negation '{}'", text(u)), u);
       return unary(Op::Neg, x);
     }
@@ -470,7 +381,7 @@ ExprP Lowerer::cast_expr(const CastExpr* c, const clang::Expr* sub) {
     ExprP inner = expr(sub);
     QualType to = c->getType().getCanonicalType(), from = sub->getType().getCanonicalType();
     if (to->isUnsignedIntegerType() && from->isSignedIntegerType())
-      check_unsigned_result(inner, c->getExprLoc(),
+      ints_.check_unsigned_result(inner, c->getExprLoc(),
                             fmt::format("'{}', converted to unsigned '{}',", text(sub),
                                         to.getAsString()),
                             c);
@@ -583,7 +494,7 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
     fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
                                           b->getOpcodeStr().str()));
   if (row->op == Op::Sub && b->getType()->isUnsignedIntegerType())
-    check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
+    ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
                           fmt::format("unsigned difference '{}'", text(b)), b);
   return binary(row->op, l, r);
 }

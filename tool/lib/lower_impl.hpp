@@ -18,6 +18,7 @@
 #include "lower_buffer.hpp"
 #include "lower_common.hpp"
 #include "lower_inline.hpp"
+#include "lower_int.hpp"
 #include "lower_object.hpp"
 #include "lower_view.hpp"
 #include "lower_reduce.hpp"
@@ -360,19 +361,12 @@ private:
   // in range, the conditions on its path hold, unsigned sizes are >= 0.
   bool provably_nonneg(const ExprP& e, const std::vector<PathCond>& more = {}) const;
 
-  // Integer arithmetic in the generated code is signed and 64 bits wide; the
-  // kernel's own may wrap (unsigned below zero, a negative value converted to
-  // unsigned) or truncate (to short or char). Where the two could differ the
-  // kernel is rejected, unless the value provably stays in range. Loop bounds
-  // are exempt: where they differ the forward loop itself runs ~2^64 times.
+  // Lowering a loop's bounds (exempt from IntegerChecks: where the kernel's
+  // unsigned arithmetic and ours differ, its loop runs ~2^64 times).
   bool in_loop_bounds_ = false;
-  // The value of `e` only goes into an array index (through + - * and
-  // conversions): if it wraps, the kernel itself reads out of bounds.
-  bool feeds_index_only(const clang::Expr* e);
-  // The conditions of the ternaries `e` is an arm of (`i == 0 ? n - 1 : i - 1`).
-  std::vector<PathCond> arm_conditions(const clang::Expr* e);
-  void check_unsigned_result(const ExprP& value, SourceLocation loc, const std::string& what,
-                             const clang::Expr* node);
+  // Integer results checked against wrapping and truncation (lower_int.hpp).
+  friend class IntegerChecks;
+  IntegerChecks ints_{*this};
 
   // Facts about the parameters on the current path.
   Facts facts_of_path() const {
@@ -384,11 +378,6 @@ private:
 
   static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
 
-  // An index that multiplies three or more sizes and counters (a 3D
-  // `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
-  // 32-bit type it overflows, in the forward kernel and in its adjoint alike.
-  void check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array);
-  bool warned_width_ = false;
 
   // ---- expressions -----------------------------------------------------------
 

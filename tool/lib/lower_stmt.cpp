@@ -585,7 +585,7 @@ void Lowerer::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, B
     }
     value = binary(bop, *b.value, r);
     if (bop == Op::Sub && var->getType().getNonReferenceType()->isUnsignedIntegerType())
-      check_unsigned_result(value, loc,
+      ints_.check_unsigned_result(value, loc,
                             fmt::format("unsigned '{}' after '-='", var->getNameAsString()),
                             lhs);
   }
