@@ -59,3 +59,14 @@ DPGEN_KERNEL void element_and_field(DPGEN_IN const double* u, DPGEN_OUT double* 
   }
   // CHECK: minmax_rules.cpp:[[@LINE-2]]:5: error: output 'err' may be written twice in one iteration
 }
+
+// A helper that is not a max of its two parameters is no update.
+static double not_a_max(double a, double b) { return a > b ? a : 2.0 * b; }
+
+DPGEN_KERNEL void helper_not_max(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i)
+    m = not_a_max(m, u[i]);
+  // CHECK: minmax_rules.cpp:[[@LINE-1]]:19: error: 'm' is declared outside the loop and assigned inside it
+  out[0] = m;
+}

@@ -120,3 +120,19 @@ DPGEN_KERNEL void red_range_two_elements(DPGEN_IN const double* u, DPGEN_OUT dou
       err[1] = u[i];
   }
 }
+
+// A C code's own max and min helpers (the idiom before <math.h> had fmax),
+// one called as `m = dmax(m, e)`, the other with the target second.
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+static inline double dmin(double x, double y) { return (y < x) ? y : x; }
+
+DPGEN_KERNEL void red_user_helpers(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double hi = -1e300, lo = 1e300;
+  for (int i = 1; i < n; ++i) {
+    double g = u[i] - u[i - 1];
+    hi = dmax(hi, g * g);
+    lo = dmin(0.5 * g, lo);
+  }
+  out[0] = hi;
+  out[1] = lo;
+}

@@ -193,3 +193,20 @@ TEST_CASE("styles: red_range_two_elements") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: red_user_helpers") {
+  for (int n : {2, 3, 12}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {2};
+    p.forward = [&](auto in, auto out) { red_user_helpers(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      red_user_helpers_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      red_user_helpers_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

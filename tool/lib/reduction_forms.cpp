@@ -108,6 +108,38 @@ ReductionTarget ReductionForms::target_of(const clang::Expr* lhs) {
 }
 
 // The term `e` of a min/max update of `t` (lower_impl.hpp).
+// A user's helper that is a max or a min of its two parameters: its body the
+// one statement `return a > b ? a : b;` (or `b < a ? a : b`, `std::max(a,
+// b)`, `fmax(b, a)`, ...: any form extremum_term knows, the target one
+// parameter and the term the other), both parameters real values. +1 a max,
+// -1 a min, 0 anything else (a helper that does more is no update).
+int ReductionForms::helper_extremum(const FunctionDecl* f) const {
+  const FunctionDecl* def = nullptr;
+  if (!f->hasBody(def) || def->getNumParams() != 2 || isa<CXXMethodDecl>(def) ||
+      def->isVariadic())
+    return 0;
+  const ParmVarDecl *a = def->getParamDecl(0), *b = def->getParamDecl(1);
+  for (const ParmVarDecl* p : {a, b}) {
+    QualType q = p->getType().getNonReferenceType();
+    if (!q->isRealFloatingType() || (p->getType()->isReferenceType() && !q.isConstQualified()))
+      return 0;
+  }
+  if (!def->getReturnType()->isRealFloatingType())
+    return 0;
+  const auto* body = dyn_cast_or_null<CompoundStmt>(def->getBody());
+  const auto* ret = body && body->size() == 1 ? dyn_cast<ReturnStmt>(body->body_front()) : nullptr;
+  if (!ret || !ret->getRetValue())
+    return 0;
+  if (helper_depth_ >= 4) // (a helper of a helper ...; a recursive one)
+    return 0;
+  int kind = 0;
+  ++helper_depth_;
+  const clang::Expr* term = extremum_term(ret->getRetValue(), {a, nullptr}, kind);
+  --helper_depth_;
+  const auto* r = term ? dyn_cast<DeclRefExpr>(term->IgnoreParenImpCasts()) : nullptr;
+  return r && r->getDecl() == b ? kind : 0;
+}
+
 const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
                                           int& extremum) const {
   auto is_t = [&](const clang::Expr* e) { return is_target(e, t); };
@@ -119,13 +151,18 @@ const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const R
         f && !isa<CXXMethodDecl>(f) ? find_math_function(f->getNameAsString()) : nullptr;
     bool from_library = f && (sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                               f->getBuiltinID() != 0);
-    if (!m || !from_library || (m->name != "max" && m->name != "min"))
+    int kind = 0;
+    if (m && from_library && (m->name == "max" || m->name == "min"))
+      kind = m->name == "max" ? 1 : -1;
+    else if (f && !from_library)
+      kind = helper_extremum(f); // the user's own `dmax(a, b)`
+    if (kind == 0)
       return nullptr;
     const clang::Expr *a = c->getArg(0), *b = c->getArg(1);
     const clang::Expr* term = is_t(a) ? b : is_t(b) ? a : nullptr;
     if (!term || mentions(term, t.decl))
       return nullptr;
-    extremum = m->name == "max" ? 1 : -1;
+    extremum = kind;
     return term;
   }
   // v > e ? v : e, e < v ? v : e, v < e ? v : e (min), ... (a MAX macro)

@@ -12,6 +12,7 @@
 namespace clang {
 class ASTContext;
 class Expr;
+class FunctionDecl;
 class IfStmt;
 class SourceManager;
 class Stmt;
@@ -69,11 +70,14 @@ private:
   // `*p` (element 0) or `p[c]` of a parameter p at an integer constant c.
   std::optional<std::pair<const clang::ValueDecl*, long long>>
   constant_element(const clang::Expr* e) const;
+  // +1 / -1 if helper `f` is a max / min of its two parameters, else 0.
+  int helper_extremum(const clang::FunctionDecl* f) const;
   // Two elements of one parameter at different constant indices.
   bool apart(const clang::Expr* a, const clang::Expr* b) const;
 
   clang::ASTContext& ctx_;
   clang::SourceManager& sm_;
+  mutable int helper_depth_ = 0; // (helper_extremum of nested helpers)
 };
 
 } // namespace dpgen::lowering
