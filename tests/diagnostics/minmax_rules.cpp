@@ -70,3 +70,14 @@ DPGEN_KERNEL void helper_not_max(DPGEN_IN const double* u, DPGEN_OUT double* out
   // CHECK: minmax_rules.cpp:[[@LINE-1]]:19: error: 'm' is declared outside the loop and assigned inside it
   out[0] = m;
 }
+
+// A float max helper on a double reduction would round it: no update.
+static float fmx(float a, float b) { return a > b ? a : b; }
+
+DPGEN_KERNEL void helper_rounds(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double m = -1e30;
+  for (int i = 0; i < n; ++i)
+    m = fmx(m, u[i]);
+  // CHECK: minmax_rules.cpp:[[@LINE-1]]:13: error: 'm' is declared outside the loop and assigned inside it
+  out[0] = m;
+}

@@ -108,6 +108,13 @@ ReductionTarget ReductionForms::target_of(const clang::Expr* lhs) {
 }
 
 // The term `e` of a min/max update of `t` (lower_impl.hpp).
+// The type of expression `e` is that of the target `t` (canonical, unqualified).
+bool ReductionForms::same_type(QualType e, const ReductionTarget& t) const {
+  QualType target = t.element ? t.element->getType() : t.decl->getType().getNonReferenceType();
+  return e.getCanonicalType().getUnqualifiedType() ==
+         target.getCanonicalType().getUnqualifiedType();
+}
+
 // A user's helper that is a max or a min of its two parameters: its body the
 // one statement `return a > b ? a : b;` (or `b < a ? a : b`, `std::max(a,
 // b)`, `fmax(b, a)`, ...: any form extremum_term knows, the target one
@@ -119,12 +126,15 @@ int ReductionForms::helper_extremum(const FunctionDecl* f) const {
       def->isVariadic())
     return 0;
   const ParmVarDecl *a = def->getParamDecl(0), *b = def->getParamDecl(1);
+  // (one real type throughout: a float helper on doubles would round)
+  QualType rt = def->getReturnType().getCanonicalType().getUnqualifiedType();
   for (const ParmVarDecl* p : {a, b}) {
     QualType q = p->getType().getNonReferenceType();
-    if (!q->isRealFloatingType() || (p->getType()->isReferenceType() && !q.isConstQualified()))
+    if (q.getCanonicalType().getUnqualifiedType() != rt ||
+        (p->getType()->isReferenceType() && !q.isConstQualified()))
       return 0;
   }
-  if (!def->getReturnType()->isRealFloatingType())
+  if (!rt->isRealFloatingType())
     return 0;
   const auto* body = dyn_cast_or_null<CompoundStmt>(def->getBody());
   const auto* ret = body && body->size() == 1 ? dyn_cast<ReturnStmt>(body->body_front()) : nullptr;
@@ -154,8 +164,8 @@ const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const R
     int kind = 0;
     if (m && from_library && (m->name == "max" || m->name == "min"))
       kind = m->name == "max" ? 1 : -1;
-    else if (f && !from_library)
-      kind = helper_extremum(f); // the user's own `dmax(a, b)`
+    else if (f && !from_library && same_type(c->getType(), t))
+      kind = helper_extremum(f); // the user's own `dmax(a, b)`, in the target's type
     if (kind == 0)
       return nullptr;
     const clang::Expr *a = c->getArg(0), *b = c->getArg(1);

@@ -6,6 +6,8 @@
 // lower_impl.hpp only.
 #pragma once
 
+#include <clang/AST/Type.h>
+
 #include <optional>
 #include <utility>
 
@@ -70,6 +72,7 @@ private:
   // `*p` (element 0) or `p[c]` of a parameter p at an integer constant c.
   std::optional<std::pair<const clang::ValueDecl*, long long>>
   constant_element(const clang::Expr* e) const;
+  bool same_type(clang::QualType e, const ReductionTarget& t) const;
   // +1 / -1 if helper `f` is a max / min of its two parameters, else 0.
   int helper_extremum(const clang::FunctionDecl* f) const;
   // Two elements of one parameter at different constant indices.
