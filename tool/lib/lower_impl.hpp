@@ -48,7 +48,6 @@ namespace dpgen::lowering {
 
 using namespace clang;
 
-
 enum class Escape { None, Always };
 class Lowerer {
 public:
@@ -209,7 +208,6 @@ private:
 
   static bool is_cxx_only_keyword(const std::string& name);
 
-
   // Every name the generated code takes from the kernel (Kernel::names).
   void collect_names();
 
@@ -269,7 +267,6 @@ private:
     return a && a->getOpcode() == BO_Assign ? a : nullptr;
   }
 
-  // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
   // The extreme (the largest if `upper`, else the smallest) of loop bound `e`
   // (`p` as a polynomial) over the enclosing loops' ranges: each outer counter
   // replaced by its first or last value, by the sign of its coefficient. Null
@@ -293,7 +290,7 @@ private:
   friend class Reductions;
   Reductions red_{*this};
 
-
+  // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
   void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
   std::set<const CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
 
@@ -378,10 +375,7 @@ private:
 
   static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
 
-
-  // ---- expressions -----------------------------------------------------------
-
-  // ---- helper functions ---------------------------------------------------------
+  // ---- helper functions and lambdas (lower_inline.hpp) ------------------------
 
   // A user function called from a kernel (a limiter, a flux, minmod) is
   // differentiated by inlining: its parameters are bound to the arguments'
@@ -411,7 +405,7 @@ private:
 
   std::optional<Access> element(const clang::Expr* e);
 
-  // ---- member kernels (lower_view.cpp) ---------------------------------------
+  // ---- member kernels (lower_signature.cpp, lower_expr.cpp) -------------------
 
   // The class of a member kernel (null for a free one), and its members'
   // bindings (Param::member), as env_ binds variables.
