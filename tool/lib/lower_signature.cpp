@@ -250,23 +250,20 @@ void Signature::parameter(const DeclaratorDecl* p) {
     out.declaration = os.str();
   }
   L.k_.params.push_back(out);
-  if (inout_twin) {
+  // A parameter dpgen adds after this one (`what` it is), unless one of the
+  // kernel's already has its name.
+  auto add = [&](const std::optional<Param>& extra, const char* what) {
+    if (!extra)
+      return;
     for (const auto& other : L.k_.params)
-      if (other.name == inout_twin->name)
-        L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the name dpgen uses "
-                                           "for the new values of in-place array '{}'",
-                                           other.name, out.name), "dpgen-signature");
-    L.k_.params.push_back(*inout_twin);
-    inout_twin.reset();
-  }
-  if (size_param) {
-    for (const auto& other : L.k_.params)
-      if (other.name == size_param->name)
-        L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the size dpgen passes "
-                                           "for vector '{}'",
-                                           other.name, out.name), "dpgen-signature");
-    L.k_.params.push_back(*size_param);
-  }
+      if (other.name == extra->name)
+        L.fail(p->getLocation(), fmt::format("parameter '{}' clashes with the {} '{}'",
+                                             other.name, what, out.name),
+               "dpgen-signature");
+    L.k_.params.push_back(*extra);
+  };
+  add(inout_twin, "name dpgen uses for the new values of in-place array");
+  add(size_param, "size dpgen passes for vector");
 }
 
 void Signature::tag_parameter(const DeclaratorDecl* p, const std::string& ann, Param& out) {
