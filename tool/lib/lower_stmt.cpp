@@ -707,6 +707,14 @@ bool Lowerer::is_prefix(const std::vector<PathCond>& prefix, const std::vector<P
 }
 
 void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc, int extremum) {
+  // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
+  // i below n = 1 << lg (prove.hpp: bits_as_sum)
+  if (!to_poly(idx)) {
+    std::vector<Loop> around;
+    for (const auto& l : loops_)
+      around.push_back(*l);
+    idx = bits_as_sum(idx, around, path_, k_.kernel_locals);
+  }
   // A sum into one element from the iterations of a library parallel-for
   // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
   // parallel semantics: refused, though a serial reading would be a sum.

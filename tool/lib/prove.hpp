@@ -41,6 +41,18 @@ void add_facts_with_counters(const PathCond& pc, Facts& out);
 /// symbols' lower bounds.
 bool prove_nonneg(const Poly& goal, const Facts& facts);
 
+/// A store's index written with bit operations on a power-of-two layout,
+/// `(j << lg) | i` or `(j << 3) | i`, as the sum it equals, `j * n + i`: a
+/// shift by a non-constant `lg` is a product with the kernel-level local
+/// defined as `1 << lg` (`const int n = 1 << lg;`), and `a | b` is `a + b`
+/// where `a` is a multiple of a power of two M (a constant 2^c, or that
+/// local) and 0 <= b <= M - 1 follows from the loops' ranges and the path:
+/// the two sides share no bit. Anything that does not fit stays as written
+/// (not affine: the store is refused as before). `loops`: the loops around
+/// the store, innermost last.
+ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
+                  const std::vector<PathCond>& path, const std::vector<LocalP>& locals);
+
 /// The iteration domain of a store: its loop box intersected with the index
 /// conditions on its path; other conditions are returned as guards. Empty:
 /// the store never runs.
