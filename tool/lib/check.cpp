@@ -821,6 +821,73 @@ private:
     return std::pair{lo + p, hi + p};
   }
 
+  // index_range for the buffers of output_extents: where the sign of a
+  // counter's coefficient is not provable from the facts (a row length nx
+  // where the loops only say nx >= 2 * d + 1, and d may be negative), it is
+  // taken as nonnegative and checked on entry (a SizeCheck: the buffer would
+  // be too small otherwise). Only coefficients of sizes the generated code
+  // can evaluate (no row or plane symbol of a view or row pointers).
+  std::optional<std::pair<Poly, Poly>> extent_range(const Poly& p, const std::vector<PathCond>& path,
+                                                    const Nest& nest, const SourcePos& pos,
+                                                    const std::string& array) {
+    if (auto r = index_range(p, path, nest))
+      return r;
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : path)
+      add_facts(pc, facts);
+    std::vector<Poly> assumed;
+    for (const auto& l : nest.loops) {
+      Poly c = p.coefficient(Sym::counter(l.var));
+      if (prove_nonneg(c, facts) || prove_nonneg(-c, facts))
+        continue;
+      if (c.mentions_any_counter() || max_level_rank(c) > 0 || !to_poly(l.lo) || !to_poly(l.hi))
+        return std::nullopt;
+      assumed.push_back(c);
+    }
+    Facts more = facts;
+    for (const auto& c : assumed)
+      more.push_back(c);
+    // the range with the assumed signs (index_range's computation)
+    Poly lo, hi, rest = p;
+    for (const auto& l : nest.loops) {
+      Poly c = rest.coefficient(Sym::counter(l.var));
+      bool up = prove_nonneg(c, more);
+      if (!up && !prove_nonneg(-c, more))
+        return std::nullopt;
+      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
+      lo = lo + c * (up ? first : last);
+      hi = hi + c * (up ? last : first);
+      rest = rest.without(Sym::counter(l.var));
+    }
+    for (const auto& c : assumed) {
+      SizeCheck chk;
+      std::vector<std::string> prem;
+      for (const auto& l : nest.loops)
+        prem.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+      for (const auto& pc : path) {
+        Facts f;
+        add_facts(pc, f);
+        for (const auto& q : f)
+          prem.push_back(fmt::format("({}) >= 0", q.code()));
+      }
+      chk.premises = premises(prem);
+      chk.must_hold = fmt::format("({}) >= 0", c.code());
+      chk.what = fmt::format("the elements of '{}' lie at increasing indices along each loop "
+                             "(index coefficient '{}' not negative), which the adjoint's buffer "
+                             "for it assumes",
+                             array, c.str());
+      chk.pos = pos;
+      bool dup = false;
+      for (const auto& o : k_.size_checks)
+        dup = dup || (o.must_hold == chk.must_hold && o.premises == chk.premises);
+      if (!dup)
+        k_.size_checks.push_back(chk);
+    }
+    return std::pair{lo + rest, hi + rest};
+  }
+
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
@@ -872,7 +939,7 @@ private:
       for (const auto& st : n.stores) {
         if (a_.buffers.count(st.array))
           continue;
-        auto r = index_range(st, n);
+        auto r = extent_range(*to_poly(st.index), st.path, n, st.pos, st.array);
         if (!r) {
           fail(st.pos, "dpgen-output-index", fmt::format("cannot bound the indices of output '{}', which the "
                                    "adjoint needs buffers for (a work array or an in-place "
@@ -904,7 +971,8 @@ private:
       if (!reader || a_.buffers.count(r.array))
         continue;
       Store probe{r.array, r.index, r.index, r.path, {}};
-      auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;
+      auto range = to_poly(r.index) ? extent_range(*to_poly(r.index), r.path, *reader, r.pos, r.array)
+                                    : std::nullopt;
       if (!range) {
         fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the adjoint "
                                 "recomputes into a buffer",
