@@ -437,6 +437,9 @@ private:
     Poly d = py - px;
     if (d.is_constant() || d.mentions_any_counter())
       return false;
+    // (a view's layout symbols are no sizes to test: rows_apart's)
+    if (max_level_rank(px) > 0 || max_level_rank(py) > 0)
+      return false;
     auto rx = index_range(x, nest), ry = index_range(y, nest);
     if (!rx || !ry)
       return false;

@@ -594,6 +594,19 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     }
     if (p->inout)
       return inout_value(p, acc->index, e->getBeginLoc(), e);
+    // an element of a constant integer table (`constexpr int cx[9] = {...}`)
+    // at a constant index (an unrolled counter): its value
+    if (p->global && p->kind == ParamKind::ConstArray && p->elem == Type::Int &&
+        global_decls_.count(p->name))
+      if (auto i = int_value(acc->index))
+        if (const APValue* val = global_decls_.at(p->name)->evaluateValue();
+            val && val->isArray() && *i >= 0 && *i < (long long)val->getArraySize()) {
+          const APValue& el = *i < (long long)val->getArrayInitializedElts()
+                                  ? val->getArrayInitializedElt(unsigned(*i))
+                                  : val->getArrayFiller();
+          if (el.isInt())
+            return int_const(el.getInt().getSExtValue());
+        }
     ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
     std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
     return r;
@@ -780,8 +793,15 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
     return binary(Op::Mul, l, r);
   case BO_Div:
     return binary(Op::Div, l, r);
-  case BO_Rem:
+  case BO_Rem: {
+    // a periodic wrap `(x + 1 + nx) % nx` as the choice it is (prove.hpp)
+    std::vector<Loop> around;
+    for (const auto& lp : loops_)
+      around.push_back(*lp);
+    if (auto c = remainder_as_choice(l, r, around, path_))
+      return *c;
     return binary(Op::Rem, l, r);
+  }
   case BO_LT:
     return binary(Op::Lt, l, r);
   case BO_LE:

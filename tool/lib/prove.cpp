@@ -315,6 +315,72 @@ ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
   return rewrite(index);
 }
 
+std::optional<ExprP> remainder_as_choice(const ExprP& v, const ExprP& m,
+                                         const std::vector<Loop>& loops,
+                                         const std::vector<PathCond>& path) {
+  if (v->type != Type::Int || m->type != Type::Int)
+    return std::nullopt;
+  auto pv = to_poly(v), pm = to_poly(m);
+  // (a remainder of constants, `m % 2` for an unrolled m, folds as it is)
+  if (!pv || !pm || pm->mentions_any_counter() || !pv->mentions_any_counter())
+    return std::nullopt;
+  Facts facts;
+  for (const auto& l : loops) {
+    add_nonempty(l, facts);
+    add_counter_range(l, facts);
+  }
+  for (const auto& pc : path)
+    add_facts_with_counters(pc, facts);
+  // 0 <= w and w <= 2m - 1 for w = v - k * m, k = 0, 1, 2 (then m >= 1, v >= 0,
+  // and v % m = w % m is w or w - m)
+  if (!prove_nonneg(*pv, facts))
+    return std::nullopt;
+  for (long long k = 0; k <= 2; ++k) {
+    Poly w = *pv - *pm * Poly::constant(k);
+    if (!prove_nonneg(w, facts) ||
+        !prove_nonneg(*pm * Poly::constant(2) - Poly::constant(1) - w, facts))
+      continue;
+    ExprP we = v;
+    for (long long i = 0; i < k; ++i)
+      we = binary(Op::Sub, we, m);
+    return select(binary(Op::Lt, we, m), we, binary(Op::Sub, we, m));
+  }
+  return std::nullopt;
+}
+
+// Some symbol of `d` is a layout symbol (ir.hpp: row_symbol, plane_symbol).
+bool mentions_layout(const Poly& d) {
+  for (const auto& [m, k] : d.terms())
+    for (const Sym& s : m)
+      if (!s.is_counter() && level_of_symbol(s.name) > 0)
+        return true;
+  return false;
+}
+
+// `d`, the difference of two indices with no counter, is a nonzero constant
+// times the highest layout symbol in it plus terms of lower layout ranks
+// only: the indices lie in different planes (rows), never the same element.
+bool layout_apart(const Poly& d) {
+  if (d.mentions_any_counter())
+    return false;
+  int top = 0;
+  std::string name;
+  for (const auto& [m, k] : d.terms())
+    for (const Sym& s : m)
+      if (level_of_symbol(s.name) > top)
+        top = level_of_symbol(s.name), name = s.name;
+  if (top == 0)
+    return false;
+  Poly c = d.coefficient(Sym::size(name));
+  if (!c.is_constant() || c.constant_term() == 0)
+    return false;
+  for (const auto& [m, k] : d.without(Sym::size(name)).terms())
+    for (const Sym& s : m)
+      if (level_of_symbol(s.name) >= top)
+        return false;
+  return true;
+}
+
 Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {
   Box loop_box;
   for (const auto& l : nest.loops) {

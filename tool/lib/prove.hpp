@@ -53,6 +53,23 @@ bool prove_nonneg(const Poly& goal, const Facts& facts);
 ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
                   const std::vector<PathCond>& path, const std::vector<LocalP>& locals);
 
+/// `v % m` for an integer v the loops and path keep in [k m, (k + 2) m), k
+/// = 0, 1 or 2 (a periodic wrap written with a remainder, `(x + 1 + nx) % nx`
+/// for x in [0, nx)): with w = v - k m, the choice `w < m ? w : w - m` it
+/// equals, which index analysis reads as two
+/// affine pieces. nullopt where v or m is not a polynomial or the range is
+/// not proved (the remainder then stays as written).
+std::optional<ExprP> remainder_as_choice(const ExprP& v, const ExprP& m,
+                                         const std::vector<Loop>& loops,
+                                         const std::vector<PathCond>& path);
+
+/// Some symbol of `d` is a layout symbol (ir.hpp: row_symbol, plane_symbol).
+bool mentions_layout(const Poly& d);
+/// `d`, the difference of two indices with no counter, is a nonzero constant
+/// times the highest layout symbol in it plus terms of lower layout ranks
+/// only: the indices lie in different planes (rows), never the same element.
+bool layout_apart(const Poly& d);
+
 /// The iteration domain of a store: its loop box intersected with the index
 /// conditions on its path; other conditions are returned as guards. Empty:
 /// the store never runs.
