@@ -36,9 +36,9 @@ void add_facts_with_counters(const PathCond& pc, Facts& out);
 
 /// True when `goal >= 0` follows from `facts` for all integers (sound, not
 /// complete): Fourier-Motzkin elimination shows that `goal <= -1` together
-/// with the facts has no rational solution. Products of two symbols are
-/// treated as unknowns of their own, bounded below by the products of the
-/// symbols' lower bounds.
+/// with the facts has no rational solution. Products of two to four symbols
+/// are treated as unknowns of their own, bounded below by the products of
+/// the symbols' lower bounds.
 bool prove_nonneg(const Poly& goal, const Facts& facts);
 
 /// A store's index written with bit operations on a power-of-two layout,
@@ -56,9 +56,10 @@ ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
 /// `v % m` for an integer v the loops and path keep in [k m, (k + 2) m), k
 /// = 0, 1 or 2 (a periodic wrap written with a remainder, `(x + 1 + nx) % nx`
 /// for x in [0, nx)): with w = v - k m, the choice `w < m ? w : w - m` it
-/// equals, which index analysis reads as two
-/// affine pieces. nullopt where v or m is not a polynomial or the range is
-/// not proved (the remainder then stays as written).
+/// equals, which index analysis reads as two affine pieces. nullopt where v
+/// or m is not a polynomial, v has no loop counter (a remainder of constants
+/// folds as written), or the range is not proved (the remainder then stays
+/// as written).
 std::optional<ExprP> remainder_as_choice(const ExprP& v, const ExprP& m,
                                          const std::vector<Loop>& loops,
                                          const std::vector<PathCond>& path);
