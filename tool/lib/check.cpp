@@ -340,7 +340,8 @@ private:
                 residues_differ(*to_poly(x.index), *to_poly(y.index)) ||
                 rows_apart(x, nest, y, nest) || buffer_stores_apart(x, nest, y, nest) ||
                 (nest.loops.size() == 1 && apart_in_rows(x, nest, y, nest, 1)) ||
-                fixed_apart(*to_poly(x.index), *to_poly(y.index)) || last_writer(nest, a, b))
+                fixed_apart(*to_poly(x.index), *to_poly(y.index)) ||
+                planes_apart(nest, x, y) || last_writer(nest, a, b))
               continue;
             fail(y.pos, "dpgen-write-once", fmt::format("output '{}' is written at '{}' here and at '{}' on "
                                     "line {} of the same loop: dpgen cannot prove two "
@@ -420,6 +421,46 @@ private:
         reported.insert(&y); // once per store
       }
     return affine;
+  }
+
+  // Two stores of one nest whose indices differ by a sum of sizes alone
+  // (component planes of one flat array, `f[l * (nz + 1) * (nx + 1) + k *
+  // (nx + 1) + i]` for constants l = 0..3): they never meet when their index
+  // ranges over the loop box lie apart (the plane offset exceeds what the
+  // counters reach: k * (nx + 1) + i < (nz + 1) * (nx + 1) for k < nz + 1,
+  // i < nx + 1). Proved from the facts where both run; where the sizes decide
+  // it (a stride passed as a parameter), a run-time SizeCheck; false where the
+  // form does not fit or the ranges overlap for every size. (A constant
+  // difference is last_writer's: those stores may meet across iterations.)
+  bool planes_apart(const Nest& nest, const Store& x, const Store& y) {
+    Poly px = *to_poly(x.index), py = *to_poly(y.index);
+    Poly d = py - px;
+    if (d.is_constant() || d.mentions_any_counter())
+      return false;
+    // (a view's layout symbols are no sizes to test: rows_apart's)
+    if (max_level_rank(px) > 0 || max_level_rank(py) > 0)
+      return false;
+    auto rx = index_range(x, nest), ry = index_range(y, nest);
+    if (!rx || !ry)
+      return false;
+    Facts facts = pair_facts(nest, x, nest, y);
+    const Poly one = Poly::constant(1);
+    // apart: max x < min y, or max y < min x
+    Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
+    if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
+      return true;
+    if (prove_nonneg(-g1 - one, facts) && prove_nonneg(-g2 - one, facts))
+      return false; // they overlap for every size
+    SizeCheck c;
+    c.premises = premises(facts_premises(nest, x, nest, y));
+    c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
+    c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
+                         "elements [{}, {}] and [{}, {}], which must not overlap",
+                         y.array, x.pos.line, y.pos.line, rx->first.str(), rx->second.str(),
+                         ry->first.str(), ry->second.str());
+    c.pos = y.pos;
+    k_.size_checks.push_back(c);
+    return true;
   }
 
   // Two fixed elements (no counter: stores pinned to one iteration each,
@@ -545,9 +586,16 @@ private:
   bool check_store(const Nest& nest, const Store& s) {
     auto p = to_poly(s.index);
     if (!p) {
+      bool bits = any_node(s.index, [](const ExprP& x) {
+        return x->op == Op::BitOr || (x->op == Op::Shl && x->ops[1]->op != Op::IntConst);
+      });
       fail(s.pos, "dpgen-output-index", fmt::format("index of output '{}' must be an affine function of the "
-                              "loop counters (no conditional or data-dependent writes)",
-                              s.array));
+                              "loop counters (no conditional or data-dependent writes){}",
+                              s.array,
+                              bits ? "; `(j << lg) | i` is read as j * n + i only with a "
+                                     "kernel-level `const int n = 1 << lg;` and loops that "
+                                     "keep i in [0, n)"
+                                   : ""));
       return false;
     }
     std::vector<std::pair<Poly, Poly>> dims; // (coefficient, extent)
@@ -708,6 +756,10 @@ private:
     Poly c = px.coefficient(j);
     if (c == Poly() || !(c == py.coefficient(j)) || c.mentions_any_counter())
       return false;
+    // (rows of one element hold remainder 0 alone: two stores apart in such
+    // rows never are; `out[i]` and `out[stride + i]` are planes_apart's)
+    if (c.is_constant() && (c.constant_term() == 1 || c.constant_term() == -1))
+      return false;
     auto rx = index_range(px.without(j), x.path, nx), ry = index_range(py.without(j), y.path, ny);
     if (!rx || !ry)
       return false;
@@ -772,6 +824,73 @@ private:
     return std::pair{lo + p, hi + p};
   }
 
+  // index_range for the buffers of output_extents: where the sign of a
+  // counter's coefficient is not provable from the facts (a row length nx
+  // where the loops only say nx >= 2 * d + 1, and d may be negative), it is
+  // taken as nonnegative and checked on entry (a SizeCheck: the buffer would
+  // be too small otherwise). Only coefficients of sizes the generated code
+  // can evaluate (no row or plane symbol of a view or row pointers).
+  std::optional<std::pair<Poly, Poly>> extent_range(const Poly& p, const std::vector<PathCond>& path,
+                                                    const Nest& nest, const SourcePos& pos,
+                                                    const std::string& array) {
+    if (auto r = index_range(p, path, nest))
+      return r;
+    Facts facts;
+    for (const auto& l : nest.loops)
+      add_nonempty(l, facts);
+    for (const auto& pc : path)
+      add_facts(pc, facts);
+    std::vector<Poly> assumed;
+    for (const auto& l : nest.loops) {
+      Poly c = p.coefficient(Sym::counter(l.var));
+      if (prove_nonneg(c, facts) || prove_nonneg(-c, facts))
+        continue;
+      if (c.mentions_any_counter() || max_level_rank(c) > 0 || !to_poly(l.lo) || !to_poly(l.hi))
+        return std::nullopt;
+      assumed.push_back(c);
+    }
+    Facts more = facts;
+    for (const auto& c : assumed)
+      more.push_back(c);
+    // the range with the assumed signs (index_range's computation)
+    Poly lo, hi, rest = p;
+    for (const auto& l : nest.loops) {
+      Poly c = rest.coefficient(Sym::counter(l.var));
+      bool up = prove_nonneg(c, more);
+      if (!up && !prove_nonneg(-c, more))
+        return std::nullopt;
+      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
+      lo = lo + c * (up ? first : last);
+      hi = hi + c * (up ? last : first);
+      rest = rest.without(Sym::counter(l.var));
+    }
+    for (const auto& c : assumed) {
+      SizeCheck chk;
+      std::vector<std::string> prem;
+      for (const auto& l : nest.loops)
+        prem.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+      for (const auto& pc : path) {
+        Facts f;
+        add_facts(pc, f);
+        for (const auto& q : f)
+          prem.push_back(fmt::format("({}) >= 0", q.code()));
+      }
+      chk.premises = premises(prem);
+      chk.must_hold = fmt::format("({}) >= 0", c.code());
+      chk.what = fmt::format("the elements of '{}' lie at increasing indices along each loop "
+                             "(index coefficient '{}' not negative), which the adjoint's buffer "
+                             "for it assumes",
+                             array, c.str());
+      chk.pos = pos;
+      bool dup = false;
+      for (const auto& o : k_.size_checks)
+        dup = dup || (o.must_hold == chk.must_hold && o.premises == chk.premises);
+      if (!dup)
+        k_.size_checks.push_back(chk);
+    }
+    return std::pair{lo + rest, hi + rest};
+  }
+
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
@@ -823,7 +942,7 @@ private:
       for (const auto& st : n.stores) {
         if (a_.buffers.count(st.array))
           continue;
-        auto r = index_range(st, n);
+        auto r = extent_range(*to_poly(st.index), st.path, n, st.pos, st.array);
         if (!r) {
           fail(st.pos, "dpgen-output-index", fmt::format("cannot bound the indices of output '{}', which the "
                                    "adjoint needs buffers for (a work array or an in-place "
@@ -855,7 +974,8 @@ private:
       if (!reader || a_.buffers.count(r.array))
         continue;
       Store probe{r.array, r.index, r.index, r.path, {}};
-      auto range = to_poly(r.index) ? index_range(probe, *reader) : std::nullopt;
+      auto range = to_poly(r.index) ? extent_range(*to_poly(r.index), r.path, *reader, r.pos, r.array)
+                                    : std::nullopt;
       if (!range) {
         fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the adjoint "
                                 "recomputes into a buffer",
@@ -865,23 +985,53 @@ private:
       add_end(r.array, (range->second + Poly::constant(1)).code());
       // Provably outside every earlier store's range: an element no loop
       // writes, whose value is the caller's (the adjoint's buffer has NaN).
-      bool outside_all = true, any_store = false;
-      for (const auto& n : k_.nests)
-        for (const auto& st : n.stores) {
-          if (st.array != r.array)
-            continue;
-          any_store = true;
-          auto w = index_range(st, n);
-          Facts facts;
-          for (const Nest* m : {&n, reader})
-            for (const auto& l : m->loops)
-              add_nonempty(l, facts);
-          Poly one = Poly::constant(1);
-          bool outside = w && (prove_nonneg(range->second - w->second - one, facts) ||
-                               prove_nonneg(w->first - range->first - one, facts));
-          outside_all = outside_all && outside;
-        }
-      if (any_store && outside_all)
+      // A read that moves over component planes (`f[l * P + k * (nx + 1) +
+      // i]` for l = 0..3, each plane written by a store of its own) is
+      // tested one plane at a time: for each value of a loop counter with
+      // constant bounds (a few values), the read at that value against
+      // every store.
+      Poly rp = *to_poly(r.index);
+      std::vector<Poly> parts = {rp};
+      for (const auto& l : reader->loops) {
+        auto lo = to_poly(l.lo), hi = to_poly(l.hi);
+        Sym v = Sym::counter(l.var);
+        Poly c = rp.coefficient(v);
+        if (!lo || !hi || !lo->is_constant() || !hi->is_constant() || c == Poly() ||
+            c.mentions_any_counter())
+          continue;
+        long long a = lo->constant_term(), b = hi->constant_term();
+        if (b - a < 1 || (b - a) * (long long)parts.size() > 64)
+          continue;
+        std::vector<Poly> next;
+        for (const Poly& q : parts)
+          for (long long x = a; x < b; ++x)
+            next.push_back(q.without(v) + q.coefficient(v) * Poly::constant(x));
+        parts = std::move(next);
+      }
+      bool unwritten = false, any_store = false;
+      for (const Poly& part : parts) {
+        auto pr = index_range(part, r.path, *reader);
+        if (!pr)
+          continue;
+        bool outside_all = true;
+        for (const auto& n : k_.nests)
+          for (const auto& st : n.stores) {
+            if (st.array != r.array)
+              continue;
+            any_store = true;
+            auto w = index_range(st, n);
+            Facts facts;
+            for (const Nest* m : {&n, reader})
+              for (const auto& l : m->loops)
+                add_nonempty(l, facts);
+            Poly one = Poly::constant(1);
+            bool outside = w && (prove_nonneg(pr->second - w->second - one, facts) ||
+                                 prove_nonneg(w->first - pr->first - one, facts));
+            outside_all = outside_all && outside;
+          }
+        unwritten = unwritten || outside_all;
+      }
+      if (any_store && unwritten)
         fail(r.pos, "dpgen-work-array", fmt::format("reads work array '{}' at elements no earlier loop writes (their "
                                 "values are the caller's, which the adjoint cannot recompute); "
                                 "write every element a later loop reads",

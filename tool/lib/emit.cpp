@@ -762,6 +762,13 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       fwd.push_back(p.rows.empty() ? data
                                    : fmt::format("reinterpret_cast<{} (*){}>({})", p.elem_name,
                                                  p.rows, data));
+    } else if (p.kind == ParamKind::In && p.rows.empty() && !p.view && !p.scalar_ref &&
+               p.container.empty() && p.declaration.rfind("const ", 0) != 0) {
+      // an input the kernel declares as `double* state` (no const): the
+      // adjoint takes it as `const double*`, and the kernel does not write it
+      fwd.push_back(fmt::format("const_cast<{}*>({})", p.elem_name, p.name));
+      if (p.twin_of.empty())
+        flat.push_back(p.name);
     } else if (p.kind == ParamKind::Scalar || p.rows.empty()) {
       fwd.push_back(p.name);
       if (p.twin_of.empty())
@@ -792,6 +799,8 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       continue;
     std::vector<std::string> args;
     for (const auto& p : s.params) {
+      if (p.global) // (in no parameter list: param_list; the stage reads the global)
+        continue;
       bool work = k.intermediates.count(p.name) > 0;
       switch (p.kind) {
       case ParamKind::In:

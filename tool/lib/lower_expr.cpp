@@ -313,6 +313,19 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     }
     if (p->inout)
       return inout_value(p, acc->index, e->getBeginLoc(), e);
+    // an element of a constant integer table (`constexpr int cx[9] = {...}`)
+    // at a constant index (an unrolled counter): its value
+    if (p->global && p->kind == ParamKind::ConstArray && p->elem == Type::Int &&
+        global_decls_.count(p->name))
+      if (auto i = int_value(acc->index))
+        if (const APValue* val = global_decls_.at(p->name)->evaluateValue();
+            val && val->isArray() && *i >= 0 && *i < (long long)val->getArraySize()) {
+          const APValue& el = *i < (long long)val->getArrayInitializedElts()
+                                  ? val->getArrayInitializedElt(unsigned(*i))
+                                  : val->getArrayFiller();
+          if (el.isInt())
+            return int_const(el.getInt().getSExtValue());
+        }
     ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
     std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
     return r;
@@ -495,7 +508,15 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
                                           b->getOpcodeStr().str()));
   if (row->op == Op::Sub && b->getType()->isUnsignedIntegerType())
     ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
-                          fmt::format("unsigned difference '{}'", text(b)), b);
+                                fmt::format("unsigned difference '{}'", text(b)), b);
+  if (row->op == Op::Rem) {
+    // a periodic wrap `(x + 1 + nx) % nx` as the choice it is (prove.hpp)
+    std::vector<Loop> around;
+    for (const auto& lp : loops_)
+      around.push_back(*lp);
+    if (auto c = remainder_as_choice(l, r, around, path_))
+      return *c;
+  }
   return binary(row->op, l, r);
 }
 

@@ -12,6 +12,13 @@ bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
   if (hi - lo > 16 || hi <= lo)
     return false;
   bool touches = false;
+  const VarDecl* counter = nullptr; // (for a constant table indexed by it, below)
+  if (const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit()); ds && ds->isSingleDecl())
+    counter = dyn_cast<VarDecl>(ds->getSingleDecl());
+  else if (const auto* bo = dyn_cast_or_null<BinaryOperator>(f->getInit());
+           bo && bo->isAssignmentOp())
+    if (const auto* r = dyn_cast<DeclRefExpr>(bo->getLHS()->IgnoreParenImpCasts()))
+      counter = dyn_cast<VarDecl>(r->getDecl());
   std::function<void(const Stmt*)> scan = [&](const Stmt* s) {
     if (!s)
       return;
@@ -19,6 +26,18 @@ bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
       if (const auto* v = dyn_cast<VarDecl>(r->getDecl()); v && env_.count(v) &&
                                                             env_[v].kind == Binding::LocalArray)
         touches = true;
+    // a constant integer table (`constexpr int cx[9]`) indexed by the
+    // counter: unrolled, each copy reads one value (a constant offset)
+    if (const auto* a = dyn_cast<ArraySubscriptExpr>(s))
+      if (const auto* r = dyn_cast<DeclRefExpr>(a->getBase()->IgnoreParenImpCasts()))
+        if (const auto* v = dyn_cast<VarDecl>(r->getDecl());
+            v && global_decls_.count(v->getNameAsString()) &&
+            global_decls_.at(v->getNameAsString()) == v && v->getType().isConstQualified() &&
+            v->getType()->isArrayType() &&
+            v->getType()->getArrayElementTypeNoTypeQual()->isIntegerType())
+          if (const auto* i = dyn_cast<DeclRefExpr>(a->getIdx()->IgnoreParenImpCasts());
+              i && counter && i->getDecl() == counter)
+            touches = true;
     for (const Stmt* c : s->children())
       scan(c);
   };

@@ -616,6 +616,14 @@ bool Lowerer::is_prefix(const std::vector<PathCond>& prefix, const std::vector<P
 }
 
 void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p, SourceLocation loc, int extremum) {
+  // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
+  // i below n = 1 << lg (prove.hpp: bits_as_sum)
+  if (!to_poly(idx)) {
+    std::vector<Loop> around;
+    for (const auto& l : loops_)
+      around.push_back(*l);
+    idx = bits_as_sum(idx, around, path_, k_.kernel_locals);
+  }
   // A sum into one element from the iterations of a library parallel-for
   // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
   // parallel semantics: refused, though a serial reading would be a sum.
@@ -673,8 +681,14 @@ void Lowerer::add_store(const std::string& array, ExprP idx, ExprP value, bool a
       Poly g1 = *pa - *pb - Poly::constant(1), g2 = *pb - *pa - Poly::constant(1);
       if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
         continue;
+      // A view's (row pointers') layout symbols stand for no size the
+      // generated code can compare: elements in different constant planes
+      // (rows) are apart (the plane symbol exceeds any offset in a plane);
+      // any other difference in them is not decided here.
+      if (layout_apart(*pa - *pb))
+        continue;
       if (!(*pa - *pb).mentions_any_counter() && !accumulate && !s.accumulate &&
-          is_prefix(path_, s.path)) {
+          is_prefix(path_, s.path) && !mentions_layout(*pa - *pb)) {
         // Different elements for some sizes only (u[0] and u[n - 1]): where
         // they are the same, this store overwrites the earlier one, which
         // then contributes nothing. The earlier store gets that condition.

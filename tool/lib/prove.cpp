@@ -3,6 +3,8 @@
 
 #include "ops.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -150,20 +152,41 @@ bool prove_nonneg(const Poly& goal, const Facts& facts) {
         lower[sym] = -c;
     }
   }
+  // Likewise for products of three or four symbols (a plane offset
+  // (nz + 1) * (ny + 1) * (nx + 1)): the product of the factors s - b_s, each
+  // nonnegative, is; and for the smaller products inside it, which its
+  // expansion mentions.
   std::set<Poly::Monomial> products;
-  for (const Poly* p : {&goal})
-    for (const auto& [m, k] : p->terms())
-      if (m.size() == 2)
-        products.insert(m);
+  auto add_products = [&](const Poly::Monomial& m) {
+    if (m.size() < 2 || m.size() > 4)
+      return;
+    // every sub-multiset of two or more factors (at most 2^4 subsets)
+    for (unsigned mask = 0; mask < (1u << m.size()); ++mask) {
+      Poly::Monomial sub;
+      for (size_t i = 0; i < m.size(); ++i)
+        if (mask & (1u << i))
+          sub.push_back(m[i]);
+      if (sub.size() >= 2)
+        products.insert(sub);
+    }
+  };
+  for (const auto& [m, k] : goal.terms())
+    add_products(m);
   for (const auto& f : facts)
     for (const auto& [m, k] : f.terms())
-      if (m.size() == 2)
-        products.insert(m);
+      add_products(m);
   for (const auto& m : products) {
-    auto a = lower.find(m[0]), b = lower.find(m[1]);
-    if (a != lower.end() && b != lower.end() && a->second >= 0 && b->second >= 0)
-      all.push_back((Poly::of(m[0]) - Poly::constant(a->second)) *
-                    (Poly::of(m[1]) - Poly::constant(b->second)));
+    Poly product = Poly::constant(1);
+    bool known = true;
+    for (const Sym& s : m) {
+      auto a = lower.find(s);
+      known = known && a != lower.end() && a->second >= 0;
+      if (!known)
+        break;
+      product = product * (Poly::of(s) - Poly::constant(a->second));
+    }
+    if (known)
+      all.push_back(product);
   }
   std::set<Row> rows;
   for (const auto& f : all) {
@@ -219,6 +242,143 @@ bool prove_nonneg(const Poly& goal, const Facts& facts) {
     if (r.coef.empty() && r.c < 0)
       return true;
   return false;
+}
+
+namespace {
+
+// The largest power of two dividing every coefficient of `p` (a constant
+// 2^c), or the symbol of `local` when every term of `p` holds it: a modulus
+// M with p = M * q, so p has no bit below M set. nullopt otherwise.
+std::optional<Poly> power_of_two_factor(const Poly& p, const std::vector<LocalP>& pow2_locals) {
+  if (p.terms().empty())
+    return std::nullopt;
+  for (const auto& l : pow2_locals) {
+    Sym s = Sym::size(l->name);
+    bool all = true;
+    for (const auto& [m, k] : p.terms())
+      all = all && std::find(m.begin(), m.end(), s) != m.end();
+    if (all)
+      return Poly::of(s);
+  }
+  long long g = 0;
+  for (const auto& [m, k] : p.terms())
+    g = std::gcd(g, k < 0 ? -k : k);
+  if (g <= 1)
+    return std::nullopt;
+  return Poly::constant(g & -g); // (the lowest set bit of g)
+}
+
+} // namespace
+
+ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
+                  const std::vector<PathCond>& path, const std::vector<LocalP>& locals) {
+  // the kernel-level locals `1 << s` (an integer power of two for any valid s)
+  std::vector<LocalP> pow2;
+  for (const auto& l : locals)
+    if (l->kernel_level && l->def && l->def->op == Op::Shl && l->def->type == Type::Int &&
+        l->def->ops[0]->op == Op::IntConst && l->def->ops[0]->ival == 1)
+      pow2.push_back(l);
+  Facts facts; // where the store runs: its loops' ranges, its path
+  for (const auto& l : loops) {
+    add_nonempty(l, facts);
+    add_counter_range(l, facts);
+  }
+  for (const auto& pc : path)
+    add_facts_with_counters(pc, facts);
+  std::function<ExprP(const ExprP&)> rewrite = [&](const ExprP& e) -> ExprP {
+    if (e->type != Type::Int)
+      return e;
+    ExprP r = map_operands(e, rewrite);
+    if (r->op == Op::Shl && r->ops[1]->op != Op::IntConst) {
+      // a << s: a * (1 << s), as the local that holds 1 << s
+      for (const auto& l : pow2)
+        if (same(l->def->ops[1], r->ops[1]))
+          return binary(Op::Mul, r->ops[0], local_ref(l));
+      return r;
+    }
+    if (r->op != Op::BitOr)
+      return r;
+    for (int high = 0; high < 2; ++high) {
+      const ExprP &a = r->ops[high], &b = r->ops[1 - high];
+      auto pa = to_poly(a), pb = to_poly(b);
+      if (!pa || !pb)
+        continue;
+      auto m = power_of_two_factor(*pa, pow2);
+      if (!m)
+        continue;
+      // 0 <= b <= M - 1: b fits in the bits below M, which a leaves clear
+      if (prove_nonneg(*pb, facts) && prove_nonneg(*m - Poly::constant(1) - *pb, facts))
+        return binary(Op::Add, a, b);
+    }
+    return r;
+  };
+  return rewrite(index);
+}
+
+std::optional<ExprP> remainder_as_choice(const ExprP& v, const ExprP& m,
+                                         const std::vector<Loop>& loops,
+                                         const std::vector<PathCond>& path) {
+  if (v->type != Type::Int || m->type != Type::Int)
+    return std::nullopt;
+  auto pv = to_poly(v), pm = to_poly(m);
+  // (a remainder of constants, `m % 2` for an unrolled m, folds as it is)
+  if (!pv || !pm || pm->mentions_any_counter() || !pv->mentions_any_counter())
+    return std::nullopt;
+  Facts facts;
+  for (const auto& l : loops) {
+    add_nonempty(l, facts);
+    add_counter_range(l, facts);
+  }
+  for (const auto& pc : path)
+    add_facts_with_counters(pc, facts);
+  // 0 <= w and w <= 2m - 1 for w = v - k * m, k = 0, 1, 2 (then m >= 1, v >= 0,
+  // and v % m = w % m is w or w - m)
+  if (!prove_nonneg(*pv, facts))
+    return std::nullopt;
+  for (long long k = 0; k <= 2; ++k) {
+    Poly w = *pv - *pm * Poly::constant(k);
+    if (!prove_nonneg(w, facts) ||
+        !prove_nonneg(*pm * Poly::constant(2) - Poly::constant(1) - w, facts))
+      continue;
+    ExprP we = v;
+    for (long long i = 0; i < k; ++i)
+      we = binary(Op::Sub, we, m);
+    return select(binary(Op::Lt, we, m), we, binary(Op::Sub, we, m));
+  }
+  return std::nullopt;
+}
+
+// Some symbol of `d` is a layout symbol (ir.hpp: row_symbol, plane_symbol).
+bool mentions_layout(const Poly& d) {
+  for (const auto& [m, k] : d.terms())
+    for (const Sym& s : m)
+      if (!s.is_counter() && level_of_symbol(s.name) > 0)
+        return true;
+  return false;
+}
+
+// `d`, the difference of two indices with no counter, is a nonzero constant
+// times the highest layout symbol in it plus terms of lower layout ranks
+// only: the indices lie in different planes (rows), never the same element.
+bool layout_apart(const Poly& d) {
+  if (d.mentions_any_counter())
+    return false;
+  int top = 0;
+  std::string name;
+  for (const auto& [m, k] : d.terms())
+    for (const Sym& s : m)
+      if (level_of_symbol(s.name) > top)
+        top = level_of_symbol(s.name), name = s.name;
+  if (top == 0)
+    return false;
+  Poly c = d.coefficient(Sym::size(name));
+  if (!c.is_constant() || c.constant_term() == 0)
+    return false;
+  for (const auto& [m, k] : d.without(Sym::size(name)).terms())
+    for (const Sym& s : m)
+      if (level_of_symbol(s.name) >= top)
+        return false;
+  return true;
 }
 
 Domain store_domain(const Nest& nest, const Store& s, std::vector<PathCond>& guards) {

@@ -36,10 +36,40 @@ void add_facts_with_counters(const PathCond& pc, Facts& out);
 
 /// True when `goal >= 0` follows from `facts` for all integers (sound, not
 /// complete): Fourier-Motzkin elimination shows that `goal <= -1` together
-/// with the facts has no rational solution. Products of two symbols are
-/// treated as unknowns of their own, bounded below by the products of the
-/// symbols' lower bounds.
+/// with the facts has no rational solution. Products of two to four symbols
+/// are treated as unknowns of their own, bounded below by the products of
+/// the symbols' lower bounds.
 bool prove_nonneg(const Poly& goal, const Facts& facts);
+
+/// A store's index written with bit operations on a power-of-two layout,
+/// `(j << lg) | i` or `(j << 3) | i`, as the sum it equals, `j * n + i`: a
+/// shift by a non-constant `lg` is a product with the kernel-level local
+/// defined as `1 << lg` (`const int n = 1 << lg;`), and `a | b` is `a + b`
+/// where `a` is a multiple of a power of two M (a constant 2^c, or that
+/// local) and 0 <= b <= M - 1 follows from the loops' ranges and the path:
+/// the two sides share no bit. Anything that does not fit stays as written
+/// (not affine: the store is refused as before). `loops`: the loops around
+/// the store, innermost last.
+ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
+                  const std::vector<PathCond>& path, const std::vector<LocalP>& locals);
+
+/// `v % m` for an integer v the loops and path keep in [k m, (k + 2) m), k
+/// = 0, 1 or 2 (a periodic wrap written with a remainder, `(x + 1 + nx) % nx`
+/// for x in [0, nx)): with w = v - k m, the choice `w < m ? w : w - m` it
+/// equals, which index analysis reads as two affine pieces. nullopt where v
+/// or m is not a polynomial, v has no loop counter (a remainder of constants
+/// folds as written), or the range is not proved (the remainder then stays
+/// as written).
+std::optional<ExprP> remainder_as_choice(const ExprP& v, const ExprP& m,
+                                         const std::vector<Loop>& loops,
+                                         const std::vector<PathCond>& path);
+
+/// Some symbol of `d` is a layout symbol (ir.hpp: row_symbol, plane_symbol).
+bool mentions_layout(const Poly& d);
+/// `d`, the difference of two indices with no counter, is a nonzero constant
+/// times the highest layout symbol in it plus terms of lower layout ranks
+/// only: the indices lie in different planes (rows), never the same element.
+bool layout_apart(const Poly& d);
 
 /// The iteration domain of a store: its loop box intersected with the index
 /// conditions on its path; other conditions are returned as guards. Empty:

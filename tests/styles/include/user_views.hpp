@@ -23,6 +23,14 @@ struct FortranView3D {
   double& operator()(int i, int j, int k) const { return p[(i - ilo) + ni * (j + nj * k)]; }
 };
 
+/// Populations of a lattice (q, y, x), row-major, the population first (as
+/// lattice Boltzmann codes lay out f(q, y, x)).
+template <typename T> struct Pops3D {
+  T* p;
+  int nq, ny, nx;
+  T& operator()(int q, int y, int x) const { return p[(q * ny + y) * nx + x]; }
+};
+
 /// A deep-const field, as Athena++'s AthenaArray: the const operator() reads
 /// a value, the non-const one returns the element.
 class Field {
