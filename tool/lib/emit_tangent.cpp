@@ -179,13 +179,17 @@ void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
     const Param* twin = tp.k->find_param(s.array);
     if (twin && !twin->twin_of.empty()) {
       // In place: both values from the old element first, then the stores.
+      // (in a block of its own: a later in-place store under a condition in
+      // the same iteration declares the same names without shadowing these)
       const std::string& u = twin->twin_of;
       const std::string new_value = tp.k->fresh(u + "_new_value");
       const std::string value_dot = tp.k->fresh(u + "_new_dot");
+      code.open("");
       code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
       code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
       code.line("{}{} = {};", u, idx, new_value);
       code.line("{}_dot{} = {};", u, idx, value_dot);
+      code.close();
     } else if (s.extremum != 0) {
       // A min/max scan: a constant to derivatives (its tangent stays what
       // its first store set, 0).
