@@ -10,35 +10,45 @@
 
 #include <tuple>
 
+namespace {
+
+// A kernel with one input array of n elements and one output of m, checked
+// (adjoint against finite differences and the dot-product test, tangent)
+// through its three entry points, each given the flat arrays.
+template <typename F, typename A, typename T>
+void check_one_to_one(size_t n, size_t m, F forward, A adjoint, T tangent) {
+  dpgen_test::Problem<double> p;
+  p.in_sizes = {n};
+  p.out_sizes = {m};
+  p.forward = [&](auto in, auto out) { forward(in[0], out[0]); };
+  p.adjoint = [&](auto in, auto adj, auto seed) { adjoint(in[0], adj[0], seed[0]); };
+  p.tangent = [&](auto in, auto d, auto out, auto dout) { tangent(in[0], d[0], out[0], dout[0]); };
+  dpgen_test::check_adjoint(p);
+}
+
+} // namespace
+
 TEST_CASE("styles: red_maxnorm") {
   for (int n : {1, 4, 33}) {
     CAPTURE(n);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {size_t(n)};
-    p.out_sizes = {1};
-    p.forward = [&](auto in, auto out) { red_maxnorm(in[0], out[0], n); };
-    p.adjoint = [&](auto in, auto adj, auto seed) { red_maxnorm_adjoint(in[0], adj[0], seed[0], n); };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_maxnorm_tangent(in[0], d[0], out[0], dout[0], n);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        size_t(n), 1, [&](auto* in, auto* out) { red_maxnorm(in, out, n); },
+        [&](auto* in, auto* adj, auto* seed) { red_maxnorm_adjoint(in, adj, seed, n); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_maxnorm_tangent(in, d, out, dout, n);
+        });
   }
 }
 
 TEST_CASE("styles: red_cfl") {
   for (int n : {1, 7, 40}) {
     CAPTURE(n);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {size_t(n)};
-    p.out_sizes = {1};
-    p.forward = [&](auto in, auto out) { red_cfl(in[0], out[0], 0.3, 0.1, n); };
-    p.adjoint = [&](auto in, auto adj, auto seed) {
-      red_cfl_adjoint(in[0], adj[0], seed[0], 0.3, 0.1, n);
-    };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_cfl_tangent(in[0], d[0], out[0], dout[0], 0.3, 0.1, n);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        size_t(n), 1, [&](auto* in, auto* out) { red_cfl(in, out, 0.3, 0.1, n); },
+        [&](auto* in, auto* adj, auto* seed) { red_cfl_adjoint(in, adj, seed, 0.3, 0.1, n); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_cfl_tangent(in, d, out, dout, 0.3, 0.1, n);
+        });
   }
 }
 
@@ -47,29 +57,19 @@ TEST_CASE("styles: red_rowmax_macro, red_min_if_c89") {
     CAPTURE(nx);
     CAPTURE(ny);
     size_t X = size_t(nx), Y = size_t(ny);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {X * Y};
-    p.out_sizes = {Y};
-    p.forward = [&](auto in, auto out) { red_rowmax_macro(in[0], out[0], nx, ny); };
-    p.adjoint = [&](auto in, auto adj, auto seed) {
-      red_rowmax_macro_adjoint(in[0], adj[0], seed[0], nx, ny);
-    };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_rowmax_macro_tangent(in[0], d[0], out[0], dout[0], nx, ny);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        X * Y, Y, [&](auto* in, auto* out) { red_rowmax_macro(in, out, nx, ny); },
+        [&](auto* in, auto* adj, auto* seed) { red_rowmax_macro_adjoint(in, adj, seed, nx, ny); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_rowmax_macro_tangent(in, d, out, dout, nx, ny);
+        });
 
-    dpgen_test::Problem<double> q;
-    q.in_sizes = {X * Y};
-    q.out_sizes = {1};
-    q.forward = [&](auto in, auto out) { red_min_if_c89(in[0], out[0], nx, ny); };
-    q.adjoint = [&](auto in, auto adj, auto seed) {
-      red_min_if_c89_adjoint(in[0], adj[0], seed[0], nx, ny);
-    };
-    q.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_min_if_c89_tangent(in[0], d[0], out[0], dout[0], nx, ny);
-    };
-    dpgen_test::check_adjoint(q);
+    check_one_to_one(
+        X * Y, 1, [&](auto* in, auto* out) { red_min_if_c89(in, out, nx, ny); },
+        [&](auto* in, auto* adj, auto* seed) { red_min_if_c89_adjoint(in, adj, seed, nx, ny); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_min_if_c89_tangent(in, d, out, dout, nx, ny);
+        });
   }
 }
 
@@ -146,67 +146,47 @@ TEST_CASE("styles: red_jacobi_error, red_colmin_out") {
     };
     dpgen_test::check_adjoint(p);
 
-    dpgen_test::Problem<double> q;
-    q.in_sizes = {X * Y};
-    q.out_sizes = {X};
-    q.forward = [&](auto in, auto out) { red_colmin_out(in[0], out[0], nx, ny); };
-    q.adjoint = [&](auto in, auto adj, auto seed) {
-      red_colmin_out_adjoint(in[0], adj[0], seed[0], nx, ny);
-    };
-    q.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_colmin_out_tangent(in[0], d[0], out[0], dout[0], nx, ny);
-    };
-    dpgen_test::check_adjoint(q);
+    check_one_to_one(
+        X * Y, X, [&](auto* in, auto* out) { red_colmin_out(in, out, nx, ny); },
+        [&](auto* in, auto* adj, auto* seed) { red_colmin_out_adjoint(in, adj, seed, nx, ny); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_colmin_out_tangent(in, d, out, dout, nx, ny);
+        });
   }
 }
 
 TEST_CASE("styles: red_limits_and_cond") {
   for (int n : {1, 2, 7}) {
     CAPTURE(n);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {size_t(n)};
-    p.out_sizes = {3};
-    p.forward = [&](auto in, auto out) { red_limits_and_cond(in[0], out[0], n); };
-    p.adjoint = [&](auto in, auto adj, auto seed) {
-      red_limits_and_cond_adjoint(in[0], adj[0], seed[0], n);
-    };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_limits_and_cond_tangent(in[0], d[0], out[0], dout[0], n);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        size_t(n), 3, [&](auto* in, auto* out) { red_limits_and_cond(in, out, n); },
+        [&](auto* in, auto* adj, auto* seed) { red_limits_and_cond_adjoint(in, adj, seed, n); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_limits_and_cond_tangent(in, d, out, dout, n);
+        });
   }
 }
 
 TEST_CASE("styles: red_range_two_elements") {
   for (int n : {1, 2, 9}) {
     CAPTURE(n);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {size_t(n)};
-    p.out_sizes = {2};
-    p.forward = [&](auto in, auto out) { red_range_two_elements(in[0], out[0], n); };
-    p.adjoint = [&](auto in, auto adj, auto seed) {
-      red_range_two_elements_adjoint(in[0], adj[0], seed[0], n);
-    };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_range_two_elements_tangent(in[0], d[0], out[0], dout[0], n);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        size_t(n), 2, [&](auto* in, auto* out) { red_range_two_elements(in, out, n); },
+        [&](auto* in, auto* adj, auto* seed) { red_range_two_elements_adjoint(in, adj, seed, n); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_range_two_elements_tangent(in, d, out, dout, n);
+        });
   }
 }
 
 TEST_CASE("styles: red_user_helpers") {
   for (int n : {2, 3, 12}) {
     CAPTURE(n);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {size_t(n)};
-    p.out_sizes = {2};
-    p.forward = [&](auto in, auto out) { red_user_helpers(in[0], out[0], n); };
-    p.adjoint = [&](auto in, auto adj, auto seed) {
-      red_user_helpers_adjoint(in[0], adj[0], seed[0], n);
-    };
-    p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      red_user_helpers_tangent(in[0], d[0], out[0], dout[0], n);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        size_t(n), 2, [&](auto* in, auto* out) { red_user_helpers(in, out, n); },
+        [&](auto* in, auto* adj, auto* seed) { red_user_helpers_adjoint(in, adj, seed, n); },
+        [&](auto* in, auto* d, auto* out, auto* dout) {
+          red_user_helpers_tangent(in, d, out, dout, n);
+        });
   }
 }
