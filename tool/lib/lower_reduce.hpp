@@ -2,8 +2,8 @@
 // the loops being lowered. A part of the lowering with its own state (the
 // reductions open in the enclosing loops) and a narrow interface: the loop
 // lowering opens and closes a loop's reductions (begin_loop / end_loop), the
-// statement lowering hands it the updates it recognises (if_update,
-// element_update, local_update). Everything else it needs from the lowering
+// statement lowering offers it each assignment and if that may update one
+// (if_update, element_update, local_update: false where it is none). Everything else it needs from the lowering
 // (expressions, stores, the loops and path around a statement) it reads
 // through `L`. Included by lower_impl.hpp only.
 #pragma once
@@ -88,7 +88,6 @@ public:
   bool local_update(const clang::VarDecl* var, Type t, const clang::Expr* lhs,
                     clang::BinaryOperatorKind op, const clang::Expr* rhs,
                     clang::SourceLocation loc);
-
 
 private:
   Lowerer& L;
