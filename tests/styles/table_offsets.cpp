@@ -51,3 +51,16 @@ DPGEN_KERNEL void table_shift1d(DPGEN_IN const double* u, DPGEN_OUT double* v, i
     for (int i = 0; i < n; ++i)
       v[q * n + i] = std::sin(u[(i + kCx[q + 1] + n) % n]) * u[i];
 }
+
+// The same planes written by hand, 0 and 8 in one iteration: the plane
+// stride is a placeholder symbol of 2^61 in generated code, and 8 * 2^61
+// wraps to 0, so a test "same element?" on it came out true and dropped the
+// first store's adjoint (dpgen before 2026-11-28); the planes are apart.
+DPGEN_KERNEL void planes_first_last(DPGEN_IN grid::Pops3D<const double> f,
+                                    DPGEN_OUT grid::Pops3D<double> g) {
+  for (int y = 0; y < f.ny; ++y)
+    for (int x = 0; x < f.nx; ++x) {
+      g(0, y, x) = f(0, y, x) * f(8, y, x);
+      g(8, y, x) = f(8, y, x) - 0.5 * f(0, y, x);
+    }
+}

@@ -57,3 +57,24 @@ TEST_CASE("styles: table_shift1d") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: planes_first_last") {
+  for (auto [nx, ny] : {std::pair{1, 1}, std::pair{3, 2}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = 9 * size_t(nx) * size_t(ny);
+    auto cv = [&](const double* p) { return grid::Pops3D<const double>{p, 9, ny, nx}; };
+    auto mv = [&](double* p) { return grid::Pops3D<double>{p, 9, ny, nx}; };
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n};
+    p.out_sizes = {n};
+    p.forward = [&](auto in, auto out) { planes_first_last(cv(in[0]), mv(out[0])); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      planes_first_last_adjoint(cv(in[0]), mv(adj[0]), mv(const_cast<double*>(seed[0])));
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      planes_first_last_tangent(cv(in[0]), cv(dir[0]), mv(out[0]), mv(outd[0]));
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
