@@ -374,7 +374,8 @@ bool layout_apart(const Poly& d) {
   Poly c = d.coefficient(Sym::size(name));
   if (!c.is_constant() || c.constant_term() == 0)
     return false;
-  for (const auto& [m, k] : d.without(Sym::size(name)).terms())
+  const Poly rest = d.without(Sym::size(name)); // (named: terms() is a reference into it)
+  for (const auto& [m, k] : rest.terms())
     for (const Sym& s : m)
       if (level_of_symbol(s.name) >= top)
         return false;
