@@ -400,15 +400,7 @@ private:
           Poly one_ = Poly::constant(1);
           bool overlap = prove_nonneg(-g1 - one_, facts) && prove_nonneg(-g2 - one_, facts);
           if (shared == 0 && !overlap) {
-            SizeCheck c;
-            c.premises = premises(facts_premises(nx, x, ny, y));
-            c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
-            c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
-                                 "elements [{}, {}] and [{}, {}], which must not overlap",
-                                 y.array, x.pos.line, y.pos.line, rx->first.str(), rx->second.str(),
-                                 ry->first.str(), ry->second.str());
-            c.pos = y.pos;
-            k_.size_checks.push_back(c);
+            check_apart(premises(facts_premises(nx, x, ny, y)), x, y, g1, g2, *rx, *ry);
             continue;
           }
         }
@@ -451,16 +443,25 @@ private:
       return true;
     if (prove_nonneg(-g1 - one, facts) && prove_nonneg(-g2 - one, facts))
       return false; // they overlap for every size
+    check_apart(premises(facts_premises(nest, x, nest, y)), x, y, g1, g2, *rx, *ry);
+    return true;
+  }
+
+  // The run-time check that stores x and y, over index ranges rx and ry,
+  // write apart: g1 = min y - max x - 1 >= 0 or g2 = min x - max y - 1 >= 0
+  // where `premises` hold.
+  template <typename Premises, typename Range>
+  void check_apart(Premises premises, const Store& x, const Store& y, const Poly& g1,
+                   const Poly& g2, const Range& rx, const Range& ry) {
     SizeCheck c;
-    c.premises = premises(facts_premises(nest, x, nest, y));
+    c.premises = std::move(premises);
     c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
     c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
                          "elements [{}, {}] and [{}, {}], which must not overlap",
-                         y.array, x.pos.line, y.pos.line, rx->first.str(), rx->second.str(),
-                         ry->first.str(), ry->second.str());
+                         y.array, x.pos.line, y.pos.line, rx.first.str(), rx.second.str(),
+                         ry.first.str(), ry.second.str());
     c.pos = y.pos;
     k_.size_checks.push_back(c);
-    return true;
   }
 
   // Two fixed elements (no counter: stores pinned to one iteration each,
