@@ -806,11 +806,23 @@ private:
   // proved from the facts where the store runs.)
   static std::optional<std::pair<Poly, Poly>> index_range(Poly p, const std::vector<PathCond>& path,
                                                           const Nest& nest) {
+    return range_under(std::move(p), where_runs(path, nest), nest);
+  }
+
+  // What holds where a store on `path` in `nest` runs: its loops run, its
+  // path's conditions hold.
+  static Facts where_runs(const std::vector<PathCond>& path, const Nest& nest) {
     Facts facts;
     for (const auto& l : nest.loops)
       add_nonempty(l, facts);
     for (const auto& pc : path)
       add_facts(pc, facts);
+    return facts;
+  }
+
+  // index_range's computation under `facts`.
+  static std::optional<std::pair<Poly, Poly>> range_under(Poly p, const Facts& facts,
+                                                          const Nest& nest) {
     Poly lo, hi;
     for (const auto& l : nest.loops) {
       Poly c = p.coefficient(Sym::counter(l.var));
@@ -836,11 +848,7 @@ private:
                                                     const std::string& array) {
     if (auto r = index_range(p, path, nest))
       return r;
-    Facts facts;
-    for (const auto& l : nest.loops)
-      add_nonempty(l, facts);
-    for (const auto& pc : path)
-      add_facts(pc, facts);
+    const Facts facts = where_runs(path, nest);
     std::vector<Poly> assumed;
     for (const auto& l : nest.loops) {
       Poly c = p.coefficient(Sym::counter(l.var));
@@ -853,18 +861,9 @@ private:
     Facts more = facts;
     for (const auto& c : assumed)
       more.push_back(c);
-    // the range with the assumed signs (index_range's computation)
-    Poly lo, hi, rest = p;
-    for (const auto& l : nest.loops) {
-      Poly c = rest.coefficient(Sym::counter(l.var));
-      bool up = prove_nonneg(c, more);
-      if (!up && !prove_nonneg(-c, more))
-        return std::nullopt;
-      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
-      lo = lo + c * (up ? first : last);
-      hi = hi + c * (up ? last : first);
-      rest = rest.without(Sym::counter(l.var));
-    }
+    auto range = range_under(p, more, nest); // with the assumed signs
+    if (!range)
+      return std::nullopt;
     for (const auto& c : assumed) {
       SizeCheck chk;
       std::vector<std::string> prem;
@@ -889,7 +888,7 @@ private:
       if (!dup)
         k_.size_checks.push_back(chk);
     }
-    return std::pair{lo + rest, hi + rest};
+    return range;
   }
 
   // One past the largest index each output's stores reach, for the buffers
