@@ -154,7 +154,7 @@ std::string Poly::code() const {
     std::stable_partition(syms.begin(), syms.end(), wide);
     std::vector<std::string> factors;
     for (const auto& s : syms)
-      factors.push_back(s.name);
+      factors.push_back(s.is_counter() ? s.name : renamed(s.name)); // (ir.hpp: RenameScope)
     if (syms.size() >= 2 && !wide(syms.front()))
       factors.front() = "static_cast<std::ptrdiff_t>(" + factors.front() + ")";
     if (mag != 1 || factors.empty())

@@ -891,6 +891,48 @@ private:
     return range;
   }
 
+  bool is_view(const std::string& array) const {
+    const Param* p = k_.find_param(array);
+    return p && p->view;
+  }
+
+  // The staged adjoint finds the elements of a view output (and of its
+  // reads, for a work array) by running the stores' loops before the forward
+  // does (emit.cpp: emit_view_cover): each store to a view output must run
+  // where conditions over what the kernel does not write say, at an index of
+  // the same.
+  void view_outputs_located() {
+    std::set<std::string> written;
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores)
+        written.insert(st.array);
+    for (const auto& h : k_.hidden)
+      written.insert(h.name);
+    auto reads_written = [&](const ExprP& e) {
+      return any_node(e, [&](const ExprP& x) {
+        return x->op == Op::Read && written.count(x->name) > 0;
+      });
+    };
+    for (const auto& n : k_.nests)
+      for (const auto& st : n.stores) {
+        const bool touches_view = is_view(st.array) || any_node(st.value, [&](const ExprP& x) {
+          return x->op == Op::Read && is_view(x->name) && k_.intermediates.count(x->name) > 0;
+        });
+        if (!touches_view)
+          continue;
+        bool bad = reads_written(st.index);
+        for (const auto& pc : st.path)
+          bad = bad || reads_written(pc.cond);
+        if (bad)
+          fail(st.pos, "dpgen-work-array",
+               fmt::format("this store {} a view the adjoint recomputes into a buffer of its "
+                           "own (laid out like the view's seed), under a condition that reads what "
+                           "the kernel writes: the adjoint finds the buffer's elements before it "
+                           "recomputes them; make the condition read inputs only",
+                           is_view(st.array) ? "writes" : "reads"));
+      }
+  }
+
   // One past the largest index each output's stores reach, for the buffers
   // of an adjoint that recomputes the forward kernel (work arrays).
   void output_extents() {
@@ -915,17 +957,12 @@ private:
                                  "into flat buffers; pass it as a flat pointer or "
                                  "'double (*{})[N]'",
                                  p.name, p.name));
-    // (the sums of accumulators are recomputed by generated code, which reads
-    // views; an output a later loop reads is recomputed by the user's kernel,
-    // which would have to write it through a view)
-    for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && p.view &&
-          (k_.intermediates.count(p.name) || k_.hidden.empty()))
-        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with view parameter '{}': the adjoint "
-                                 "recomputes work arrays into buffers of its own, and cannot "
-                                 "make a view over one; split the kernel where the work array "
-                                 "is complete (its adjoint is then an input's)",
-                                 work_name(*k_.intermediates.begin()), p.name));
+    // A view output is recomputed into a ViewBuffer (dpgen/view_buffer.hpp)
+    // laid out like its seed: the elements it covers are found at run time by
+    // the stores and reads themselves, before the forward runs, so where they
+    // run must not depend on what the kernel writes.
+    if (!k_.intermediates.empty())
+      view_outputs_located();
     for (const auto& p : k_.params)
       if (!k_.intermediates.empty() && !p.container.empty())
         fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
@@ -940,7 +977,7 @@ private:
     };
     for (const auto& n : k_.nests)
       for (const auto& st : n.stores) {
-        if (a_.buffers.count(st.array))
+        if (a_.buffers.count(st.array) || is_view(st.array))
           continue;
         auto r = extent_range(*to_poly(st.index), st.path, n, st.pos, st.array);
         if (!r) {
@@ -973,16 +1010,22 @@ private:
       const Nest* reader = nest_with_key(r.nest_key);
       if (!reader || a_.buffers.count(r.array))
         continue;
-      Store probe{r.array, r.index, r.index, r.path, {}};
-      auto range = to_poly(r.index) ? extent_range(*to_poly(r.index), r.path, *reader, r.pos, r.array)
-                                    : std::nullopt;
-      if (!range) {
+      if (!to_poly(r.index)) {
         fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the adjoint "
                                 "recomputes into a buffer",
                                 r.array));
         continue;
       }
-      add_end(r.array, (range->second + Poly::constant(1)).code());
+      if (!is_view(r.array)) { // (a view's buffer covers its reads at run time)
+        auto range = extent_range(*to_poly(r.index), r.path, *reader, r.pos, r.array);
+        if (!range) {
+          fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the "
+                                  "adjoint recomputes into a buffer",
+                                  r.array));
+          continue;
+        }
+        add_end(r.array, (range->second + Poly::constant(1)).code());
+      }
       // Provably outside every earlier store's range: an element no loop
       // writes, whose value is the caller's (the adjoint's buffer has NaN).
       // A read that moves over component planes (`f[l * P + k * (nx + 1) +

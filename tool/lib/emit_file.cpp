@@ -146,6 +146,14 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   if (staged)
     c.raw("#include <vector>\n");
   c.raw("\n");
+  // a staged kernel's view outputs live in buffers laid out like their seeds
+  bool view_buffers = false;
+  for (const auto& p : plans)
+    for (const auto& a : p->kernel->params)
+      view_buffers = view_buffers || (a.view && a.kind == ParamKind::Out &&
+                                      !p->kernel->intermediates.empty());
+  if (view_buffers)
+    c.raw("#include \"dpgen/view_buffer.hpp\"\n\n");
   c.raw(global_declarations(all, "_adj", true));
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"

@@ -61,12 +61,29 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
     }
     if (p.kind == ParamKind::Scalar)
       ps.push_back(fmt::format("{} {}", p.spelling, p.name));
+    else if (p.view && p.kind == ParamKind::Out) { // the driver's buffer laid out like the view,
+      // and the view's seed, whose shape is the view's (what the kernel reads of it)
+      ps.push_back(fmt::format("{}& {}", view_buffer_type(p), p.name));
+      ps.push_back("[[maybe_unused]] " + array_declaration(p, true, p.name + "_adj", false,
+                                                           k.c_linkage));
+    }
     else
       ps.push_back(array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
   }
   for (const auto& h : k.hidden)
     ps.push_back(fmt::format("{}* {}", h.elem_name, h.name));
-  code.line("// {} as its IR says, with {} ({}) kept in arrays.", k.name,
+  if (k.hidden.empty()) { // (an in-place array's new values, view outputs)
+    std::vector<std::string> what;
+    if (std::any_of(k.params.begin(), k.params.end(),
+                    [](const Param& p) { return !p.twin_of.empty(); }))
+      what.push_back("in-place arrays' new values");
+    if (std::any_of(k.params.begin(), k.params.end(),
+                    [](const Param& p) { return p.view && p.kind == ParamKind::Out; }))
+      what.push_back("view outputs (laid out like their seeds)");
+    code.line("// {} as its IR says, writing its {} to buffers.", k.name,
+              fmt::join(what, " and "));
+  } else
+    code.line("// {} as its IR says, with {} ({}) kept in arrays.", k.name,
             std::all_of(k.hidden.begin(), k.hidden.end(), [](const Param& h) { return !is_buffer(h); })
                 ? "the sums of its accumulators"
                 : "the sums of its accumulators and the rows of its line buffers",

@@ -4,6 +4,9 @@
 
 #include "ops.hpp"
 
+#include <fmt/format.h>
+
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -324,6 +327,57 @@ void test_internal_error(const char* pass) {
   const char* want = std::getenv("DPGEN_TEST_INTERNAL_ERROR");
   if (want && std::string(want) == pass)
     throw std::logic_error(std::string("DPGEN_TEST_INTERNAL_ERROR=") + pass);
+}
+
+std::string view_buffer_type(const Param& p) {
+  std::string t = p.view_mutable; // "const amrex::Array4<double>&", "AthenaArray<double>&"
+  if (t.rfind("const ", 0) == 0)
+    t = t.substr(6);
+  while (!t.empty() && (t.back() == '&' || t.back() == ' '))
+    t.pop_back();
+  return fmt::format("dpgen::ViewBuffer<{}, {}>", t, p.elem_name);
+}
+
+namespace {
+// The live scopes, innermost last (renamed() uses the innermost).
+std::vector<std::map<std::string, std::string>> live_renames;
+} // namespace
+
+RenameScope::RenameScope(std::map<std::string, std::string> renames) {
+  live_renames.push_back(std::move(renames));
+}
+
+RenameScope::~RenameScope() { live_renames.pop_back(); }
+
+std::string renamed(const std::string& text) {
+  if (live_renames.empty() || live_renames.back().empty())
+    return text;
+  const auto& renames = live_renames.back();
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    if (!ident(text[i]) || std::isdigit(static_cast<unsigned char>(text[i]))) {
+      // (a number's digits and suffix stay together)
+      size_t j = i + 1;
+      if (std::isdigit(static_cast<unsigned char>(text[i])))
+        while (j < text.size() && ident(text[j]))
+          ++j;
+      out.append(text, i, j - i);
+      i = j;
+      continue;
+    }
+    size_t j = i;
+    while (j < text.size() && ident(text[j]))
+      ++j;
+    const std::string word = text.substr(i, j - i);
+    const bool member = (i >= 1 && text[i - 1] == '.') ||
+                        (i >= 2 && (text.compare(i - 2, 2, "->") == 0 ||
+                                    text.compare(i - 2, 2, "::") == 0));
+    auto it = renames.find(word);
+    out += !member && it != renames.end() ? it->second : word;
+    i = j;
+  }
+  return out;
 }
 
 } // namespace dpgen

@@ -279,6 +279,28 @@ inline int pointer_levels(const Param& p) {
 
 inline Shape shape_of(const Param& p) { return {pointer_levels(p), p.view}; }
 
+/// While a RenameScope lives, the texts of parameters and objects that
+/// print() and Poly::code() write (and `renamed` of stored condition texts)
+/// spell each identifier of `renames` (not one after `.`, `->` or `::`) by
+/// its new name. The adjoint has no output view, only its seed of the same
+/// shape and bounds: `un.cols()` reads `un_adj.cols()` there. Scopes nest:
+/// the innermost one applies.
+class RenameScope {
+public:
+  explicit RenameScope(std::map<std::string, std::string> renames);
+  ~RenameScope();
+  RenameScope(const RenameScope&) = delete;
+  RenameScope& operator=(const RenameScope&) = delete;
+};
+/// `text` with the live RenameScope's identifiers renamed (unchanged if none).
+std::string renamed(const std::string& text);
+
+/// The generated adjoint's storage for a view output it recomputes or whose
+/// adjoint it accumulates (a work array): a dpgen::ViewBuffer laid out like
+/// the output's seed, "dpgen::ViewBuffer<amrex::Array4<double>, double>"
+/// (runtime/include/dpgen/view_buffer.hpp).
+std::string view_buffer_type(const Param& p);
+
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }
 inline std::string plane_symbol(const std::string& array) { return "dpgen_planes_" + array; }

@@ -132,7 +132,8 @@ std::string print(const ExprP& e) {
     return std::to_string(e->ival);
   case Op::RealConst:
     return !e->spelling.empty() ? e->spelling : real_literal(e->rval, e->type);
-  case Op::Param:
+  case Op::Param: // (an output view's shape, read through its seed in the adjoint: ir.hpp)
+    return renamed(e->name);
   case Op::LoopVar:
   case Op::Local:
     return e->name;

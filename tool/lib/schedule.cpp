@@ -365,8 +365,11 @@ AdjointPlan schedule(const Kernel& k, Partials& partials) {
       s->params.insert(s->params.end(), s->hidden.begin(), s->hidden.end());
       s->hidden.clear();
       for (auto& p : s->params)
-        if (k.intermediates.count(p.name))
+        if (k.intermediates.count(p.name)) {
           p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
+          if (p.view) // the driver's buffers, read and written as the view is
+            p.view_type = p.view_mutable = "const " + view_buffer_type(p) + "&";
+        }
       Partials stage_partials = derive(*s);
       auto stage_plan = std::make_shared<AdjointPlan>(schedule_reads(*s, stage_partials));
       plan.stages.push_back({s, stage_plan});
