@@ -8,6 +8,11 @@
 #   scripts/compare_generated.sh OLD_DPGEN NEW_DPGEN [file...]
 # With COMPARE_IGNORE_IDS=1 the diagnostics' ids (" [dpgen-...]") are removed
 # from both sides first: for comparing with a dpgen from before they existed.
+# COMPARE_STRIP=<perl regex> deletes what it matches (whole files, /s) from
+# every generated file of both sides first: for a change meant to add one
+# block everywhere and change nothing else, e.g.
+#   COMPARE_STRIP='#if defined\(__GNUC__\)\n// Each generated.*?#endif\n\n'
+# (the -Wunused pragmas of 2026-11-28).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=$(realpath "$1") new=$(realpath "$2")
@@ -41,6 +46,9 @@ for f in "${files[@]}"; do
       sed -i "s|$work/$side|OUT|g" "$d.out"
       if [ "${COMPARE_IGNORE_IDS:-0}" = 1 ]; then
         sed -i -E 's/ \[dpgen-[a-z-]+\]//' "$d.out"
+      fi
+      if [ -n "${COMPARE_STRIP:-}" ]; then
+        find "$d" -type f -exec perl -0pi -e 's/$ENV{COMPARE_STRIP}//gs' {} +
       fi
     done
     if diff -r "$work/old" "$work/new" >"$work/diff" 2>&1 && diff "$work/old.out" "$work/new.out" >>"$work/diff" 2>&1; then

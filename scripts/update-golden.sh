@@ -56,7 +56,8 @@ for input in "$root"/tests/golden/rules/*.cpp; do
   # A rule file whose RUN line asks for --tangent shows the tangent kernel.
   kind=adjoint flag=
   if grep -q -- "--tangent" "$input"; then kind=tangent flag=--tangent; fi
-  "$dpgen" "$input" $flag --out-dir "$tmp" -- -I"$root/runtime/include" 2>/dev/null
+  "$dpgen" "$input" $flag --out-dir "$tmp" -- -I"$root/runtime/include" -I"$root/tests/styles" \
+    2>/dev/null
   head=$(sed "/^\/\/ ---- generated code/,\$d" "$input")
   {
     printf '%s\n' "$head"

@@ -62,3 +62,13 @@ DPGEN_KERNEL void fortran_smooth_then_diff(DPGEN_IN grid::FortranView3D q,
       for (int i = 0; i < ni; ++i)
         d(i, j, k) = s(i + 1, j, k) - s(i - 1, j, k) + s(i, j, k) * q(i, j, k);
 }
+
+// One loop nest whose bounds come from the output view's own shape (as
+// Kokkos code loops to `out.extent(0)`): the adjoint has no output, only its
+// seed, of the same shape, and reads the bounds from that.
+DPGEN_KERNEL void view_bounds_from_output(DPGEN_IN grid::View2D<const double> u,
+                                          DPGEN_OUT grid::View2D<double> out, double a) {
+  for (int j = 0; j < out.rows(); ++j)
+    for (int i = 0; i < out.cols(); ++i)
+      out(j, i) = a * u(j, i) * u(j, i + 1);
+}

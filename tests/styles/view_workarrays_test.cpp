@@ -94,3 +94,26 @@ TEST_CASE("styles: fortran_smooth_then_diff") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: view_bounds_from_output") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {3, 2}, {5, 4}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t X = size_t(nx), Y = size_t(ny);
+    // u has one column more than out (u(j, i + 1) at i = nx - 1)
+    auto cu = [&](const double* p) { return grid::View2D<const double>{p, nx + 1, ny}; };
+    auto mu = [&](double* p) { return grid::View2D<double>{p, nx + 1, ny}; };
+    auto mo = [&](const double* p) { return grid::View2D<double>{const_cast<double*>(p), nx, ny}; };
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {(X + 1) * Y};
+    p.out_sizes = {X * Y};
+    p.forward = [&](auto in, auto out) { view_bounds_from_output(cu(in[0]), mo(out[0]), 0.7); };
+    p.adjoint = [&](auto in, auto adj, auto s) {
+      view_bounds_from_output_adjoint(cu(in[0]), mu(adj[0]), mo(s[0]), 0.7);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      view_bounds_from_output_tangent(cu(in[0]), cu(dir[0]), mo(out[0]), mo(outd[0]), 0.7);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}

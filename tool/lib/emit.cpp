@@ -652,8 +652,7 @@ std::string flat_arguments(const Kernel& k) {
 // the scatter loops.
 void emit_body(Code& out, const LoopPlan& plan) {
   const Kernel& k = *plan.adjoint->kernel;
-  for (const auto& l : k.kernel_locals)
-    out.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(out, k);
   emit_size_checks(out, k, k.name + "_adjoint");
   // The loops go to a buffer first: the subexpressions they hoist are
   // defined before them.
@@ -879,8 +878,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
             k.name, base_name(k.file), k.pos.line,
             fmt::join(k.intermediates.begin(), k.intermediates.end(), ", "));
   code.open(fmt::format("void {}({})", fn_name, param_list(k, false)));
-  for (const auto& l : k.kernel_locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(code, k);
   emit_size_checks(code, k, k.name + "_adjoint");
   // Buffers of the outputs' recomputed values (<out>_v) and of the work
   // arrays' adjoints (<out>_b), <out>_n elements each (Kernel::fresh names).
@@ -1002,8 +1000,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
 void emit_inout_prologue(Code& code, const Kernel& k) {
   if (!has_inout(k))
     return;
-  for (const auto& l : k.kernel_locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(code, k);
   for (const auto& p : k.params) {
     if (!p.inout)
       continue;

@@ -207,9 +207,7 @@ void emit_checked_entry(Code& code, const Kernel& k) {
                                     : fmt::format("{}", fmt::join(shown, " + \", \" + "));
   // The integer locals the bounds may use (x_min = *xmin); not the real ones,
   // which would read arrays before their sizes are checked.
-  for (const auto& l : k.kernel_locals)
-    if (l->def->type == Type::Int)
-      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(code, k, true);
   // A null adjoint (an inactive input) is not checked.
   auto check = [&](const std::string& array, const std::string& range, bool nullable) {
     const std::string lo = k.fresh(range + "_lo"), hi = k.fresh(range + "_hi");

@@ -155,6 +155,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   if (view_buffers)
     c.raw("#include \"dpgen/view_buffer.hpp\"\n\n");
   c.raw(global_declarations(all, "_adj", true));
+  c.raw(kQuietUnused);
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
         "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"

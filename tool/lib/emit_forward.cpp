@@ -95,8 +95,7 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
               return fmt::format("{}", fmt::join(names, ", "));
             }());
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
-  for (const auto& l : k.kernel_locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(code, k);
   Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
   Code nests(code.depth());
   for (const auto& n : k.nests)

@@ -219,8 +219,7 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
     code.line("// Tangent of {} ({}:{}).", k.name, base_name(k.file), k.pos.line);
   }
   code.open(fmt::format("void {}({})", name, tangent_params(k, !shaped)));
-  for (const auto& l : k.kernel_locals)
-    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  define_kernel_locals(code, k);
   // The sums of the kernel's accumulators (Kernel::hidden) and their tangents.
   for (const auto& h : k.hidden) {
     const std::string buf = k.fresh(h.name + "_buf"), dot_buf = k.fresh(h.name + "_dot_buf");
@@ -349,6 +348,7 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
     c.raw("#include <stdexcept>\n#include <string>\n");
   c.raw("\n");
   c.raw(global_declarations(kernels, "_dot", true));
+  c.raw(kQuietUnused);
   c.raw("namespace {\n"
         "// std::min/std::max by value, the first argument on ties (as in the adjoints).\n"
         "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"

@@ -47,6 +47,12 @@ void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
 }
 
+void define_kernel_locals(Code& code, const Kernel& k, bool ints_only) {
+  for (const auto& l : k.kernel_locals)
+    if (!ints_only || l->def->type == Type::Int)
+      code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+}
+
 std::string conjunction(const std::vector<PathCond>& conds) {
   std::vector<std::string> parts;
   for (const auto& pc : conds)

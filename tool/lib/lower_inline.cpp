@@ -151,7 +151,12 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
                                           pt.getAsString()));
     Binding b;
     b.kind = Binding::Value;
-    b.value = L.make_local(pd->getNameAsString(), pd, cast(L.expr(arg), *t));
+    ExprP v = cast(L.expr(arg), *t);
+    // A counter or a local passed as it is (a parallel-for's `f(i, j, k)`)
+    // needs no name of its own: one would only alias it, and generated code
+    // would define it where nothing reads it (its indices print expanded).
+    b.value = v->op == Op::LoopVar || v->op == Op::Local ? v
+                                                         : L.make_local(pd->getNameAsString(), pd, v);
     binds.push_back({pd, b});
   }
   for (const auto& [pd, b] : binds)
