@@ -205,6 +205,15 @@ def one_file(ctx, kpath):
     flags = [ctx.cxx, "-std=c++17", "-O1", "-fopenmp"] + incs
     if ctx.selfcheck:
         flags.append("-DCORPUS_SELFCHECK=1")
+    # What dpgen writes must build in a user's strict build (-Wall -Wextra
+    # -Werror), headers included; the harness and the kernel are not ours to hold to it.
+    if not ctx.selfcheck:
+        for g in srcs[2:]:
+            rc, out = run([ctx.cxx, "-std=c++17", "-fopenmp", "-fsyntax-only", "-Wall", "-Wextra",
+                           "-Werror"] + incs + [g], 600)
+            if rc != 0:
+                return rows(gen_res, "does not compile: generated code warns under -Wall -Wextra "
+                            "-Werror: " + short(first(r"error", out, first(r".", out))))
     exe = os.path.join(work, "t")
     note = ""
     rc, out = run(flags + ["-DCORPUS_TANGENT=1"] + srcs + ["-o", exe], 600)

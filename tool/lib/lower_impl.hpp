@@ -38,6 +38,7 @@
 #include <fmt/format.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include <cctype>
 #include <functional>
 #include <map>
 #include <optional>
@@ -160,7 +161,20 @@ private:
     PrintingPolicy policy{LangOptions()};
     policy.Bool = true; // `bool`, as the generated C++ spells it (not `_Bool`)
     policy.SuppressTagKeyword = true; // `XDir`, not `struct XDir`
-    return c.getAsString(policy);
+    return with_unsigned_suffix(c.getAsString(policy));
+  }
+
+  // mdspan's dynamic_extent (size_t(-1)) as clang prints a template argument,
+  // 18446744073709551615, warns in every build that includes the generated
+  // header ("so large that it is unsigned"): written with its suffix.
+  static std::string with_unsigned_suffix(std::string s) {
+    const std::string max = "18446744073709551615";
+    for (size_t at = s.find(max); at != std::string::npos; at = s.find(max, at + 1)) {
+      size_t end = at + max.size();
+      if (end == s.size() || (s[end] != 'U' && s[end] != 'u' && !std::isdigit(s[end])))
+        s.insert(end, "ULL");
+    }
+    return s;
   }
 
   std::optional<Type> scalar_type(QualType q) const;

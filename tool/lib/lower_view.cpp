@@ -136,7 +136,7 @@ std::string Views::without_element_const(QualType t, bool& changed) const {
     std::string s;
     llvm::raw_string_ostream os(s);
     a.print(policy, os, /*IncludeType=*/true);
-    return os.str();
+    return Lowerer::with_unsigned_suffix(os.str());
   };
   for (const TemplateArgument& a : spec->getTemplateArgs().asArray()) {
     if (a.getKind() == TemplateArgument::Pack) {
