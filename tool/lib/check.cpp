@@ -2,6 +2,7 @@
 // lowered loop nests and stores. Every violation is reported, once per store
 // or read, at the SourcePos it concerns, and the kernel is dropped.
 #include "check.hpp"
+#include "check_impl.hpp"
 #include "ir_walk.hpp"
 
 #include "affine.hpp"
@@ -18,17 +19,13 @@
 
 namespace dpgen {
 
-// The rank of a row (1) or plane (2) symbol standing alone in a coefficient
-// (ir.hpp: row_symbol); 0 for any other coefficient.
-int level_rank(const Poly& c);
-// The highest rank of a row or plane symbol in `p` (0: none).
-int max_level_rank(const Poly& p);
-
 namespace {
 
-class Checker {
+using namespace checking;
+
+class Checker : public CheckState {
 public:
-  Checker(Kernel& k, const Accesses& a, Diagnostics& diag) : k_(k), a_(a), diag_(diag) {}
+  Checker(Kernel& k, const Accesses& a, Diagnostics& diag) : CheckState(k, a, diag) {}
 
   // Every rule in turn, each reporting every violation it finds (one per
   // store or read). Where an output index is not affine, or multiplies
@@ -38,57 +35,13 @@ public:
     check_intermediates();
     check_inout();
     if (check_outputs())
-      output_extents();
+      Extents(*this).output_extents(); // check_extents.cpp
     for (auto& c : k_.size_checks)
       c.what = user_names(c.what);
     return ok_;
   }
 
 private:
-  Kernel& k_;
-  const Accesses& a_;
-  Diagnostics& diag_;
-  bool ok_ = true;
-
-  bool hidden(const std::string& array) const {
-    return std::any_of(k_.hidden.begin(), k_.hidden.end(),
-                       [&](const Param& h) { return h.name == array; });
-  }
-
-  // A work array as the user knows it: a hidden one is their accumulator.
-  std::string work_name(const std::string& array) const {
-    for (const auto& h : k_.hidden)
-      if (h.name == array) {
-        if (a_.buffers.count(array))
-          return fmt::format("line buffer '{}'", h.spelling);
-        if (h.name.rfind("dpgen_sum_", 0) == 0)
-          return fmt::format("the sum in '{}' (read after the loop that adds to it)", h.spelling);
-        return fmt::format("the min/max reduction '{}' (read after its loop)", h.spelling);
-      }
-    return fmt::format("work array '{}' (an output a later loop reads)", array);
-  }
-
-  // `id`, the rule broken (printed after the message): dpgen-write-once,
-  // dpgen-read-after-write, dpgen-work-array, dpgen-inplace,
-  // dpgen-output-index.
-  void fail(const SourcePos& at, const char* id, const std::string& msg) {
-    diag_.error(at, id, user_names(msg));
-    ok_ = false;
-  }
-
-  // A message as the user reads it: a line buffer's hidden array named as
-  // the kernel names the buffer.
-  std::string user_names(std::string msg) const {
-    for (const auto& [array, b] : a_.buffers)
-      for (const auto& [from, to] :
-           {std::pair{"output '" + array + "'", "line buffer '" + b.name + "'"},
-            std::pair{"work array '" + array + "'", "line buffer '" + b.name + "'"},
-            std::pair{"'" + array + "'", "'" + b.name + "'"}})
-        for (size_t at = msg.find(from); at != std::string::npos; at = msg.find(from, at))
-          msg.replace(at, from.size(), to);
-    return msg;
-  }
-
   // Two stores to a line buffer (check.hpp: Accesses::buffers) in nests
   // inside its row loops: in one row, their elements (the indices as the
   // kernel writes them, each inside the buffer: lowering checks that) lie
@@ -110,13 +63,6 @@ private:
     facts.push_back(*to_poly(b.length) - one); // (a VLA has at least one element)
     return prove_nonneg(ry->first - rx->second - one, facts) ||
            prove_nonneg(rx->first - ry->second - one, facts);
-  }
-
-  const Nest* nest_with_key(const std::vector<int>& key) const {
-    for (const auto& n : k_.nests)
-      if (n.key == key)
-        return &n;
-    return nullptr;
   }
 
   // An in-place array is read, where it is also written, only at the element
@@ -656,11 +602,6 @@ private:
       }
     return out;
   }
-  static std::vector<std::string> premises(std::vector<std::string> v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    return v;
-  }
 
   // Two indices never meet when every counter coefficient of both is a
   // multiple of some g > 1 and their remaining parts differ by a constant that
@@ -794,296 +735,6 @@ private:
       k_.size_checks.push_back(chk);
     }
     return true;
-  }
-
-  static std::optional<std::pair<Poly, Poly>> index_range(const Store& s, const Nest& nest) {
-    return index_range(*to_poly(s.index), s.path, nest);
-  }
-
-  // [min, max] of an index over a loop box, when every counter's coefficient
-  // is a constant.
-  // (The sign of a coefficient that is a size, like nx in j * nx + i, is
-  // proved from the facts where the store runs.)
-  static std::optional<std::pair<Poly, Poly>> index_range(Poly p, const std::vector<PathCond>& path,
-                                                          const Nest& nest) {
-    return range_under(std::move(p), where_runs(path, nest), nest);
-  }
-
-  // What holds where a store on `path` in `nest` runs: its loops run, its
-  // path's conditions hold.
-  static Facts where_runs(const std::vector<PathCond>& path, const Nest& nest) {
-    Facts facts;
-    for (const auto& l : nest.loops)
-      add_nonempty(l, facts);
-    for (const auto& pc : path)
-      add_facts(pc, facts);
-    return facts;
-  }
-
-  // index_range's computation under `facts`.
-  static std::optional<std::pair<Poly, Poly>> range_under(Poly p, const Facts& facts,
-                                                          const Nest& nest) {
-    Poly lo, hi;
-    for (const auto& l : nest.loops) {
-      Poly c = p.coefficient(Sym::counter(l.var));
-      bool up = prove_nonneg(c, facts);
-      if (!up && !prove_nonneg(-c, facts))
-        return std::nullopt;
-      Poly first = *to_poly(l.lo), last = *to_poly(l.hi) - Poly::constant(1);
-      lo = lo + c * (up ? first : last);
-      hi = hi + c * (up ? last : first);
-      p = p.without(Sym::counter(l.var));
-    }
-    return std::pair{lo + p, hi + p};
-  }
-
-  // index_range for the buffers of output_extents: where the sign of a
-  // counter's coefficient is not provable from the facts (a row length nx
-  // where the loops only say nx >= 2 * d + 1, and d may be negative), it is
-  // taken as nonnegative and checked on entry (a SizeCheck: the buffer would
-  // be too small otherwise). Only coefficients of sizes the generated code
-  // can evaluate (no row or plane symbol of a view or row pointers).
-  std::optional<std::pair<Poly, Poly>> extent_range(const Poly& p, const std::vector<PathCond>& path,
-                                                    const Nest& nest, const SourcePos& pos,
-                                                    const std::string& array) {
-    if (auto r = index_range(p, path, nest))
-      return r;
-    const Facts facts = where_runs(path, nest);
-    std::vector<Poly> assumed;
-    for (const auto& l : nest.loops) {
-      Poly c = p.coefficient(Sym::counter(l.var));
-      if (prove_nonneg(c, facts) || prove_nonneg(-c, facts))
-        continue;
-      if (c.mentions_any_counter() || max_level_rank(c) > 0 || !to_poly(l.lo) || !to_poly(l.hi))
-        return std::nullopt;
-      assumed.push_back(c);
-    }
-    Facts more = facts;
-    for (const auto& c : assumed)
-      more.push_back(c);
-    auto range = range_under(p, more, nest); // with the assumed signs
-    if (!range)
-      return std::nullopt;
-    for (const auto& c : assumed) {
-      SizeCheck chk;
-      std::vector<std::string> prem;
-      for (const auto& l : nest.loops)
-        prem.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
-      for (const auto& pc : path) {
-        Facts f;
-        add_facts(pc, f);
-        for (const auto& q : f)
-          prem.push_back(fmt::format("({}) >= 0", q.code()));
-      }
-      chk.premises = premises(prem);
-      chk.must_hold = fmt::format("({}) >= 0", c.code());
-      chk.what = fmt::format("the elements of '{}' lie at increasing indices along each loop "
-                             "(index coefficient '{}' not negative), which the adjoint's buffer "
-                             "for it assumes",
-                             array, c.str());
-      chk.pos = pos;
-      bool dup = false;
-      for (const auto& o : k_.size_checks)
-        dup = dup || (o.must_hold == chk.must_hold && o.premises == chk.premises);
-      if (!dup)
-        k_.size_checks.push_back(chk);
-    }
-    return range;
-  }
-
-  bool is_view(const std::string& array) const {
-    const Param* p = k_.find_param(array);
-    return p && p->view;
-  }
-
-  // The staged adjoint finds the elements of a view output (and of its
-  // reads, for a work array) by running the stores' loops before the forward
-  // does (emit.cpp: emit_view_cover): each store to a view output must run
-  // where conditions over what the kernel does not write say, at an index of
-  // the same.
-  void view_outputs_located() {
-    std::set<std::string> written;
-    for (const auto& n : k_.nests)
-      for (const auto& st : n.stores)
-        written.insert(st.array);
-    for (const auto& h : k_.hidden)
-      written.insert(h.name);
-    auto reads_written = [&](const ExprP& e) {
-      return any_node(e, [&](const ExprP& x) {
-        return x->op == Op::Read && written.count(x->name) > 0;
-      });
-    };
-    for (const auto& n : k_.nests)
-      for (const auto& st : n.stores) {
-        const bool touches_view = is_view(st.array) || any_node(st.value, [&](const ExprP& x) {
-          return x->op == Op::Read && is_view(x->name) && k_.intermediates.count(x->name) > 0;
-        });
-        if (!touches_view)
-          continue;
-        bool bad = reads_written(st.index);
-        for (const auto& pc : st.path)
-          bad = bad || reads_written(pc.cond);
-        if (bad)
-          fail(st.pos, "dpgen-work-array",
-               fmt::format("this store {} a view the adjoint recomputes into a buffer of its "
-                           "own (laid out like the view's seed), under a condition that reads what "
-                           "the kernel writes: the adjoint finds the buffer's elements before it "
-                           "recomputes them; make the condition read inputs only",
-                           is_view(st.array) ? "writes" : "reads"));
-      }
-  }
-
-  // One past the largest index each output's stores reach, for the buffers
-  // of an adjoint that recomputes the forward kernel (work arrays).
-  void output_extents() {
-    // A line buffer: a row of its length per iteration of its row loops
-    // (lowering proves, or checks on entry, that every element it writes
-    // lies in its row, and reads only what was written). The tangent needs
-    // it also where no later loop reads the buffer.
-    for (const auto& [array, b] : a_.buffers) {
-      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", to_poly(b.length)->code());
-      for (const auto& x : b.extents)
-        e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, to_poly(x)->code());
-      k_.extent[array] = fmt::format("std::max<std::ptrdiff_t>(0, {})", e);
-    }
-    bool inout =
-        std::any_of(k_.params.begin(), k_.params.end(), [](const Param& p) { return p.inout; });
-    if (k_.intermediates.empty() && !inout)
-      return;
-    for (const auto& p : k_.params)
-      if (k_.intermediates.count(p.name) && p.row_pointers)
-        fail(k_.pos, "dpgen-work-array", fmt::format("work array '{}' (an output a later loop reads) has "
-                                 "row pointers: the adjoint recomputes work arrays "
-                                 "into flat buffers; pass it as a flat pointer or "
-                                 "'double (*{})[N]'",
-                                 p.name, p.name));
-    // A view output is recomputed into a ViewBuffer (dpgen/view_buffer.hpp)
-    // laid out like its seed: the elements it covers are found at run time by
-    // the stores and reads themselves, before the forward runs, so where they
-    // run must not depend on what the kernel writes.
-    if (!k_.intermediates.empty())
-      view_outputs_located();
-    for (const auto& p : k_.params)
-      if (!k_.intermediates.empty() && !p.container.empty())
-        fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
-                                 "arrays as pointers",
-                                 work_name(*k_.intermediates.begin()), p.name));
-    std::map<std::string, std::vector<std::string>> ends;
-    auto add_end = [&](const std::string& array, const std::string& end) { // (once each)
-      std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", end);
-      auto& v = ends[array];
-      if (std::find(v.begin(), v.end(), e) == v.end())
-        v.push_back(e);
-    };
-    for (const auto& n : k_.nests)
-      for (const auto& st : n.stores) {
-        if (a_.buffers.count(st.array) || is_view(st.array))
-          continue;
-        auto r = extent_range(*to_poly(st.index), st.path, n, st.pos, st.array);
-        if (!r) {
-          fail(st.pos, "dpgen-output-index", fmt::format("cannot bound the indices of output '{}', which the "
-                                   "adjoint needs buffers for (a work array or an in-place "
-                                   "array)",
-                                   st.array));
-          continue;
-        }
-        // A store at an element that stays while a loop around it runs (a
-        // sum, a pinned store) reaches it only if that loop runs: an
-        // in-place array's seed copy must not read u_adj[0] of an empty one.
-        std::string end = (r->second + Poly::constant(1)).code();
-        std::vector<std::string> runs;
-        auto pi = to_poly(st.index);
-        for (const auto& l : n.loops)
-          if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi)) {
-            std::string run =
-                fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code());
-            if (std::find(runs.begin(), runs.end(), run) == runs.end())
-              runs.push_back(run);
-          }
-        if (!runs.empty())
-          end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
-        add_end(st.array, end);
-      }
-    // A later loop may read a work array beyond what was written (the
-    // buffer holds NaN there): the buffer covers the reads too.
-    for (const auto& r : a_.work_reads) {
-      const Nest* reader = nest_with_key(r.nest_key);
-      if (!reader || a_.buffers.count(r.array))
-        continue;
-      if (!to_poly(r.index)) {
-        fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the adjoint "
-                                "recomputes into a buffer",
-                                r.array));
-        continue;
-      }
-      if (!is_view(r.array)) { // (a view's buffer covers its reads at run time)
-        auto range = extent_range(*to_poly(r.index), r.path, *reader, r.pos, r.array);
-        if (!range) {
-          fail(r.pos, "dpgen-work-array", fmt::format("cannot bound this read of work array '{}', which the "
-                                  "adjoint recomputes into a buffer",
-                                  r.array));
-          continue;
-        }
-        add_end(r.array, (range->second + Poly::constant(1)).code());
-      }
-      // Provably outside every earlier store's range: an element no loop
-      // writes, whose value is the caller's (the adjoint's buffer has NaN).
-      // A read that moves over component planes (`f[l * P + k * (nx + 1) +
-      // i]` for l = 0..3, each plane written by a store of its own) is
-      // tested one plane at a time: for each value of a loop counter with
-      // constant bounds (a few values), the read at that value against
-      // every store.
-      Poly rp = *to_poly(r.index);
-      std::vector<Poly> parts = {rp};
-      for (const auto& l : reader->loops) {
-        auto lo = to_poly(l.lo), hi = to_poly(l.hi);
-        Sym v = Sym::counter(l.var);
-        Poly c = rp.coefficient(v);
-        if (!lo || !hi || !lo->is_constant() || !hi->is_constant() || c == Poly() ||
-            c.mentions_any_counter())
-          continue;
-        long long a = lo->constant_term(), b = hi->constant_term();
-        if (b - a < 1 || (b - a) * (long long)parts.size() > 64)
-          continue;
-        std::vector<Poly> next;
-        for (const Poly& q : parts)
-          for (long long x = a; x < b; ++x)
-            next.push_back(q.without(v) + q.coefficient(v) * Poly::constant(x));
-        parts = std::move(next);
-      }
-      bool unwritten = false, any_store = false;
-      for (const Poly& part : parts) {
-        auto pr = index_range(part, r.path, *reader);
-        if (!pr)
-          continue;
-        bool outside_all = true;
-        for (const auto& n : k_.nests)
-          for (const auto& st : n.stores) {
-            if (st.array != r.array)
-              continue;
-            any_store = true;
-            auto w = index_range(st, n);
-            Facts facts;
-            for (const Nest* m : {&n, reader})
-              for (const auto& l : m->loops)
-                add_nonempty(l, facts);
-            Poly one = Poly::constant(1);
-            bool outside = w && (prove_nonneg(pr->second - w->second - one, facts) ||
-                                 prove_nonneg(w->first - pr->first - one, facts));
-            outside_all = outside_all && outside;
-          }
-        unwritten = unwritten || outside_all;
-      }
-      if (any_store && unwritten)
-        fail(r.pos, "dpgen-work-array", fmt::format("reads work array '{}' at elements no earlier loop writes (their "
-                                "values are the caller's, which the adjoint cannot recompute); "
-                                "write every element a later loop reads",
-                                r.array));
-    }
-    for (const auto& [array, e] : ends)
-      k_.extent[array] =
-          e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
-                        : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})", fmt::join(e, ", "));
   }
 
   // Mixed-radix test: with the counters ordered by coefficient, every

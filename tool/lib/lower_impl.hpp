@@ -22,6 +22,7 @@
 #include "lower_object.hpp"
 #include "lower_view.hpp"
 #include "lower_reduce.hpp"
+#include "lower_globals.hpp"
 #include "lower_signature.hpp"
 
 #include <clang/AST/ASTContext.h>
@@ -432,6 +433,7 @@ private:
 
   // ---- the signature (lower_signature.hpp) ----------------------------------
   friend class Signature;
+  friend class Globals;
   Signature sig_{*this};
 
   // ---- array views and objects (lower_view.hpp, lower_object.hpp) ----------

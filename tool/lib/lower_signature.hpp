@@ -1,7 +1,7 @@
 // Lowering, the signature (lower_signature.cpp): the kernel's parameters,
-// their annotations and shapes (Param), the members of a member kernel, the
-// returned value and the globals the body reads, each bound for the body's
-// lowering. A part of the lowering that runs once, before the body.
+// their annotations and shapes (Param), the members of a member kernel and
+// the returned value (the globals the body reads: lower_globals.hpp), each
+// bound for the body's lowering. A part of the lowering that runs once, before the body.
 // Included by lower_impl.hpp only.
 #pragma once
 
@@ -64,9 +64,6 @@ private:
   // The members of the kernel's class that the kernel's method, the lambdas
   // in it and the class's call operators name through `this`.
   std::set<const clang::FieldDecl*> used_fields() const;
-  // The globals the kernel body reads, as Params (Param::global), bound in
-  // header() like parameters.
-  void globals(const clang::Stmt* body);
 };
 
 } // namespace dpgen::lowering
