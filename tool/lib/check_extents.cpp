@@ -132,9 +132,16 @@ void Extents::view_outputs_located() {
   };
   for (const auto& n : k_.nests)
     for (const auto& st : n.stores) {
-      const bool touches_view = is_view(st.array) || any_node(st.value, [&](const ExprP& x) {
-        return x->op == Op::Read && is_view(x->name) && k_.intermediates.count(x->name) > 0;
-      });
+      auto reads_view_work = [&](const ExprP& e) {
+        return any_node(e, [&](const ExprP& x) {
+          return x->op == Op::Read && is_view(x->name) && k_.intermediates.count(x->name) > 0;
+        });
+      };
+      // (a view work array read by the store's own condition: the condition
+      // cannot run before the recompute, and its read must be covered too)
+      bool touches_view = is_view(st.array) || reads_view_work(st.value);
+      for (const auto& pc : st.path)
+        touches_view = touches_view || reads_view_work(pc.cond);
       if (!touches_view)
         continue;
       bool bad = reads_written(st.index);
