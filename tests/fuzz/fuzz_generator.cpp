@@ -34,11 +34,14 @@ const std::string& annotate_header() {
 
 // The headers the kernels may include: annotate.hpp, and the style corpus's
 // class headers (array views, member-kernel classes), by the names the seeds
-// use ("include/user_views.hpp") and the names they use among themselves.
+// use ("include/user_views.hpp") and the names they use among themselves;
+// and the runtime header generated code includes (view_buffer.hpp: a staged
+// adjoint's view outputs).
 const std::vector<std::pair<std::string, std::string>>& headers() {
   static const std::vector<std::pair<std::string, std::string>> h = [] {
     std::vector<std::pair<std::string, std::string>> out = {
-        {"dpgen/annotate.hpp", annotate_header()}};
+        {"dpgen/annotate.hpp", annotate_header()},
+        {"dpgen/view_buffer.hpp", read_file(DPGEN_VIEW_BUFFER_HPP)}};
     for (const char* name : {"user_views.hpp", "member_classes.hpp"}) {
       std::string text = read_file((std::string(DPGEN_STYLE_INCLUDE_DIR) + "/" + name).c_str());
       out.push_back({name, text});
