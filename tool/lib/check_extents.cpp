@@ -115,7 +115,7 @@ bool Extents::is_view(const std::string& array) const {
 
 // The staged adjoint finds the elements of a view output (and of its
 // reads, for a work array) by running the stores' loops before the forward
-// does (emit.cpp: emit_view_cover): each store to a view output must run
+// does (emit_staged.cpp: emit_view_cover): each store to a view output must run
 // where conditions over what the kernel does not write say, at an index of
 // the same.
 void Extents::view_outputs_located() {

@@ -12,7 +12,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <functional>
 #include <map>
 #include <set>
@@ -28,16 +27,6 @@ std::string forward_params(const Kernel& k) {
     if (!p.synthetic && !p.global && !p.returned)
       ps.push_back(p.declaration);
   return fmt::format("{}", fmt::join(ps, ", "));
-}
-
-// Whether `text` has `name` as a whole identifier.
-bool names_identifier(const std::string& text, const std::string& name) {
-  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
-    if ((at == 0 || !ident(text[at - 1])) &&
-        (at + name.size() == text.size() || !ident(text[at + name.size()])))
-      return true;
-  return false;
 }
 
 // For each nest, its loops around what `lines` gives for each of its stores
@@ -127,7 +116,7 @@ std::vector<ExprP> view_work_reads(const Kernel& k, const ExprP& e) {
 // The buffers of view outputs (ViewBuffer, laid out like the seed) cover
 // every element the kernel stores, and for a work array every element a
 // later loop reads: found by running the loops, before the forward
-// (check.cpp: view_outputs_located says where they run depends on inputs
+// (check_extents.cpp: view_outputs_located says where they run depends on inputs
 // only).
 void emit_view_cover(Code& code, const Kernel& k, const std::function<std::string(const std::string&)>& v_of) {
   code.line("// The elements the view outputs' buffers hold: where the kernel stores them, and");

@@ -339,6 +339,8 @@ std::string view_buffer_type(const Param& p) {
 }
 
 namespace {
+bool ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 // The live scopes, innermost last (renamed() uses the innermost).
 std::vector<std::map<std::string, std::string>> live_renames;
 } // namespace
@@ -353,7 +355,6 @@ std::string renamed(const std::string& text) {
   if (live_renames.empty() || live_renames.back().empty())
     return text;
   const auto& renames = live_renames.back();
-  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string out;
   for (size_t i = 0; i < text.size();) {
     if (!ident(text[i]) || std::isdigit(static_cast<unsigned char>(text[i]))) {
@@ -378,6 +379,14 @@ std::string renamed(const std::string& text) {
     i = j;
   }
   return out;
+}
+
+bool names_identifier(const std::string& text, const std::string& name) {
+  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+    if ((at == 0 || !ident(text[at - 1])) &&
+        (at + name.size() == text.size() || !ident(text[at + name.size()])))
+      return true;
+  return false;
 }
 
 } // namespace dpgen

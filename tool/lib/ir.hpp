@@ -294,6 +294,8 @@ public:
 };
 /// `text` with the live RenameScope's identifiers renamed (unchanged if none).
 std::string renamed(const std::string& text);
+/// Whether `text` (generated C++) has `name` as a whole identifier.
+bool names_identifier(const std::string& text, const std::string& name);
 
 /// The generated adjoint's storage for a view output it recomputes or whose
 /// adjoint it accumulates (a work array): a dpgen::ViewBuffer laid out like
