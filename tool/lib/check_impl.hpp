@@ -1,6 +1,7 @@
-// Check's parts (check.cpp: the write-once rules, work and in-place arrays;
-// check_extents.cpp: the extents of the buffers the adjoint needs): the state
-// they report through, and the ranges of indices over loop boxes they share.
+// Check's parts (check.cpp: the driver, work and in-place arrays;
+// check_write_once.cpp: the write-once rule; check_extents.cpp: the extents
+// of the buffers the adjoint needs): the state they report through, and the
+// ranges of indices and facts over loop boxes they share.
 #pragma once
 
 #include "affine.hpp"
@@ -82,6 +83,21 @@ public:
     return nullptr;
   }
 };
+
+// The write-once rule (check_write_once.cpp): each output element is written
+// by exactly one iteration. False where an index is not affine or multiplies
+// counters (the rules that need its range are left out then).
+bool check_write_once(CheckState& s);
+
+// A condition that has one value for the whole call (check.cpp, with the
+// three below).
+bool invariant(const ExprP& e);
+// Two paths that never both run in one call.
+bool exclusive(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
+// How many outer loops two nests share (the same `for` statements).
+size_t shared_loops(const Nest& a, const Nest& b);
+// What holds where two stores run: their loops run, their paths hold.
+Facts pair_facts(const Nest& nx, const Store& x, const Nest& ny, const Store& y);
 
 // [min, max] of a store's index over its loop box, when every counter's
 // coefficient is a constant (check_extents.cpp, with the three below).

@@ -50,7 +50,7 @@ private:
 bool Lowerer::run(Kernel& out) {
   try {
     sig_.header();
-    body(fn_->getBody());
+    stmts_.body(fn_->getBody());
     if (failed_)
       return false; // every statement's error is reported; the checks need them all
     // A line buffer that no loop reads after another wrote it (unused, or
@@ -93,9 +93,9 @@ bool Lowerer::run(Kernel& out) {
 // repeat the same error), where the error propagates.
 Escape Lowerer::lower_recovering(const Stmt* s) {
   if (!frames_.empty() || unrolling_ > 0)
-    return lower(s);
+    return stmts_.lower(s);
   try {
-    return lower(s);
+    return stmts_.lower(s);
   } catch (const Rejected&) {
     failed_ = true;
     if (const auto* d = dyn_cast<DeclStmt>(s))
@@ -251,6 +251,94 @@ void Lowerer::collect_names() {
   }
   k_.names.insert(local_names_.begin(), local_names_.end());
   k_.names.insert(loop_names_.begin(), loop_names_.end());
+}
+
+// `e >= 0` wherever this statement runs: its loops run, the counters are
+// in range, the conditions on its path hold, unsigned sizes are >= 0.
+bool Lowerer::provably_nonneg(const ExprP& e, const std::vector<PathCond>& more) const {
+  auto p = to_poly(e);
+  if (!p)
+    return false;
+  Facts f;
+  for (const auto& pc : more)
+    add_facts_with_counters(pc, f);
+  for (const auto& l : loops_) {
+    add_nonempty(*l, f);
+    add_counter_range(*l, f);
+  }
+  for (const auto& pc : path_)
+    add_facts_with_counters(pc, f);
+  for (const auto& [name, v] : signed_views_)
+    f.push_back(*to_poly(v));
+  // `a != b` (`i == 0 ? ... : i - 1` in its else arm) is a case split:
+  // a - b >= 1 or b - a >= 1; the goal must hold in both.
+  std::vector<Poly> ne;
+  auto collect_ne = [&](const PathCond& pc) {
+    const ExprP& c = pc.cond;
+    bool is_ne = (c->op == Op::Ne && pc.positive) || (c->op == Op::Eq && !pc.positive);
+    if (is_ne && c->ops.size() == 2 && c->ops[0]->type == Type::Int)
+      if (auto pa = to_poly(c->ops[0]), pb = to_poly(c->ops[1]); pa && pb)
+        ne.push_back(*pa - *pb);
+  };
+  for (const auto& pc : more)
+    collect_ne(pc);
+  for (const auto& pc : path_)
+    collect_ne(pc);
+  if (ne.size() > 3)
+    ne.resize(3);
+  std::function<bool(size_t, Facts&)> split = [&](size_t k, Facts& facts) {
+    if (k == ne.size())
+      return prove_nonneg(*p, facts);
+    for (const Poly& side : {ne[k] - Poly::constant(1), -ne[k] - Poly::constant(1)}) {
+      facts.push_back(side);
+      bool ok = split(k + 1, facts);
+      facts.pop_back();
+      if (!ok)
+        return false;
+    }
+    return true;
+  };
+  return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
+}
+
+bool Lowerer::paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
+  for (const auto& x : a)
+    for (const auto& y : b)
+      if (x.cond == y.cond && x.positive != y.positive)
+        return true;
+  return false;
+}
+
+const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {
+  const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+  if (!r)
+    return nullptr;
+  auto it = env_.find(dyn_cast<VarDecl>(r->getDecl()));
+  if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->scalar_ref)
+    return nullptr;
+  return it->second.param;
+}
+
+// What `e` names: a variable or a member of the kernel's object (lower_impl.hpp).
+const Binding* Lowerer::bound(const clang::Expr* e) const {
+  e = e->IgnoreParenImpCasts();
+  if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
+    const auto* v = dyn_cast<VarDecl>(r->getDecl());
+    if (!v)
+      return nullptr;
+    if (poisoned_.count(v))
+      throw Rejected{};
+    auto it = env_.find(v);
+    return it == env_.end() ? nullptr : &it->second;
+  }
+  const auto* m = dyn_cast<MemberExpr>(e);
+  const auto* f = m ? dyn_cast<FieldDecl>(m->getMemberDecl()) : nullptr;
+  if (!f || !isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
+    return nullptr;
+  if (poisoned_.count(f))
+    throw Rejected{};
+  auto it = fields_.find(f);
+  return it == fields_.end() ? nullptr : &it->second;
 }
 
 } // namespace dpgen::lowering

@@ -393,7 +393,7 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
   const std::string name = b.decl->getNameAsString();
   SourceLocation loc = e->getBeginLoc();
   auto nit = L.nest_index_.find(L.cur_key());
-  if (nit != L.nest_index_.end() && L.visible_store(L.k_.nests[nit->second], p->name, flat))
+  if (nit != L.nest_index_.end() && L.stores_.visible_store(L.k_.nests[nit->second], p->name, flat))
     return; // stored earlier in this iteration, at this element
   Poly local = *buffer_local(b, flat);
   std::string rows = "the kernel";
@@ -568,7 +568,7 @@ bool LineBuffers::declare_array_pointer(const VarDecl* v) {
     if (const auto* vat = dyn_cast<VariableArrayType>(at)) {
       // The extent as it is here: kept for every later u[k][j] (a local in
       // it may be assigned later; the pointer's rows do not change).
-      ExprP x = L.expr(vat->getSizeExpr());
+      ExprP x = L.exprs_.expr(vat->getSizeExpr());
       auto px = to_poly(x);
       if (!px || px->mentions_any_counter())
         L.fail(vat->getSizeExpr()->getBeginLoc(),

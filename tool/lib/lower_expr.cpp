@@ -1,101 +1,52 @@
-// Lowering, expressions: values, index facts, helper calls inlined, array
-// elements, casts, names, operators and math calls (lower_impl.hpp).
+// Lowering, expressions: values, helper calls inlined, array elements,
+// casts, names, operators and math calls (lower_expr.hpp).
 #include "lower_impl.hpp"
 
 #include <cmath>
 
 namespace dpgen::lowering {
 
-// `e >= 0` wherever this statement runs: its loops run, the counters are
-// in range, the conditions on its path hold, unsigned sizes are >= 0.
-bool Lowerer::provably_nonneg(const ExprP& e, const std::vector<PathCond>& more) const {
-  auto p = to_poly(e);
-  if (!p)
-    return false;
-  Facts f;
-  for (const auto& pc : more)
-    add_facts_with_counters(pc, f);
-  for (const auto& l : loops_) {
-    add_nonempty(*l, f);
-    add_counter_range(*l, f);
-  }
-  for (const auto& pc : path_)
-    add_facts_with_counters(pc, f);
-  for (const auto& [name, v] : signed_views_)
-    f.push_back(*to_poly(v));
-  // `a != b` (`i == 0 ? ... : i - 1` in its else arm) is a case split:
-  // a - b >= 1 or b - a >= 1; the goal must hold in both.
-  std::vector<Poly> ne;
-  auto collect_ne = [&](const PathCond& pc) {
-    const ExprP& c = pc.cond;
-    bool is_ne = (c->op == Op::Ne && pc.positive) || (c->op == Op::Eq && !pc.positive);
-    if (is_ne && c->ops.size() == 2 && c->ops[0]->type == Type::Int)
-      if (auto pa = to_poly(c->ops[0]), pb = to_poly(c->ops[1]); pa && pb)
-        ne.push_back(*pa - *pb);
-  };
-  for (const auto& pc : more)
-    collect_ne(pc);
-  for (const auto& pc : path_)
-    collect_ne(pc);
-  if (ne.size() > 3)
-    ne.resize(3);
-  std::function<bool(size_t, Facts&)> split = [&](size_t k, Facts& facts) {
-    if (k == ne.size())
-      return prove_nonneg(*p, facts);
-    for (const Poly& side : {ne[k] - Poly::constant(1), -ne[k] - Poly::constant(1)}) {
-      facts.push_back(side);
-      bool ok = split(k + 1, facts);
-      facts.pop_back();
-      if (!ok)
-        return false;
-    }
-    return true;
-  };
-  return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
+ExprP Expressions::cond(const clang::Expr* e) {
+  ExprP c = expr(e);
+  if (c->type != Type::Bool)
+    c = binary(Op::Ne, c, c->type == Type::Int ? int_const(0) : real_const(0, c->type, ""));
+  return c;
 }
 
-bool Lowerer::paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
-  for (const auto& x : a)
-    for (const auto& y : b)
-      if (x.cond == y.cond && x.positive != y.positive)
-        return true;
-  return false;
-}
-
-auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
+auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
-    if (auto a = views_.view_element(oc))
+    if (auto a = L.views_.view_element(oc))
       return a;
-  if (const Param* p = scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
+  if (const Param* p = L.scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
     return Access{p, int_const(0)};
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
     const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
     if (isa<DeclRefExpr>(base)) {
       const Param* p = array_base(base);
       if (p->row_pointers)
-        fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
-                                              "its elements as {}[j][i]",
-                                              p->name, p->name, p->name));
-      if (bufs_.is_buffer(p->name))
-        return Access{p, bufs_.buffer_index(p, int_const(0), e)};
+        L.fail(u->getOperatorLoc(), fmt::format("'*{}' of row-pointer array '{}' is a row; index "
+                                                "its elements as {}[j][i]",
+                                                p->name, p->name, p->name));
+      if (L.bufs_.is_buffer(p->name))
+        return Access{p, L.bufs_.buffer_index(p, int_const(0), e)};
       return Access{p, int_const(0)};
     }
-    fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
-                              "parameter directly: a[i + 1]");
+    L.fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                                "parameter directly: a[i + 1]");
   }
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
       oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
     // v[i] of a std::vector parameter
     const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
     if (!isa<DeclRefExpr>(base))
-      fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
+      L.fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
     const Param* p = array_base(base);
     ExprP idx = expr(oc->getArg(1));
     if (idx->type != Type::Int)
-      fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
-    if (bufs_.is_buffer(p->name)) // t[i] of a std::array line buffer
-      return Access{p, bufs_.buffer_index(p, idx, e)};
+      L.fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
+    if (L.bufs_.is_buffer(p->name)) // t[i] of a std::array line buffer
+      return Access{p, L.bufs_.buffer_index(p, idx, e)};
     return Access{p, idx};
   }
   const auto* sub = dyn_cast<ArraySubscriptExpr>(e);
@@ -103,7 +54,7 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     return std::nullopt;
   ExprP idx = expr(sub->getIdx());
   if (idx->type != Type::Int)
-    fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
+    L.fail(sub->getIdx()->getBeginLoc(), "array index must be an integer");
   const clang::Expr* base = sub->getBase()->IgnoreParenImpCasts();
   if (const auto* row = dyn_cast<ArraySubscriptExpr>(base);
       row && row->getType().getCanonicalType()->isPointerType()) {
@@ -119,55 +70,55 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
     }
     const Param* p = isa<DeclRefExpr>(rb) ? array_base(rb) : nullptr;
     if (!p || !p->row_pointers)
-      fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
-                                "'double**' or 'double***' kernel parameter: a[j][i], "
-                                "a[k][j][i]");
+      L.fail(base->getBeginLoc(), "rows reached through a pointer must come straight from a "
+                                  "'double**' or 'double***' kernel parameter: a[j][i], "
+                                  "a[k][j][i]");
     if (outer.size() != (p->plane_pointers ? 2u : 1u))
-      fail(sub->getBeginLoc(), fmt::format("'{}' is indexed with {} subscripts; index its "
-                                           "elements as {}",
-                                           p->name, outer.size() + 1,
-                                           p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
+      L.fail(sub->getBeginLoc(),
+             fmt::format("'{}' is indexed with {} subscripts; index its "
+                         "elements as {}",
+                         p->name, outer.size() + 1, p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
     ExprP flat = idx;
-    std::vector<ExprP> symbols = {row_lengths_.at(p->name)};
+    std::vector<ExprP> symbols = {L.row_lengths_.at(p->name)};
     if (p->plane_pointers)
-      symbols.push_back(plane_lengths_.at(p->name));
+      symbols.push_back(L.plane_lengths_.at(p->name));
     bool affine = to_poly(idx).has_value();
     for (size_t d = 0; d < outer.size(); ++d) {
       ExprP x = expr(outer[d]);
       if (x->type != Type::Int)
-        fail(outer[d]->getBeginLoc(), "array index must be an integer");
+        L.fail(outer[d]->getBeginLoc(), "array index must be an integer");
       affine = affine && to_poly(x).has_value();
       flat = binary(Op::Add, binary(Op::Mul, x, symbols[d]), flat);
     }
     if (!affine)
-      fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
-                                           "data-dependent row or column; dpgen needs every "
-                                           "index of a[j][i] affine in the loop counters "
-                                           "and sizes for row pointers (pass a flat array for "
-                                           "interpolation)",
-                                           p->name));
+      L.fail(sub->getBeginLoc(), fmt::format("row-pointer array '{}' is indexed at a "
+                                             "data-dependent row or column; dpgen needs every "
+                                             "index of a[j][i] affine in the loop counters "
+                                             "and sizes for row pointers (pass a flat array for "
+                                             "interpolation)",
+                                             p->name));
     return Access{p, flat};
   }
   if (const auto* row = dyn_cast<ArraySubscriptExpr>(base)) {
     // a[j][i]: row j of an array of rows, each `extent` elements long.
     QualType rt = row->getType().getCanonicalType();
-    const clang::ArrayType* at = ctx_.getAsArrayType(rt);
+    const clang::ArrayType* at = L.ctx_.getAsArrayType(rt);
     if (!at)
-      fail(base->getBeginLoc(),
-           "rows reached through a pointer ('double** a', a[j][i]) are outside the kernel "
-           "subset: dpgen cannot prove rows do not overlap; pass the array as 'double (*a)[N]', "
-           "'double a[][N]' or a flat pointer with a[j * N + i]");
+      L.fail(base->getBeginLoc(),
+             "rows reached through a pointer ('double** a', a[j][i]) are outside the kernel "
+             "subset: dpgen cannot prove rows do not overlap; pass the array as 'double (*a)[N]', "
+             "'double a[][N]' or a flat pointer with a[j * N + i]");
     ExprP extent;
     if (const auto* c = dyn_cast<ConstantArrayType>(at))
       extent = int_const(static_cast<long long>(c->getSize().getZExtValue()));
     else if (const auto* v = dyn_cast<VariableArrayType>(at)) {
       // (a pointer's extents as evaluated at its declaration, lower_buffer.cpp)
-      extent = bufs_.vla_size(v->getSizeExpr());
+      extent = L.bufs_.vla_size(v->getSizeExpr());
       if (!extent)
         extent = expr(v->getSizeExpr());
     }
     else
-      fail(base->getBeginLoc(), "this array type is outside the kernel subset");
+      L.fail(base->getBeginLoc(), "this array type is outside the kernel subset");
     auto inner = element(row);
     ExprP flat = binary(Op::Add, binary(Op::Mul, inner->index, extent), idx);
     // (the flat index of a[j][i] is computed by the compiler in 64 bits)
@@ -175,58 +126,48 @@ auto Lowerer::element(const clang::Expr* e) -> std::optional<Access> {
   }
   const Param* p = array_base(base);
   if (p->row_pointers)
-    fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
-                                         "value; index its elements as {}[j][i]",
-                                         p->name, p->name, p->name));
-  if (bufs_.is_buffer(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
-    return Access{p, bufs_.buffer_index(p, idx, e)};
-  ints_.check_index_width(sub->getIdx(), idx, p->name);
+    L.fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
+                                           "value; index its elements as {}[j][i]",
+                                           p->name, p->name, p->name));
+  if (L.bufs_.is_buffer(p->name)) // tmp[i] of a line buffer (lower_buffer.cpp)
+    return Access{p, L.bufs_.buffer_index(p, idx, e)};
+  L.ints_.check_index_width(sub->getIdx(), idx, p->name);
   return Access{p, idx};
 }
 
-const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {
-  const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
-  if (!r)
-    return nullptr;
-  auto it = env_.find(dyn_cast<VarDecl>(r->getDecl()));
-  if (it == env_.end() || it->second.kind != Binding::ArrayParam || !it->second.param->scalar_ref)
-    return nullptr;
-  return it->second.param;
-}
-
-const Param* Lowerer::array_base(const clang::Expr* base) {
+const Param* Expressions::array_base(const clang::Expr* base) {
   if (isa<MemberExpr>(base->IgnoreParenImpCasts())) // `u_[i]` of a member kernel's array
-    if (const Binding* b = bound(base); b && b->kind == Binding::ArrayParam)
+    if (const Binding* b = L.bound(base); b && b->kind == Binding::ArrayParam)
       return b->param;
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref) {
     if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
-      fail(base->getBeginLoc(), "pointer arithmetic is outside the kernel subset; index the "
-                                "parameter directly: a[i + 1]");
-    fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+      L.fail(base->getBeginLoc(), "pointer arithmetic is outside the kernel subset; index the "
+                                  "parameter directly: a[i + 1]");
+    L.fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
   }
-  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && poisoned_.count(v))
+  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && L.poisoned_.count(v))
     throw Rejected{}; // its declaration's error is reported already
-  auto it = env_.find(dyn_cast<VarDecl>(ref->getDecl()));
-  if (it == env_.end() || it->second.kind != Binding::ArrayParam) {
+  auto it = L.env_.find(dyn_cast<VarDecl>(ref->getDecl()));
+  if (it == L.env_.end() || it->second.kind != Binding::ArrayParam) {
     if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && v->hasGlobalStorage())
-      fail(base->getBeginLoc(), fmt::format("'{}' is global state, outside the kernel subset",
-                                            v->getNameAsString()));
-    fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
+      L.fail(base->getBeginLoc(),
+             fmt::format("'{}' is global state, outside the kernel subset", v->getNameAsString()));
+    L.fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
   }
   return it->second.param;
 }
 
-ExprP Lowerer::expr(const clang::Expr* e) {
+ExprP Expressions::expr(const clang::Expr* e) {
   e = e->IgnoreParens();
   if (isa<MemberExpr>(e->IgnoreParenImpCasts())) { // `nu_` of a member kernel or a functor
-    const Binding* b = bound(e);
+    const Binding* b = L.bound(e);
     if (b && b->kind == Binding::ScalarParam && !b->param->object)
-      return scalar_param(b->param->name, b->param->elem);
+      return L.scalar_param(b->param->name, b->param->elem);
     if (b && b->kind == Binding::Value && b->value)
       return *b->value;
   }
-  if (auto v = objects_.object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
+  if (auto v = L.objects_.object_value(e)) // bx.smallEnd(0), u.extent(1), lo.x
     return *v;
   if (const auto* c = dyn_cast<ImplicitCastExpr>(e))
     return cast_expr(c, c->getSubExpr());
@@ -243,82 +184,82 @@ ExprP Lowerer::expr(const clang::Expr* e) {
   if (const auto* l = dyn_cast<IntegerLiteral>(e))
     return int_const(static_cast<long long>(l->getValue().getSExtValue()));
   if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
-    Type t = type_of(e);
+    Type t = L.type_of(e);
     // The literal as written; from a macro (`#define C 0.5` in a header the
     // generated code does not include), its spelling in the definition.
     SourceLocation at = l->getLocation();
     std::string spelled_as =
         at.isMacroID()
-            ? Lexer::getSourceText(CharSourceRange::getTokenRange(sm_.getSpellingLoc(at)), sm_,
-                                   ctx_.getLangOpts())
+            ? Lexer::getSourceText(CharSourceRange::getTokenRange(L.sm_.getSpellingLoc(at)), L.sm_,
+                                   L.ctx_.getLangOpts())
                   .str()
-            : text(l);
+            : L.text(l);
     return real_const(l->getValueAsApproximateDouble(), t, spelled_as);
   }
   if (const auto* l = dyn_cast<CXXBoolLiteralExpr>(e))
     return binary(Op::Eq, int_const(l->getValue() ? 1 : 0), int_const(1));
-  if (const auto* r = dyn_cast<DeclRefExpr>(e); r && !scalar_ref_param(r))
+  if (const auto* r = dyn_cast<DeclRefExpr>(e); r && !L.scalar_ref_param(r))
     return decl_ref(r);
-  if (const VarDecl* v = deref_local(e)) {
-    const Binding& b = env_[v];
+  if (const VarDecl* v = L.stores_.deref_local(e)) {
+    const Binding& b = L.env_[v];
     if (!b.value)
-      fail(e->getBeginLoc(), unset_message(v, "may be used before it has a value"));
+      L.fail(e->getBeginLoc(), L.unset_message(v, "may be used before it has a value"));
     return *b.value;
   }
-  if (auto le = local_element(e)) {
-    const std::optional<ExprP>& v = env_[le->first].elems[le->second];
+  if (auto le = L.stmts_.local_element(e)) {
+    const std::optional<ExprP>& v = L.env_[le->first].elems[le->second];
     if (!v)
-      fail(e->getBeginLoc(), unset_message(le->first, "may be used before it has a value"));
+      L.fail(e->getBeginLoc(), L.unset_message(le->first, "may be used before it has a value"));
     return *v;
   }
   if (auto acc = element(e)) {
     const Param* p = acc->param;
     if (!acc->dims.empty()) { // a view at a periodic wrap
       if (p->kind == ParamKind::Out)
-        fail(e->getBeginLoc(), fmt::format("output view '{}' is read back at a choice of "
-                                           "positions (a periodic wrap); read the input it "
-                                           "came from",
-                                           p->name));
-      return views_.piecewise_read(*acc, 0, acc->dims, pos(e->getBeginLoc()), text(e));
+        L.fail(e->getBeginLoc(), fmt::format("output view '{}' is read back at a choice of "
+                                             "positions (a periodic wrap); read the input it "
+                                             "came from",
+                                             p->name));
+      return L.views_.piecewise_read(*acc, 0, acc->dims, L.pos(e->getBeginLoc()), L.text(e));
     }
     if (p->kind == ParamKind::Out) {
-      if (bufs_.is_buffer(p->name)) // a line buffer: written earlier in this iteration
-        bufs_.check_buffer_read(p, acc->index, e);
+      if (L.bufs_.is_buffer(p->name)) // a line buffer: written earlier in this iteration
+        L.bufs_.check_buffer_read(p, acc->index, e);
       // An output read back in the iteration that stored it: that value.
-      order_after_later_stores(p->name);
-      auto nit = nest_index_.find(cur_key());
-      Store* st = nit == nest_index_.end()
+      L.order_after_later_stores(p->name);
+      auto nit = L.nest_index_.find(L.cur_key());
+      Store* st = nit == L.nest_index_.end()
                       ? nullptr
-                      : visible_store(k_.nests[nit->second], p->name, acc->index);
+                      : L.stores_.visible_store(L.k_.nests[nit->second], p->name, acc->index);
       // An output an earlier loop nest wrote (a work array: fluxes, then
       // the update from them): an intermediate, read like an input; the
       // adjoint recomputes it and runs the nests backwards.
-      if (!st && written_by_other_nest(p->name)) {
-        if (loops_.empty() && !path_reads_ok_)
-          acc_.kernel_level_work_reads.push_back({p->name, pos(e->getBeginLoc())});
-        ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
-        std::const_pointer_cast<Expr>(r)->source = text(e);
-        k_.intermediates.insert(p->name);
-        acc_.work_reads.push_back(
-            {p->name, cur_key(), next_store_seq_, acc->index, path_, pos(e->getBeginLoc())});
+      if (!st && L.stores_.written_by_other_nest(p->name)) {
+        if (L.loops_.empty() && !L.path_reads_ok_)
+          L.acc_.kernel_level_work_reads.push_back({p->name, L.pos(e->getBeginLoc())});
+        ExprP r = read(p->name, acc->index, p->elem, L.pos(e->getBeginLoc()), shape_of(*p));
+        std::const_pointer_cast<Expr>(r)->source = L.text(e);
+        L.k_.intermediates.insert(p->name);
+        L.acc_.work_reads.push_back({p->name, L.cur_key(), L.next_store_seq_, acc->index, L.path_,
+                                     L.pos(e->getBeginLoc())});
         return r;
       }
       if (!st || st->accumulate)
-        fail(e->getBeginLoc(),
-             fmt::format("reads output '{}'{}: the adjoint has only the output's seed, not its "
-                         "values; read the input it came from, or store it earlier in the same "
-                         "iteration and read it back at the same index",
-                         p->name, st ? " after '+=' (its previous contents)" : ""));
+        L.fail(e->getBeginLoc(),
+               fmt::format("reads output '{}'{}: the adjoint has only the output's seed, not its "
+                           "values; read the input it came from, or store it earlier in the same "
+                           "iteration and read it back at the same index",
+                           p->name, st ? " after '+=' (its previous contents)" : ""));
       return st->value;
     }
     if (p->inout)
-      return inout_value(p, acc->index, e->getBeginLoc(), e);
+      return L.stores_.inout_value(p, acc->index, e->getBeginLoc(), e);
     // an element of a constant integer table (`constexpr int cx[9] = {...}`)
     // at a constant index (an unrolled counter): its value
     if (p->global && p->kind == ParamKind::ConstArray && p->elem == Type::Int &&
-        global_decls_.count(p->name))
+        L.global_decls_.count(p->name))
       if (auto i = int_value(acc->index))
-        if (const APValue* val = global_decls_.at(p->name)->evaluateValue();
+        if (const APValue* val = L.global_decls_.at(p->name)->evaluateValue();
             val && val->isArray() && *i >= 0 && *i < (long long)val->getArraySize()) {
           const APValue& el = *i < (long long)val->getArrayInitializedElts()
                                   ? val->getArrayInitializedElt(unsigned(*i))
@@ -326,8 +267,8 @@ ExprP Lowerer::expr(const clang::Expr* e) {
           if (el.isInt())
             return int_const(el.getInt().getSExtValue());
         }
-    ExprP r = read(p->name, acc->index, p->elem, pos(e->getBeginLoc()), shape_of(*p));
-    std::const_pointer_cast<Expr>(r)->source = text(e); // as written, for remarks
+    ExprP r = read(p->name, acc->index, p->elem, L.pos(e->getBeginLoc()), shape_of(*p));
+    std::const_pointer_cast<Expr>(r)->source = L.text(e); // as written, for remarks
     return r;
   }
   if (const auto* u = dyn_cast<UnaryOperator>(e)) {
@@ -335,8 +276,8 @@ ExprP Lowerer::expr(const clang::Expr* e) {
     case UO_Minus: {
       ExprP x = expr(u->getSubExpr());
       if (u->getType()->isUnsignedIntegerType())
-        ints_.check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
-                              fmt::format("unsigned negation '{}'", text(u)), u);
+        L.ints_.check_unsigned_result(unary(Op::Neg, x), u->getOperatorLoc(),
+                                      fmt::format("unsigned negation '{}'", L.text(u)), u);
       return unary(Op::Neg, x);
     }
     case UO_Plus:
@@ -347,42 +288,42 @@ ExprP Lowerer::expr(const clang::Expr* e) {
       return unary(Op::BitNot, expr(u->getSubExpr()));
     case UO_Deref: // `*p` of a parameter is an element access (handled above)
     case UO_AddrOf:
-      fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
-                                "parameters directly");
+      L.fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
+                                  "parameters directly");
     default:
-      fail(u->getOperatorLoc(), "increment/decrement inside an expression is outside the "
-                                "kernel subset");
+      L.fail(u->getOperatorLoc(), "increment/decrement inside an expression is outside the "
+                                  "kernel subset");
     }
   }
   if (const auto* b = dyn_cast<BinaryOperator>(e))
     return binary_expr(b);
   if (const auto* c = dyn_cast<ConditionalOperator>(e)) {
     ExprP cc = cond(c->getCond());
-    Type t = type_of(c);
+    Type t = L.type_of(c);
     return select(cc, cast(expr(c->getTrueExpr()), t), cast(expr(c->getFalseExpr()), t));
   }
   if (const auto* m = dyn_cast<CXXMemberCallExpr>(e)) {
     const auto* obj = dyn_cast<DeclRefExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
-    auto it = obj ? env_.find(dyn_cast<VarDecl>(obj->getDecl())) : env_.end();
+    auto it = obj ? L.env_.find(dyn_cast<VarDecl>(obj->getDecl())) : L.env_.end();
     const CXXMethodDecl* md = m->getMethodDecl();
-    if (it != env_.end() && it->second.kind == Binding::ArrayParam &&
+    if (it != L.env_.end() && it->second.kind == Binding::ArrayParam &&
         !it->second.param->container.empty() && md && md->getName() == "size" &&
         m->getNumArgs() == 0)
-      return scalar_param(it->second.param->name + "_size", Type::Int);
+      return L.scalar_param(it->second.param->name + "_size", Type::Int);
     // a method of the member kernel's (or the running functor's) object,
     // on the same object: inlined like a helper, reading the same members
-    if (this_call(m) && md && md->hasBody() && !md->isVirtual())
-      return inl_.inline_call(m, md);
-    fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
-                          "parameter, the kernel may call size())");
+    if (L.this_call(m) && md && md->hasBody() && !md->isVirtual())
+      return L.inl_.inline_call(m, md);
+    L.fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
+                            "parameter, the kernel may call size())");
   }
   if (const auto* c = dyn_cast<CallExpr>(e))
     return call_expr(c);
-  fail(e->getExprLoc(), fmt::format("expression '{}' is outside the kernel subset",
-                                    e->getStmtClassName()));
+  L.fail(e->getExprLoc(),
+         fmt::format("expression '{}' is outside the kernel subset", e->getStmtClassName()));
 }
 
-ExprP Lowerer::cast_expr(const CastExpr* c, const clang::Expr* sub) {
+ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
   switch (c->getCastKind()) {
   case CK_LValueToRValue:
   case CK_NoOp:
@@ -394,35 +335,34 @@ ExprP Lowerer::cast_expr(const CastExpr* c, const clang::Expr* sub) {
     ExprP inner = expr(sub);
     QualType to = c->getType().getCanonicalType(), from = sub->getType().getCanonicalType();
     if (to->isUnsignedIntegerType() && from->isSignedIntegerType())
-      ints_.check_unsigned_result(inner, c->getExprLoc(),
-                            fmt::format("'{}', converted to unsigned '{}',", text(sub),
-                                        to.getAsString()),
-                            c);
-    if (!to->isBooleanType() && ctx_.getTypeSize(to) < 32 &&
-        ctx_.getTypeSize(to) < ctx_.getTypeSize(from) && !in_loop_bounds_) {
+      L.ints_.check_unsigned_result(
+          inner, c->getExprLoc(),
+          fmt::format("'{}', converted to unsigned '{}',", L.text(sub), to.getAsString()), c);
+    if (!to->isBooleanType() && L.ctx_.getTypeSize(to) < 32 &&
+        L.ctx_.getTypeSize(to) < L.ctx_.getTypeSize(from) && !L.in_loop_bounds_) {
       auto pv = to_poly(inner);
       if (!pv || !pv->is_constant())
-        fail(c->getExprLoc(), fmt::format("conversion of '{}' to '{}' may truncate it; dpgen "
-                                          "computes integers in 64 bits: use int or a wider "
-                                          "type",
-                                          text(sub), to.getAsString()));
+        L.fail(c->getExprLoc(), fmt::format("conversion of '{}' to '{}' may truncate it; dpgen "
+                                            "computes integers in 64 bits: use int or a wider "
+                                            "type",
+                                            L.text(sub), to.getAsString()));
     }
     const auto* implicit = dyn_cast<ImplicitCastExpr>(c);
     bool explicit_cast = isa<ExplicitCastExpr>(c) || (implicit && implicit->isPartOfExplicitCast());
-    if (!explicit_cast || ctx_.getTypeSize(c->getType()) < 64 ||
-        ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
+    if (!explicit_cast || L.ctx_.getTypeSize(c->getType()) < 64 ||
+        L.ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
       return inner;
     auto w = std::make_shared<dpgen::Expr>();
     w->op = Op::Cast;
     w->type = Type::Int;
     w->ops = {inner};
-    w->cast_type = spelled(c->getType());
+    w->cast_type = L.spelled(c->getType());
     return w;
   }
   case CK_IntegralToFloating:
   case CK_FloatingCast:
   case CK_FloatingToIntegral:
-    return cast(expr(sub), type_of(c));
+    return cast(expr(sub), L.type_of(c));
   case CK_IntegralToBoolean:
   case CK_FloatingToBoolean:
     return cond(sub);
@@ -430,72 +370,72 @@ ExprP Lowerer::cast_expr(const CastExpr* c, const clang::Expr* sub) {
   case CK_ToVoid:
   default:
     if (c->getType()->isPointerType() || sub->getType()->isPointerType())
-      fail(c->getExprLoc(), "pointer arithmetic is outside the kernel subset");
-    fail(c->getExprLoc(), fmt::format("conversion '{}' is outside the kernel subset",
-                                      c->getCastKindName()));
+      L.fail(c->getExprLoc(), "pointer arithmetic is outside the kernel subset");
+    L.fail(c->getExprLoc(),
+           fmt::format("conversion '{}' is outside the kernel subset", c->getCastKindName()));
   }
 }
 
-ExprP Lowerer::decl_ref(const DeclRefExpr* r) {
+ExprP Expressions::decl_ref(const DeclRefExpr* r) {
   if (const auto* ec = dyn_cast<EnumConstantDecl>(r->getDecl()))
     return int_const(ec->getInitVal().getSExtValue());
   const auto* v = dyn_cast<VarDecl>(r->getDecl());
   if (!v)
-    fail(r->getLocation(), fmt::format("'{}' is outside the kernel subset",
-                                       r->getDecl()->getNameAsString()));
-  if (poisoned_.count(v))
+    L.fail(r->getLocation(),
+           fmt::format("'{}' is outside the kernel subset", r->getDecl()->getNameAsString()));
+  if (L.poisoned_.count(v))
     throw Rejected{}; // its declaration's error is reported already
-  auto it = env_.find(v);
-  if (it == env_.end()) {
+  auto it = L.env_.find(v);
+  if (it == L.env_.end()) {
     // A global constant with a known value is a constant.
     if (v->hasGlobalStorage() && v->getType().isConstQualified()) {
       if (const clang::Expr* init = v->getAnyInitializer()) {
         clang::Expr::EvalResult res;
-        if (init->EvaluateAsRValue(res, ctx_) && res.Val.isFloat())
-          return real_const(res.Val.getFloat().convertToDouble(), type_of(r));
-        if (init->EvaluateAsRValue(res, ctx_) && res.Val.isInt())
+        if (init->EvaluateAsRValue(res, L.ctx_) && res.Val.isFloat())
+          return real_const(res.Val.getFloat().convertToDouble(), L.type_of(r));
+        if (init->EvaluateAsRValue(res, L.ctx_) && res.Val.isInt())
           return int_const(res.Val.getInt().getSExtValue());
       }
     }
-    fail(r->getLocation(), fmt::format("'{}' is global state, outside the kernel subset; "
-                                       "pass it as a parameter",
-                                       v->getNameAsString()));
+    L.fail(r->getLocation(), fmt::format("'{}' is global state, outside the kernel subset; "
+                                         "pass it as a parameter",
+                                         v->getNameAsString()));
   }
   const Binding& b = it->second;
   switch (b.kind) {
   case Binding::ScalarParam:
-    return scalar_param(b.param->name, b.param->elem);
+    return L.scalar_param(b.param->name, b.param->elem);
   case Binding::ArrayParam:
-    fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
-                                       "read",
-                                       b.param->name));
+    L.fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
+                                         "read",
+                                         b.param->name));
   case Binding::LoopVar:
     return *b.value;
   case Binding::LocalArray:
-    fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
-                                       "can be read",
-                                       v->getNameAsString()));
+    L.fail(r->getLocation(), fmt::format("local array '{}' used as a value; only its elements "
+                                         "can be read",
+                                         v->getNameAsString()));
   case Binding::Lambda:
-    fail(r->getLocation(), fmt::format("lambda '{}' is used other than called; a kernel calls "
-                                       "its lambdas, which dpgen inlines",
-                                       v->getNameAsString()));
+    L.fail(r->getLocation(), fmt::format("lambda '{}' is used other than called; a kernel calls "
+                                         "its lambdas, which dpgen inlines",
+                                         v->getNameAsString()));
   case Binding::Value:
     if (b.deref_only)
-      fail(r->getLocation(), fmt::format("pointer '{}' to a local is used without '*': only "
-                                         "'*{}' is in the kernel subset",
-                                         v->getNameAsString(), v->getNameAsString()));
+      L.fail(r->getLocation(), fmt::format("pointer '{}' to a local is used without '*': only "
+                                           "'*{}' is in the kernel subset",
+                                           v->getNameAsString(), v->getNameAsString()));
     if (!b.value)
-      fail(r->getLocation(), unset_message(v, "may be used before it has a value"));
+      L.fail(r->getLocation(), L.unset_message(v, "may be used before it has a value"));
     return *b.value;
   }
   throw std::logic_error("internal error: lower: a binding of no known kind");
 }
 
-ExprP Lowerer::binary_expr(const BinaryOperator* b) {
+ExprP Expressions::binary_expr(const BinaryOperator* b) {
   if (b->isAssignmentOp())
-    fail(b->getOperatorLoc(), "assignment inside an expression is outside the kernel subset");
+    L.fail(b->getOperatorLoc(), "assignment inside an expression is outside the kernel subset");
   if (b->getOpcode() == BO_Comma)
-    fail(b->getOperatorLoc(), "comma operator is outside the kernel subset");
+    L.fail(b->getOperatorLoc(), "comma operator is outside the kernel subset");
   if (b->getOpcode() == BO_LAnd || b->getOpcode() == BO_LOr)
     return binary(b->getOpcode() == BO_LAnd ? Op::And : Op::Or, cond(b->getLHS()),
                   cond(b->getRHS()));
@@ -504,46 +444,49 @@ ExprP Lowerer::binary_expr(const BinaryOperator* b) {
   // conditions; never on reals in C++): the op table's row of the symbol.
   const OpInfo* row = binary_op(b->getOpcodeStr().str());
   if (!row)
-    fail(b->getOperatorLoc(), fmt::format("operator '{}' is outside the kernel subset",
-                                          b->getOpcodeStr().str()));
+    L.fail(b->getOperatorLoc(),
+           fmt::format("operator '{}' is outside the kernel subset", b->getOpcodeStr().str()));
   if (row->op == Op::Sub && b->getType()->isUnsignedIntegerType())
-    ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
-                                fmt::format("unsigned difference '{}'", text(b)), b);
+    L.ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
+                                  fmt::format("unsigned difference '{}'", L.text(b)), b);
   if (row->op == Op::Rem) {
     // a periodic wrap `(x + 1 + nx) % nx` as the choice it is (prove.hpp)
     std::vector<Loop> around;
-    for (const auto& lp : loops_)
+    for (const auto& lp : L.loops_)
       around.push_back(*lp);
-    if (auto c = remainder_as_choice(l, r, around, path_))
+    if (auto c = remainder_as_choice(l, r, around, L.path_))
       return *c;
   }
   return binary(row->op, l, r);
 }
 
-ExprP Lowerer::call_expr(const CallExpr* c) {
+ExprP Expressions::call_expr(const CallExpr* c) {
   const FunctionDecl* f = c->getDirectCallee();
   if (!f)
-    fail(c->getBeginLoc(), "indirect call is outside the kernel subset", "dpgen-call");
-  if (f->getCanonicalDecl() == fn_->getCanonicalDecl())
-    fail(c->getBeginLoc(), fmt::format("recursive call to '{}' is outside the kernel subset",
-                                       f->getNameAsString()), "dpgen-call");
+    L.fail(c->getBeginLoc(), "indirect call is outside the kernel subset", "dpgen-call");
+  if (f->getCanonicalDecl() == L.fn_->getCanonicalDecl())
+    L.fail(c->getBeginLoc(),
+           fmt::format("recursive call to '{}' is outside the kernel subset", f->getNameAsString()),
+           "dpgen-call");
   // (a member function named like one, std::numeric_limits<T>::max, is not)
   const MathFn* math = isa<CXXMethodDecl>(f) ? nullptr : find_math_function(f->getNameAsString());
-  bool from_library = sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
-                      f->getBuiltinID() != 0;
+  bool from_library =
+      L.sm_.isInSystemHeader(L.sm_.getExpansionLoc(f->getLocation())) || f->getBuiltinID() != 0;
   if (!from_library && f->hasBody())
-    return inl_.inline_call(c, f);
+    return L.inl_.inline_call(c, f);
   if (!from_library)
-    fail(c->getBeginLoc(), fmt::format("call to '{}', whose body dpgen cannot see: helper "
-                                       "functions are inlined, so define '{}' in the kernel's "
-                                       "file or a header it includes",
-                                       f->getQualifiedNameAsString(), f->getNameAsString()), "dpgen-call");
+    L.fail(c->getBeginLoc(),
+           fmt::format("call to '{}', whose body dpgen cannot see: helper "
+                       "functions are inlined, so define '{}' in the kernel's "
+                       "file or a header it includes",
+                       f->getQualifiedNameAsString(), f->getNameAsString()),
+           "dpgen-call");
   if (!math) {
     // A constant the library computes: std::numeric_limits<double>::lowest(),
     // HUGE_VAL (__builtin_huge_val()), a constexpr function of constants.
     clang::Expr::EvalResult r;
-    if (c->EvaluateAsRValue(r, ctx_) && !r.HasSideEffects) {
-      Type t = type_of(c);
+    if (c->EvaluateAsRValue(r, L.ctx_) && !r.HasSideEffects) {
+      Type t = L.type_of(c);
       if (r.Val.isInt() && t == Type::Int)
         return int_const(r.Val.getInt().getSExtValue());
       if (r.Val.isFloat() && is_real(t)) {
@@ -558,40 +501,21 @@ ExprP Lowerer::call_expr(const CallExpr* c) {
     }
   }
   if (!math)
-    fail(c->getBeginLoc(), fmt::format("call to '{}', which dpgen cannot differentiate; the "
-                                       "kernel subset calls only {}",
-                                       f->getQualifiedNameAsString(), supported_calls()), "dpgen-call");
-  Type t = type_of(c);
+    L.fail(c->getBeginLoc(),
+           fmt::format("call to '{}', which dpgen cannot differentiate; the "
+                       "kernel subset calls only {}",
+                       f->getQualifiedNameAsString(), supported_calls()),
+           "dpgen-call");
+  Type t = L.type_of(c);
   std::vector<ExprP> args;
   for (const clang::Expr* a : c->arguments())
-    args.push_back(cast(expr(a), t == Type::Int ? type_of(a) : t));
+    args.push_back(cast(expr(a), t == Type::Int ? L.type_of(a) : t));
   std::string fnname = math->name;
   if (args.size() != math->arity)
-    fail(c->getBeginLoc(), fmt::format("'{}' takes {} argument(s) in the kernel subset",
-                                       fnname, math->arity), "dpgen-call");
+    L.fail(c->getBeginLoc(),
+           fmt::format("'{}' takes {} argument(s) in the kernel subset", fnname, math->arity),
+           "dpgen-call");
   return call(fnname, args, t);
-}
-
-// What `e` names: a variable or a member of the kernel's object (lower_impl.hpp).
-const Binding* Lowerer::bound(const clang::Expr* e) const {
-  e = e->IgnoreParenImpCasts();
-  if (const auto* r = dyn_cast<DeclRefExpr>(e)) {
-    const auto* v = dyn_cast<VarDecl>(r->getDecl());
-    if (!v)
-      return nullptr;
-    if (poisoned_.count(v))
-      throw Rejected{};
-    auto it = env_.find(v);
-    return it == env_.end() ? nullptr : &it->second;
-  }
-  const auto* m = dyn_cast<MemberExpr>(e);
-  const auto* f = m ? dyn_cast<FieldDecl>(m->getMemberDecl()) : nullptr;
-  if (!f || !isa<CXXThisExpr>(m->getBase()->IgnoreParenImpCasts()))
-    return nullptr;
-  if (poisoned_.count(f))
-    throw Rejected{};
-  auto it = fields_.find(f);
-  return it == fields_.end() ? nullptr : &it->second;
 }
 
 } // namespace dpgen::lowering

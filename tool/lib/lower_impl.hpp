@@ -1,11 +1,11 @@
-// The lowering's internals (lower.hpp is its interface), shared by the files
-// it is split into along its seams: lower.cpp (the driver: run, statements'
-// error recovery, the checks), lower_signature.cpp (parameters and names),
-// lower_stmt.cpp (statements, declarations, stores), lower_loop.cpp (loops
-// and their bounds), lower_reduce.{hpp,cpp} (accumulators and min/max
-// reductions: a part with its own state), lower_expr.cpp (expressions, helper
-// calls, array elements), lower_buffer.cpp (line buffers), lower_view.cpp
-// (views, objects, member kernels). Included by those files only.
+// The lowering's internals (lower.hpp is its interface): the Lowerer, which
+// holds the state of one kernel's lowering and drives it (lower.cpp: run,
+// statements' error recovery, names, types, facts of the path), and the parts
+// it is split into along its seams, each a class with its own file(s) that
+// reaches the shared state through the Lowerer: statements and stores
+// (lower_stmt.hpp), loops and their headers (lower_loop.hpp), expressions
+// (lower_expr.hpp), reductions, line buffers, inlined helpers, integer checks,
+// views, objects, the signature and globals. Included by those files only.
 #pragma once
 
 #include "lower.hpp"
@@ -14,16 +14,19 @@
 #include "ops.hpp"
 
 #include "affine.hpp"
-#include "prove.hpp"
 #include "lower_buffer.hpp"
 #include "lower_common.hpp"
+#include "lower_expr.hpp"
+#include "lower_globals.hpp"
 #include "lower_inline.hpp"
 #include "lower_int.hpp"
+#include "lower_loop.hpp"
 #include "lower_object.hpp"
-#include "lower_view.hpp"
 #include "lower_reduce.hpp"
-#include "lower_globals.hpp"
 #include "lower_signature.hpp"
+#include "lower_stmt.hpp"
+#include "lower_view.hpp"
+#include "prove.hpp"
 
 #include <clang/AST/ASTContext.h>
 #include <clang/AST/Attr.h>
@@ -182,20 +185,6 @@ private:
 
   Type type_of(const clang::Expr* e);
 
-  // ---- statements ----------------------------------------------------------
-
-  void body(const Stmt* s);
-
-  Escape lower(const Stmt* s);
-
-  // `if (c) A else B`; a branch ending in continue/return puts the negated
-  // condition on the path of everything that follows.
-  Escape if_stmt(const IfStmt* s);
-
-  ExprP inline_locals(const ExprP& e, int from, int to);
-
-  ExprP make_local(const std::string& base, const VarDecl* decl, ExprP def);
-
   std::string unset_message(const VarDecl* v, const char* plain) const {
     auto it = why_unset_.find(v);
     if (it != why_unset_.end())
@@ -226,74 +215,6 @@ private:
   // Every name the generated code takes from the kernel (Kernel::names).
   void collect_names();
 
-  void declare(const Decl* d);
-
-  // A small local array (`double w[3] = {...}`, a line buffer `double v[5]`):
-  // each element is a local value, indexed by constants (counters of small
-  // constant loops count as constants: those loops are unrolled).
-  void declare_array(const VarDecl* v, const ConstantArrayType* at);
-
-  // The element of a local array that `idx` names: it must be a constant.
-  size_t local_index(const clang::Expr* idx_expr, const VarDecl* v, size_t n);
-
-  // `a[k]` of a local array: its binding and element, if that is what `e` is.
-  std::optional<std::pair<const VarDecl*, size_t>> local_element(const clang::Expr* e);
-
-  // A loop with constant bounds and at most 16 iterations that touches a
-  // local array or assigns a variable declared outside it (`s += w[m] *
-  // a[i + m]`) is unrolled: its counter is a constant in each copy.
-  int unrolling_ = 0;
-  bool should_unroll(const ForStmt* f, long long lo, long long hi);
-
-  // A local (or local array) assigned in a loop has no single value after
-  // it: forgets it. False if `v` is no such variable.
-  bool forget_value(const VarDecl* v);
-  void for_loop(const ForStmt* f);
-  // A `for` statement's header: the counter, its range [lo, hi) and step;
-  // for a triangular nest the original bounds (made conditions on the body's
-  // path: (bound, is the upper one)); for a strided loop whose start moves
-  // with outer counters, that start and the step (the body runs where
-  // counter >= start and (counter - start) % step == 0).
-  struct ForHeader {
-    const VarDecl* var = nullptr;
-    ExprP lo, hi;
-    int step = 1;
-    std::vector<std::pair<ExprP, bool>> triangle;
-    ExprP parity_start;
-    int parity_step = 0;
-  };
-  ForHeader for_header(const ForStmt* f);
-  bool unroll(const ForStmt* f, const ForHeader& h);
-
-  // The bound of a loop condition as `counter op bound` (op returned in `op`):
-  // `i < n`, `i + 1 < n` (i < n - 1), `n > i` (i < n). Null when the sides do
-  // not differ by exactly +-counter plus something free of the counter.
-  ExprP loop_bound(const BinaryOperator* c, const VarDecl* var, BinaryOperatorKind& op);
-
-  // An integer expression for a polynomial over parameters and kernel-level
-  // locals (symbols resolve to what they name).
-  ExprP poly_expr(const Poly& p);
-  ExprP symbol_expr(const Sym& sym);
-
-  // The `i = lo` of a C89-style loop, if that is its init statement.
-  static const BinaryOperator* init_assignment(const ForStmt* f) {
-    const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit());
-    const auto* a = e ? dyn_cast<BinaryOperator>(e->IgnoreParens()) : nullptr;
-    return a && a->getOpcode() == BO_Assign ? a : nullptr;
-  }
-
-  // The extreme (the largest if `upper`, else the smallest) of loop bound `e`
-  // (`p` as a polynomial) over the enclosing loops' ranges: each outer counter
-  // replaced by its first or last value, by the sign of its coefficient. Null
-  // where a coefficient is not a constant.
-  std::optional<ExprP> hull(const ExprP& e, const Poly& p, bool upper) const;
-
-  // A lower bound of integer `e` over the enclosing loops that depends on the
-  // sizes only: `e` itself where it mentions no counter, the hull of an
-  // affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
-  // remainder of a non-negative value), sums of those. Null otherwise.
-  std::optional<ExprP> smallest(const ExprP& e) const;
-
   // Hidden work arrays a kernel may have (accumulators, min/max reductions,
   // line buffers): k_.hidden's capacity, so pointers into it stay valid.
   static constexpr size_t kMaxAccumulators = 32;
@@ -305,65 +226,21 @@ private:
   friend class Reductions;
   Reductions red_{*this};
 
-  // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
-  void assigned_vars(const Stmt* s, std::set<const VarDecl*>& out);
-  std::set<const CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
-
   // Line buffers and pointers to arrays (lower_buffer.hpp).
   friend class LineBuffers;
   LineBuffers bufs_{*this};
 
-  int loop_step(const clang::Expr* inc, const VarDecl* var);
-
-  void check_not_assigned(const Stmt* s, const VarDecl* var);
-
-  // An expression statement: an assignment to an output element or a local.
-  void expr_stmt(const clang::Expr* e);
-
-  // `*p` of a helper's pointer parameter bound to a caller's local (`&f`).
-  const VarDecl* deref_local(const clang::Expr* e);
-
-  void assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
-              SourceLocation loc);
-
-  // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
-  // stands for).
-  void assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
-                    const clang::Expr* rhs, SourceLocation loc);
-
-  Nest& current_nest();
-
-  // `prefix` holds wherever `path` holds: its conditions open `path`.
-  static bool is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path);
-
-  // The store of this iteration that a later statement on the current path
-  // sees at `array[idx]`: the last one to that element whose path is still
-  // open. nullptr when there is none.
-  Store* visible_store(Nest& nest, const std::string& array, const ExprP& idx) {
-    for (auto it = nest.stores.rbegin(); it != nest.stores.rend(); ++it)
-      if (it->array == array && same_index(it->index, idx) && is_prefix(it->path, path_))
-        return &*it;
-    return nullptr;
-  }
-
-  // `extremum` (with accumulate): a min/max scan's store (Store::extremum).
-  void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
-                 SourceLocation loc, int extremum = 0);
+  // The number of the next store lowered (Store::seq: the order of the
+  // kernel's stores, which the checks compare).
   int next_store_seq_ = 0;
 
-  // ---- in-place arrays (DPGEN_INOUT) ------------------------------------------
+  // How many small constant loops being unrolled enclose the current
+  // statement (ForLoops): their counters are constants in each copy.
+  int unrolling_ = 0;
 
-  // The reads of work arrays and in-place arrays and the stores to in-place
-  // arrays, which the checks need besides the IR (check.hpp).
+  // The reads of work arrays and in-place arrays (DPGEN_INOUT) and the stores
+  // to in-place arrays, which the checks need besides the IR (check.hpp).
   Accesses acc_;
-
-  // The value u[k] of an in-place array has here: what this iteration stored
-  // at k, or the value before the call (a read of the input).
-  ExprP inout_value(const Param* p, const ExprP& idx, SourceLocation loc, const clang::Expr* e);
-
-  // ---- work arrays (outputs a later loop nest reads) ---------------------------
-
-  bool written_by_other_nest(const std::string& array) const;
 
   // Unless set, a read of a work array outside every loop is recorded for
   // the checks (Accesses::kernel_level_work_reads).
@@ -418,8 +295,6 @@ private:
            isa<CXXThisExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
   }
 
-  std::optional<Access> element(const clang::Expr* e);
-
   // ---- member kernels (lower_signature.cpp, lower_expr.cpp) -------------------
 
   // The class of a member kernel (null for a free one), and its members'
@@ -460,24 +335,19 @@ private:
   // The parameter `e` names if it is a scalar by reference (Param::scalar_ref).
   const Param* scalar_ref_param(const clang::Expr* e) const;
   std::map<std::string, const VarDecl*> global_decls_;
-  const Param* array_base(const clang::Expr* base);
 
-  ExprP cond(const clang::Expr* e) {
-    ExprP c = expr(e);
-    if (c->type != Type::Bool)
-      c = binary(Op::Ne, c, c->type == Type::Int ? int_const(0) : real_const(0, c->type, ""));
-    return c;
-  }
-
-  ExprP expr(const clang::Expr* e);
-
-  ExprP cast_expr(const CastExpr* c, const clang::Expr* sub);
-
-  ExprP decl_ref(const DeclRefExpr* r);
-
-  ExprP binary_expr(const BinaryOperator* b);
-
-  ExprP call_expr(const CallExpr* c);
+  // ---- the parts along the seams (lower_stmt.hpp, lower_loop.hpp,
+  // lower_expr.hpp) ---------------------------------------------------------
+  friend class Statements;
+  friend class Stores;
+  friend class LoopHeaders;
+  friend class ForLoops;
+  friend class Expressions;
+  Statements stmts_{*this};
+  Stores stores_{*this};
+  LoopHeaders headers_{*this};
+  ForLoops for_loops_{*this};
+  Expressions exprs_{*this};
 };
 
 } // namespace dpgen::lowering

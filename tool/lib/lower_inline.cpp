@@ -122,7 +122,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     }
     if (pt->isPointerType()) {
       const clang::Expr* base = arg->IgnoreParenImpCasts();
-      const Param* ap = isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? L.array_base(base) : nullptr;
+      const Param* ap =
+          isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? L.exprs_.array_base(base) : nullptr;
       if (!ap)
         L.fail(arg->getBeginLoc(), fmt::format("argument for pointer parameter '{}' of helper "
                                              "'{}' must be an array parameter of the kernel "
@@ -151,12 +152,13 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
                                           pt.getAsString()));
     Binding b;
     b.kind = Binding::Value;
-    ExprP v = cast(L.expr(arg), *t);
+    ExprP v = cast(L.exprs_.expr(arg), *t);
     // A counter or a local passed as it is (a parallel-for's `f(i, j, k)`)
     // needs no name of its own: one would only alias it, and generated code
     // would define it where nothing reads it (its indices print expanded).
-    b.value = v->op == Op::LoopVar || v->op == Op::Local ? v
-                                                         : L.make_local(pd->getNameAsString(), pd, v);
+    b.value = v->op == Op::LoopVar || v->op == Op::Local
+                  ? v
+                  : L.stmts_.make_local(pd->getNameAsString(), pd, v);
     binds.push_back({pd, b});
   }
   for (const auto& [pd, b] : binds)
@@ -169,7 +171,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   }
   Escape e;
   try {
-    e = L.lower(def->getBody());
+    e = L.stmts_.lower(def->getBody());
   } catch (const Rejected&) {
     L.path_.resize(L.frames_.back().path_depth);
     L.frames_.pop_back();

@@ -53,7 +53,7 @@ std::vector<PathCond> IntegerChecks::arm_conditions(const clang::Expr* e) {
     if (const auto* c = dyn_cast<ConditionalOperator>(up)) {
       bool in_true = c->getTrueExpr() == child, in_false = c->getFalseExpr() == child;
       if (in_true || in_false)
-        out.push_back({L.cond(c->getCond()), in_true});
+        out.push_back({L.exprs_.cond(c->getCond()), in_true});
     }
     child = up;
   }

@@ -1,5 +1,5 @@
-// Lowering, loops: headers, bounds (hulls of triangular loops, strided
-// starts), unrolled small loops, scalar accumulators (lower_impl.hpp).
+// Lowering, loops: a `for` statement lowered (unrolled when small, else a
+// Loop of the nest), and the variables its body assigns (lower_loop.hpp).
 #include "lower_impl.hpp"
 
 namespace dpgen::lowering {
@@ -8,7 +8,7 @@ namespace dpgen::lowering {
 // loops inside a cell loop); deeper nests are refused.
 constexpr size_t kMaxLoopDepth = 6;
 
-bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
+bool ForLoops::should_unroll(const ForStmt* f, long long lo, long long hi) {
   if (hi - lo > 16 || hi <= lo)
     return false;
   bool touches = false;
@@ -23,16 +23,16 @@ bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
     if (!s)
       return;
     if (const auto* r = dyn_cast<DeclRefExpr>(s))
-      if (const auto* v = dyn_cast<VarDecl>(r->getDecl()); v && env_.count(v) &&
-                                                            env_[v].kind == Binding::LocalArray)
+      if (const auto* v = dyn_cast<VarDecl>(r->getDecl());
+          v && L.env_.count(v) && L.env_[v].kind == Binding::LocalArray)
         touches = true;
     // a constant integer table (`constexpr int cx[9]`) indexed by the
     // counter: unrolled, each copy reads one value (a constant offset)
     if (const auto* a = dyn_cast<ArraySubscriptExpr>(s))
       if (const auto* r = dyn_cast<DeclRefExpr>(a->getBase()->IgnoreParenImpCasts()))
         if (const auto* v = dyn_cast<VarDecl>(r->getDecl());
-            v && global_decls_.count(v->getNameAsString()) &&
-            global_decls_.at(v->getNameAsString()) == v && v->getType().isConstQualified() &&
+            v && L.global_decls_.count(v->getNameAsString()) &&
+            L.global_decls_.at(v->getNameAsString()) == v && v->getType().isConstQualified() &&
             v->getType()->isArrayType() &&
             v->getType()->getArrayElementTypeNoTypeQual()->isIntegerType())
           if (const auto* i = dyn_cast<DeclRefExpr>(a->getIdx()->IgnoreParenImpCasts());
@@ -45,14 +45,14 @@ bool Lowerer::should_unroll(const ForStmt* f, long long lo, long long hi) {
   std::set<const VarDecl*> assigned;
   assigned_vars(f->getBody(), assigned);
   for (const VarDecl* v : assigned)
-    if (env_.count(v) && env_[v].kind == Binding::Value)
+    if (L.env_.count(v) && L.env_[v].kind == Binding::Value)
       touches = true;
   return touches;
 }
 
-bool Lowerer::forget_value(const VarDecl* v) {
-  auto it = env_.find(v);
-  if (it == env_.end() ||
+bool ForLoops::forget_value(const VarDecl* v) {
+  auto it = L.env_.find(v);
+  if (it == L.env_.end() ||
       (it->second.kind != Binding::Value && it->second.kind != Binding::LocalArray))
     return false;
   it->second.value = std::nullopt;
@@ -61,226 +61,9 @@ bool Lowerer::forget_value(const VarDecl* v) {
   return true;
 }
 
-// The header of `for` statement `f`: its counter, its range [lo, hi) with
-// the step, and what makes the box rectangular (lower_impl.hpp).
-Lowerer::ForHeader Lowerer::for_header(const ForStmt* f) {
-  // A loop in a void helper (a library parallel-for: `ParallelFor(box, f)`
-  // runs f(i, j, k) in a nest) is a loop of the kernel; a helper that
-  // returns a value computes it without loops.
-  if (!frames_.empty() && !frames_.back().is_void)
-    fail(f->getBeginLoc(), fmt::format("a loop in helper '{}', which returns a value: helpers "
-                                       "that compute a value do it without loops; write the "
-                                       "loop in the kernel",
-                                       frames_.back().fn->getNameAsString()), "dpgen-loop");
-  // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
-  const VarDecl* var = nullptr;
-  const clang::Expr* init = nullptr;
-  if (const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit())) {
-    if (!ds->isSingleDecl())
-      fail(f->getBeginLoc(), "a kernel loop declares one counter: 'for (int i = lo; i < hi; "
-                             "++i)'", "dpgen-loop");
-    var = dyn_cast<VarDecl>(ds->getSingleDecl());
-    if (!var || !var->getInit())
-      fail(f->getBeginLoc(), "loop counter needs an initial value", "dpgen-loop");
-    init = var->getInit();
-  } else if (const auto* a = init_assignment(f); a) {
-    const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
-    var = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = var ? env_.find(var) : env_.end();
-    if (!var || it == env_.end() || it->second.kind != Binding::Value)
-      fail(a->getLHS()->getBeginLoc(), "the loop counter must be a local variable of the "
-                                       "kernel: 'for (i = lo; i < hi; ++i)'", "dpgen-loop");
-    init = a->getRHS();
-  } else {
-    fail(f->getBeginLoc(), "a kernel loop must set its counter: 'for (int i = lo; i < hi; ++i)' "
-                           "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'", "dpgen-loop");
-  }
-  QualType vt = var->getType().getCanonicalType();
-  if (!vt->isIntegerType() || vt->isBooleanType())
-    fail(var->getLocation(), fmt::format("loop counter '{}' must have an integer type",
-                                         var->getNameAsString()), "dpgen-loop");
-  in_loop_bounds_ = true; // (reset below, also when lowering them fails)
-  struct Reset {
-    bool& flag;
-    ~Reset() { flag = false; }
-  } reset{in_loop_bounds_};
-  ExprP init_value = expr(init);
-  // cond: `i < hi`, `i <= hi`, `i >= lo`, `i > lo`; also `i + 1 < n` or
-  // `n > i`: any comparison whose sides differ by +-i plus a bound.
-  // (a bound such as std::min(n, i + w + 1) binds temporaries to const
-  // references: the condition comes wrapped in ExprWithCleanups)
-  const clang::Expr* cond_expr = f->getCond();
-  if (const auto* cleanups = dyn_cast_or_null<ExprWithCleanups>(cond_expr))
-    cond_expr = cleanups->getSubExpr();
-  const auto* c = dyn_cast_or_null<BinaryOperator>(cond_expr);
-  BinaryOperatorKind cond_op = c ? c->getOpcode() : BO_Comma;
-  // `for (unsigned i = n; i-- > lo;)`, the way to count an unsigned counter
-  // down: the body sees i = n - 1, ..., lo.
-  bool post_decrement = false;
-  if (c && cond_op == BO_GT && !f->getInc())
-    if (const auto* u = dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts());
-        u && u->getOpcode() == UO_PostDec)
-      if (const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
-          r && r->getDecl() == var)
-        post_decrement = true;
-  ExprP bound = post_decrement                    ? expr(c->getRHS())
-                : c && c->isRelationalOp() ? loop_bound(c, var, cond_op)
-                                           : nullptr;
-  in_loop_bounds_ = false;
-  if (!bound)
-    fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
-         fmt::format("loop condition must compare the counter '{}' with a bound: "
-                     "'{} < hi'",
-                     var->getNameAsString(), var->getNameAsString()), "dpgen-loop");
-  // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
-  int step = post_decrement ? -1 : loop_step(f->getInc(), var);
-  if (step == 0)
-    fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
-         "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
-         "counting down)", "dpgen-loop");
-  if (step < -1)
-    fail(f->getInc()->getBeginLoc(), "a loop counting down steps by 1; count a strided loop up", "dpgen-loop");
-  ExprP lo, hi;
-  ExprP one = int_const(1);
-  switch (cond_op) {
-  case BO_LT:
-    lo = init_value, hi = bound;
-    break;
-  case BO_LE:
-    lo = init_value, hi = binary(Op::Add, bound, one);
-    break;
-  case BO_GT:
-    if (post_decrement)
-      lo = bound, hi = init_value;
-    else
-      lo = binary(Op::Add, bound, one), hi = binary(Op::Add, init_value, one);
-    break;
-  case BO_GE:
-    lo = bound, hi = binary(Op::Add, init_value, one);
-    break;
-  default:
-    fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=", "dpgen-loop");
-  }
-  if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
-    fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition", "dpgen-loop");
-  // Counting an unsigned counter down is safe when the counter stays above
-  // zero: `i > b` (b >= 0), or `i >= b` with b >= 1; `i >= 0` wraps.
-  bool stays_positive = cond_op == BO_GT ||
-                        (cond_op == BO_GE && provably_nonneg(binary(Op::Sub, bound, int_const(1))));
-  if (vt->isUnsignedIntegerType() && step < 0 && !post_decrement && !stays_positive)
-    fail(f->getInc()->getBeginLoc(),
-         fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
-                     "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
-                     var->getNameAsString(), var->getNameAsString(), var->getNameAsString()), "dpgen-loop");
-  // A strided loop whose start moves with outer counters (red-black:
-  // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`)
-  // runs as a unit-step loop from the smallest start over the outer ranges,
-  // its body under `i >= start && (i - start) % step == 0`: the same
-  // iterations, with a box the rules and the gather can range over.
-  ExprP parity_start; // the moving start, and the original step
-  int parity_step = 0;
-  if (step > 1 && any_node(lo, [](const ExprP& x) { return x->op == Op::LoopVar; }))
-    if (auto least = smallest(lo)) {
-      parity_start = lo;
-      parity_step = step;
-      lo = *least;
-      step = 1;
-    }
-  // Triangular nests (`for (j = 0; j <= i; ++j)`, `for (j = i + 1; j < n;
-  // ++j)`, `j < std::min(n, i + 3)`): a bound affine in outer counters, with
-  // constant coefficients, becomes its extreme over the outer loops' ranges
-  // and the bound itself a condition on the body's path (`j < i + 1`), so
-  // the box stays rectangular and the iterations are the same. In a min
-  // (upper) or max (lower) bound each such term is treated so; the others
-  // stay in the bound.
-  std::vector<std::pair<ExprP, bool>> triangle; // (original bound, is the upper one)
-  for (ExprP* b : {&lo, &hi}) {
-    const bool upper = b == &hi;
-    if (!any_node(*b, [](const ExprP& x) { return x->op == Op::LoopVar; }))
-      continue;
-    if (!upper && step != 1 && step != -1)
-      continue; // (a strided loop's start fixes its parity: not moved)
-    std::vector<ExprP> terms;
-    std::function<void(const ExprP&)> flatten = [&](const ExprP& x) {
-      const char* fn = upper ? "min" : "max";
-      if (x->op == Op::Call && x->name == fn) {
-        for (const auto& a : x->ops)
-          flatten(a);
-      } else if ((x->op == Op::Add || x->op == Op::Sub) && x->ops[1]->op == Op::IntConst &&
-                 x->ops[0]->op == Op::Call && x->ops[0]->name == fn) {
-        // `j <= std::min(n - 1, i + 1)`: min(a, b) + 1 is min(a + 1, b + 1)
-        for (const auto& a : x->ops[0]->ops)
-          flatten(binary(x->op, a, x->ops[1]));
-      } else {
-        terms.push_back(x);
-      }
-    };
-    flatten(*b);
-    std::vector<ExprP> hulled;
-    std::vector<std::pair<ExprP, bool>> sides;
-    bool ok = true;
-    for (const auto& t : terms) {
-      auto p = to_poly(t);
-      if (!p || !p->mentions_any_counter()) {
-        hulled.push_back(t);
-        continue;
-      }
-      auto h = hull(t, *p, upper);
-      if (!h) {
-        ok = false;
-        break;
-      }
-      hulled.push_back(*h);
-      sides.push_back({t, upper});
-    }
-    if (!ok || sides.empty())
-      continue; // reported below
-    triangle.insert(triangle.end(), sides.begin(), sides.end());
-    *b = hulled.size() == 1 ? hulled[0] : call(upper ? "min" : "max", hulled, Type::Int);
-  }
-  // A bound that is not a polynomial but depends on the sizes only
-  // (`i < n / 2`, `i < (n + 1) / 2`) is fixed for the whole kernel: a
-  // symbol, like `int half = n / 2;` set before the loops.
-  for (ExprP* b : {&lo, &hi})
-    if (!to_poly(*b) && !any_node(*b, [](const ExprP& x) {
-          return x->op == Op::LoopVar || x->op == Op::Read || is_real(x->type);
-        })) {
-      auto l = std::make_shared<LocalVar>();
-      l->name = var->getNameAsString() + (b == &lo ? "_lo" : "_hi");
-      for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
-        l->name = fmt::format("{}_{}_{}", unprefixed(var->getNameAsString()),
-                              b == &lo ? "lo" : "hi", n);
-      local_names_.insert(l->name);
-      l->type_name = "std::ptrdiff_t";
-      l->def = *b;
-      l->id = next_local_id_++;
-      l->kernel_level = true;
-      k_.kernel_locals.push_back(l);
-      *b = local_ref(l);
-    }
-  for (const auto& [what, e, loc] :
-       {std::tuple{"lower", lo, init->getBeginLoc()},
-        std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
-    auto p = to_poly(e);
-    if (!p)
-      fail(loc, fmt::format("{} bound of loop '{}' must be a polynomial in the integer "
-                            "parameters",
-                            what, var->getNameAsString()), "dpgen-loop");
-    for (const auto& [m, coef] : p->terms())
-      for (const auto& s : m)
-        if (s.is_counter())
-          fail(loc, fmt::format("{} bound of loop '{}' depends on loop '{}' in a way dpgen "
-                                "cannot make rectangular: a bound may move with outer "
-                                "counters by constant multiples (j <= i, j < i + 3, "
-                                "std::min(n, i + w + 1), a strided start 1 + (j + 1) % 2)",
-                                what, var->getNameAsString(), s.name), "dpgen-loop");
-  }
-  return {var, lo, hi, step, triangle, parity_start, parity_step};
-}
-
 // A small loop with constant bounds that should_unroll() picks: its body
 // lowered once per value of the counter; false (nothing done) for any other.
-bool Lowerer::unroll(const ForStmt* f, const ForHeader& h) {
+bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
   const VarDecl* const var = h.var;
   const ExprP &lo = h.lo, &hi = h.hi;
   const int step = h.step;
@@ -289,9 +72,9 @@ bool Lowerer::unroll(const ForStmt* f, const ForHeader& h) {
     if (plo->is_constant() && phi->is_constant() && h.triangle.empty() && !h.parity_start &&
         should_unroll(f, plo->constant_term(), phi->constant_term())) {
       check_not_assigned(f->getBody(), var);
-      auto saved = env_.count(var) ? std::optional<Binding>(env_[var]) : std::nullopt;
-      size_t depth = path_.size();
-      ++unrolling_;
+      auto saved = L.env_.count(var) ? std::optional<Binding>(L.env_[var]) : std::nullopt;
+      size_t depth = L.path_.size();
+      ++L.unrolling_;
       // every step-th value from lo up (i += s), or each from hi - 1 down
       const long long stride = step > 0 ? step : 1;
       for (long long k = plo->constant_term(); k < phi->constant_term(); k += stride) {
@@ -299,25 +82,25 @@ bool Lowerer::unroll(const ForStmt* f, const ForHeader& h) {
         Binding b;
         b.kind = Binding::Value;
         b.value = int_const(v);
-        env_[var] = b;
+        L.env_[var] = b;
         try {
-          lower(f->getBody());
+          L.stmts_.lower(f->getBody());
         } catch (const Rejected&) {
-          --unrolling_;
-          path_.resize(depth);
+          --L.unrolling_;
+          L.path_.resize(depth);
           throw;
         }
-        path_.resize(depth);
+        L.path_.resize(depth);
       }
-      --unrolling_;
+      --L.unrolling_;
       if (saved) {
-        env_[var] = *saved;
-        env_[var].value = std::nullopt;
-        why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
-                                      "bound instead",
-                                      var->getNameAsString());
+        L.env_[var] = *saved;
+        L.env_[var].value = std::nullopt;
+        L.why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
+                                        "bound instead",
+                                        var->getNameAsString());
       } else {
-        env_.erase(var);
+        L.env_.erase(var);
       }
       return true;
     }
@@ -325,28 +108,28 @@ bool Lowerer::unroll(const ForStmt* f, const ForHeader& h) {
   return false;
 }
 
-void Lowerer::for_loop(const ForStmt* f) {
-  const ForHeader h = for_header(f);
+void ForLoops::for_loop(const ForStmt* f) {
+  const ForHeader h = L.headers_.for_header(f);
   if (unroll(f, h))
     return;
   const VarDecl* const var = h.var;
   const ExprP &lo = h.lo, &hi = h.hi, &parity_start = h.parity_start;
   const int step = h.step, parity_step = h.parity_step;
   const auto& triangle = h.triangle;
-  if (loops_.size() == kMaxLoopDepth)
-    fail(f->getBeginLoc(), fmt::format("loops nest at most {} deep in the kernel subset",
-                                       kMaxLoopDepth),
-         "dpgen-loop");
+  if (L.loops_.size() == kMaxLoopDepth)
+    L.fail(f->getBeginLoc(),
+           fmt::format("loops nest at most {} deep in the kernel subset", kMaxLoopDepth),
+           "dpgen-loop");
 
   auto loop = std::make_shared<Loop>();
   // The counter keeps its name unless that would collide with a parameter,
   // a local or an enclosing counter in the generated code.
   std::string base = var->getNameAsString() + (step > 1 ? "_step" : "");
   loop->var = base;
-  for (int n = 1; is_reserved(loop->var) || local_names_.count(loop->var); ++n)
-    loop->var = fmt::format("{}_{}", unprefixed(base), n);
-  loop_names_.insert(loop->var);
-  loop->type_name = spelled(var->getType());
+  for (int n = 1; L.is_reserved(loop->var) || L.local_names_.count(loop->var); ++n)
+    loop->var = fmt::format("{}_{}", L.unprefixed(base), n);
+  L.loop_names_.insert(loop->var);
+  loop->type_name = L.spelled(var->getType());
   loop->lo = lo;
   loop->hi = hi;
   loop->descending = step < 0;
@@ -356,28 +139,28 @@ void Lowerer::for_loop(const ForStmt* f) {
     // [0, (hi - lo + s - 1) / s) and i = lo + s * t.
     auto trips = std::make_shared<LocalVar>();
     trips->name = loop->var + "_count";
-    for (int n = 1; local_names_.count(trips->name) || is_reserved(trips->name); ++n)
-      trips->name = fmt::format("{}_count_{}", unprefixed(loop->var), n);
-    local_names_.insert(trips->name);
+    for (int n = 1; L.local_names_.count(trips->name) || L.is_reserved(trips->name); ++n)
+      trips->name = fmt::format("{}_count_{}", L.unprefixed(loop->var), n);
+    L.local_names_.insert(trips->name);
     trips->type_name = "std::ptrdiff_t";
     trips->def = binary(Op::Div, binary(Op::Add, binary(Op::Sub, hi, lo), int_const(step - 1)),
                         int_const(step));
-    trips->id = next_local_id_++;
+    trips->id = L.next_local_id_++;
     trips->kernel_level = true;
-    k_.kernel_locals.push_back(trips);
+    L.k_.kernel_locals.push_back(trips);
     loop->lo = int_const(0);
     loop->hi = local_ref(trips);
     counter = binary(Op::Add, lo, binary(Op::Mul, int_const(step), counter));
   }
 
   check_not_assigned(f->getBody(), var);
-  size_t depth = path_.size();
-  auto env_before = env_;
-  auto why_before = why_unset_;
+  size_t depth = L.path_.size();
+  auto env_before = L.env_;
+  auto why_before = L.why_unset_;
   Binding b;
   b.kind = Binding::LoopVar;
   b.value = counter;
-  env_[var] = b;
+  L.env_[var] = b;
   // Variables declared outside the loop and assigned in it (OpenMP
   // `private` temporaries) start each iteration without a value: a read
   // before the iteration's own assignment would be a value carried over
@@ -387,15 +170,15 @@ void Lowerer::for_loop(const ForStmt* f) {
   // Scalar accumulators of this loop (`s += f(...)`, `s` read only after
   // the loop) and its min/max reductions: hidden work arrays (lower_reduce).
   const Reductions::LoopScope reductions =
-      red_.begin_loop(f, var, assigned, in_loop_body_frame() && unrolling_ == 0);
+      L.red_.begin_loop(f, var, assigned, L.in_loop_body_frame() && L.unrolling_ == 0);
   for (const VarDecl* v : assigned) {
     if (!forget_value(v))
       continue;
-    if (auto why = red_.why_unset_inside(v)) {
-      why_unset_[v] = *why;
+    if (auto why = L.red_.why_unset_inside(v)) {
+      L.why_unset_[v] = *why;
       continue;
     }
-    why_unset_[v] = fmt::format(
+    L.why_unset_[v] = fmt::format(
         "'{}' is declared outside the loop and assigned inside it, and read here before it is "
         "assigned in this iteration: a value carried from one iteration to the next (a "
         "recurrence, or a running sum read inside its loop) is outside the kernel subset; "
@@ -405,178 +188,51 @@ void Lowerer::for_loop(const ForStmt* f) {
   }
   // (after the accumulators' initial stores, which are outside the loop)
   for (const auto& [bound_at, upper] : triangle) // the triangle's side(s)
-    path_.push_back({binary(upper ? Op::Lt : Op::Ge, counter, bound_at), true});
+    L.path_.push_back({binary(upper ? Op::Lt : Op::Ge, counter, bound_at), true});
   if (parity_start) { // the strided loop's own iterations
-    path_.push_back({binary(Op::Ge, counter, parity_start), true});
-    path_.push_back({binary(Op::Eq,
-                            binary(Op::Rem, binary(Op::Sub, counter, parity_start),
-                                   int_const(parity_step)),
-                            int_const(0)),
-                     true});
+    L.path_.push_back({binary(Op::Ge, counter, parity_start), true});
+    L.path_.push_back(
+        {binary(Op::Eq,
+                binary(Op::Rem, binary(Op::Sub, counter, parity_start), int_const(parity_step)),
+                int_const(0)),
+         true});
   }
-  loops_.push_back(loop);
-  if (!in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
-    library_loops_.insert(loop.get());
-  loop_ids_.push_back(next_loop_id_++);
-  segments_.push_back(--next_segment_);
-  Escape e = lower_recovering(f->getBody());
+  L.loops_.push_back(loop);
+  if (!L.in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
+    L.library_loops_.insert(loop.get());
+  L.loop_ids_.push_back(L.next_loop_id_++);
+  L.segments_.push_back(--L.next_segment_);
+  Escape e = L.lower_recovering(f->getBody());
   (void)e; // a body ending in continue is fine
-  library_loops_.erase(loop.get());
-  loops_.pop_back();
-  loop_ids_.pop_back();
-  segments_.pop_back();
-  path_.resize(depth);
-  env_ = env_before;
-  why_unset_ = why_before;
+  L.library_loops_.erase(loop.get());
+  L.loops_.pop_back();
+  L.loop_ids_.pop_back();
+  L.segments_.pop_back();
+  L.path_.resize(depth);
+  L.env_ = env_before;
+  L.why_unset_ = why_before;
   // After the loop, an accumulator holds its sum; any other variable it
   // assigned holds what the last iteration left there: outside the subset.
-  red_.end_loop(reductions, f);
+  L.red_.end_loop(reductions, f);
   for (const VarDecl* v : assigned) {
     if (reductions.accumulates(v))
       continue;
     if (!forget_value(v))
       continue;
-    why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
-                                "is the last iteration's, outside the kernel subset",
-                                v->getNameAsString());
+    L.why_unset_[v] = fmt::format("'{}' is read after the loop that assigns it: its value there "
+                                  "is the last iteration's, outside the kernel subset",
+                                  v->getNameAsString());
   }
   if (const auto* d = dyn_cast_or_null<DeclStmt>(f->getInit()); !d) {
     // A C89 counter is not a value after its loop either.
-    env_[var].value = std::nullopt;
-    why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
-                                  "bound instead",
-                                  var->getNameAsString());
+    L.env_[var].value = std::nullopt;
+    L.why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
+                                    "bound instead",
+                                    var->getNameAsString());
   }
 }
 
-// The bound of a loop condition as `counter op bound` (op returned in `op`):
-// `i < n`, `i + 1 < n` (i < n - 1), `n > i` (i < n). Null when the sides do
-// not differ by exactly +-counter plus something free of the counter.
-ExprP Lowerer::loop_bound(const BinaryOperator* c, const VarDecl* var, BinaryOperatorKind& op) {
-  const auto* lhs = dyn_cast<DeclRefExpr>(c->getLHS()->IgnoreParenImpCasts());
-  if (lhs && lhs->getDecl() == var)
-    return expr(c->getRHS());
-  // The counter is bound to a placeholder counter while the sides are
-  // lowered, named apart from every counter already named.
-  std::string placeholder = "dpgen_counter";
-  for (int n = 1; loop_names_.count(placeholder); ++n)
-    placeholder = fmt::format("dpgen_counter_{}", n);
-  auto saved = env_.find(var) != env_.end() ? std::optional<Binding>(env_[var]) : std::nullopt;
-  Binding b;
-  b.kind = Binding::LoopVar;
-  b.value = loop_var(placeholder);
-  env_[var] = b;
-  ExprP l = expr(c->getLHS()), r = expr(c->getRHS());
-  if (saved)
-    env_[var] = *saved;
-  else
-    env_.erase(var);
-  auto pl = to_poly(l), pr = to_poly(r);
-  if (!pl || !pr)
-    return nullptr;
-  Poly d = *pl - *pr; // condition: d op 0
-  Poly k = d.coefficient(Sym::counter(placeholder));
-  Poly rest = d.without(Sym::counter(placeholder));
-  if (!k.is_constant() || (k.constant_term() != 1 && k.constant_term() != -1) ||
-      rest.mentions_any_counter())
-    return nullptr;
-  op = c->getOpcode();
-  if (k.constant_term() == -1) { // -i + rest op 0  <=>  i (flipped op) rest
-    switch (op) {
-    case BO_LT: op = BO_GT; break;
-    case BO_LE: op = BO_GE; break;
-    case BO_GT: op = BO_LT; break;
-    case BO_GE: op = BO_LE; break;
-    default: break;
-    }
-    return poly_expr(rest);
-  }
-  return poly_expr(-rest); // i + rest op 0  <=>  i op -rest
-}
-
-// An integer expression for a polynomial over parameters and kernel-level
-// locals (symbols resolve to what they name).
-ExprP Lowerer::poly_expr(const Poly& p) {
-  ExprP sum;
-  for (const auto& [m, coef] : p.terms()) {
-    ExprP term = int_const(coef);
-    for (const auto& sym : m)
-      term = binary(Op::Mul, term, symbol_expr(sym));
-    sum = sum ? binary(Op::Add, sum, term) : term;
-  }
-  return sum ? sum : int_const(0);
-}
-
-ExprP Lowerer::symbol_expr(const Sym& sym) {
-  if (sym.is_counter())
-    throw std::logic_error("lower: a loop counter in a size: " + sym.name);
-  if (const Param* p = k_.find_param(sym.name))
-    return param(p->name, p->elem);
-  for (const auto& l : k_.kernel_locals)
-    if (l->name == sym.name)
-      return local_ref(l);
-  if (objects_.object_values().count(sym.name)) // bx.smallEnd(0), u.extent(1) (lower_view.cpp)
-    return param(sym.name, Type::Int);
-  throw std::logic_error("lower: unknown symbol " + sym.name);
-}
-
-// Every local variable assigned (=, op=, ++, --) somewhere in `s`.
-// The extreme (the largest if `upper`, else the smallest) of loop bound `e`
-// (`p` as a polynomial) over the enclosing loops' ranges: each outer counter
-// replaced by its first or last value, by the sign of its coefficient. Null
-// where a coefficient is not a constant.
-std::optional<ExprP> Lowerer::hull(const ExprP& e, const Poly& p, bool upper) const {
-  std::map<std::string, ExprP> at;
-  for (const auto& l : loops_) {
-    Poly c = p.coefficient(Sym::counter(l->var));
-    if (c == Poly())
-      continue;
-    if (!c.is_constant() || !to_poly(l->lo) || !to_poly(l->hi) ||
-        to_poly(l->lo)->mentions_any_counter() || to_poly(l->hi)->mentions_any_counter())
-      return std::nullopt;
-    bool last = (c.constant_term() > 0) == upper;
-    at[l->var] = last ? binary(Op::Sub, l->hi, int_const(1)) : l->lo;
-  }
-  std::function<ExprP(const ExprP&)> sub = [&](const ExprP& x) -> ExprP {
-    if (x->op == Op::LoopVar)
-      if (auto it = at.find(x->name); it != at.end())
-        return it->second;
-    if (x->op == Op::Local) // an integer local of the counters: its definition
-      if (any_node(x, [](const ExprP& y) { return y->op == Op::LoopVar; }))
-        return sub(x->local->def);
-    return map_operands(x, sub);
-  };
-  ExprP out = sub(e);
-  auto q = to_poly(out);
-  if (!q || q->mentions_any_counter())
-    return std::nullopt;
-  return out;
-}
-
-// A lower bound of integer `e` over the enclosing loops that depends on the
-// sizes only: `e` itself where it mentions no counter, the hull of an
-// affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
-// remainder of a non-negative value), sums of those. Null otherwise.
-std::optional<ExprP> Lowerer::smallest(const ExprP& e) const {
-  if (!any_node(e, [](const ExprP& x) { return x->op == Op::LoopVar; }))
-    return e;
-  if (auto p = to_poly(e))
-    return hull(e, *p, false);
-  if (e->op == Op::Add) {
-    auto a = smallest(e->ops[0]), b = smallest(e->ops[1]);
-    if (a && b)
-      return binary(Op::Add, *a, *b);
-    return std::nullopt;
-  }
-  if (e->op == Op::Rem && e->ops[1]->op == Op::IntConst && e->ops[1]->ival > 0 &&
-      provably_nonneg(e->ops[0]))
-    return int_const(0);
-  if (e->op == Op::Local)
-    return smallest(e->local->def);
-  return std::nullopt;
-}
-
-void Lowerer::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
+void ForLoops::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
   if (!s)
     return;
   auto target = [&](const clang::Expr* e) {
@@ -635,32 +291,7 @@ void Lowerer::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
     assigned_vars(c, out);
 }
 
-int Lowerer::loop_step(const clang::Expr* inc, const VarDecl* var) {
-  if (!inc)
-    return 0;
-  inc = inc->IgnoreParens();
-  auto is_var = [&](const clang::Expr* e) {
-    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
-    return r && r->getDecl() == var;
-  };
-  if (const auto* u = dyn_cast<UnaryOperator>(inc)) {
-    if (!is_var(u->getSubExpr()))
-      return 0;
-    return u->isIncrementOp() ? 1 : u->isDecrementOp() ? -1 : 0;
-  }
-  if (const auto* b = dyn_cast<CompoundAssignOperator>(inc)) {
-    clang::Expr::EvalResult r;
-    if (!is_var(b->getLHS()) || !b->getRHS()->EvaluateAsInt(r, ctx_))
-      return 0;
-    int64_t k = r.Val.getInt().getSExtValue();
-    if (k < 1 || k > 1024)
-      return 0;
-    return b->getOpcode() == BO_AddAssign ? int(k) : b->getOpcode() == BO_SubAssign ? -int(k) : 0;
-  }
-  return 0;
-}
-
-void Lowerer::check_not_assigned(const Stmt* s, const VarDecl* var) {
+void ForLoops::check_not_assigned(const Stmt* s, const VarDecl* var) {
   if (!s)
     return;
   auto refers = [&](const clang::Expr* e) {
@@ -668,12 +299,14 @@ void Lowerer::check_not_assigned(const Stmt* s, const VarDecl* var) {
     return r && r->getDecl() == var;
   };
   if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp() && refers(b->getLHS()))
-    fail(b->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
-                                          var->getNameAsString()), "dpgen-loop");
+    L.fail(b->getOperatorLoc(),
+           fmt::format("loop counter '{}' is modified in the loop body", var->getNameAsString()),
+           "dpgen-loop");
   if (const auto* u = dyn_cast<UnaryOperator>(s);
       u && u->isIncrementDecrementOp() && refers(u->getSubExpr()))
-    fail(u->getOperatorLoc(), fmt::format("loop counter '{}' is modified in the loop body",
-                                          var->getNameAsString()), "dpgen-loop");
+    L.fail(u->getOperatorLoc(),
+           fmt::format("loop counter '{}' is modified in the loop body", var->getNameAsString()),
+           "dpgen-loop");
   for (const Stmt* c : s->children())
     check_not_assigned(c, var);
 }

@@ -288,7 +288,7 @@ std::optional<std::string> Objects::materialize(const clang::Expr* e, const CXXR
     }
     if (!L.scalar_type(a->getType()))
       return std::nullopt;
-    ExprP v = L.expr(a);
+    ExprP v = L.exprs_.expr(a);
     if (any_node(v, [](const ExprP& x) {
           return x->op == Op::LoopVar || x->op == Op::Read || is_real(x->type);
         }))
@@ -410,7 +410,7 @@ Binding Objects::functor_binding(const clang::Expr* init, const CXXRecordDecl* r
            "dpgen-lambda");
     Binding value;
     value.kind = Binding::Value;
-    value.value = cast(L.expr(v), *st);
+    value.value = cast(L.exprs_.expr(v), *st);
     (*b.fields)[f] = value;
   }
   return b;

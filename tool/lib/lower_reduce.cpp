@@ -58,7 +58,7 @@ bool Reductions::if_update(const IfStmt* s) {
   auto update = [&](Accumulator& a, Type t) {
     size_t depth = L.path_.size();
     if (rest)
-      L.path_.push_back({L.cond(rest), true});
+      L.path_.push_back({L.exprs_.cond(rest), true});
     extremum_update(a, term, t, s->getBeginLoc());
     L.path_.resize(depth);
   };
@@ -115,9 +115,9 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
   if (!term)
     L.fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
                             var->getNameAsString()));
-  ExprP e = L.expr(term);
-  L.add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t), true,
-              L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+  ExprP e = L.exprs_.expr(term);
+  L.stores_.add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t),
+                      true, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
   return true;
 }
 
@@ -134,8 +134,9 @@ ExprP Reductions::hidden_read(const std::string& array, const ExprP& idx, Source
 // The update `v = max(v, e)` here (lower_impl.hpp).
 void Reductions::extremum_update(Accumulator& a, const clang::Expr* term, Type t,
                               SourceLocation loc) {
-  ExprP e = cast(L.expr(term), t);
-  L.add_store(a.array, a.index, call("dpgen_nograd", {e}, t), true, L.pos(loc), loc, a.extremum);
+  ExprP e = cast(L.exprs_.expr(term), t);
+  L.stores_.add_store(a.array, a.index, call("dpgen_nograd", {e}, t), true, L.pos(loc), loc,
+                      a.extremum);
   ExtremumUpdate u;
   u.term = e;
   u.path = L.path_;
@@ -153,7 +154,7 @@ void Reductions::finish_extremum(const Accumulator& a, SourceLocation loc) {
   // A store after every nest so far that stores `array`'s inputs.
   auto straight = [&](const std::string& reads, const std::string& array, auto&& value) {
     L.order_after_later_stores(reads);
-    L.add_store(array, a.index, value(), false, L.pos(loc), loc);
+    L.stores_.add_store(array, a.index, value(), false, L.pos(loc), loc);
   };
   // One nest per update, with the update's loops and path.
   auto per_update = [&](const std::string& array, auto&& value) {
@@ -165,7 +166,7 @@ void Reductions::finish_extremum(const Accumulator& a, SourceLocation loc) {
         L.segments_.push_back(--L.next_segment_);
       }
       L.path_ = u.path;
-      L.add_store(array, a.index, value(u.term), true, u.pos, loc);
+      L.stores_.add_store(array, a.index, value(u.term), true, u.pos, loc);
       for (size_t i = 0; i < u.loops.size(); ++i) {
         L.loops_.pop_back();
         L.loop_ids_.pop_back();
@@ -251,7 +252,7 @@ Reductions::make_accumulator(const std::string& name, const std::string& spellin
   a.depth = L.loops_.size();
   if (extremum == 0) {
     a.array = hidden("sum");
-    L.add_store(a.array, idx, init, false, L.pos(loc), loc);
+    L.stores_.add_store(a.array, idx, init, false, L.pos(loc), loc);
     return a;
   }
   a.start = hidden("start");
@@ -262,9 +263,9 @@ Reductions::make_accumulator(const std::string& name, const std::string& spellin
     start->array = a.start;
     start->index = idx;
   } else {
-    L.add_store(a.start, idx, init, false, L.pos(loc), loc);
+    L.stores_.add_store(a.start, idx, init, false, L.pos(loc), loc);
   }
-  L.add_store(a.array, idx, call("dpgen_nograd", {init}, t), false, L.pos(loc), loc);
+  L.stores_.add_store(a.array, idx, call("dpgen_nograd", {init}, t), false, L.pos(loc), loc);
   return a;
 }
 
@@ -312,14 +313,14 @@ void Reductions::start_element_reductions(const ForStmt* f, const VarDecl* count
     int kind = active ? 0 : forms_.extremum_kind(f->getBody(), t);
     if (kind == 0)
       continue;
-    auto acc = L.element(t.element);
+    auto acc = L.exprs_.element(t.element);
     if (!acc || !acc->dims.empty() || acc->param->kind != ParamKind::Out || acc->param->inout || acc->param->global)
       continue;
     const Param* p = acc->param;
     auto nit = L.nest_index_.find(L.cur_key());
     Store* prev = nit == L.nest_index_.end()
                       ? nullptr
-                      : L.visible_store(L.k_.nests[nit->second], p->name, acc->index);
+                      : L.stores_.visible_store(L.k_.nests[nit->second], p->name, acc->index);
     if (!prev || prev->accumulate)
       L.fail(t.element->getBeginLoc(),
            fmt::format("the {} reduction into '{}' in this loop starts from the value it has "
@@ -349,7 +350,7 @@ void Reductions::finish_element_reductions(size_t from, SourceLocation loc) {
     finish_extremum(r.acc, loc);
     L.order_after_later_stores(r.acc.result);
     ExprP v = hidden_read(r.acc.result, r.acc.index, loc);
-    L.add_store(r.array, r.index, v, false, L.pos(loc), loc);
+    L.stores_.add_store(r.array, r.index, v, false, L.pos(loc), loc);
   }
 }
 

@@ -411,7 +411,7 @@ auto Views::view_element(const CXXOperatorCallExpr* oc) -> std::optional<Access>
   std::vector<ExprP> idx;
   bool piecewise = false;
   for (unsigned d = 1; d <= rank; ++d) {
-    ExprP x = L.expr(oc->getArg(d));
+    ExprP x = L.exprs_.expr(oc->getArg(d));
     if (x->type != Type::Int)
       L.fail(oc->getArg(d)->getBeginLoc(), "array index must be an integer");
     if (rank > 1 && !to_poly(x)) {

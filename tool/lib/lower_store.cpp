@@ -1,0 +1,328 @@
+// Lowering, stores: assignments to outputs and locals, the stores of the
+// current nest and what a later statement sees of them, in-place arrays'
+// values (lower_stmt.hpp).
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+// `*p` of a helper's pointer parameter bound to a caller's local (`&f`).
+const VarDecl* Stores::deref_local(const clang::Expr* e) {
+  const auto* u = dyn_cast<UnaryOperator>(e->IgnoreParenImpCasts());
+  if (!u || u->getOpcode() != UO_Deref)
+    return nullptr;
+  const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
+  const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+  auto it = v ? L.env_.find(v) : L.env_.end();
+  return it != L.env_.end() && it->second.kind == Binding::Value && it->second.deref_only ? v
+                                                                                          : nullptr;
+}
+
+void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
+                    SourceLocation loc) {
+  lhs = lhs->IgnoreParenImpCasts();
+  if (const VarDecl* v = deref_local(lhs)) {
+    assign_value(v, *L.scalar_type(v->getType()->getPointeeType()), lhs, op, rhs, loc);
+    return;
+  }
+  if (auto le = L.stmts_.local_element(lhs)) {
+    Binding& b = L.env_[le->first];
+    std::optional<ExprP>& slot = b.elems[le->second];
+    std::string name = fmt::format("{}_{}", le->first->getNameAsString(), le->second);
+    if (op == BO_Assign) {
+      slot = L.stmts_.make_local(name, nullptr, cast(L.exprs_.expr(rhs), b.elem));
+      return;
+    }
+    if (!slot)
+      L.fail(lhs->getBeginLoc(), L.unset_message(le->first, "used before it has a value"));
+    ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
+    Op bop = op == BO_AddAssign   ? Op::Add
+             : op == BO_SubAssign ? Op::Sub
+             : op == BO_MulAssign ? Op::Mul
+             : op == BO_DivAssign ? Op::Div
+                                  : Op::Rem;
+    if (bop == Op::Rem)
+      L.fail(loc, "this compound assignment is outside the kernel subset");
+    slot = L.stmts_.make_local(name, nullptr, cast(binary(bop, *slot, r), b.elem));
+    return;
+  }
+  if (L.red_.element_update(lhs, op, rhs, loc)) // *err = fmax(*err, e)
+    return;
+  if (auto acc = L.exprs_.element(lhs)) {
+    const Param* p = acc->param;
+    if (!acc->dims.empty())
+      L.fail(lhs->getBeginLoc(), fmt::format("view '{}' is written at a choice of positions (a "
+                                             "periodic wrap): write each element at an affine "
+                                             "index, with the wrap as a branch around the store",
+                                             p->name));
+    if (p->inout) {
+      // u[k] = v / u[k] += v on an in-place array: a store of the new value
+      // into its twin; `+=` adds to the value u[k] has here (the old one, or
+      // what this iteration stored).
+      const Param* twin = L.k_.find_param(p->name + "_new");
+      ExprP value = L.exprs_.expr(rhs ? rhs : lhs);
+      if (op != BO_Assign) {
+        if (op != BO_AddAssign && op != BO_SubAssign && op != BO_MulAssign)
+          L.fail(loc, "this compound assignment is outside the kernel subset");
+        ExprP old = inout_value(p, acc->index, lhs->getBeginLoc(), lhs);
+        ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
+        value = binary(op == BO_AddAssign   ? Op::Add
+                       : op == BO_SubAssign ? Op::Sub
+                                            : Op::Mul,
+                       old, r);
+      }
+      add_store(twin->name, acc->index, cast(value, p->elem), false, L.pos(lhs->getBeginLoc()),
+                lhs->getBeginLoc());
+      L.acc_.inout_stores.push_back({p->name, L.cur_key(), L.next_store_seq_ - 1, acc->index});
+      return;
+    }
+    if (!L.frames_.empty() && !L.frames_.back().is_void)
+      L.fail(lhs->getBeginLoc(), fmt::format("helper '{}' writes to array '{}': helpers return "
+                                             "values; store them in the kernel",
+                                             L.frames_.back().fn->getNameAsString(), p->name));
+    if (p->global)
+      L.fail(lhs->getBeginLoc(), fmt::format("write to '{}': global state is outside the kernel "
+                                             "subset (a kernel reads globals; its results go to "
+                                             "DPGEN_OUT parameters)",
+                                             p->name));
+    if (p->kind != ParamKind::Out)
+      L.fail(lhs->getBeginLoc(),
+             fmt::format("'{}' is written but is not a DPGEN_OUT parameter; inputs and constant "
+                         "arrays are read only{}",
+                         p->name,
+                         p->kind == ParamKind::In
+                             ? " (an array updated in place, as in Gauss-Seidel or an in-place "
+                               "time step, carries values from one iteration to the next: "
+                               "write the new values to a separate DPGEN_OUT array)"
+                             : ""));
+    ExprP value;
+    bool accumulate = false;
+    if (op == BO_Assign) {
+      value = L.exprs_.expr(rhs);
+    } else if (op == BO_AddAssign || op == BO_SubAssign) {
+      ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
+      value = op == BO_AddAssign ? r : unary(Op::Neg, r);
+      accumulate = true;
+    } else {
+      L.fail(loc, fmt::format("compound assignment '{}' to output '{}' needs the element's "
+                              "previous value, which the adjoint does not have; only '=', '+=' "
+                              "and '-=' write outputs",
+                              BinaryOperator::getOpcodeStr(op).str(), p->name));
+    }
+    if (L.bufs_.is_buffer(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)
+      L.bufs_.check_buffer_store(p, acc->index, accumulate, lhs);
+    add_store(p->name, acc->index, cast(value, p->elem), accumulate, L.pos(lhs->getBeginLoc()),
+              lhs->getBeginLoc());
+    return;
+  }
+  const auto* ref = dyn_cast<DeclRefExpr>(lhs);
+  const auto* var = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+  if (!var)
+    L.fail(lhs->getBeginLoc(), "assignment target is outside the kernel subset (write to an "
+                               "output element or a local variable)");
+  auto it = L.env_.find(var);
+  if (it == L.env_.end() || (it->second.param && it->second.param->global)) {
+    if (var->hasGlobalStorage())
+      L.fail(lhs->getBeginLoc(), fmt::format("write to '{}': global state is outside the kernel "
+                                             "subset",
+                                             var->getNameAsString()));
+    L.fail(lhs->getBeginLoc(),
+           fmt::format("'{}' is outside the kernel subset", var->getNameAsString()));
+  }
+  if (it->second.kind != Binding::Value)
+    L.fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
+                                           "read only",
+                                           var->getNameAsString()));
+  auto t = L.scalar_type(var->getType().getNonReferenceType());
+  if (!t)
+    L.fail(lhs->getBeginLoc(),
+           fmt::format("'{}' has a type outside the kernel subset", var->getNameAsString()));
+  assign_value(var, *t, lhs, op, rhs, loc);
+}
+
+// var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
+// stands for).
+void Stores::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
+                          const clang::Expr* rhs, SourceLocation loc) {
+  if (L.red_.local_update(var, t, lhs, op, rhs, loc)) // s += e, m = std::max(m, e)
+    return;
+  Binding& b = L.env_[var];
+  ExprP value;
+  if (op == BO_Assign) {
+    value = L.exprs_.expr(rhs);
+  } else {
+    if (!b.value)
+      L.fail(lhs->getBeginLoc(), L.unset_message(var, "used before it has a value"));
+    ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
+    Op bop;
+    switch (op) {
+    case BO_AddAssign:
+      bop = Op::Add;
+      break;
+    case BO_SubAssign:
+      bop = Op::Sub;
+      break;
+    case BO_MulAssign:
+      bop = Op::Mul;
+      break;
+    case BO_DivAssign:
+      bop = Op::Div;
+      break;
+    default:
+      L.fail(loc, "this compound assignment is outside the kernel subset");
+    }
+    value = binary(bop, *b.value, r);
+    if (bop == Op::Sub && var->getType().getNonReferenceType()->isUnsignedIntegerType())
+      L.ints_.check_unsigned_result(
+          value, loc, fmt::format("unsigned '{}' after '-='", var->getNameAsString()), lhs);
+  }
+  b.value = L.stmts_.make_local(var->getNameAsString(), var, cast(value, t));
+}
+
+Store* Stores::visible_store(Nest& nest, const std::string& array, const ExprP& idx) {
+  for (auto it = nest.stores.rbegin(); it != nest.stores.rend(); ++it)
+    if (it->array == array && same_index(it->index, idx) && is_prefix(it->path, L.path_))
+      return &*it;
+  return nullptr;
+}
+
+Nest& Stores::current_nest() {
+  auto it = L.nest_index_.find(L.cur_key());
+  if (it == L.nest_index_.end()) {
+    Nest n;
+    n.key = L.cur_key();
+    for (const auto& l : L.loops_)
+      n.loops.push_back(*l);
+    L.k_.nests.push_back(n);
+    it = L.nest_index_.emplace(L.cur_key(), L.k_.nests.size() - 1).first;
+  }
+  return L.k_.nests[it->second];
+}
+
+// `prefix` holds wherever `path` holds: its conditions open `path`.
+bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path) {
+  if (prefix.size() > path.size())
+    return false;
+  for (size_t i = 0; i < prefix.size(); ++i)
+    if (prefix[i].cond != path[i].cond || prefix[i].positive != path[i].positive)
+      return false;
+  return true;
+}
+
+void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
+                       SourcePos p, SourceLocation loc, int extremum) {
+  // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
+  // i below n = 1 << lg (prove.hpp: bits_as_sum)
+  if (!to_poly(idx)) {
+    std::vector<Loop> around;
+    for (const auto& l : L.loops_)
+      around.push_back(*l);
+    idx = bits_as_sum(idx, around, L.path_, L.k_.kernel_locals);
+  }
+  // A sum into one element from the iterations of a library parallel-for
+  // (`ParallelFor(bx, [&](...) { sum += ...; })`) is a data race under its
+  // parallel semantics: refused, though a serial reading would be a sum.
+  if (accumulate && !L.library_loops_.empty()) {
+    auto pi = to_poly(idx);
+    for (const auto& l : L.loops_)
+      if (L.library_loops_.count(l.get()) && (!pi || !pi->mentions_counter(l->var)))
+        L.fail(loc,
+               fmt::format("'+=' into '{}' in the body of a parallel-for ('{}'), at an "
+                           "element its iterations over '{}' share: a data race under the "
+                           "library's parallel semantics; write the sum as a loop nest of the "
+                           "kernel (a parallel_reduce is outside the kernel subset)",
+                           array, L.frames_.empty() ? "?" : L.frames_.front().fn->getNameAsString(),
+                           l->var),
+               "dpgen-loop");
+  }
+  // Updating an element this nest stored, after a later nest stored the
+  // array too: the update goes after that nest.
+  if (auto it = L.nest_index_.find(L.cur_key()); it != L.nest_index_.end())
+    if (visible_store(L.k_.nests[it->second], array, idx))
+      L.order_after_later_stores(array);
+  Nest& nest = current_nest();
+  // A second store to the same element in one iteration updates the first:
+  // `x[k] = a; ... x[k] += b;` stores a + b, and a store under a further
+  // condition keeps the earlier value where that condition fails.
+  if (Store* prev = visible_store(nest, array, idx)) {
+    // (two min/max updates in one iteration: the scan takes the extremum of
+    // both, still a constant to derivatives)
+    ExprP updated =
+        extremum     ? call("dpgen_nograd",
+                            {call(extremum > 0 ? "max" : "min", {prev->value, value}, value->type)},
+                            value->type)
+        : accumulate ? binary(Op::Add, prev->value, value)
+                     : value;
+    ExprP cond;
+    for (size_t i = prev->path.size(); i < L.path_.size(); ++i) {
+      ExprP c = L.path_[i].positive ? L.path_[i].cond : unary(Op::Not, L.path_[i].cond);
+      cond = cond ? binary(Op::And, cond, c) : c;
+    }
+    prev->value = cond ? select(cond, updated, prev->value) : updated;
+    prev->pos = p;
+    return;
+  }
+  // Otherwise a store whose path is not provably disjoint from another
+  // store's to an element that may be the same would overwrite it.
+  for (auto& s : nest.stores) {
+    if (s.array != array || L.paths_disjoint(s.path, L.path_) || (s.accumulate && accumulate))
+      continue;
+    auto pa = to_poly(s.index), pb = to_poly(idx);
+    Facts facts;
+    for (const auto& l : L.loops_)
+      add_nonempty(*l, facts);
+    for (const auto& pc : L.path_)
+      add_facts(pc, facts);
+    if (pa && pb) {
+      Poly g1 = *pa - *pb - Poly::constant(1), g2 = *pb - *pa - Poly::constant(1);
+      if (prove_nonneg(g1, facts) || prove_nonneg(g2, facts))
+        continue;
+      // A view's (row pointers') layout symbols stand for no size the
+      // generated code can compare: elements in different constant planes
+      // (rows) are apart (the plane symbol exceeds any offset in a plane);
+      // any other difference in them is not decided here.
+      if (layout_apart(*pa - *pb))
+        continue;
+      if (!(*pa - *pb).mentions_any_counter() && !accumulate && !s.accumulate &&
+          is_prefix(L.path_, s.path) && !mentions_layout(*pa - *pb)) {
+        // Different elements for some sizes only (u[0] and u[n - 1]): where
+        // they are the same, this store overwrites the earlier one, which
+        // then contributes nothing. The earlier store gets that condition.
+        s.path.push_back({binary(Op::Eq, s.index, idx), false});
+        continue;
+      }
+    }
+    L.fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
+                            "line {}); write each element once",
+                            array, s.pos.line));
+  }
+  Store st{array, idx, value, L.path_, p};
+  st.accumulate = accumulate;
+  st.extremum = extremum;
+  st.seq = L.next_store_seq_++;
+  nest.stores.push_back(st);
+}
+
+// The value u[k] of an in-place array has here: what this iteration stored
+// at k, or the value before the call (a read of the input).
+ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
+                          const clang::Expr* e) {
+  auto nit = L.nest_index_.find(L.cur_key());
+  if (nit != L.nest_index_.end())
+    if (Store* st = visible_store(L.k_.nests[nit->second], p->name + "_new", idx))
+      return st->value;
+  L.acc_.inout_reads.push_back({p->name, L.cur_key(), L.next_store_seq_, idx, {}, L.pos(loc)});
+  ExprP r = read(p->name, idx, p->elem, L.pos(loc), shape_of(*p));
+  std::const_pointer_cast<Expr>(r)->source = L.text(e);
+  return r;
+}
+
+bool Stores::written_by_other_nest(const std::string& array) const {
+  for (const auto& [key, idx] : L.nest_index_)
+    if (key != L.cur_key())
+      for (const auto& st : L.k_.nests[idx].stores)
+        if (st.array == array)
+          return true;
+  return false;
+}
+
+} // namespace dpgen::lowering
