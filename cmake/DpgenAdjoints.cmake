@@ -91,7 +91,8 @@ endfunction()
 # dpgen_add_torch_ops(<target> KERNELS <file>... [SOURCES <file>...] [COMPILE_ARGS <flag>...])
 #
 # Builds a shared library <target> of PyTorch ops: for each kernel of the given files, the op
-# torch.ops.dpgen.<kernel> (a torch::autograd::Function: forward = the kernel, backward = its
+# torch.ops.dpgen.<kernel> (a torch::autograd::Function: forward = the kernel, on every thread
+# where its nests set each element once (its IR printed into the op file), backward = its
 # generated adjoint), which `dpgen --torch` generates at build time into
 # ${CMAKE_CURRENT_BINARY_DIR}/<target>_generated/<stem>_torch.{hpp,cpp}. The kernels and their
 # adjoints are the static library <target>_adjoints (dpgen_add_adjoints, position-independent).

@@ -31,26 +31,24 @@ def class_sizes(files):
         i = 0
         while i < len(lines):
             line = lines[i]
+            start, closer = i, None
             m = head.match(line)
             if m:
-                j = i
-                while j < len(lines) and lines[j] != '};':
-                    j += 1
-                sizes[m.group(1)] += j - i + 1
-                i = j + 1
+                closer = '};'  # a class: its definition
+            else:
+                m = member.match(line)
+                if m and not line.rstrip().endswith(';'):
+                    closer = '}'  # a member defined out of line, with its comment
+                    while start > 0 and lines[start - 1].startswith('//'):
+                        start -= 1
+            if closer is None:
+                i += 1
                 continue
-            m = member.match(line)
-            if m and not line.rstrip().endswith(';'):
-                start = i
-                while start > 0 and lines[start - 1].startswith('//'):
-                    start -= 1
-                j = i
-                while j < len(lines) and lines[j] != '}':
-                    j += 1
-                sizes[m.group(1)] += j - start + 1
-                i = j + 1
-                continue
-            i += 1
+            j = i
+            while j < len(lines) and lines[j] != closer:
+                j += 1
+            sizes[m.group(1)] += j - start + 1
+            i = j + 1
     return sizes
 
 

@@ -1,6 +1,8 @@
 // --print-after=plan: the loops of the adjoint before anything is printed:
 // per input, the cell box, the branch-free interior, edges that may reach
-// into it, fusion of inputs with the same cell box, and the parallel test.
+// into it, fusion of inputs with the same cell box, and the parallel test;
+// then the forward forms' loops (the tangent, the torch ops' forward): the
+// kernel's own nests, parallel where every store sets its element.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %dpgen --print-after=plan %s --out-dir %t -- -I%runtime_inc | FileCheck %s
 #include "dpgen/annotate.hpp"
@@ -19,6 +21,8 @@
 // CHECK-NEXT: step
 // CHECK-NEXT: cells of [b]
 // CHECK-NEXT: i in [1, n - 1)
+// CHECK: forward loops of blend
+// CHECK-NEXT: nest 1: parallel, i in [1, n - 1)
 DPGEN_KERNEL void blend(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* c,
                         int n) {
   for (int i = 1; i < n - 1; ++i)
@@ -40,4 +44,21 @@ DPGEN_KERNEL void grad2d(DPGEN_IN const double* p, DPGEN_OUT double* g, int nx, 
   for (int j = 1; j < ny - 1; ++j)
     for (int i = 0; i < nx; ++i)
       g[j * nx + i] = p[(j + 1) * nx + i] - p[(j - 1) * nx + i];
+}
+
+// A nest that adds (`+=`) runs serially in the forward forms; a store outside
+// every loop is a nest of its own; a nest after it that sets its elements is
+// parallel again.
+// CHECK-LABEL: forward loops of sums
+// CHECK-NEXT: nest 1: serial (a store adds), j in [0, ny), i in [0, nx)
+// CHECK-NEXT: nest 2: serial (no loop)
+// CHECK-NEXT: nest 3: parallel, i in [0, nx)
+DPGEN_KERNEL void sums(DPGEN_IN const double* a, DPGEN_OUT double* col, DPGEN_OUT double* first,
+                       DPGEN_OUT double* twice, int nx, int ny) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      col[i] += a[j * nx + i];
+  first[0] = a[0];
+  for (int i = 0; i < nx; ++i)
+    twice[i] = 2.0 * a[i];
 }

@@ -111,6 +111,36 @@ class KernelOps(unittest.TestCase):
         torch.testing.assert_close(out, ref)
         self.assertEqual(out.shape, a.shape)
 
+    def test_parallel_forward_is_the_kernel(self):
+        # A kernel whose nests set each element once runs as its IR printed with those nests on
+        # every thread (emit_tangent.cpp: emit_parallel_forward), above 8192 iterations: the
+        # kernel's values bit for bit, whatever the number of threads. Against the kernel as
+        # written: upwind_rollout calls it (one step); against itself on one thread: the others.
+        n, nx, ny = 1 << 15, 256, 192
+        d, u = torch.rand(n, dtype=D), torch.rand(n, dtype=D) - 0.5
+        a, b = torch.rand(ny, nx, dtype=D), torch.rand(ny, nx, dtype=D)
+        calls = {
+            "upwind_step": lambda: torch.ops.dpgen.upwind_step(d, u, n, 0.3, 1.0),
+            "laplacian2d": lambda: torch.ops.dpgen.laplacian2d(a, nx, ny, 0.5),
+            "divergence2d": lambda: torch.ops.dpgen.divergence2d(a, b, nx, ny, 0.5),
+            "mg_prolong_y": lambda: torch.ops.dpgen.mg_prolong_y(
+                a, nx // 2, ny, 0.0, 1.0, 0.5, -1.0, f_shape=[2 * ny, nx]),
+            "flow_pressure_operator": lambda: torch.ops.dpgen.flow_pressure_operator(
+                a, b, nx, ny, 0.5, 1.0, 0.0),
+        }
+        threads = torch.get_num_threads()
+        try:
+            torch.set_num_threads(1)
+            one = {name: call() for name, call in calls.items()}
+            torch.set_num_threads(2)
+            for name, call in calls.items():
+                with self.subTest(op=name):
+                    self.assertTrue(torch.equal(call(), one[name]))
+            self.assertTrue(torch.equal(one["upwind_step"],
+                                        torch.ops.dpgen.upwind_rollout(d, u, 1, 0.3, 1.0)))
+        finally:
+            torch.set_num_threads(threads)
+
     def test_output_shape_argument(self):
         a = torch.rand(30, dtype=D)
         out = torch.ops.dpgen.laplacian2d(a, 6, 5, 1.0, out_shape=[5, 6])

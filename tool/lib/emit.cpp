@@ -462,10 +462,11 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
     code.line("// threads if the cells are many");
   }
   code.line("const bool {} = {};", parallel_ok, fmt::join(conds, " && "));
-  std::string parallel_if = fmt::format(" if ({})", parallel_ok);
 
   // Loops: outer counters with a per-row interior test, the innermost split
-  // into edge / interior / edge.
+  // into edge / interior / edge. The outermost loop runs on every thread where
+  // parallel_ok (threaded_loop); with more than one counter its body is a
+  // lambda of the outermost cell counter.
   size_t d = g0.layout.size();
   std::vector<std::string> all_cells;
   for (const auto& [u, c] : g0.layout)
@@ -474,11 +475,14 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
   std::function<void(size_t, std::string)> loops = [&](size_t level, std::string outer_edge) {
     const std::string& v = g0.layout[level].first;
     std::string t = kCellType;
+    const std::string header = fmt::format("for ({} {} = {}; {} < {}; ++{})", t, cell(v), lo_of(v),
+                                           cell(v), hi_of(v), cell(v));
     if (level + 1 < d) {
+      const std::string row = k.fresh("row_" + v);
       if (level == 0)
-        code.line("#pragma omp parallel for{}", parallel_if);
-      code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", t, cell(v), lo_of(v), cell(v),
-                            hi_of(v), cell(v)));
+        code.open(fmt::format("auto {} = [&](const {} {})", row, t, cell(v)));
+      else
+        code.open(header);
       std::string e =
           fmt::format("{} < {} || {} >= {}", cell(v), in_lo(v), cell(v), in_hi(v));
       if (!any_bulk)
@@ -486,14 +490,23 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
       const std::string edge_v = k.fresh("edge_" + v);
       code.line("const bool {} = {}{};", edge_v, outer_edge.empty() ? "" : outer_edge + " || ", e);
       loops(level + 1, edge_v);
-      code.close();
+      if (level == 0) {
+        code.close(";");
+        threaded_loop(code, parallel_ok, header, fmt::format("{}({});", row, cell(v)));
+      } else {
+        code.close();
+      }
       return;
     }
     auto loop = [&](const std::string& from, const std::string& to, const std::string& fn,
-                    bool pragma) {
-      if (pragma)
-        code.line("#pragma omp parallel for{}", parallel_if);
-      code.line("for ({} {} = {}; {} < {}; ++{})", t, cell(v), from, cell(v), to, cell(v));
+                    bool threads) {
+      const std::string for_line =
+          fmt::format("for ({} {} = {}; {} < {}; ++{})", t, cell(v), from, cell(v), to, cell(v));
+      if (threads) {
+        threaded_loop(code, parallel_ok, for_line, fmt::format("{}({});", fn, args));
+        return;
+      }
+      code.line("{}", for_line);
       code.line("  {}({});", fn, args);
     };
     bool top = level == 0;
@@ -504,7 +517,8 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
     if (!outer_edge.empty()) {
       code.open(fmt::format("if ({})", outer_edge));
       loop(lo_of(v), hi_of(v), edge_fn, false);
-      code.line("continue;");
+      // (the row of the outermost counter is a lambda: its loop goes on with `return`)
+      code.line(level == 1 ? "return;" : "continue;");
       code.close();
     }
     loop(lo_of(v), in_lo(v), edge_fn, false);

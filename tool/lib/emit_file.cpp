@@ -161,12 +161,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
         "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"
         "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
         "#endif\n\n");
-  c.raw("namespace {\n"
-        "// std::min/std::max with the same result (the first argument on ties), by\n"
-        "// value so loops around them vectorize.\n"
-        "template <typename T> inline T dpgen_min(T a, T b) { return b < a ? b : a; }\n"
-        "template <typename T> inline T dpgen_max(T a, T b) { return a < b ? b : a; }\n"
-        "} // namespace\n\n");
+  c.raw(fmt::format("namespace {{\n{}}} // namespace\n\n", kMinMaxHelpers));
   for (const auto& l : loops) {
     const AdjointPlan* p = l.adjoint;
     emit_kernel(c, l);

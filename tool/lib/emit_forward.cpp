@@ -19,36 +19,98 @@ std::string bound(const ExprP& e) {
   return fmt::format("static_cast<{}>({})", kCellType, print(e));
 }
 
-void emit_nest(Code& code, const Nest& nest, const Kernel& k, Hoister& hoist) {
+} // namespace
+
+void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoister& hoist,
+                       const std::vector<ExprP>* dots, const ForwardOptions& options) {
+  const Nest& nest = *plan.nest;
   code.open("");
   int opened = 1;
-  for (const auto& l : nest.loops) {
-    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, bound(l.lo), l.var,
-                          bound(l.hi), l.var));
+  // The outermost loop on every thread: its body a lambda of its counter (threaded_loop).
+  std::string threads, header, iteration;
+  for (size_t d = 0; d < nest.loops.size(); ++d) {
+    const Loop& l = nest.loops[d];
+    const std::string for_line = fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var,
+                                             bound(l.lo), l.var, bound(l.hi), l.var);
+    if (d == 0 && plan.parallel && options.threads) {
+      // Every element is written by one iteration (proved, or checked on
+      // entry), so iterations are independent (and their order is free).
+      std::vector<std::string> extents;
+      for (const auto& m : nest.loops)
+        extents.push_back(fmt::format("({} - {})", bound(m.hi), bound(m.lo)));
+      threads = fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelIterations);
+      header = for_line;
+      iteration = k.fresh("iteration");
+      code.open(fmt::format("auto {} = [&](const {} {})", iteration, kCellType, l.var));
+    } else if (l.descending) {
+      // counted down as the kernel counts: a sum adds in the kernel's order
+      code.open(fmt::format("for ({} {} = {} - 1; {} >= {}; --{})", kCellType, l.var, bound(l.hi),
+                            l.var, bound(l.lo), l.var));
+    } else {
+      code.open(for_line);
+    }
     ++opened;
   }
   std::set<int> done;
   std::set<std::string> vars;
-  for (const auto& s : nest.stores) {
+  for (size_t i = 0; i < nest.stores.size(); ++i) {
+    const Store& s = nest.stores[i];
+    // `+=` adds the values to the elements (hoist.hpp: summed).
     const ExprP index = hoist(s.index);
-    // `+=`: summed (hoist.hpp)
-    const ExprP value = hoist(s.value, s.accumulate && s.extremum == 0);
+    const bool summed = s.accumulate && s.extremum == 0;
+    const ExprP value = hoist(s.value, summed);
+    const ExprP dot = !dots                 ? zero(s.value->type)
+                      : is_zero((*dots)[i]) ? (*dots)[i]
+                                            : hoist((*dots)[i], summed);
     bool guarded = open_guard(code, s.path, hoist, done, vars);
     std::map<int, LocalP> locals;
     collect(index, locals, vars);
     collect(value, locals, vars);
+    collect(dot, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}", store_statement(s, s.array + subscript(index, k.shape_of(s.array)),
-                                    print(value)));
+    const char* op = s.accumulate ? "+=" : "=";
+    std::string idx = subscript(index, k.shape_of(s.array));
+    std::string dot_text = !is_zero(dot)                             ? print(dot)
+                           : type_spelling(s.value->type) == "float" ? "0.0f"
+                                                                     : "0.0";
+    const Param* twin = k.find_param(s.array);
+    if (twin && !twin->twin_of.empty() && options.in_place) {
+      // In place: both values from the old element first, then the stores.
+      // (in a block of its own: a later in-place store under a condition in
+      // the same iteration declares the same names without shadowing these)
+      const std::string& u = twin->twin_of;
+      const std::string new_value = k.fresh(u + "_new_value");
+      const std::string value_dot = k.fresh(u + "_new_dot");
+      code.open("");
+      code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
+      if (dots)
+        code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
+      code.line("{}{} = {};", u, idx, new_value);
+      if (dots)
+        code.line("{}_dot{} = {};", u, idx, value_dot);
+      code.close();
+    } else if (s.extremum != 0 || !dots) {
+      // (a min/max scan is a constant to derivatives: its tangent stays what
+      // its first store set, 0)
+      code.line("{}", store_statement(s, s.array + idx, print(value)));
+    } else {
+      code.line("{}{} {} {};", s.array, idx, op, print(value));
+      code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
+    }
     if (guarded)
       code.close();
   }
-  for (int i = 0; i < opened; ++i)
-    code.close();
+  for (int i = 0; i < opened; ++i) {
+    if (i == opened - 2 && !iteration.empty()) { // the outermost loop's body
+      code.close(";");
+      threaded_loop(code, threads, header,
+                    fmt::format("{}({});", iteration, nest.loops.front().var));
+    } else {
+      code.close();
+    }
+  }
 }
-
-} // namespace
 
 void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   std::vector<std::string> ps;
@@ -98,8 +160,13 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   define_kernel_locals(code, k);
   Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
   Code nests(code.depth());
-  for (const auto& n : k.nests)
-    emit_nest(nests, n, k, hoist);
+  // serial, the in-place arrays' new values to their buffers
+  const ForwardPlan plan = plan_forward(k);
+  ForwardOptions serial;
+  serial.threads = false;
+  serial.in_place = false;
+  for (const auto& n : plan.nests)
+    emit_forward_nest(nests, k, n, hoist, nullptr, serial);
   hoist.emit(code);
   code.raw(nests.str());
   code.close();

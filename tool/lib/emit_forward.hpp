@@ -1,4 +1,7 @@
-// Emit (phase 6): a forward kernel printed from the IR, for the staged
+// Emit (phase 6): the forward forms' printer, one loop nest of the kernel
+// printed from its IR as the forward plan (loop_plan.hpp) has it, used by the
+// tangent, the torch ops' parallel forward (emit_tangent.cpp) and the
+// recompute below; and that recompute, a forward kernel for the staged
 // adjoint (emit.cpp) of a kernel that the user's own kernel cannot recompute
 // into buffers: its work arrays include the hidden arrays of its
 // accumulators (Kernel::hidden), which the user's kernel keeps to itself; it
@@ -8,11 +11,31 @@
 #pragma once
 
 #include "emit_util.hpp"
+#include "hoist.hpp"
 #include "ir.hpp"
+#include "loop_plan.hpp"
 
 #include <string>
+#include <vector>
 
 namespace dpgen {
+
+/// How a forward form prints a nest.
+struct ForwardOptions {
+  /// The plan's parallel nests on every thread (threaded_loop); else all serial.
+  bool threads = true;
+  /// An in-place array's new values (Param::twin_of) to the array itself, from
+  /// its old element (the tangent); else to the twin's buffer (the recompute).
+  bool in_place = true;
+};
+
+/// Nest `plan` of `k`: its loops (a descending one counted down, as the
+/// kernel counts, so that a sum adds in the kernel's order: the same bits),
+/// each store under its path; with `dots` (the tangent: per store its
+/// tangent, possibly zero()) each store followed by its tangent
+/// `<array>_dot`. Loop-invariant subexpressions go to `hoist`.
+void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoister& hoist,
+                       const std::vector<ExprP>* dots, const ForwardOptions& options);
 
 /// `void <name>(<the kernel's parameters, flat>, T* <hidden array>...)`: the
 /// kernel's loop nests and stores in order, serial, each store under its

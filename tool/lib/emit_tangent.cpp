@@ -1,15 +1,18 @@
-// Emit tangents (phase 6, --tangent): the forward kernel again, from the IR, with the directional
-// derivative of every store next to it (forward mode, a Jacobian-vector
-// product). No index is inverted: each iteration computes its own outputs'
-// tangents from the tangents of what it reads, so the loops are the
-// kernel's own, and parallel where every element is written once.
+// Emit the forward forms (phase 6): the kernel again, printed from the IR in its own loops as
+// the forward plan (loop_plan.hpp: plan_forward) gives them, parallel where every element is
+// written once. The tangent (--tangent) puts the directional derivative of every store next to
+// it (forward mode, a Jacobian-vector product): no index is inverted, each iteration computes
+// its own outputs' tangents from the tangents of what it reads. The parallel forward (the torch
+// ops' forward) is the stores alone.
 #include "emit_tangent.hpp"
 
 #include "ir_walk.hpp"
 
 #include "derive.hpp"
+#include "emit_forward.hpp"
 #include "emit_util.hpp"
 #include "hoist.hpp"
+#include "loop_plan.hpp"
 #include "print.hpp"
 
 #include <fmt/format.h>
@@ -20,12 +23,11 @@ namespace dpgen {
 
 namespace {
 
-constexpr int kMinParallelIterations = 8192;
-
 // Everything a tangent kernel needs, computed once per kernel so locals shared
 // by several stores get one tangent each.
 struct TangentPlan {
   const Kernel* k = nullptr;
+  ForwardPlan loops;
   std::set<std::string> active;       // DPGEN_IN arrays and work arrays
   std::vector<std::vector<ExprP>> dot; // per nest, per store: its tangent (may be zero())
   DeriveNames names;
@@ -45,6 +47,7 @@ void names_in(const ExprP& e, std::set<std::string>& out, std::set<const LocalVa
 TangentPlan plan_tangent(const Kernel& k) {
   TangentPlan p;
   p.k = &k;
+  p.loops = plan_forward(k);
   for (const auto& prm : k.params)
     if (prm.kind == ParamKind::In || k.intermediates.count(prm.name))
       p.active.insert(prm.name);
@@ -126,85 +129,6 @@ void emit_vector_checks(Code& code, const Kernel& k) {
   });
 }
 
-// A loop bound in the counters' type (a size_t size minus one stays signed).
-std::string bound(const ExprP& e) {
-  if (e->op == Op::IntConst)
-    return print(e);
-  return fmt::format("static_cast<{}>({})", kCellType, print(e));
-}
-
-void emit_nest(Code& code, const TangentPlan& tp, Hoister& hoist, size_t n) {
-  const Nest& nest = tp.k->nests[n];
-  code.open("");
-  int opened = 1;
-  bool accumulates = false;
-  for (const auto& s : nest.stores)
-    accumulates = accumulates || s.accumulate;
-  for (size_t d = 0; d < nest.loops.size(); ++d) {
-    const Loop& l = nest.loops[d];
-    if (d == 0 && !accumulates) {
-      // Every element is written by one iteration (proved, or checked on
-      // entry), so iterations are independent.
-      std::vector<std::string> extents;
-      for (const auto& m : nest.loops)
-        extents.push_back(fmt::format("({} - {})", bound(m.hi), bound(m.lo)));
-      code.line("#pragma omp parallel for if ({} >= {})", fmt::join(extents, " * "),
-                kMinParallelIterations);
-    }
-    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var, bound(l.lo), l.var,
-                          bound(l.hi), l.var));
-    ++opened;
-  }
-  std::set<int> done;
-  std::set<std::string> vars;
-  for (size_t i = 0; i < nest.stores.size(); ++i) {
-    const Store& s = nest.stores[i];
-    // `+=` adds the values to the elements (hoist.hpp: summed).
-    const ExprP index = hoist(s.index);
-    const bool summed = s.accumulate && s.extremum == 0;
-    const ExprP value = hoist(s.value, summed);
-    const ExprP dot = is_zero(tp.dot[n][i]) ? tp.dot[n][i] : hoist(tp.dot[n][i], summed);
-    bool guarded = open_guard(code, s.path, hoist, done, vars);
-    std::map<int, LocalP> locals;
-    collect(index, locals, vars);
-    collect(value, locals, vars);
-    collect(dot, locals, vars);
-    std::set<int> inner = done;
-    define_locals(code, locals, guarded ? inner : done);
-    const char* op = s.accumulate ? "+=" : "=";
-    std::string idx = subscript(index, tp.k->shape_of(s.array));
-    std::string dot_text = !is_zero(dot)                             ? print(dot)
-                           : type_spelling(s.value->type) == "float" ? "0.0f"
-                                                                     : "0.0";
-    const Param* twin = tp.k->find_param(s.array);
-    if (twin && !twin->twin_of.empty()) {
-      // In place: both values from the old element first, then the stores.
-      // (in a block of its own: a later in-place store under a condition in
-      // the same iteration declares the same names without shadowing these)
-      const std::string& u = twin->twin_of;
-      const std::string new_value = tp.k->fresh(u + "_new_value");
-      const std::string value_dot = tp.k->fresh(u + "_new_dot");
-      code.open("");
-      code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
-      code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
-      code.line("{}{} = {};", u, idx, new_value);
-      code.line("{}_dot{} = {};", u, idx, value_dot);
-      code.close();
-    } else if (s.extremum != 0) {
-      // A min/max scan: a constant to derivatives (its tangent stays what
-      // its first store set, 0).
-      code.line("{}", store_statement(s, s.array + idx, print(value)));
-    } else {
-      code.line("{}{} {} {};", s.array, idx, op, print(value));
-      code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
-    }
-    if (guarded)
-      code.close();
-  }
-  for (int i = 0; i < opened; ++i)
-    code.close();
-}
-
 void emit_kernel(Code& code, const TangentPlan& tp) {
   const Kernel& k = *tp.k;
   open_namespaces(code, k);
@@ -245,7 +169,7 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
   Code nests(code.depth());
   for (size_t n = 0; n < k.nests.size(); ++n) {
     nests.line("// loop nest {}: each store, then its tangent", n + 1);
-    emit_nest(nests, tp, hoist, n);
+    emit_forward_nest(nests, k, tp.loops.nests[n], hoist, &tp.dot[n], ForwardOptions{});
   }
   hoist.emit(code);
   code.raw(nests.str());
@@ -267,6 +191,43 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
 }
 
 } // namespace
+
+bool has_parallel_forward(const Kernel& k) {
+  // (the sums of accumulators would need buffers the kernel does not
+  // allocate; in-place arrays, views and objects are not torch arguments)
+  if (!k.hidden.empty() || has_inout(k) || has_vectors(k))
+    return false;
+  for (const auto& p : k.params)
+    if (p.view || p.object || p.global || p.row_pointers || !p.twin_of.empty())
+      return false;
+  const ForwardPlan plan = plan_forward(k);
+  return std::any_of(plan.nests.begin(), plan.nests.end(),
+                     [](const ForwardNest& n) { return n.parallel; });
+}
+
+void emit_parallel_forward(Code& code, const Kernel& k, const std::string& name) {
+  TangentPlan tp = plan_tangent(k);
+  std::vector<std::string> ps;
+  for (const auto& p : k.params)
+    ps.push_back(p.kind == ParamKind::Scalar
+                     ? fmt::format("{} {}", p.spelling, p.name)
+                     : array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
+  code.line("// {} ({}:{}) printed from the IR, its nests that set each element once on every "
+            "thread: the same stores in the same order per element, so the same results.",
+            k.name, base_name(k.file), k.pos.line);
+  code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
+  define_kernel_locals(code, k);
+  emit_size_checks(code, k, k.name);
+  Hoister hoist(k, &tp.locals.taken);
+  Code nests(code.depth());
+  for (size_t n = 0; n < k.nests.size(); ++n) {
+    nests.line("// loop nest {}{}", n + 1, tp.loops.nests[n].parallel ? "" : " (serial: it adds)");
+    emit_forward_nest(nests, k, tp.loops.nests[n], hoist, nullptr, ForwardOptions{});
+  }
+  hoist.emit(code);
+  code.raw(nests.str());
+  code.close();
+}
 
 std::string tangent_signature(const Kernel& k) {
   return fmt::format("{} {}_tangent({})", k.return_type, k.name, tangent_params(k, true));

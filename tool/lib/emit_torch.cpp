@@ -9,6 +9,7 @@
 #include "emit_torch.hpp"
 
 #include "affine.hpp"
+#include "emit_tangent.hpp"
 #include "emit_util.hpp"
 #include "ir_walk.hpp"
 #include "print.hpp"
@@ -338,8 +339,16 @@ void emit_kernel(Code& c, const Kernel& k) {
       gs.push_back(g.positive ? "(" + print(g.cond) + ")" : "!(" + print(g.cond) + ")");
   const std::string guard = fmt::format("{}", fmt::join(gs, " && "));
 
-  c.line("// torch.ops.dpgen.{}: forward = {} ({}:{}), backward = {}_adjoint.", k.name, k.name,
-         base_name(k.file), k.pos.line, k.name);
+  // The forward: the kernel's IR printed with its nests on every thread where each sets its
+  // elements once (emit_tangent.hpp), else the kernel as written.
+  const bool parallel = has_parallel_forward(k);
+  const std::string forward_fn = k.fresh(k.name + "_parallel_forward");
+  if (parallel) {
+    emit_parallel_forward(c, k, forward_fn);
+    c.raw("\n");
+  }
+  c.line("// torch.ops.dpgen.{}: forward = {} ({}:{}){}, backward = {}_adjoint.", k.name, k.name,
+         base_name(k.file), k.pos.line, parallel ? ", its nests on every thread" : "", k.name);
   c.line("struct {} : public torch::autograd::Function<{}> {{", fn, fn);
   // forward
   // Generated names (Kernel::fresh: none is one of the kernel's parameters).
@@ -377,9 +386,10 @@ void emit_kernel(Code& c, const Kernel& k) {
       emit_extent_check(c, k, p, m, guard);
   std::vector<std::string> call;
   for (const auto& p : k.params)
-    call.push_back(is_array(p) ? pointer(p, p.name, p.kind != ParamKind::Out)
-                               : scalar_value(p, op));
-  c.line("{}({});", qualified(k, k.name), fmt::join(call, ", "));
+    call.push_back(!is_array(p) ? scalar_value(p, op)
+                   : parallel   ? fmt::format("{}.data_ptr<{}>()", p.name, p.elem_name)
+                                : pointer(p, p.name, p.kind != ParamKind::Out));
+  c.line("{}({});", parallel ? forward_fn : qualified(k, k.name), fmt::join(call, ", "));
   std::vector<std::string> saved;
   for (const Param* p : args)
     if (is_array(*p))
@@ -618,15 +628,29 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
   c.raw("//\n"
         "// One torch::autograd::Function per kernel: forward checks the arguments (CPU, the\n"
         "// kernel's dtype, contiguous, large enough for the largest index the loops reach),\n"
-        "// allocates the outputs and calls the kernel on the tensors' data; backward calls the\n"
-        "// generated adjoint with zero-filled input adjoints. Registered with\n"
+        "// allocates the outputs and calls the kernel on the tensors' data (a kernel with a nest\n"
+        "// that sets each element once: its IR printed here with that nest on every thread,\n"
+        "// the same stores per element as the kernel's); backward calls the generated adjoint\n"
+        "// with zero-filled input adjoints. Registered with\n"
         "// TORCH_LIBRARY_FRAGMENT(dpgen, m), so several generated files share the namespace.\n");
   c.raw(fmt::format("#include \"{}_torch.hpp\"\n\n#include \"{}_adjoint.hpp\"\n#include "
                     "\"{}_kernels.hpp\"\n#include \"dpgen/torch.hpp\"\n\n#include "
-                    "<torch/library.h>\n\n#include <algorithm>\n#include <cstdint>\n#include "
-                    "<vector>\n",
+                    "<torch/library.h>\n\n",
                     stem, stem, stem));
+  // (the parallel forwards: math, and the size checks' exceptions)
+  const bool forwards = std::any_of(plans.begin(), plans.end(), [](const AdjointPlan& p) {
+    return has_parallel_forward(*p.kernel);
+  });
+  std::set<std::string> headers = {"algorithm", "cstdint", "vector"};
+  if (forwards)
+    headers.insert({"cmath", "cstddef", "stdexcept", "string"});
+  for (const auto& h : headers)
+    c.raw(fmt::format("#include <{}>\n", h));
+  if (forwards)
+    c.raw(std::string("\n") + kQuietUnused);
   c.raw("\nnamespace {\n\n");
+  if (forwards)
+    c.raw(std::string(kMinMaxHelpers) + "\n");
   for (const auto& plan : plans)
     emit_kernel(c, *plan.kernel);
   c.raw("} // namespace\n\nnamespace dpgen::ops {\n\n");

@@ -47,6 +47,18 @@ void define_locals(Code& code, const std::map<int, LocalP>& locals, std::set<int
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
 }
 
+void threaded_loop(Code& code, const std::string& parallel, const std::string& header,
+                   const std::string& body) {
+  code.open(fmt::format("if ({})", parallel));
+  code.line("#pragma omp parallel for");
+  code.line("{}", header);
+  code.line("  {}", body);
+  code.chain("else");
+  code.line("{}", header);
+  code.line("  {}", body);
+  code.close();
+}
+
 void define_kernel_locals(Code& code, const Kernel& k, bool ints_only) {
   for (const auto& l : k.kernel_locals)
     if (!ints_only || l->def->type == Type::Int)

@@ -100,6 +100,8 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
         test_internal_error("plan");
         loops.push_back(plan_loops(p));
         print_after("plan", print_plan(loops.back()));
+        if (opts.print_after.count("plan"))
+          print_after("plan", print_forward_plan(plan_forward(*p.kernel)));
       }
       current = nullptr;
       pass = "emit";

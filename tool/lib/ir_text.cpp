@@ -277,4 +277,20 @@ std::string print_plan(const LoopPlan& plan) {
   return out;
 }
 
+std::string print_forward_plan(const ForwardPlan& plan) {
+  std::string out = fmt::format("forward loops of {}\n", plan.kernel->name);
+  for (size_t n = 0; n < plan.nests.size(); ++n) {
+    const ForwardNest& f = plan.nests[n];
+    std::vector<std::string> loops;
+    for (const auto& l : f.nest->loops)
+      loops.push_back(fmt::format("{} in [{}, {})", l.var, print(l.lo), print(l.hi)));
+    out += fmt::format("  nest {}: {}{}\n", n + 1,
+                       f.parallel              ? "parallel"
+                       : f.nest->loops.empty() ? "serial (no loop)"
+                                               : "serial (a store adds)",
+                       loops.empty() ? "" : fmt::format(", {}", fmt::join(loops, ", ")));
+  }
+  return out;
+}
+
 } // namespace dpgen

@@ -29,6 +29,8 @@ std::string print_schedule(const AdjointPlan& plan);
 /// After `plan`: per input, the cell loops (cell box, interior, parallel
 /// test) of each gather step, and the scatter units.
 std::string print_plan(const LoopPlan& plan);
+/// The forward forms' loops (loop_plan.hpp: ForwardPlan): each nest serial or parallel.
+std::string print_forward_plan(const ForwardPlan& plan);
 
 /// A domain as text: "{i: [max(1), min(n)); j: ...} | {...}".
 std::string domain_text(const Domain& d);

@@ -287,4 +287,15 @@ LoopPlan plan_loops(const AdjointPlan& plan) {
   return out;
 }
 
+ForwardPlan plan_forward(const Kernel& k) {
+  ForwardPlan plan;
+  plan.kernel = &k;
+  for (const auto& nest : k.nests) {
+    const bool adds = std::any_of(nest.stores.begin(), nest.stores.end(),
+                                  [](const Store& s) { return s.accumulate; });
+    plan.nests.push_back({&nest, !nest.loops.empty() && !adds});
+  }
+  return plan;
+}
+
 } // namespace dpgen

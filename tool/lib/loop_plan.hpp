@@ -98,4 +98,30 @@ struct LoopPlan {
 /// Phase 5: the loops of `plan` (which must outlive the result).
 LoopPlan plan_loops(const AdjointPlan& plan);
 
+/// Fewer iterations than this run serially in a forward form: a parallel
+/// region costs microseconds.
+constexpr int kMinParallelIterations = 8192;
+
+/// One nest of a forward form (the tangent; the parallel forward of the torch
+/// ops): the kernel's own loops, no index inverted. `parallel`: its outermost
+/// loop may run on every thread (with at least kMinParallelIterations
+/// iterations in the nest's box): every store sets its element (`=`), and the
+/// output rules make each element written by one iteration, whose reads see
+/// only what earlier nests wrote. A nest that adds (`+=`, a min/max scan)
+/// runs serially.
+struct ForwardNest {
+  const Nest* nest = nullptr;
+  bool parallel = false;
+};
+
+/// The loops of a forward form of one kernel.
+struct ForwardPlan {
+  const Kernel* kernel = nullptr;
+  std::vector<ForwardNest> nests;
+};
+
+/// Phase 5 for the forward forms: the loops of `k` (which must outlive the
+/// result).
+ForwardPlan plan_forward(const Kernel& k);
+
 } // namespace dpgen

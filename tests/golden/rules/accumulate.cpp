@@ -137,9 +137,14 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:     const bool parallel_ok = (hi_i - lo_i) >= 8192;
 // CPP-NEXT:     for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:       interior(c_i);
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     }
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
@@ -175,9 +180,14 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:     const bool parallel_ok = (hi_i - lo_i) >= 8192;
 // CPP-NEXT:     for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:       interior(c_i);
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     }
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }

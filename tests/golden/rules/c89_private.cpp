@@ -160,9 +160,14 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:     const bool parallel_ok = (hi_i - lo_i) >= 8192;
 // CPP-NEXT:     for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:       interior(c_i);
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:     }
 // CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }

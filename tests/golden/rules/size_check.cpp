@@ -99,13 +99,12 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:     std::ptrdiff_t in_hi_i = std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n, hi_i));
 // CPP-NEXT:     // threads if the cells are many and distinct memory (mixed-radix test)
 // CPP-NEXT:     const bool parallel_ok = (hi_j - lo_j) * (hi_i - lo_i) >= 8192 && ((hi_i - lo_i) - 1) * 1 < 64;
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j) {
+// CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
-// CPP-NEXT:         continue;
+// CPP-NEXT:         return;
 // CPP-NEXT:       }
 // CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
@@ -113,6 +112,14 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:         interior(c_j, c_i);
 // CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
+// CPP-NEXT:     };
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
 // CPP-NEXT:     }
 // CPP-NEXT:   }
 // CPP-NEXT: }

@@ -52,14 +52,21 @@ DPGEN_KERNEL void tangent(DPGEN_IN const double* u, DPGEN_IN const double* k, DP
 // CPP-NEXT:                      double* v, double* v_dot, double* energy, double* energy_dot, int n) {
 // CPP-NEXT:   // loop nest 1: each store, then its tangent
 // CPP-NEXT:   {
-// CPP-NEXT: #pragma omp parallel for if ((static_cast<std::ptrdiff_t>(n - 1) - 1) >= 8192)
-// CPP-NEXT:     for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i) {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t i) {
 // CPP-NEXT:       const double flux = dpgen_min(k[i], 1.0) * (u[i + 1] - u[i - 1]);
 // CPP-NEXT:       const double exp_v0 = std::exp(flux);
 // CPP-NEXT:       const double flux_dot = (u[i + 1] - u[i - 1]) * (k[i] <= 1.0 ? k_dot[i] : 0.0) +
 // CPP-NEXT:                               dpgen_min(k[i], 1.0) * (u_dot[i + 1] - u_dot[i - 1]);
 // CPP-NEXT:       v[i] = std::log(1.0 + std::exp(flux)) - u[i];
 // CPP-NEXT:       v_dot[i] = exp_v0 * flux_dot / (1.0 + std::exp(flux)) - u_dot[i];
+// CPP-NEXT:     };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n - 1) - 1) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
 // CPP-NEXT:     }
 // CPP-NEXT:   }
 // CPP-NEXT:   // loop nest 2: each store, then its tangent

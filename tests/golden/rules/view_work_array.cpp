@@ -128,13 +128,12 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // threads if the cells are many and distinct memory (mixed-radix test)
 // CPP-NEXT:     const bool parallel_ok =
 // CPP-NEXT:         (hi_j - lo_j) * (hi_i - lo_i) >= 8192 && ((hi_i - lo_i) - 1) * 1 < dpgen_rows_u;
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j) {
+// CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
-// CPP-NEXT:         continue;
+// CPP-NEXT:         return;
 // CPP-NEXT:       }
 // CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
@@ -142,6 +141,14 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         interior(c_j, c_i);
 // CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
+// CPP-NEXT:     };
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
 // CPP-NEXT:     }
 // CPP-NEXT:   }
 // CPP-NEXT: }
@@ -200,13 +207,12 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // threads if the cells are many and distinct memory (mixed-radix test)
 // CPP-NEXT:     const bool parallel_ok =
 // CPP-NEXT:         (hi_j - lo_j) * (hi_i - lo_i) >= 8192 && ((hi_i - lo_i) - 1) * 1 < dpgen_rows_u;
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j) {
+// CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
-// CPP-NEXT:         continue;
+// CPP-NEXT:         return;
 // CPP-NEXT:       }
 // CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
@@ -214,6 +220,14 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         interior(c_j, c_i);
 // CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
+// CPP-NEXT:     };
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
 // CPP-NEXT:     }
 // CPP-NEXT:   }
 // CPP-NEXT:   // flux_adj(c_j, c_i): each cell gathers the reads of flux made by the iterations (j, i)
@@ -278,13 +292,12 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // threads if the cells are many and distinct memory (mixed-radix test)
 // CPP-NEXT:     const bool parallel_ok =
 // CPP-NEXT:         (hi_j - lo_j) * (hi_i - lo_i) >= 8192 && ((hi_i - lo_i) - 1) * 1 < dpgen_rows_flux;
-// CPP-NEXT: #pragma omp parallel for if (parallel_ok)
-// CPP-NEXT:     for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j) {
+// CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
-// CPP-NEXT:         continue;
+// CPP-NEXT:         return;
 // CPP-NEXT:       }
 // CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
@@ -292,6 +305,14 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         interior(c_j, c_i);
 // CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:         edge(c_j, c_i);
+// CPP-NEXT:     };
+// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t c_j = lo_j; c_j < hi_j; ++c_j)
+// CPP-NEXT:         row_j(c_j);
 // CPP-NEXT:     }
 // CPP-NEXT:   }
 // CPP-NEXT: }
