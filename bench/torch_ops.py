@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Forward + backward of a dpgen op (generated kernel + generated adjoint) against the same
-stencil written with torch tensor slicing, 1e6 cells, float32 and float64, 1 and 2 threads,
+stencil written with torch tensor slicing, at sizes 64² to 2048² (--sides), float32 and float64, 1 and 2 threads,
 measured side by side in one run; prints a Markdown table (and writes it to --out).
 
   cmake -S . -B build -DDPGEN_WITH_TORCH=ON && cmake --build build -j2
@@ -33,8 +33,8 @@ def laplacian_torch(a, h):
     return out
 
 
-def cases(dtype):
-    n, side = 1_000_000, 1000
+def cases(dtype, side):
+    n = side * side
     d = torch.rand(n, dtype=dtype)
     u = torch.rand(n, dtype=dtype) - 0.5
     a = torch.rand(side, side, dtype=dtype)
@@ -44,7 +44,7 @@ def cases(dtype):
     return [
         ("upwind (1D, periodic)", n, (d, u),
          lambda d, u: up_op(d, u, n, 0.1, 1.0), lambda d, u: upwind_torch(d, u, 0.1, 1.0)),
-        ("laplacian2d (1000²)", side * side, (a,),
+        (f"laplacian2d ({side}²)", side * side, (a,),
          lambda a: lap_op(a, side, side, 0.5), lambda a: laplacian_torch(a, 0.5)),
     ]
 
@@ -66,10 +66,12 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("--reps", type=int, default=15)
     p.add_argument("--out", default="")
+    p.add_argument("--sides", type=int, nargs="+", default=[64, 256, 1024, 2048],
+                   help="grid sides: the upwind op gets side² cells, the Laplacian side x side")
     a = p.parse_args()
     rows = []
     for dtype in (torch.float32, torch.float64):
-        for name, cells, inputs, op, ref in cases(dtype):
+        for name, cells, inputs, op, ref in (c for side in a.sides for c in cases(dtype, side)):
             # the same result first: the comparison is of equal work
             y_op, y_ref = op(*inputs), ref(*inputs)
             tol = 1e-4 if dtype == torch.float32 else 1e-10
