@@ -194,11 +194,13 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
 
 bool has_parallel_forward(const Kernel& k) {
   // (the sums of accumulators would need buffers the kernel does not
-  // allocate; in-place arrays, views and objects are not torch arguments)
-  if (!k.hidden.empty() || has_inout(k) || has_vectors(k))
+  // allocate; in-place arrays, views, objects and the rest are no torch
+  // arguments)
+  if (!k.hidden.empty() || has_inout(k) || has_vectors(k) || !k.member_class.empty())
     return false;
   for (const auto& p : k.params)
-    if (p.view || p.object || p.global || p.row_pointers || !p.twin_of.empty())
+    if (p.view || p.object || p.global || p.row_pointers || p.scalar_ref || p.tag ||
+        !p.twin_of.empty())
       return false;
   const ForwardPlan plan = plan_forward(k);
   return std::any_of(plan.nests.begin(), plan.nests.end(),
@@ -206,7 +208,7 @@ bool has_parallel_forward(const Kernel& k) {
 }
 
 void emit_parallel_forward(Code& code, const Kernel& k, const std::string& name) {
-  TangentPlan tp = plan_tangent(k);
+  const ForwardPlan plan = plan_forward(k);
   std::vector<std::string> ps;
   for (const auto& p : k.params)
     ps.push_back(p.kind == ParamKind::Scalar
@@ -218,11 +220,13 @@ void emit_parallel_forward(Code& code, const Kernel& k, const std::string& name)
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
   define_kernel_locals(code, k);
   emit_size_checks(code, k, k.name);
-  Hoister hoist(k, &tp.locals.taken);
+  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
   Code nests(code.depth());
-  for (size_t n = 0; n < k.nests.size(); ++n) {
-    nests.line("// loop nest {}{}", n + 1, tp.loops.nests[n].parallel ? "" : " (serial: it adds)");
-    emit_forward_nest(nests, k, tp.loops.nests[n], hoist, nullptr, ForwardOptions{});
+  for (size_t n = 0; n < plan.nests.size(); ++n) {
+    const ForwardNest& f = plan.nests[n];
+    nests.line("// loop nest {}{}", n + 1,
+               f.parallel || f.nest->loops.empty() ? "" : " (serial: a store adds)");
+    emit_forward_nest(nests, k, f, hoist, nullptr, ForwardOptions{});
   }
   hoist.emit(code);
   code.raw(nests.str());
