@@ -6,6 +6,7 @@
 
 #include "emit.hpp"
 #include "emit_checked.hpp"
+#include "emit_tangent.hpp"
 
 #include <algorithm>
 #include "emit_util.hpp"
@@ -55,6 +56,11 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
           "/// for the elements the kernel touches throw std::invalid_argument.\n"
           "{};\n",
           checked_signature(*p->kernel)));
+    if (has_parallel_forward(*p->kernel))
+      h.raw(fmt::format("/// {} on every thread where its loop nests set each element once,\n"
+                        "/// printed from its IR (arrays flat): the same values, bit for bit.\n"
+                        "{};\n",
+                        p->kernel->name, parallel_forward_signature(*p->kernel)));
     if (p->kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
     const Kernel& k = *p->kernel;
@@ -168,6 +174,12 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
     c.raw("\n");
     if (has_checked_entry(*p->kernel)) {
       emit_checked_entry(c, *p->kernel);
+      c.raw("\n");
+    }
+    if (has_parallel_forward(*p->kernel)) {
+      open_namespaces(c, *p->kernel);
+      emit_parallel_forward(c, *p->kernel);
+      close_namespaces(c, *p->kernel);
       c.raw("\n");
     }
   }

@@ -196,10 +196,11 @@ bool has_parallel_forward(const Kernel& k) {
   // (the sums of accumulators would need buffers the kernel does not
   // allocate; in-place arrays, views, objects and the rest are no torch
   // arguments)
-  if (!k.hidden.empty() || has_inout(k) || has_vectors(k) || !k.member_class.empty())
+  if (!k.hidden.empty() || has_inout(k) || has_vectors(k) || !k.member_class.empty() ||
+      !k.template_name.empty())
     return false;
   for (const auto& p : k.params)
-    if (p.view || p.object || p.global || p.row_pointers || p.scalar_ref || p.tag ||
+    if (p.view || p.object || p.global || p.row_pointers || p.scalar_ref || p.returned || p.tag ||
         !p.twin_of.empty())
       return false;
   const ForwardPlan plan = plan_forward(k);
@@ -207,17 +208,21 @@ bool has_parallel_forward(const Kernel& k) {
                      [](const ForwardNest& n) { return n.parallel; });
 }
 
-void emit_parallel_forward(Code& code, const Kernel& k, const std::string& name) {
-  const ForwardPlan plan = plan_forward(k);
+std::string parallel_forward_signature(const Kernel& k) {
   std::vector<std::string> ps;
   for (const auto& p : k.params)
     ps.push_back(p.kind == ParamKind::Scalar
                      ? fmt::format("{} {}", p.spelling, p.name)
                      : array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
+  return fmt::format("void {}_parallel_forward({})", k.name, fmt::join(ps, ", "));
+}
+
+void emit_parallel_forward(Code& code, const Kernel& k) {
+  const ForwardPlan plan = plan_forward(k);
   code.line("// {} ({}:{}) printed from the IR, its nests that set each element once on every "
             "thread: the same stores in the same order per element, so the same results.",
             k.name, base_name(k.file), k.pos.line);
-  code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
+  code.open(parallel_forward_signature(k));
   define_kernel_locals(code, k);
   emit_size_checks(code, k, k.name);
   Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)

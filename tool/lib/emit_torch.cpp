@@ -340,13 +340,8 @@ void emit_kernel(Code& c, const Kernel& k) {
   const std::string guard = fmt::format("{}", fmt::join(gs, " && "));
 
   // The forward: the kernel's IR printed with its nests on every thread where each sets its
-  // elements once (emit_tangent.hpp), else the kernel as written.
+  // elements once (<kernel>_parallel_forward of the adjoint files), else the kernel as written.
   const bool parallel = has_parallel_forward(k);
-  const std::string forward_fn = k.fresh(k.name + "_parallel_forward");
-  if (parallel) {
-    emit_parallel_forward(c, k, forward_fn);
-    c.raw("\n");
-  }
   c.line("// torch.ops.dpgen.{}: forward = {} ({}:{}){}, backward = {}_adjoint.", k.name, k.name,
          base_name(k.file), k.pos.line, parallel ? ", its nests on every thread" : "", k.name);
   c.line("struct {} : public torch::autograd::Function<{}> {{", fn, fn);
@@ -389,7 +384,8 @@ void emit_kernel(Code& c, const Kernel& k) {
     call.push_back(!is_array(p) ? scalar_value(p, op)
                    : parallel   ? fmt::format("{}.data_ptr<{}>()", p.name, p.elem_name)
                                 : pointer(p, p.name, p.kind != ParamKind::Out));
-  c.line("{}({});", parallel ? forward_fn : qualified(k, k.name), fmt::join(call, ", "));
+  c.line("{}({});", qualified(k, parallel ? k.name + "_parallel_forward" : k.name),
+         fmt::join(call, ", "));
   std::vector<std::string> saved;
   for (const Param* p : args)
     if (is_array(*p))
@@ -629,28 +625,16 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
         "// One torch::autograd::Function per kernel: forward checks the arguments (CPU, the\n"
         "// kernel's dtype, contiguous, large enough for the largest index the loops reach),\n"
         "// allocates the outputs and calls the kernel on the tensors' data (a kernel with a nest\n"
-        "// that sets each element once: its IR printed here with that nest on every thread,\n"
-        "// the same stores per element as the kernel's); backward calls the generated adjoint\n"
+        "// that sets each element once: <kernel>_parallel_forward, its IR printed with that\n"
+        "// nest on every thread, the same values); backward calls the generated adjoint\n"
         "// with zero-filled input adjoints. Registered with\n"
         "// TORCH_LIBRARY_FRAGMENT(dpgen, m), so several generated files share the namespace.\n");
   c.raw(fmt::format("#include \"{}_torch.hpp\"\n\n#include \"{}_adjoint.hpp\"\n#include "
                     "\"{}_kernels.hpp\"\n#include \"dpgen/torch.hpp\"\n\n#include "
                     "<torch/library.h>\n\n",
                     stem, stem, stem));
-  // (the parallel forwards: math, and the size checks' exceptions)
-  const bool forwards = std::any_of(plans.begin(), plans.end(), [](const AdjointPlan& p) {
-    return has_parallel_forward(*p.kernel);
-  });
-  std::set<std::string> headers = {"algorithm", "cstdint", "vector"};
-  if (forwards)
-    headers.insert({"cmath", "cstddef", "stdexcept", "string"});
-  for (const auto& h : headers)
-    c.raw(fmt::format("#include <{}>\n", h));
-  if (forwards)
-    c.raw(std::string("\n") + kQuietUnused);
+  c.raw("#include <algorithm>\n#include <cstdint>\n#include <vector>\n");
   c.raw("\nnamespace {\n\n");
-  if (forwards)
-    c.raw(std::string(kMinMaxHelpers) + "\n");
   for (const auto& plan : plans)
     emit_kernel(c, *plan.kernel);
   c.raw("} // namespace\n\nnamespace dpgen::ops {\n\n");

@@ -179,3 +179,40 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:                                  const double* v_adj, size_t v_adj_size, int n) {
 // CPP-NEXT:   c89_private_adjoint(u, u_adj, v_adj, n);
 // CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // c89_private (c89_private.cpp:9) printed from the IR, its nests that set each element once on
+// CPP-NEXT: // every thread: the same stores in the same order per element, so the same results.
+// CPP-NEXT: void c89_private_parallel_forward(const double* u, double* v, int n) {
+// CPP-NEXT:   const double w_0 = 0.25;
+// CPP-NEXT:   const double w_1 = 0.5;
+// CPP-NEXT:   const double w_2 = 0.25;
+// CPP-NEXT:   // loop nest 1
+// CPP-NEXT:   {
+// CPP-NEXT:     if (!(n < 3)) {
+// CPP-NEXT:       v[0] = u[0];
+// CPP-NEXT:     }
+// CPP-NEXT:     if (!(n < 3)) {
+// CPP-NEXT:       v[n - 1] = u[n - 1];
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT:   // loop nest 2
+// CPP-NEXT:   {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t i) {
+// CPP-NEXT:       if (!(n < 3)) {
+// CPP-NEXT:         const double s = 0.0;
+// CPP-NEXT:         const double s_1 = s + w_0 * u[i - 1];
+// CPP-NEXT:         const double s_2 = s_1 + w_1 * u[i - 1 + 1];
+// CPP-NEXT:         const double s_3 = s_2 + w_2 * u[i - 1 + 2];
+// CPP-NEXT:         v[i] = s_3;
+// CPP-NEXT:       }
+// CPP-NEXT:     };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n - 1) - 1) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }

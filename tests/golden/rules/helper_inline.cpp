@@ -215,3 +215,24 @@ DPGEN_KERNEL void helper_inline(DPGEN_IN const double* q, DPGEN_OUT double* slop
 // CPP-NEXT:   }
 // CPP-NEXT:   helper_inline_adjoint(q, q_adj, slope_adj, n);
 // CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // helper_inline (helper_inline.cpp:15) printed from the IR, its nests that set each element once on
+// CPP-NEXT: // every thread: the same stores in the same order per element, so the same results.
+// CPP-NEXT: void helper_inline_parallel_forward(const double* q, double* slope, int n) {
+// CPP-NEXT:   // loop nest 1
+// CPP-NEXT:   {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t i) {
+// CPP-NEXT:       const double a = q[i] - q[i - 1];
+// CPP-NEXT:       const double b = q[i + 1] - q[i];
+// CPP-NEXT:       slope[i] = a * b <= 0.0 ? 0.0 : std::abs(a) < std::abs(b) ? a : b;
+// CPP-NEXT:     };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n - 1) - 1) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }

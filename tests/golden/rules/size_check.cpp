@@ -131,3 +131,33 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:   size_check_adjoint_flat(reinterpret_cast<const double*>(a), reinterpret_cast<double*>(a_adj),
 // CPP-NEXT:                           reinterpret_cast<const double*>(b_adj), n, s);
 // CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // size_check (size_check.cpp:9) printed from the IR, its nests that set each element once on every
+// CPP-NEXT: // thread: the same stores in the same order per element, so the same results.
+// CPP-NEXT: void size_check_parallel_forward(const double* a, double* b, int n, double s) {
+// CPP-NEXT:   // Run-time check (not provable from the kernel alone): output 'b' is written once per element:
+// CPP-NEXT:   // its index steps by '64' where the faster counters reach 'n - 1'.
+// CPP-NEXT:   if ((0) < (n) && !((-n + 64) >= 0)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("size_check.cpp:13: size_check: these sizes break the rule that output 'b' is "
+// CPP-NEXT:                     "written once per element: its index steps by '64' where the faster counters "
+// CPP-NEXT:                     "reach 'n - 1', so the adjoint would be wrong (") +
+// CPP-NEXT:         "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   // loop nest 1
+// CPP-NEXT:   {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t j) {
+// CPP-NEXT:       for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n); ++i) {
+// CPP-NEXT:         b[j * 64 + i] = s * a[j * 64 + i] * a[j * 64 + i];
+// CPP-NEXT:       }
+// CPP-NEXT:     };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n) - 0) * (static_cast<std::ptrdiff_t>(n) - 0) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t>(n); ++j)
+// CPP-NEXT:         iteration(j);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t>(n); ++j)
+// CPP-NEXT:         iteration(j);
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }

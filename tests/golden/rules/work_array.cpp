@@ -372,3 +372,34 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:   }
 // CPP-NEXT:   work_array_adjoint(q, q_adj, flux_adj, q_new_adj, n, c);
 // CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // work_array (work_array.cpp:9) printed from the IR, its nests that set each element once on every
+// CPP-NEXT: // thread: the same stores in the same order per element, so the same results.
+// CPP-NEXT: void work_array_parallel_forward(const double* q, double* flux, double* q_new, int n, double c) {
+// CPP-NEXT:   // loop nest 1
+// CPP-NEXT:   {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t i) {
+// CPP-NEXT:       flux[i] = 0.5 * (q[i] * q[i] + q[i - 1] * q[i - 1]);
+// CPP-NEXT:     };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n) - 1) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT:   // loop nest 2
+// CPP-NEXT:   {
+// CPP-NEXT:     auto iteration = [&](const std::ptrdiff_t i) { q_new[i] = q[i] - c * (flux[i + 1] - flux[i]); };
+// CPP-NEXT:     if ((static_cast<std::ptrdiff_t>(n - 1) - 1) >= 8192) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     } else {
+// CPP-NEXT:       for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i)
+// CPP-NEXT:         iteration(i);
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }

@@ -2,7 +2,10 @@
 // periodic axes) built from dpgen kernels (kernels/flow2d.cpp): semi-Lagrangian transport of a
 // marker and of the velocity, a constant marker inflow, Boussinesq buoyancy, a body force field,
 // and a pressure projection solved by multigrid-preconditioned CG whose gradient comes from the
-// implicit-function rule. Link dpgen::kernels to use this header.
+// implicit-function rule. Link dpgen::kernels to use this header. The forward steps call the
+// kernels' parallel forms (<kernel>_parallel_forward of the generated adjoint files: each kernel
+// printed from its IR with its loops on every thread, its values bit for bit); the pressure
+// operator stays the kernel as written, which multigrid runs by row strips.
 #pragma once
 
 #include "dpgen/implicit_solve.hpp"
@@ -135,9 +138,10 @@ public:
     marker(next) = s1_;
     u(next).setZero();
     v(next).setZero();
-    flow_subtract_gradient_u(u1_.data(), p_.data(), next.data() + cells(), nx_, ny_, h_, px());
-    flow_subtract_gradient_v(v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_, h_,
-                             py());
+    flow_subtract_gradient_u_parallel_forward(u1_.data(), p_.data(), next.data() + cells(), nx_,
+                                              ny_, h_, px());
+    flow_subtract_gradient_v_parallel_forward(
+        v1_.data(), p_.data(), next.data() + cells() + u_faces(), nx_, ny_, h_, py());
   }
 
   /// Adds (d step(state)/d state)^T next_adj into state_adj and (d step/d inflow)^T next_adj
@@ -235,8 +239,8 @@ public:
   /// The divergence of the velocity of a state (for checks: zero after a step).
   Eigen::VectorXd divergence(const Eigen::VectorXd& state) const {
     Eigen::VectorXd div(cells());
-    flow_divergence(state.data() + cells(), state.data() + cells() + u_faces(), div.data(), nx_,
-                    ny_, h_, px(), py());
+    flow_divergence_parallel_forward(state.data() + cells(), state.data() + cells() + u_faces(),
+                                     div.data(), nx_, ny_, h_, px(), py());
     return div;
   }
 
@@ -279,18 +283,21 @@ private:
     v1_.resize(v_faces());
     if (options_.marker_advection == MarkerAdvection::maccormack) {
       maccormack_intermediates(s, su, sv, dt_h);
-      flow_maccormack_marker(s, s_sl_.data(), s_rev_.data(), su, sv, inflow_.data(), s1_.data(),
-                             nx_, ny_, dt_h, px(), py());
+      flow_maccormack_marker_parallel_forward(s, s_sl_.data(), s_rev_.data(), su, sv,
+                                              inflow_.data(), s1_.data(), nx_, ny_, dt_h, px(),
+                                              py());
     } else {
-      flow_advect_marker(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h, px(), py());
+      flow_advect_marker_parallel_forward(s, su, sv, inflow_.data(), s1_.data(), nx_, ny_, dt_h,
+                                          px(), py());
     }
-    flow_advect_u(su, sv, ua_.data(), nx_, ny_, dt_h, px(), py(), zt());
-    flow_force_u(ua_.data(), force_.data(), u1_.data(), nx_, ny_, options_.dt, px());
-    flow_advect_v(su, sv, va_.data(), nx_, ny_, dt_h, px(), py(), zt());
-    flow_buoyancy(va_.data(), s1_.data(), force_.data() + cells(), v1_.data(), nx_, ny_,
-                  options_.dt * options_.buoyancy, options_.dt, py());
+    flow_advect_u_parallel_forward(su, sv, ua_.data(), nx_, ny_, dt_h, px(), py(), zt());
+    flow_force_u_parallel_forward(ua_.data(), force_.data(), u1_.data(), nx_, ny_, options_.dt,
+                                  px());
+    flow_advect_v_parallel_forward(su, sv, va_.data(), nx_, ny_, dt_h, px(), py(), zt());
+    flow_buoyancy_parallel_forward(va_.data(), s1_.data(), force_.data() + cells(), v1_.data(), nx_,
+                                   ny_, options_.dt * options_.buoyancy, options_.dt, py());
     rhs_.resize(cells());
-    flow_divergence(u1_.data(), v1_.data(), rhs_.data(), nx_, ny_, h_, px(), py());
+    flow_divergence_parallel_forward(u1_.data(), v1_.data(), rhs_.data(), nx_, ny_, h_, px(), py());
     rhs_ = -rhs_; // A p = -div
     // No initial guess: a recomputed step must give the same bits (checkpointing relies on it).
     forward_summary_ = conjugate_gradient(multigrid_.fine_operator(), rhs_, p_, forward_cg_);
@@ -300,9 +307,10 @@ private:
   void maccormack_intermediates(const double* s, const double* su, const double* sv, double dt_h) {
     s_sl_.resize(cells());
     s_rev_.resize(cells());
-    flow_advect_marker(s, su, sv, zeros_.data(), s_sl_.data(), nx_, ny_, dt_h, px(), py());
-    flow_advect_marker(s_sl_.data(), su, sv, zeros_.data(), s_rev_.data(), nx_, ny_, -dt_h, px(),
-                       py());
+    flow_advect_marker_parallel_forward(s, su, sv, zeros_.data(), s_sl_.data(), nx_, ny_, dt_h,
+                                        px(), py());
+    flow_advect_marker_parallel_forward(s_sl_.data(), su, sv, zeros_.data(), s_rev_.data(), nx_,
+                                        ny_, -dt_h, px(), py());
   }
 
   int nx_, ny_;
