@@ -14,6 +14,8 @@
 #include <doctest/doctest.h>
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <random>
@@ -97,5 +99,45 @@ TEST_CASE("parallel forward: the shipped kernels' values, bit for bit") {
           flow_divergence_parallel_forward(fu.data(), fv.data(), out, nx, ny, 0.5, periodic,
                                            1 - periodic);
         });
+  }
+}
+
+// The generated adjoints' parallel branch (above 8192 cells: `if (parallel_ok)`, the outer
+// loop of a 2D adjoint a lambda per row that returns early on an edge row) against the
+// forward, by the dot-product test <w, J v> = <J^T w, v> of the linear kernels, on 2 threads.
+TEST_CASE("adjoints above the threshold: dot-product test on 2 threads") {
+  const int nx = 192, ny = 160, n = nx * ny;
+  omp_set_num_threads(2);
+  const auto v = random_values(size_t(n), 11), v2 = random_values(size_t(n), 12),
+             w = random_values(size_t(n), 13), u = random_values(size_t(n), 14);
+  const auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+      s += a[i] * b[i];
+    return s;
+  };
+  const auto near = [](double a, double b) {
+    return std::fabs(a - b) <= 1e-12 * std::max(1.0, std::fabs(a));
+  };
+  std::vector<double> jv(size_t(n), 0.0), jtw(size_t(n), 0.0), jtw2(size_t(n), 0.0);
+  {
+    laplacian2d(v.data(), jv.data(), nx, ny, 0.5);
+    laplacian2d_adjoint(v.data(), jtw.data(), w.data(), nx, ny, 0.5);
+    CHECK(near(dot(w, jv), dot(jtw, v)));
+  }
+  {
+    std::fill(jv.begin(), jv.end(), 0.0);
+    std::fill(jtw.begin(), jtw.end(), 0.0);
+    divergence2d(v.data(), v2.data(), jv.data(), nx, ny, 0.5);
+    divergence2d_adjoint(v.data(), jtw.data(), v2.data(), jtw2.data(), w.data(), nx, ny, 0.5);
+    CHECK(near(dot(w, jv), dot(jtw, v) + dot(jtw2, v2)));
+  }
+  {
+    // upwind is linear in d for a fixed u: J_d v = upwind(v, u)
+    std::fill(jtw.begin(), jtw.end(), 0.0);
+    std::fill(jtw2.begin(), jtw2.end(), 0.0);
+    upwind_step(v.data(), u.data(), jv.data(), n, 0.3, 0.7);
+    upwind_step_adjoint(v.data(), jtw.data(), u.data(), jtw2.data(), w.data(), n, 0.3, 0.7);
+    CHECK(near(dot(w, jv), dot(jtw, v)));
   }
 }
