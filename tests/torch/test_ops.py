@@ -141,6 +141,27 @@ class KernelOps(unittest.TestCase):
         finally:
             torch.set_num_threads(threads)
 
+    def test_outputs_not_written_read_zero(self):
+        # An output the kernel writes element by element (0 .. numel - 1) is allocated without a
+        # zero fill; any other keeps it: a larger d_next than the n cells written, and
+        # laplacian2d's boundary. Freed NaN-filled memory of the same size first (small enough
+        # for the heap, which hands it out again), so that garbage would show.
+        n = 4096
+        d, u = torch.rand(n, dtype=D), torch.rand(n, dtype=D) - 0.5
+        for _ in range(3):
+            garbage = torch.full((n + 64,), float("nan"), dtype=D)
+            del garbage
+            out = torch.ops.dpgen.upwind_step(d, u, n, 0.1, 1.0, d_next_shape=[n + 64])
+            self.assertTrue(torch.equal(out[n:], torch.zeros(64, dtype=D)))
+            self.assertTrue(torch.equal(out[:n], torch.ops.dpgen.upwind_step(d, u, n, 0.1, 1.0)))
+            self.assertFalse(torch.isnan(out).any())
+            side = 48
+            garbage = torch.full((side, side), float("nan"), dtype=D)
+            del garbage
+            lap = torch.ops.dpgen.laplacian2d(torch.rand(side, side, dtype=D), side, side, 0.5)
+            self.assertTrue(torch.equal(lap[0], torch.zeros(side, dtype=D)))
+            self.assertTrue(torch.equal(lap[:, -1], torch.zeros(side, dtype=D)))
+
     def test_output_shape_argument(self):
         a = torch.rand(30, dtype=D)
         out = torch.ops.dpgen.laplacian2d(a, 6, 5, 1.0, out_shape=[5, 6])

@@ -325,6 +325,56 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
   c.line("}}");
 }
 
+// C++ for "the kernel writes each element 0 .. numel - 1 of output `p`" (`numel` a C++
+// expression), or "" where the generator cannot tell: then the output is zero-filled. The test
+// holds where the kernel has one store to `p`, `=` under no condition, in a nest whose every
+// counter moves its index affinely: the innermost with coefficient 1, each outer one with the
+// product of the inner loops' extents (row-major, no gap, no overlap). The elements written are
+// then base .. base + (product of the extents) - 1, each by one iteration; the run-time part
+// checks the extents are positive, base is 0, the count is numel and the kernel's guards hold.
+std::string writes_every_element(const Kernel& k, const Param& p, const std::string& guard,
+                                 const std::string& numel) {
+  const Nest* nest = nullptr;
+  const Store* store = nullptr;
+  for (const auto& n : k.nests)
+    for (const auto& s : n.stores)
+      if (s.array == p.name) {
+        if (store)
+          return ""; // (two stores: under complementary conditions, or overwriting)
+        nest = &n, store = &s;
+      }
+  if (!store || store->accumulate || !store->path.empty())
+    return "";
+  for (const auto& g : k.guards)
+    if (!params_only(g.cond))
+      return "";
+  auto index = to_poly(store->index);
+  if (!index)
+    return "";
+  Poly base = *index, inner_count = Poly::constant(1);
+  std::vector<std::string> conds;
+  if (!guard.empty())
+    conds.push_back(guard);
+  for (auto l = nest->loops.rbegin(); l != nest->loops.rend(); ++l) {
+    auto lo = to_poly(l->lo), hi = to_poly(l->hi);
+    const Poly c = index->coefficient(Sym::counter(l->var));
+    if (!lo || !hi || !(c == inner_count))
+      return "";
+    base = base.without(Sym::counter(l->var)) + c * *lo;
+    const Poly extent = *hi - *lo;
+    conds.push_back(fmt::format("({}) > 0", extent.code()));
+    inner_count = inner_count * extent;
+  }
+  if (base.mentions_any_counter())
+    return "";
+  if (base.is_constant() && base.constant_term() != 0)
+    return "";
+  if (!(base == Poly()))
+    conds.push_back(fmt::format("({}) == 0", base.code()));
+  conds.push_back(fmt::format("({}) == {}", inner_count.code(), numel));
+  return fmt::format("{}", fmt::join(conds, " && "));
+}
+
 void emit_kernel(Code& c, const Kernel& k) {
   const auto outs = outputs(k);
   const auto args = arguments(k);
@@ -363,19 +413,30 @@ void emit_kernel(Code& c, const Kernel& k) {
     if (is_array(*p))
       c.line("dpgen::torch_ops::check_array<{}>({}, {}, \"{}\", \"{}\");", p->elem_name, p->name,
              op, p->name, p->elem_name);
-  for (const Param* p : outs) {
-    c.line("// Output '{}': shape {}, by default that of '{}'.", p->name, shape_name(k, *p),
-           first->name);
-    c.line("torch::Tensor {} = dpgen::torch_ops::new_output(dpgen::torch_ops::output_shape({}, "
-           "{}, {}, \"{}\"), {});",
-           p->name, shape_name(k, *p), first->name, op, p->name, first->name);
-    if (p->elem_name != first->elem_name)
-      c.line("{} = {}.to(dpgen::torch_ops::dtype_of<{}>());", p->name, p->name, p->elem_name);
-  }
   // Kernel-level locals (sizes derived from the size arguments: `const int m = n - 1;`), which
   // the extents below may mention; none reads an array (emit_torch_file rejects that).
   for (const auto& l : k.kernel_locals)
     c.line("[[maybe_unused]] const {} {} = {};", l->type_name, l->name, print(l->def));
+  for (const Param* p : outs) {
+    c.line("// Output '{}': shape {}, by default that of '{}'.", p->name, shape_name(k, *p),
+           first->name);
+    const std::string shape = k.fresh(p->name + "_sizes");
+    c.line("const std::vector<std::int64_t> {} = dpgen::torch_ops::output_shape({}, {}, {}, "
+           "\"{}\");",
+           shape, shape_name(k, *p), first->name, op, p->name);
+    const std::string all = writes_every_element(
+        k, *p, guard, fmt::format("dpgen::torch_ops::numel_of({})", shape));
+    if (all.empty()) {
+      c.line("torch::Tensor {} = dpgen::torch_ops::new_output({}, {});", p->name, shape,
+             first->name);
+    } else {
+      c.line("// (not zero-filled where the kernel writes each of its elements)");
+      c.line("torch::Tensor {} = dpgen::torch_ops::new_output({}, {}, {});", p->name, shape,
+             first->name, all);
+    }
+    if (p->elem_name != first->elem_name)
+      c.line("{} = {}.to(dpgen::torch_ops::dtype_of<{}>());", p->name, p->name, p->elem_name);
+  }
   for (const auto& p : k.params)
     if (is_array(p))
       emit_extent_check(c, k, p, m, guard);

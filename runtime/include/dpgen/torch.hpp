@@ -66,10 +66,22 @@ inline std::vector<std::int64_t> output_shape(const c10::optional<std::vector<st
   return *given;
 }
 
+/// The number of elements of a tensor of that shape.
+inline std::int64_t numel_of(const std::vector<std::int64_t>& shape) {
+  std::int64_t n = 1;
+  for (std::int64_t s : shape)
+    n *= s;
+  return n;
+}
+
 /// A new output, zero-filled (elements the kernel does not write read as 0; `+=` outputs start
-/// from 0).
-inline at::Tensor new_output(const std::vector<std::int64_t>& shape, const at::Tensor& like) {
-  return at::zeros(shape, like.options().requires_grad(false));
+/// from 0), or left as allocated where `writes_every_element` (the generated op's test, from
+/// the loop bounds and the store's index, that the kernel writes each element once): a fresh
+/// zero fill costs as much as the kernel itself at large sizes.
+inline at::Tensor new_output(const std::vector<std::int64_t>& shape, const at::Tensor& like,
+                             bool writes_every_element = false) {
+  const at::TensorOptions options = like.options().requires_grad(false);
+  return writes_every_element ? at::empty(shape, options) : at::zeros(shape, options);
 }
 
 /// The seed of an output's adjoint in backward: the incoming gradient, contiguous (a copy only
