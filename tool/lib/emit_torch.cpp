@@ -424,8 +424,8 @@ void emit_kernel(Code& c, const Kernel& k) {
     c.line("const std::vector<std::int64_t> {} = dpgen::torch_ops::output_shape({}, {}, {}, "
            "\"{}\");",
            shape, shape_name(k, *p), first->name, op, p->name);
-    const std::string all = writes_every_element(
-        k, *p, guard, fmt::format("dpgen::torch_ops::numel_of({})", shape));
+    const std::string all =
+        writes_every_element(k, *p, guard, fmt::format("dpgen::torch_ops::numel_of({})", shape));
     if (all.empty()) {
       c.line("torch::Tensor {} = dpgen::torch_ops::new_output({}, {});", p->name, shape,
              first->name);
