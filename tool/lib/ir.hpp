@@ -354,7 +354,7 @@ struct Store {
   /// rule does not apply (a reduction or a flux accumulation is fine), but a
   /// later `=` must not overwrite it.
   bool accumulate = false;
-  /// A min/max scan (`m = std::max(m, e)` in a loop, lower_loop.cpp): with
+  /// A min/max scan (`m = std::max(m, e)` in a loop, lower_reduce.cpp): with
   /// `accumulate`, +1 stores max(element, value), -1 min(element, value).
   /// Its value is a constant to every derivative (dpgen_nograd): the
   /// reduction's derivative comes from the separate sums lowering builds.

@@ -103,7 +103,7 @@ const std::vector<MathFn> kMath = {
       }}},
     // piecewise constant: zero almost everywhere
     // The value of its argument, as a constant to derivatives (a stop-gradient:
-    // the min/max reductions' scans and tie counts, lower_loop.cpp). Printed as
+    // the min/max reductions' scans and tie counts, lower_reduce.cpp). Printed as
     // a parenthesized argument.
     {"dpgen_nograd", {}, 1, "", true, {}, nullptr},
     {"floor", {}, 1, "std::floor", true, {}, nullptr},
