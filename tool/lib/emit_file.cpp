@@ -6,7 +6,7 @@
 
 #include "emit.hpp"
 #include "emit_checked.hpp"
-#include "emit_tangent.hpp"
+#include "emit_forward.hpp"
 
 #include <algorithm>
 #include "emit_util.hpp"

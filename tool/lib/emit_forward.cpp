@@ -158,17 +158,62 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
             }());
   code.open(fmt::format("void {}({})", name, fmt::join(ps, ", ")));
   define_kernel_locals(code, k);
-  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
-  Code nests(code.depth());
   // serial, the in-place arrays' new values to their buffers
-  const ForwardPlan plan = plan_forward(k);
   ForwardOptions serial;
   serial.threads = false;
   serial.in_place = false;
-  for (const auto& n : plan.nests)
-    emit_forward_nest(nests, k, n, hoist, nullptr, serial);
+  emit_forward_nests(code, k, serial, false);
+  code.close();
+}
+
+void emit_forward_nests(Code& code, const Kernel& k, const ForwardOptions& options, bool comments) {
+  const ForwardPlan plan = plan_forward(k);
+  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
+  Code nests(code.depth());
+  for (size_t n = 0; n < plan.nests.size(); ++n) {
+    const ForwardNest& f = plan.nests[n];
+    if (comments)
+      nests.line("// loop nest {}{}", n + 1,
+                 f.parallel || f.nest->loops.empty() ? "" : " (serial: a store adds)");
+    emit_forward_nest(nests, k, f, hoist, nullptr, options);
+  }
   hoist.emit(code);
   code.raw(nests.str());
+}
+
+bool has_parallel_forward(const Kernel& k) {
+  // (the sums of accumulators would need buffers the kernel does not
+  // allocate; in-place arrays, views, objects and the rest are no torch
+  // arguments)
+  if (!k.hidden.empty() || has_inout(k) || has_vectors(k) || !k.member_class.empty() ||
+      !k.template_name.empty())
+    return false;
+  for (const auto& p : k.params)
+    if (p.view || p.object || p.global || p.row_pointers || p.scalar_ref || p.returned || p.tag ||
+        !p.twin_of.empty())
+      return false;
+  const ForwardPlan plan = plan_forward(k);
+  return std::any_of(plan.nests.begin(), plan.nests.end(),
+                     [](const ForwardNest& n) { return n.parallel; });
+}
+
+std::string parallel_forward_signature(const Kernel& k) {
+  std::vector<std::string> ps;
+  for (const auto& p : k.params)
+    ps.push_back(p.kind == ParamKind::Scalar
+                     ? fmt::format("{} {}", p.spelling, p.name)
+                     : array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
+  return fmt::format("void {}_parallel_forward({})", k.name, fmt::join(ps, ", "));
+}
+
+void emit_parallel_forward(Code& code, const Kernel& k) {
+  code.line("// {} ({}:{}) printed from the IR, its nests that set each element once on every "
+            "thread: the same stores in the same order per element, so the same results.",
+            k.name, base_name(k.file), k.pos.line);
+  code.open(parallel_forward_signature(k));
+  define_kernel_locals(code, k);
+  emit_size_checks(code, k, k.name);
+  emit_forward_nests(code, k, ForwardOptions{}, true);
   code.close();
 }
 

@@ -43,4 +43,23 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoi
 /// `dpgen::ViewBuffer<...>&`.
 void emit_recompute(Code& code, const Kernel& k, const std::string& name);
 
+/// Every nest of `k` (each printed by emit_forward_nest, the loop-invariant subexpressions
+/// before them), each under a `// loop nest <n>` comment if `comments`.
+void emit_forward_nests(Code& code, const Kernel& k, const ForwardOptions& options, bool comments);
+
+/// Whether `k` has a parallel forward (emit_parallel_forward): some nest runs on every
+/// thread (loop_plan.hpp: ForwardNest::parallel), and the kernel has plain arrays only and no
+/// accumulator (whose sums the forward would have to allocate).
+bool has_parallel_forward(const Kernel& k);
+
+/// `void <kernel>_parallel_forward(<the kernel's parameters, arrays flat>)`.
+std::string parallel_forward_signature(const Kernel& k);
+
+/// Its definition: the kernel printed from its IR in its own loops, the outermost loop of each
+/// nest that sets every element once on every thread (OpenMP). Each element gets the same
+/// stores in the same order as in the kernel, so the results are the kernel's, bit for bit
+/// (where the compiler contracts both alike: no `-ffp-contract=fast` differences). In the
+/// adjoint files (emit_file.cpp), for C++ callers and the torch ops' forward.
+void emit_parallel_forward(Code& code, const Kernel& k);
+
 } // namespace dpgen

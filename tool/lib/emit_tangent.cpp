@@ -1,9 +1,8 @@
-// Emit the forward forms (phase 6): the kernel again, printed from the IR in its own loops as
-// the forward plan (loop_plan.hpp: plan_forward) gives them, parallel where every element is
-// written once. The tangent (--tangent) puts the directional derivative of every store next to
-// it (forward mode, a Jacobian-vector product): no index is inverted, each iteration computes
-// its own outputs' tangents from the tangents of what it reads. The parallel forward (the torch
-// ops' forward) is the stores alone.
+// Emit tangents (phase 6, --tangent): the forward kernel again, printed from the IR by the
+// forward forms' printer (emit_forward.hpp) in the kernel's own loops, with the directional
+// derivative of every store next to it (forward mode, a Jacobian-vector product). No index is
+// inverted: each iteration computes its own outputs' tangents from the tangents of what it
+// reads, so the loops are the kernel's own, parallel where every element is written once.
 #include "emit_tangent.hpp"
 
 #include "ir_walk.hpp"
@@ -191,52 +190,6 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
 }
 
 } // namespace
-
-bool has_parallel_forward(const Kernel& k) {
-  // (the sums of accumulators would need buffers the kernel does not
-  // allocate; in-place arrays, views, objects and the rest are no torch
-  // arguments)
-  if (!k.hidden.empty() || has_inout(k) || has_vectors(k) || !k.member_class.empty() ||
-      !k.template_name.empty())
-    return false;
-  for (const auto& p : k.params)
-    if (p.view || p.object || p.global || p.row_pointers || p.scalar_ref || p.returned || p.tag ||
-        !p.twin_of.empty())
-      return false;
-  const ForwardPlan plan = plan_forward(k);
-  return std::any_of(plan.nests.begin(), plan.nests.end(),
-                     [](const ForwardNest& n) { return n.parallel; });
-}
-
-std::string parallel_forward_signature(const Kernel& k) {
-  std::vector<std::string> ps;
-  for (const auto& p : k.params)
-    ps.push_back(p.kind == ParamKind::Scalar
-                     ? fmt::format("{} {}", p.spelling, p.name)
-                     : array_declaration(p, p.kind != ParamKind::Out, p.name, false, k.c_linkage));
-  return fmt::format("void {}_parallel_forward({})", k.name, fmt::join(ps, ", "));
-}
-
-void emit_parallel_forward(Code& code, const Kernel& k) {
-  const ForwardPlan plan = plan_forward(k);
-  code.line("// {} ({}:{}) printed from the IR, its nests that set each element once on every "
-            "thread: the same stores in the same order per element, so the same results.",
-            k.name, base_name(k.file), k.pos.line);
-  code.open(parallel_forward_signature(k));
-  define_kernel_locals(code, k);
-  emit_size_checks(code, k, k.name);
-  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
-  Code nests(code.depth());
-  for (size_t n = 0; n < plan.nests.size(); ++n) {
-    const ForwardNest& f = plan.nests[n];
-    nests.line("// loop nest {}{}", n + 1,
-               f.parallel || f.nest->loops.empty() ? "" : " (serial: a store adds)");
-    emit_forward_nest(nests, k, f, hoist, nullptr, ForwardOptions{});
-  }
-  hoist.emit(code);
-  code.raw(nests.str());
-  code.close();
-}
 
 std::string tangent_signature(const Kernel& k) {
   return fmt::format("{} {}_tangent({})", k.return_type, k.name, tangent_params(k, true));

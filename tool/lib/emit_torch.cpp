@@ -9,7 +9,7 @@
 #include "emit_torch.hpp"
 
 #include "affine.hpp"
-#include "emit_tangent.hpp"
+#include "emit_forward.hpp"
 #include "emit_util.hpp"
 #include "ir_walk.hpp"
 #include "print.hpp"
@@ -331,9 +331,9 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
 // counter moves its index affinely: the innermost with coefficient 1, each outer one with the
 // product of the inner loops' extents (row-major, no gap, no overlap). The elements written are
 // then base .. base + (product of the extents) - 1, each by one iteration; the run-time part
-// checks the extents are positive, base is 0, the count is numel and the kernel's guards hold.
-std::string writes_every_element(const Kernel& k, const Param& p, const std::string& guard,
-                                 const std::string& numel) {
+// checks the extents are positive, base is 0 and the count is numel. (A kernel's guards, `if
+// (n < 3) return;`, are on the path of every store after them: such a store does not qualify.)
+std::string writes_every_element(const Kernel& k, const Param& p, const std::string& numel) {
   const Nest* nest = nullptr;
   const Store* store = nullptr;
   for (const auto& n : k.nests)
@@ -345,16 +345,11 @@ std::string writes_every_element(const Kernel& k, const Param& p, const std::str
       }
   if (!store || store->accumulate || !store->path.empty())
     return "";
-  for (const auto& g : k.guards)
-    if (!params_only(g.cond))
-      return "";
   auto index = to_poly(store->index);
   if (!index)
     return "";
   Poly base = *index, inner_count = Poly::constant(1);
   std::vector<std::string> conds;
-  if (!guard.empty())
-    conds.push_back(guard);
   for (auto l = nest->loops.rbegin(); l != nest->loops.rend(); ++l) {
     auto lo = to_poly(l->lo), hi = to_poly(l->hi);
     const Poly c = index->coefficient(Sym::counter(l->var));
@@ -425,7 +420,7 @@ void emit_kernel(Code& c, const Kernel& k) {
            "\"{}\");",
            shape, shape_name(k, *p), first->name, op, p->name);
     const std::string all =
-        writes_every_element(k, *p, guard, fmt::format("dpgen::torch_ops::numel_of({})", shape));
+        writes_every_element(k, *p, fmt::format("dpgen::torch_ops::numel_of({})", shape));
     if (all.empty()) {
       c.line("torch::Tensor {} = dpgen::torch_ops::new_output({}, {});", p->name, shape,
              first->name);
