@@ -113,7 +113,7 @@ class KernelOps(unittest.TestCase):
 
     def test_parallel_forward_is_the_kernel(self):
         # A kernel whose nests set each element once runs as its IR printed with those nests on
-        # every thread (emit_tangent.cpp: emit_parallel_forward), above 8192 iterations: the
+        # every thread (emit_forward.cpp: emit_parallel_forward), above 8192 iterations: the
         # kernel's values bit for bit, whatever the number of threads. Against the kernel as
         # written: upwind_rollout calls it (one step); against itself on one thread: the others.
         n, nx, ny = 1 << 15, 256, 192
