@@ -15,9 +15,70 @@
 
 namespace dpgen {
 
+namespace {
+
+// The functions the adjoint files hold for one kernel, each an output form of
+// the kernel: where it applies, its declaration in <stem>_adjoint.hpp (inside
+// the kernel's extern "C" block where it has one) and its definition.
+class KernelForm {
+public:
+  virtual ~KernelForm() = default;
+  virtual bool applies(const Kernel& k) const = 0;
+  virtual std::string declaration(const Kernel& k) const = 0;
+  virtual void define(Code& c, const LoopPlan& l) const = 0;
+};
+
+// <kernel>_adjoint (emit.cpp): the gather-form adjoint.
+class AdjointForm : public KernelForm {
+public:
+  bool applies(const Kernel&) const override { return true; }
+  std::string declaration(const Kernel& k) const override { return adjoint_signature(k) + ";\n"; }
+  void define(Code& c, const LoopPlan& l) const override { emit_kernel(c, l); }
+};
+
+// <kernel>_adjoint_checked (emit_checked.cpp): the adjoint with array sizes.
+class CheckedForm : public KernelForm {
+public:
+  bool applies(const Kernel& k) const override { return has_checked_entry(k); }
+  std::string declaration(const Kernel& k) const override {
+    return fmt::format(
+        "/// The same, each array followed by its number of elements: sizes too small\n"
+        "/// for the elements the kernel touches throw std::invalid_argument.\n"
+        "{};\n",
+        checked_signature(k));
+  }
+  void define(Code& c, const LoopPlan& l) const override {
+    emit_checked_entry(c, *l.adjoint->kernel);
+  }
+};
+
+// <kernel>_parallel_forward (emit_forward.cpp): the kernel on every thread.
+class ParallelForwardForm : public KernelForm {
+public:
+  bool applies(const Kernel& k) const override { return has_parallel_forward(k); }
+  std::string declaration(const Kernel& k) const override {
+    return fmt::format("/// {} on every thread where its loop nests set each element once,\n"
+                       "/// printed from its IR (arrays flat): the same values, bit for bit.\n"
+                       "{};\n",
+                       k.name, parallel_forward_signature(k));
+  }
+  void define(Code& c, const LoopPlan& l) const override {
+    const Kernel& k = *l.adjoint->kernel;
+    open_namespaces(c, k);
+    emit_parallel_forward(c, k);
+    close_namespaces(c, k);
+  }
+};
+
+} // namespace
+
 EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& source_name,
                       const std::string& stem) {
   EmittedFile out;
+  const AdjointForm adjoint;
+  const CheckedForm checked;
+  const ParallelForwardForm parallel;
+  const std::vector<const KernelForm*> forms = {&adjoint, &checked, &parallel};
   std::vector<const AdjointPlan*> plans;
   for (const auto& l : loops)
     plans.push_back(l.adjoint);
@@ -49,18 +110,9 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
                       p->kernel->pos.line));
     if (p->kernel->c_linkage) // a C kernel: callable from C
       h.raw("#ifdef __cplusplus\nextern \"C\" {\n#endif\n");
-    h.raw(adjoint_signature(*p->kernel) + ";\n");
-    if (has_checked_entry(*p->kernel))
-      h.raw(fmt::format(
-          "/// The same, each array followed by its number of elements: sizes too small\n"
-          "/// for the elements the kernel touches throw std::invalid_argument.\n"
-          "{};\n",
-          checked_signature(*p->kernel)));
-    if (has_parallel_forward(*p->kernel))
-      h.raw(fmt::format("/// {} on every thread where its loop nests set each element once,\n"
-                        "/// printed from its IR (arrays flat): the same values, bit for bit.\n"
-                        "{};\n",
-                        p->kernel->name, parallel_forward_signature(*p->kernel)));
+    for (const KernelForm* form : forms)
+      if (form->applies(*p->kernel))
+        h.raw(form->declaration(*p->kernel));
     if (p->kernel->c_linkage)
       h.raw("#ifdef __cplusplus\n}\n#endif\n");
     const Kernel& k = *p->kernel;
@@ -168,21 +220,12 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
         "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
         "#endif\n\n");
   c.raw(fmt::format("namespace {{\n{}}} // namespace\n\n", kMinMaxHelpers));
-  for (const auto& l : loops) {
-    const AdjointPlan* p = l.adjoint;
-    emit_kernel(c, l);
-    c.raw("\n");
-    if (has_checked_entry(*p->kernel)) {
-      emit_checked_entry(c, *p->kernel);
-      c.raw("\n");
-    }
-    if (has_parallel_forward(*p->kernel)) {
-      open_namespaces(c, *p->kernel);
-      emit_parallel_forward(c, *p->kernel);
-      close_namespaces(c, *p->kernel);
-      c.raw("\n");
-    }
-  }
+  for (const auto& l : loops)
+    for (const KernelForm* form : forms)
+      if (form->applies(*l.adjoint->kernel)) {
+        form->define(c, l);
+        c.raw("\n");
+      }
   out.source = formatted(c.str(), stem + "_adjoint.cpp");
   return out;
 }

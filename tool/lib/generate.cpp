@@ -5,12 +5,9 @@
 #include "generate.hpp"
 
 #include "derive.hpp"
-#include "emit_file.hpp"
-#include "emit_tangent.hpp"
-#include "emit_torch.hpp"
 #include "ir_text.hpp"
-#include "loop_plan.hpp"
 #include "output.hpp"
+#include "output_forms.hpp"
 #include "schedule.hpp"
 
 #include <fmt/format.h>
@@ -27,6 +24,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
   std::vector<PendingFile> pending;
   std::set<std::string> stems;
   std::vector<std::string> deps;
+  const auto forms = output_forms(opts.torch, opts.tangent);
   for (const auto& input : inputs) {
     std::vector<Kernel> kernels;
     if (!llvm::sys::fs::exists(input)) {
@@ -85,47 +83,26 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
       ok = false;
       continue;
     }
+    // 5-6. plan and emit: each output form (output_forms.hpp) plans the loops
+    // it prints and prints its files.
+    FileIR ir;
+    ir.input = input;
+    ir.source_name = llvm::sys::path::filename(input).str();
+    ir.stem = stem;
+    ir.out_dir = opts.out_dir;
+    ir.kernels = &kernels;
+    ir.plans = &plans;
+    ir.enter = [&](const char* name, const Kernel* k) {
+      pass = name;
+      current = k;
+    };
+    ir.print_after = [&](const char* name, const std::function<std::string()>& text) {
+      if (opts.print_after.count(name))
+        print_after(name, text());
+    };
     try {
-      current = nullptr; // the passes below work on all of the file's kernels
-      pass = "emit";
-      if (opts.torch) { // PyTorch ops instead of the adjoints (emit_torch.hpp)
-        pass = "torch";
-        ok = add_torch_files(plans, input, opts.out_dir, pending) && ok;
-        continue;
-      }
-      std::vector<LoopPlan> loops; // 5. plan the loops
-      for (const auto& p : plans) {
-        current = p.kernel;
-        pass = "plan";
-        test_internal_error("plan");
-        loops.push_back(plan_loops(p));
-        print_after("plan", print_plan(loops.back()));
-        if (opts.print_after.count("plan"))
-          print_after("plan", print_forward_plan(plan_forward(*p.kernel)));
-      }
-      current = nullptr;
-      pass = "emit";
-      EmittedFile f = emit_file(loops, llvm::sys::path::filename(input).str(), stem); // 6. emit
-      llvm::SmallString<256> hpp(opts.out_dir), cpp(opts.out_dir);
-      llvm::sys::path::append(hpp, stem + "_adjoint.hpp");
-      llvm::sys::path::append(cpp, stem + "_adjoint.cpp");
-      pending.push_back({std::string(hpp), f.header});
-      pending.push_back({std::string(cpp), f.source});
-      llvm::SmallString<256> khpp(opts.out_dir);
-      llvm::sys::path::append(khpp, stem + "_kernels.hpp");
-      pending.push_back({std::string(khpp), f.kernels});
-      if (opts.tangent) {
-        std::vector<const Kernel*> ks;
-        for (const auto& k : kernels)
-          ks.push_back(&k);
-        pass = "tangent";
-        EmittedFile t = emit_tangent_file(ks, llvm::sys::path::filename(input).str(), stem);
-        llvm::SmallString<256> thpp(opts.out_dir), tcpp(opts.out_dir);
-        llvm::sys::path::append(thpp, stem + "_tangent.hpp");
-        llvm::sys::path::append(tcpp, stem + "_tangent.cpp");
-        pending.push_back({std::string(thpp), t.header});
-        pending.push_back({std::string(tcpp), t.source});
-      }
+      for (const auto& form : forms)
+        ok = form->add_files(ir, pending) && ok;
     } catch (const std::exception& e) {
       internal(e);
     }
@@ -147,15 +124,14 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
   }
   if (!opts.stamp.empty()) {
     // Make-style depfile: "<stamp>: <dep> <dep> ...", spaces escaped.
+    // (sorted, so that the same inputs give the same file)
     std::string d = opts.stamp + ":";
-    std::set<std::string> seen;
-    for (const auto& dep : deps)
-      if (seen.insert(dep).second) {
-        std::string esc;
-        for (char c : dep)
-          esc += c == ' ' ? std::string("\\ ") : std::string(1, c);
-        d += " \\\n  " + esc;
-      }
+    for (const auto& dep : std::set<std::string>(deps.begin(), deps.end())) {
+      std::string esc;
+      for (char c : dep)
+        esc += c == ' ' ? std::string("\\ ") : std::string(1, c);
+      d += " \\\n  " + esc;
+    }
     d += "\n";
     if (!write_if_changed({{opts.stamp + ".d", d}}, error)) {
       llvm::errs() << "error: " << error << "\n";
