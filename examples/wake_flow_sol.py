@@ -750,6 +750,13 @@ def main(argv=None):
                         f"({(sup / src).mean():.3f} x source); dp below supervised in "
                         f"{int((dp < sup).sum())} of {len(rows)}")
             print(msg)
+            low = np.array([r[3][0] / r[2][0] for r in rows])
+            msg = (f"summary msteps={ms} lowest Re over {len(rows)} seeds: dp {low.mean():.3f} +- "
+                   f"{low.std(ddof=1):.3f} x source")
+            if rows[0][4] is not None:
+                sup = np.array([r[4][0] / r[2][0] for r in rows])
+                msg += f", supervised {sup.mean():.3f} +- {sup.std(ddof=1):.3f} x source"
+            print(msg)
     print(f"total {time.time() - t_start:.0f} s")
     if failures:
         print("wake_flow_sol: requirement failed:\n  " + "\n  ".join(failures), file=sys.stderr)

@@ -370,6 +370,46 @@ TEST_CASE("affine: a counter and a size are different symbols; counters order fi
   CHECK(Poly::term(3, {Sym::size("n"), Sym::counter("i")}) == Poly::constant(3) * i * n);
 }
 
+// What check hands to the output as IR values (ir.hpp): size conditions,
+// checks and extents, printed by code() with the live RenameScope's names.
+TEST_CASE("ir: size checks and extents are polynomials, printed with the output's names") {
+  const Poly n = Poly::symbol("n"), nx = Poly::symbol("nx"), one = Poly::constant(1);
+  SizeCheck c;
+  c.premises =
+      sorted_conds({SizeCond::runs(one, n), SizeCond::nonneg(n - one), SizeCond::runs(one, n)});
+  REQUIRE(c.premises.size() == 2); // in the order of their code, the repeat dropped
+  CHECK(c.premises[0].code() == "(1) < (n)");
+  CHECK(c.premises[1].code() == "(n - 1) >= 0");
+  c.must_hold = {{SizeCond::nonneg(nx - n), SizeCond::nonneg(n - nx - one)}};
+  CHECK(c.must_hold_code() == "(-n + nx) >= 0 || (n - nx - 1) >= 0");
+  c.must_hold.insert(c.must_hold.begin(), {SizeCond::nonneg(nx - Poly::constant(2))});
+  CHECK(c.must_hold_code() == "(nx - 2) >= 0 && ((-n + nx) >= 0 || (n - nx - 1) >= 0)");
+  SizeCheck d = c;
+  CHECK(d.same_as(c));
+  d.premises.pop_back();
+  CHECK_FALSE(d.same_as(c));
+
+  Extent e;
+  e.add({{}, n + one});
+  e.add({{}, n + one}); // counted once
+  CHECK(e.code() == "std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(n + 1))");
+  e.add({{SizeCond::runs(Poly::constant(0), nx)}, nx * n});
+  CHECK(e.code() == "std::max<std::ptrdiff_t>({0, static_cast<std::ptrdiff_t>(n + 1), "
+                    "static_cast<std::ptrdiff_t>((0) < (nx) ? "
+                    "static_cast<std::ptrdiff_t>(n) * nx : 0)})");
+  {
+    RenameScope seeds(std::map<std::string, std::string>{{"nx", "nx_adj"}});
+    CHECK(c.premises[1].code() == "(n - 1) >= 0");
+    CHECK(c.must_hold_code() ==
+          "(nx_adj - 2) >= 0 && ((-n + nx_adj) >= 0 || (n - nx_adj - 1) >= 0)");
+  }
+  Extent rows;
+  rows.row_length = nx;
+  rows.rows = {n - one};
+  CHECK(rows.code() == "std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(nx) * "
+                       "std::max<std::ptrdiff_t>(0, n - 1))");
+}
+
 // The operation table (ops.hpp): its rows follow the enum, and every math
 // function has a rule for each argument (a missing one would silently drop
 // a derivative).

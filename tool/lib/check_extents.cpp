@@ -47,12 +47,6 @@ std::optional<std::pair<Poly, Poly>> range_under(Poly p, const Facts& facts, con
   return std::pair{lo + p, hi + p};
 }
 
-std::vector<std::string> premises(std::vector<std::string> v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  return v;
-}
-
 // index_range for the buffers of output_extents: where the sign of a
 // counter's coefficient is not provable from the facts (a row length nx
 // where the loops only say nx >= 2 * d + 1, and d may be negative), it is
@@ -83,17 +77,17 @@ std::optional<std::pair<Poly, Poly>> Extents::extent_range(const Poly& p,
     return std::nullopt;
   for (const auto& c : assumed) {
     SizeCheck chk;
-    std::vector<std::string> prem;
+    std::vector<SizeCond> prem;
     for (const auto& l : nest.loops)
-      prem.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+      prem.push_back(SizeCond::runs(*to_poly(l.lo), *to_poly(l.hi)));
     for (const auto& pc : path) {
       Facts f;
       add_facts(pc, f);
       for (const auto& q : f)
-        prem.push_back(fmt::format("({}) >= 0", q.code()));
+        prem.push_back(SizeCond::nonneg(q));
     }
-    chk.premises = premises(prem);
-    chk.must_hold = fmt::format("({}) >= 0", c.code());
+    chk.premises = sorted_conds(prem);
+    chk.must_hold = {{SizeCond::nonneg(c)}};
     chk.what = fmt::format("the elements of '{}' lie at increasing indices along each loop "
                            "(index coefficient '{}' not negative), which the adjoint's buffer "
                            "for it assumes",
@@ -101,7 +95,7 @@ std::optional<std::pair<Poly, Poly>> Extents::extent_range(const Poly& p,
     chk.pos = pos;
     bool dup = false;
     for (const auto& o : k_.size_checks)
-      dup = dup || (o.must_hold == chk.must_hold && o.premises == chk.premises);
+      dup = dup || o.same_as(chk);
     if (!dup)
       k_.size_checks.push_back(chk);
   }
@@ -165,10 +159,11 @@ void Extents::output_extents() {
   // lies in its row, and reads only what was written). The tangent needs
   // it also where no later loop reads the buffer.
   for (const auto& [array, b] : a_.buffers) {
-    std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", to_poly(b.length)->code());
+    Extent e;
+    e.row_length = *to_poly(b.length);
     for (const auto& x : b.extents)
-      e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, to_poly(x)->code());
-    k_.extent[array] = fmt::format("std::max<std::ptrdiff_t>(0, {})", e);
+      e.rows.push_back(*to_poly(x));
+    k_.extent[array] = e;
   }
   bool inout =
       std::any_of(k_.params.begin(), k_.params.end(), [](const Param& p) { return p.inout; });
@@ -192,13 +187,7 @@ void Extents::output_extents() {
       fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
                                "arrays as pointers",
                                work_name(*k_.intermediates.begin()), p.name));
-  std::map<std::string, std::vector<std::string>> ends;
-  auto add_end = [&](const std::string& array, const std::string& end) { // (once each)
-    std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", end);
-    auto& v = ends[array];
-    if (std::find(v.begin(), v.end(), e) == v.end())
-      v.push_back(e);
-  };
+  std::map<std::string, Extent> ends;
   for (const auto& n : k_.nests)
     for (const auto& st : n.stores) {
       if (a_.buffers.count(st.array) || is_view(st.array))
@@ -214,19 +203,16 @@ void Extents::output_extents() {
       // A store at an element that stays while a loop around it runs (a
       // sum, a pinned store) reaches it only if that loop runs: an
       // in-place array's seed copy must not read u_adj[0] of an empty one.
-      std::string end = (r->second + Poly::constant(1)).code();
-      std::vector<std::string> runs;
+      Extent::End end{{}, r->second + Poly::constant(1)};
       auto pi = to_poly(st.index);
       for (const auto& l : n.loops)
         if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi)) {
-          std::string run =
-              fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code());
-          if (std::find(runs.begin(), runs.end(), run) == runs.end())
-            runs.push_back(run);
+          SizeCond run = SizeCond::runs(*to_poly(l.lo), *to_poly(l.hi));
+          if (std::none_of(end.runs.begin(), end.runs.end(),
+                           [&](const SizeCond& o) { return o.code() == run.code(); }))
+            end.runs.push_back(run);
         }
-      if (!runs.empty())
-        end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
-      add_end(st.array, end);
+      ends[st.array].add(end);
     }
   // A later loop may read a work array beyond what was written (the
   // buffer holds NaN there): the buffer covers the reads too.
@@ -248,7 +234,7 @@ void Extents::output_extents() {
                                 r.array));
         continue;
       }
-      add_end(r.array, (range->second + Poly::constant(1)).code());
+      ends[r.array].add({{}, range->second + Poly::constant(1)});
     }
     // Provably outside every earlier store's range: an element no loop
     // writes, whose value is the caller's (the adjoint's buffer has NaN).
@@ -304,10 +290,8 @@ void Extents::output_extents() {
                               "write every element a later loop reads",
                               r.array));
   }
-  for (const auto& [array, e] : ends)
-    k_.extent[array] =
-        e.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", e[0])
-                      : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})", fmt::join(e, ", "));
+  for (auto& [array, e] : ends)
+    k_.extent[array] = std::move(e);
 }
 
 } // namespace dpgen::checking

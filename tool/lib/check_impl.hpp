@@ -112,8 +112,6 @@ std::optional<std::pair<Poly, Poly>> index_range(Poly p, const std::vector<PathC
 Facts where_runs(const std::vector<PathCond>& path, const Nest& nest);
 // index_range's computation under `facts`.
 std::optional<std::pair<Poly, Poly>> range_under(Poly p, const Facts& facts, const Nest& nest);
-// Conditions as sorted, without repeats (a SizeCheck's premises).
-std::vector<std::string> premises(std::vector<std::string> v);
 
 // The extents of the outputs the adjoint keeps in buffers (work arrays,
 // in-place arrays, line buffers): Kernel::extent, and the SizeChecks their

@@ -119,7 +119,7 @@ public:
           Poly one_ = Poly::constant(1);
           bool overlap = prove_nonneg(-g1 - one_, facts) && prove_nonneg(-g2 - one_, facts);
           if (shared == 0 && !overlap) {
-            check_apart(premises(facts_premises(nx, x, ny, y)), x, y, g1, g2, *rx, *ry);
+            check_apart(sorted_conds(facts_premises(nx, x, ny, y)), x, y, g1, g2, *rx, *ry);
             continue;
           }
         }
@@ -187,7 +187,7 @@ private:
       return true;
     if (prove_nonneg(-g1 - one, facts) && prove_nonneg(-g2 - one, facts))
       return false; // they overlap for every size
-    check_apart(premises(facts_premises(nest, x, nest, y)), x, y, g1, g2, *rx, *ry);
+    check_apart(sorted_conds(facts_premises(nest, x, nest, y)), x, y, g1, g2, *rx, *ry);
     return true;
   }
 
@@ -417,8 +417,8 @@ private:
                                     "coefficient '{}' against a reach of '{}'",
                                     s.array, c.str(), reach.str()));
           SizeCheck chk;
-          chk.premises = premises(facts_premises(nest, s, nest, s));
-          chk.must_hold = fmt::format("({}) >= 0", slack.code());
+          chk.premises = sorted_conds(facts_premises(nest, s, nest, s));
+          chk.must_hold = {{SizeCond::nonneg(slack)}};
           chk.what = fmt::format("output '{}' is written once per element: its index steps by "
                                  "'{}' where the faster counters reach '{}'",
                                  s.array, c.str(), reach.str());
@@ -437,7 +437,7 @@ private:
                    const Poly& g2, const Range& rx, const Range& ry) {
     SizeCheck c;
     c.premises = std::move(premises);
-    c.must_hold = fmt::format("({}) >= 0 || ({}) >= 0", g1.code(), g2.code());
+    c.must_hold = {{SizeCond::nonneg(g1), SizeCond::nonneg(g2)}};
     c.what = fmt::format("output '{}' is written by the stores on lines {} and {} at "
                          "elements [{}, {}] and [{}, {}], which must not overlap",
                          y.array, x.pos.line, y.pos.line, rx.first.str(), rx.second.str(),
@@ -484,18 +484,18 @@ private:
   }
 
   // The C++ conditions under which a check applies: both stores execute.
-  std::vector<std::string> facts_premises(const Nest& nx, const Store& x, const Nest& ny,
-                                          const Store& y) {
-    std::vector<std::string> out;
+  std::vector<SizeCond> facts_premises(const Nest& nx, const Store& x, const Nest& ny,
+                                       const Store& y) {
+    std::vector<SizeCond> out;
     for (const Nest* n : {&nx, &ny})
       for (const auto& l : n->loops)
-        out.push_back(fmt::format("({}) < ({})", to_poly(l.lo)->code(), to_poly(l.hi)->code()));
+        out.push_back(SizeCond::runs(*to_poly(l.lo), *to_poly(l.hi)));
     for (const Store* st : {&x, &y})
       for (const auto& pc : st->path) {
         Facts f;
         add_facts(pc, f);
         for (const auto& p : f)
-          out.push_back(fmt::format("({}) >= 0", p.code()));
+          out.push_back(SizeCond::nonneg(p));
       }
     return out;
   }
@@ -532,22 +532,22 @@ private:
     std::vector<Poly> all = {rx->first, c - one - rx->second, ry->first, c - one - ry->second};
     // apart in a row: one of these >= 0
     Poly g1 = ry->first - rx->second - one, g2 = rx->first - ry->second - one;
-    std::vector<std::string> must;
+    std::vector<std::vector<SizeCond>> must;
     for (const Poly& g : all)
       if (!prove_nonneg(g, facts)) {
         if (prove_nonneg(-g - one, facts))
           return false; // never holds
-        must.push_back(fmt::format("({}) >= 0", g.code()));
+        must.push_back({SizeCond::nonneg(g)});
       }
     if (!prove_nonneg(g1, facts) && !prove_nonneg(g2, facts)) {
       if (prove_nonneg(-g1 - one, facts) && prove_nonneg(-g2 - one, facts))
         return false;
-      must.push_back(fmt::format("(({}) >= 0 || ({}) >= 0)", g1.code(), g2.code()));
+      must.push_back({SizeCond::nonneg(g1), SizeCond::nonneg(g2)});
     }
     if (!must.empty()) {
       SizeCheck chk;
-      chk.premises = premises(facts_premises(nx, x, ny, y));
-      chk.must_hold = fmt::format("{}", fmt::join(must, " && "));
+      chk.premises = sorted_conds(facts_premises(nx, x, ny, y));
+      chk.must_hold = must;
       chk.what =
           fmt::format("output '{}' is written by the stores on lines {} and {} at "
                       "elements {} and {} of rows of length {}, which must not overlap",

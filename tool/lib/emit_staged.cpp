@@ -220,7 +220,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       flat.push_back(v_of(p.name));
       flat.push_back(p.name + "_adj"); // (its shape, for what the kernel reads of it)
     } else if (p.kind == ParamKind::Out) {
-      code.line("const std::ptrdiff_t {} = {};", n_of(p.name), renamed(k.extent.at(p.name)));
+      code.line("const std::ptrdiff_t {} = {};", n_of(p.name), k.extent.at(p.name).code());
       code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
                 "std::numeric_limits<{}>::quiet_NaN());",
                 p.elem_name, v_of(p.name), n_of(p.name), p.elem_name);
@@ -262,7 +262,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
     }
   }
   for (const auto& h : k.hidden) {
-    code.line("const std::ptrdiff_t {} = {}; // {} '{}'", n_of(h.name), renamed(k.extent.at(h.name)),
+    code.line("const std::ptrdiff_t {} = {}; // {} '{}'", n_of(h.name), k.extent.at(h.name).code(),
               is_buffer(h) ? "the rows of line buffer" : "the sums of", h.spelling);
     code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
               "std::numeric_limits<{}>::quiet_NaN());",
@@ -332,7 +332,7 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
               p.name, p.name);
     code.line("// and the adjoint of its old values on return.");
     const std::string n = k.fresh(p.name + "_n");
-    code.line("const std::ptrdiff_t {} = {};", n, renamed(k.extent.at(twin)));
+    code.line("const std::ptrdiff_t {} = {};", n, k.extent.at(twin).code());
     code.line("std::vector<{}> {}({}_adj, {}_adj + {});", p.elem_name, seed_buffer(k, p.name),
               p.name, p.name, n);
     over_stores(code, k, [&](const Store& s, std::vector<ExprP>& uses) -> std::vector<std::string> {

@@ -147,7 +147,7 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
   for (const auto& h : k.hidden) {
     const std::string buf = k.fresh(h.name + "_buf"), dot_buf = k.fresh(h.name + "_dot_buf");
     code.line("std::vector<{}> {}(static_cast<std::size_t>({})), {}({}.size()); // '{}'",
-              h.elem_name, buf, k.extent.at(h.name), dot_buf, buf, h.spelling);
+              h.elem_name, buf, k.extent.at(h.name).code(), dot_buf, buf, h.spelling);
     code.line("{}* const {} = {}.data();", h.elem_name, h.name, buf);
     code.line("{}* const {}_dot = {}.data();", h.elem_name, h.name, dot_buf);
   }

@@ -389,4 +389,82 @@ bool names_identifier(const std::string& text, const std::string& name) {
   return false;
 }
 
+// ---- conditions and counts on the sizes ---------------------------------------------------
+
+std::string SizeCond::code() const {
+  return less ? fmt::format("({}) < ({})", a.code(), b.code()) : fmt::format("({}) >= 0", a.code());
+}
+
+std::vector<SizeCond> sorted_conds(std::vector<SizeCond> v) {
+  std::vector<std::pair<std::string, SizeCond>> coded;
+  for (auto& c : v)
+    coded.emplace_back(c.code(), std::move(c));
+  std::stable_sort(coded.begin(), coded.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<SizeCond> out;
+  for (size_t i = 0; i < coded.size(); ++i)
+    if (i == 0 || coded[i].first != coded[i - 1].first)
+      out.push_back(std::move(coded[i].second));
+  return out;
+}
+
+std::string SizeCheck::must_hold_code() const {
+  std::vector<std::string> all;
+  for (const auto& any : must_hold) {
+    std::vector<std::string> alternatives;
+    for (const auto& c : any)
+      alternatives.push_back(c.code());
+    std::string one = fmt::format("{}", fmt::join(alternatives, " || "));
+    all.push_back(any.size() > 1 && must_hold.size() > 1 ? "(" + one + ")" : one);
+  }
+  return fmt::format("{}", fmt::join(all, " && "));
+}
+
+bool SizeCheck::same_as(const SizeCheck& o) const {
+  auto codes = [](const std::vector<SizeCond>& v) {
+    std::vector<std::string> out;
+    for (const auto& c : v)
+      out.push_back(c.code());
+    return out;
+  };
+  return must_hold_code() == o.must_hold_code() && codes(premises) == codes(o.premises);
+}
+
+namespace {
+
+std::string end_code(const Extent::End& e) {
+  std::string end = e.end.code();
+  if (!e.runs.empty()) {
+    std::vector<std::string> runs;
+    for (const auto& r : e.runs)
+      runs.push_back(r.code());
+    end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
+  }
+  return fmt::format("static_cast<std::ptrdiff_t>({})", end);
+}
+
+} // namespace
+
+void Extent::add(End e) {
+  const std::string code = end_code(e);
+  for (const auto& o : ends)
+    if (end_code(o) == code)
+      return;
+  ends.push_back(std::move(e));
+}
+
+std::string Extent::code() const {
+  if (row_length) {
+    std::string e = fmt::format("static_cast<std::ptrdiff_t>({})", row_length->code());
+    for (const auto& x : rows)
+      e = fmt::format("{} * std::max<std::ptrdiff_t>(0, {})", e, x.code());
+    return fmt::format("std::max<std::ptrdiff_t>(0, {})", e);
+  }
+  std::vector<std::string> es;
+  for (const auto& e : ends)
+    es.push_back(end_code(e));
+  return es.size() == 1 ? fmt::format("std::max<std::ptrdiff_t>(0, {})", es[0])
+                        : fmt::format("std::max<std::ptrdiff_t>({{0, {}}})", fmt::join(es, ", "));
+}
+
 } // namespace dpgen

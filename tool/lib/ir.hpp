@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "poly.hpp"
+
 namespace dpgen {
 
 /// A position in the user's source, for diagnostics.
@@ -373,15 +375,59 @@ struct Nest {
   std::vector<int> key;
 };
 
+/// A condition over the sizes (parameters, kernel-level locals): `a >= 0`,
+/// or, for a loop over [a, b) that runs, `a < b`.
+struct SizeCond {
+  Poly a, b;
+  bool less = false;
+
+  static SizeCond nonneg(Poly p) { return {std::move(p), Poly(), false}; }
+  static SizeCond runs(Poly lo, Poly hi) { return {std::move(lo), std::move(hi), true}; }
+  /// C++: "(a) >= 0", "(a) < (b)" (with the live RenameScope's names).
+  std::string code() const;
+};
+
+/// The conditions in the order of their code, each once (a SizeCheck's premises).
+std::vector<SizeCond> sorted_conds(std::vector<SizeCond> v);
+
 /// A condition on the sizes that the generated adjoint checks on entry, for a
 /// write-once rule dpgen could not prove from the kernel alone (a fixed row
 /// length against a size parameter, two loops whose ranges are apart only for
-/// some sizes). C++ conditions over the parameters and kernel-level locals.
+/// some sizes).
 struct SizeCheck {
-  std::vector<std::string> premises; // where the rule matters (the loops run, ...)
-  std::string must_hold;
+  /// Where the rule matters (the loops run, ...), in the order of their code.
+  std::vector<SizeCond> premises;
+  /// What must hold there: each entry holds, an entry of several conditions
+  /// when one of them does.
+  std::vector<std::vector<SizeCond>> must_hold;
   std::string what; // "output 'u' is written once per element"
   SourcePos pos;
+
+  /// C++ of `must_hold`: "A && (B || C)" (one entry of alternatives: "B || C").
+  std::string must_hold_code() const;
+  /// The same check (its conditions' code equal).
+  bool same_as(const SizeCheck& o) const;
+};
+
+/// How many elements an output's stores (and later reads) can reach: the
+/// count of the buffer the adjoint allocates for it.
+struct Extent {
+  /// One past the largest index of one access, counted where `runs` hold
+  /// (the loops around a store at an element that stays while they run).
+  struct End {
+    std::vector<SizeCond> runs;
+    Poly end;
+  };
+  /// The largest of these, 0 at least (each counted once).
+  std::vector<End> ends;
+  /// A line buffer instead: its row length times each count of rows.
+  std::optional<Poly> row_length;
+  std::vector<Poly> rows;
+
+  /// Adds one end unless the same is there.
+  void add(End e);
+  /// C++ (std::ptrdiff_t) for the count (with the live RenameScope's names).
+  std::string code() const;
 };
 
 struct Kernel {
@@ -404,9 +450,9 @@ struct Kernel {
   /// Outputs that later loop nests read (work arrays). The adjoint recomputes
   /// them with the forward kernel and runs the nests in reverse order.
   std::set<std::string> intermediates;
-  /// For each output: C++ code for how many elements its stores can reach
-  /// (one past the largest index), for buffers the adjoint allocates.
-  std::map<std::string, std::string> extent;
+  /// For each output the adjoint keeps a buffer of: how many elements its
+  /// stores can reach (one past the largest index).
+  std::map<std::string, Extent> extent;
   /// Every name the kernel brings into generated code: its parameters, loop
   /// counters and locals (as renamed by lower), and the adjoint and tangent
   /// parameters the signature rule derives from its arrays (<name>_adj,

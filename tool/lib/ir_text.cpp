@@ -150,15 +150,20 @@ std::string print_ir(const Kernel& k) {
         out += fmt::format("{}  where {} = {}\n", indent, l->name, print(l->def));
     }
   }
+  auto premises_code = [](const SizeCheck& c) {
+    std::vector<std::string> ps;
+    for (const auto& p : c.premises)
+      ps.push_back(p.code());
+    return fmt::format("{}", fmt::join(ps, " && "));
+  };
   for (const auto& c : k.size_checks)
     out += fmt::format("  size-check {}{}  ({})\n",
-                       c.premises.empty() ? ""
-                                          : fmt::format("{} => ", fmt::join(c.premises, " && ")),
-                       c.must_hold, c.what);
+                       c.premises.empty() ? "" : fmt::format("{} => ", premises_code(c)),
+                       c.must_hold_code(), c.what);
   for (const auto& w : k.intermediates)
     out += fmt::format("  intermediate {}\n", w);
   for (const auto& [a, e] : k.extent)
-    out += fmt::format("  extent {} = {}\n", a, e);
+    out += fmt::format("  extent {} = {}\n", a, e.code());
   return out;
 }
 

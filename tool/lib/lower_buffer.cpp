@@ -287,19 +287,17 @@ static std::optional<std::pair<Poly, Poly>> range_over(Poly p, const std::vector
 
 // The C++ conditions under which a check on this statement applies: its
 // loops run and the conditions on its path that the sizes decide hold.
-std::vector<std::string> LineBuffers::premises_here() const {
-  std::vector<std::string> out;
+std::vector<SizeCond> LineBuffers::premises_here() const {
+  std::vector<SizeCond> out;
   for (const auto& l : L.loops_)
-    out.push_back(fmt::format("({}) < ({})", to_poly(l->lo)->code(), to_poly(l->hi)->code()));
+    out.push_back(SizeCond::runs(*to_poly(l->lo), *to_poly(l->hi)));
   for (const auto& pc : L.path_) {
     Facts f;
     add_facts(pc, f);
     for (const auto& p : f)
-      out.push_back(fmt::format("({}) >= 0", p.code()));
+      out.push_back(SizeCond::nonneg(p));
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return sorted_conds(std::move(out));
 }
 
 // `goals` (each >= 0) hold here: proved, or (where they depend on the sizes
@@ -308,7 +306,7 @@ std::vector<std::string> LineBuffers::premises_here() const {
 bool LineBuffers::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
                              const std::string& what, SourceLocation loc, bool& never) {
   never = false;
-  std::vector<std::string> must;
+  std::vector<std::vector<SizeCond>> must;
   for (const Poly& g : goals) {
     if (prove_nonneg(g, facts))
       continue;
@@ -318,12 +316,12 @@ bool LineBuffers::prove_or_check(const std::vector<Poly>& goals, const Facts& fa
     }
     if (g.mentions_any_counter())
       return false;
-    must.push_back(fmt::format("({}) >= 0", g.code()));
+    must.push_back({SizeCond::nonneg(g)});
   }
   if (!must.empty()) {
     SizeCheck c;
     c.premises = premises_here();
-    c.must_hold = fmt::format("{}", fmt::join(must, " && "));
+    c.must_hold = must;
     c.what = what;
     c.pos = L.pos(loc);
     L.k_.size_checks.push_back(c);

@@ -83,7 +83,7 @@ private:
   std::optional<Poly> buffer_local(const Buffer& b, const ExprP& flat) const;
   Facts facts_here() const;
   bool holds_here(const PathCond& pc, const Facts& facts) const;
-  std::vector<std::string> premises_here() const;
+  std::vector<SizeCond> premises_here() const;
   bool prove_or_check(const std::vector<Poly>& goals, const Facts& facts, const std::string& what,
                       clang::SourceLocation loc, bool& never);
   // The extents of pointers to arrays' variable array types, as evaluated at
