@@ -9,6 +9,7 @@
 // them and they are not checked.
 #include "emit_checked.hpp"
 
+#include "accesses.hpp"
 #include "derive.hpp"
 #include "emit_util.hpp"
 #include "print.hpp"
@@ -67,71 +68,40 @@ struct Range {
   bool bounded = true;
 };
 
-// Adds one access `index` (a read or a store in `nest`, executed where
-// `conds` hold) to the ranges of `array`.
-void add_access(std::map<std::string, Range>& ranges, const std::string& array,
-                const ExprP& index, const Nest& nest, const Store& store,
-                const std::vector<PathCond>& conds) {
-  Range& r = ranges[array];
-  if (!r.bounded)
-    return;
-  std::vector<PathCond> guards;
-  Domain d = store_domain(nest, store, guards);
-  Facts runs;
-  for (const auto& l : nest.loops)
-    add_nonempty(l, runs);
-  for (const auto& g : guards)
-    if (nest.loops.empty() || !implied(g, runs)) {
-      r.bounded = false; // executed under a condition that is not an index range
-      return;
-    }
-  for (const auto& pc : conds) {
-    auto cd = condition_domain(pc.cond);
-    if (!cd) {
-      r.bounded = false;
-      return;
-    }
-    d = pc.positive ? intersect(d, *cd) : subtract(d, *cd);
-  }
-  auto pieces = index_pieces(index);
-  if (!pieces) {
-    r.bounded = false; // a data-dependent index
-    return;
-  }
-  for (const auto& piece : *pieces)
-    for (const auto& box : intersect(d, piece.where)) {
-      std::string lo = extreme(piece.value, box, nest, false, "0");
-      std::string hi = extreme(piece.value, box, nest, true, "-1");
-      if (lo.empty() || hi.empty()) {
-        r.bounded = false;
-        return;
-      }
-      // (the same extreme from another read is not repeated)
-      if (std::find(r.lows.begin(), r.lows.end(), lo) == r.lows.end())
-        r.lows.push_back(lo);
-      if (std::find(r.highs.begin(), r.highs.end(), hi) == r.highs.end())
-        r.highs.push_back(hi);
-    }
-}
-
+// The range of elements the kernel touches in each array (accesses.hpp): C++
+// for the extremes of each access over each box of its iterations; unbounded
+// where an access is data-dependent (its index, or a condition it happens
+// under).
 std::map<std::string, Range> access_ranges(const Kernel& k) {
   std::map<std::string, Range> ranges;
-  for (const auto& nest : k.nests)
-    for (const auto& s : nest.stores) {
-      add_access(ranges, s.array, s.index, nest, s, {});
-      std::vector<ExprP> exprs = {s.value, s.index};
-      for (const auto& pc : s.path)
-        exprs.push_back(pc.cond);
-      for (const auto& e : exprs)
-        for (const auto& site : reads_in(e))
-          add_access(ranges, site.read->name, site.read->ops[0], nest, s, site.conds);
+  const Nest none; // (the kernel-level locals' reads, before every loop)
+  for (const auto& [array, accesses] : array_accesses(k)) {
+    Range& r = ranges[array];
+    for (const auto& a : accesses) {
+      auto pieces = index_pieces(a.index);
+      if (!a.exact || !pieces) {
+        r.bounded = false;
+        break;
+      }
+      const Nest& nest = a.nest ? *a.nest : none;
+      for (const auto& piece : *pieces)
+        for (const auto& box : intersect(a.where, piece.where)) {
+          std::string lo = extreme(piece.value, box, nest, false, "0");
+          std::string hi = extreme(piece.value, box, nest, true, "-1");
+          if (lo.empty() || hi.empty()) {
+            r.bounded = false;
+            break;
+          }
+          // (the same extreme from another access is not repeated)
+          if (std::find(r.lows.begin(), r.lows.end(), lo) == r.lows.end())
+            r.lows.push_back(lo);
+          if (std::find(r.highs.begin(), r.highs.end(), hi) == r.highs.end())
+            r.highs.push_back(hi);
+        }
+      if (!r.bounded)
+        break;
     }
-  // Reads before every loop (a0 = a[0], x_min = *xmin) always happen.
-  Nest none;
-  Store at_top;
-  for (const auto& l : k.kernel_locals)
-    for (const auto& site : reads_in(l->def))
-      add_access(ranges, site.read->name, site.read->ops[0], none, at_top, site.conds);
+  }
   return ranges;
 }
 

@@ -8,6 +8,7 @@
 //    calls the generated <kernel>_adjoint with zero-filled input adjoints.
 #include "emit_torch.hpp"
 
+#include "accesses.hpp"
 #include "affine.hpp"
 #include "emit_forward.hpp"
 #include "emit_util.hpp"
@@ -29,6 +30,10 @@
 namespace dpgen {
 
 namespace {
+
+// (an access under a data-dependent condition counts where the condition may
+// hold, all of `where`: the size is checked for more, never for less)
+using AccessMap = std::map<std::string, std::vector<ArrayAccess>>;
 
 bool is_array(const Param& p) { return p.kind != ParamKind::Scalar; }
 
@@ -83,70 +88,6 @@ const Param* first_array(const Kernel& k) {
 }
 
 // ---- how far each array is accessed ------------------------------------------------------
-
-// One array access: its index and the iteration domain where it happens.
-struct Access {
-  ExprP index;
-  Domain where;
-};
-
-struct AccessMap {
-  std::map<std::string, std::vector<Access>> accesses;
-  std::set<std::string> data_dependent; // arrays read at an index that is not affine
-};
-
-// The reads of `e`, each with the domain it happens in: the store's domain narrowed by the
-// index conditions of the conditional expressions it sits in.
-// `path`: the arms taken so far (a select and which arm); a local is visited
-// once per path.
-using ArmPath = std::vector<std::pair<const Expr*, bool>>;
-
-void collect_reads(const ExprP& e, const Domain& where, AccessMap& out,
-                   std::set<std::pair<const LocalVar*, ArmPath>>& seen, const ArmPath& path) {
-  if (!e)
-    throw std::logic_error("internal error: torch: a null expression");
-  if (where.empty())
-    return;
-  switch (e->op) {
-  case Op::Read:
-    out.accesses[e->name].push_back({e->ops[0], where});
-    collect_reads(e->ops[0], where, out, seen, path);
-    return;
-  case Op::Local:
-    if (seen.insert({e->local.get(), path}).second)
-      collect_reads(e->local->def, where, out, seen, path);
-    return;
-  case Op::Select: {
-    collect_reads(e->ops[0], where, out, seen, path);
-    auto cd = condition_domain(e->ops[0]);
-    ArmPath taken = path;
-    taken.push_back({e.get(), true});
-    collect_reads(e->ops[1], cd ? intersect(where, *cd) : where, out, seen, taken);
-    taken.back().second = false;
-    collect_reads(e->ops[2], cd ? subtract(where, *cd) : where, out, seen, taken);
-    return;
-  }
-  default:
-    for (const auto& o : e->ops)
-      collect_reads(o, where, out, seen, path);
-  }
-}
-
-AccessMap accesses(const Kernel& k) {
-  AccessMap m;
-  for (const auto& nest : k.nests)
-    for (const auto& st : nest.stores) {
-      std::vector<PathCond> guards;
-      Domain d = store_domain(nest, st, guards);
-      std::set<std::pair<const LocalVar*, ArmPath>> seen;
-      m.accesses[st.array].push_back({st.index, d});
-      collect_reads(st.index, d, m, seen, {});
-      collect_reads(st.value, d, m, seen, {});
-      for (const auto& pc : st.path)
-        collect_reads(pc.cond, d, m, seen, {});
-    }
-  return m;
-}
 
 // C++ for the largest value of `p` (one past the largest index: the index + 1) over box `b`, or nullopt if a coefficient of a counter
 // depends on another counter. Each counter v contributes max(c lo_v, c (hi_v - 1)).
@@ -276,11 +217,11 @@ std::string sizes_message(const Kernel& k) {
 // Checks of one array's size against the largest index the kernel reaches.
 void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap& m,
                        const std::string& guard) {
-  auto it = m.accesses.find(p.name);
-  if (it == m.accesses.end())
+  auto it = m.find(p.name);
+  if (it == m.end())
     return;
   std::vector<std::pair<std::string, std::string>> terms; // (condition, largest index)
-  bool complete = !m.data_dependent.count(p.name);
+  bool complete = true;
   for (const auto& a : it->second) {
     auto pieces = index_pieces(a.index);
     if (!pieces) {
@@ -374,7 +315,7 @@ void emit_kernel(Code& c, const Kernel& k) {
   const auto outs = outputs(k);
   const auto args = arguments(k);
   const Param* first = first_array(k);
-  const AccessMap m = accesses(k);
+  const AccessMap m = array_accesses(k);
   const std::string fn = k.name + "_function";
   // Kernel-level guards that mention only parameters: where they fail, the kernel writes
   // nothing and reads nothing.
