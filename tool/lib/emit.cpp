@@ -22,52 +22,8 @@ namespace dpgen {
 
 namespace {
 
-// ---- expression rewriting under a known box --------------------------------
-
-// Replaces conditional expressions whose index condition is decided inside
-// `box` (only comparisons differing by a constant are decided), so an
-// interior loop reads a[i + 1] instead of a[(i == n - 1) ? 0 : i + 1].
 // The counter of adjoint cells along loop counter `v` ("c_i").
 std::string cell_counter(const Kernel& k, const std::string& v) { return k.fresh("c_" + v); }
-
-class Specializer {
-public:
-  explicit Specializer(const Box& box) : box_(box) {}
-
-  ExprP operator()(const ExprP& e) {
-    if (!e)
-      throw std::logic_error("internal error: emit: a null expression to specialize");
-    if (e->op == Op::Local) {
-      if (e->local->kernel_level)
-        return e;
-      auto it = memo_.find(e->local.get());
-      if (it != memo_.end())
-        return it->second;
-      ExprP def = (*this)(e->local->def);
-      ExprP out = e;
-      if (def != e->local->def) {
-        auto l = std::make_shared<LocalVar>(*e->local);
-        l->def = def;
-        out = local_ref(l);
-      }
-      memo_[e->local.get()] = out;
-      return out;
-    }
-    if (e->op == Op::Select) {
-      if (auto cd = condition_domain(e->ops[0])) {
-        if (box_inside(box_, *cd))
-          return (*this)(e->ops[1]);
-        if (box_disjoint(box_, *cd))
-          return (*this)(e->ops[2]);
-      }
-    }
-    return map_operands(e, [&](const ExprP& o) { return (*this)(o); });
-  }
-
-private:
-  const Box& box_;
-  std::map<const LocalVar*, ExprP> memo_;
-};
 
 std::string elem_of(const Kernel& k, const std::string& array) {
   const Param* p = k.find_param(array);
@@ -88,7 +44,7 @@ struct BlockContext {
   std::string acc;
   std::string hit;    // flag set when a term applies (edge cells)
   bool edge;          // guarded: check that the iteration is in the domain
-  const std::vector<Box>* interior_boxes; // interior mode: the block's boxes (loop_plan)
+  const std::vector<BoxTerm>* terms; // the block's term in each box it prints (loop_plan)
   Factored* factored = nullptr; // interior: shared invariant partials
 };
 
@@ -125,8 +81,8 @@ struct Factored {
   }
 };
 
-// A term's partial as the schedule leaves it: never null, never zero() (the
-// schedule drops the reads whose partial vanishes).
+// A scatter read's partial as the schedule leaves it: never null, never zero()
+// (the schedule drops the reads whose partial vanishes).
 const ExprP& nonzero_partial(const ExprP& partial) {
   if (is_zero(partial))
     throw std::logic_error("internal error: emit: a zero partial reached the emitter (the "
@@ -134,19 +90,17 @@ const ExprP& nonzero_partial(const ExprP& partial) {
   return partial;
 }
 
-void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, const Box& where,
-                const std::vector<PathCond>& guards, const std::string& acc, const std::string& set_hit,
-                Factored* factored = nullptr) {
-  Specializer spec(where);
-  ExprP specialized = spec(nonzero_partial(t.partial));
+// The term `t` in one box of its iterations, as loop_plan specialized it (bt).
+void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, const BoxTerm& bt,
+                const std::string& acc, const std::string& set_hit, Factored* factored = nullptr) {
   // (Factored or not is decided on the partial as derived: hoisting makes a
   // moved local kernel-level, which must not change the order of the sums.)
-  const bool same_everywhere = invariant(specialized);
-  ExprP partial = hoist(specialized);
-  ExprP seed_index = hoist(spec(t.store->index));
+  const bool same_everywhere = invariant(bt.partial);
+  ExprP partial = hoist(bt.partial);
+  ExprP seed_index = hoist(bt.seed_index);
   std::vector<ExprP> gs;
-  for (const auto& pc : guards)
-    gs.push_back(hoist(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond))));
+  for (const auto& g : bt.guards)
+    gs.push_back(hoist(g));
   std::map<int, LocalP> locals;
   std::set<std::string> vars;
   collect(partial, locals, vars);
@@ -202,8 +156,8 @@ void emit_block(const BlockContext& cx, const Block& b) {
   code.line("// {} reads {}{}: acc += ∂{}/∂{} · {}_adj{}", out_cell, b.comment,
             iter_desc.empty() ? "" : " at " + iter_desc, out_cell, b.comment, s.array, out_sub);
 
-  const std::vector<Box>& boxes = cx.edge ? b.domain : *cx.interior_boxes;
-  for (const Box& box : boxes) {
+  for (const BoxTerm& bt : *cx.terms) {
+    const Box& box = bt.box;
     code.open("");
     // Layout counters come from the cell.
     for (const auto& [v, c] : cx.g.layout) {
@@ -235,7 +189,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, cx.k, cx.hoist, b.terms.front(), box, b.guards, cx.acc,
+    emit_terms(code, cx.k, cx.hoist, b.terms.front(), bt, cx.acc,
                cx.hit.empty() ? "" : cx.hit + " = true;", cx.factored);
     for (int i = 0; i < opened; ++i)
       code.close();
@@ -318,11 +272,13 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
   };
 
   auto edge_body = [&]() {
-    for (const auto* g : gs) {
+    for (size_t gi = 0; gi < gs.size(); ++gi) {
+      const GatherGroup* g = gs[gi];
       code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
       code.line("bool {} = false;", hit_name(*g));
-      for (const auto& b : g->blocks)
-        emit_block({k, hoist, *g, code, acc_name(*g), hit_name(*g), true, nullptr}, b);
+      for (size_t bi = 0; bi < g->blocks.size(); ++bi)
+        emit_block({k, hoist, *g, code, acc_name(*g), hit_name(*g), true, &plan.edge_terms[gi][bi]},
+                   g->blocks[bi]);
       code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
     }
@@ -380,7 +336,7 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         if (g->blocks[bi].bulk)
           emit_block({k, hoist, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false,
-                      &plan.interior_boxes[gi][bi], guarded ? nullptr : &factored},
+                      &plan.interior_terms[gi][bi], guarded ? nullptr : &factored},
                      g->blocks[bi]);
       if (!factored.sums.empty())
         code.line("// partials the same in every iteration, factored out: sums of seeds");

@@ -16,6 +16,23 @@ namespace dpgen {
 
 namespace {
 
+// The locals (not kernel-level) that `exprs` use, by id: the order of their
+// definitions.
+std::map<int, const LocalVar*> loop_locals(std::initializer_list<ExprP> exprs) {
+  std::set<const LocalVar*> seen;
+  std::map<int, const LocalVar*> locals;
+  for (const ExprP& e : exprs)
+    walk(
+        e,
+        [&](const ExprP& x) {
+          if (x->op == Op::Local && !x->local->kernel_level)
+            locals[x->local->id] = x->local.get();
+          return true;
+        },
+        [](const ExprP&) { return true; }, seen);
+  return locals;
+}
+
 const char* kind_text(ParamKind k) {
   switch (k) {
   case ParamKind::In:
@@ -135,18 +152,7 @@ std::string print_ir(const Kernel& k) {
         out += "  if " + path_text(s.path);
       out += fmt::format("  at {}\n", pos_text(s.pos));
       // The locals the store needs, defined inside the loops.
-      std::set<const LocalVar*> seen;
-      std::map<int, const LocalVar*> locals;
-      for (const ExprP& e : {s.index, s.value})
-        walk(
-            e,
-            [&](const ExprP& x) {
-              if (x->op == Op::Local && !x->local->kernel_level)
-                locals[x->local->id] = x->local.get();
-              return true;
-            },
-            [](const ExprP&) { return true; }, seen);
-      for (const auto& [id, l] : locals)
+      for (const auto& [id, l] : loop_locals({s.index, s.value}))
         out += fmt::format("{}  where {} = {}\n", indent, l->name, print(l->def));
     }
   }
@@ -266,6 +272,16 @@ std::string print_plan(const LoopPlan& plan) {
         for (const auto& s : loop.radix)
           out += fmt::format("        parallel: radix dim {} step {} reach {}\n", s.dim,
                              s.step.code(), s.reach.code());
+        // The interior terms whose conditions the interior decides (folded).
+        for (size_t gi = 0; gi < loop.interior_terms.size(); ++gi)
+          for (size_t bi = 0; bi < loop.interior_terms[gi].size(); ++bi)
+            for (const auto& t : loop.interior_terms[gi][bi])
+              if (t.partial != loop.groups[gi]->blocks[bi].terms.front().partial) {
+                out += fmt::format("        interior term of {}, block {}: {}\n",
+                                   loop.groups[gi]->array, bi, print(t.partial));
+                for (const auto& [id, l] : loop_locals({t.partial}))
+                  out += fmt::format("          where {} = {}\n", l->name, print(l->def));
+              }
       }
     }
     for (const auto* s : in.scatters)

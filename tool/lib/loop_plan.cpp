@@ -1,8 +1,10 @@
-// Plan (phase 5): cell boxes, interiors, edge reaches, fusion and the
-// parallel test of the gather loops (see loop_plan.hpp).
+// Plan (phase 5): cell boxes, interiors, edge reaches, fusion, the parallel
+// test of the gather loops and the terms each box prints (see loop_plan.hpp).
 #include "loop_plan.hpp"
 
 #include "ir_walk.hpp"
+
+#include <stdexcept>
 
 #include <algorithm>
 
@@ -155,7 +157,65 @@ FusionKey fusion_key(const Kernel& k, const GatherGroup& g) {
   return key;
 }
 
-CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
+// ---- the terms of each box: expressions under a known box --------------------
+
+// Replaces conditional expressions whose index condition is decided inside
+// `box` (only comparisons differing by a constant are decided), so an
+// interior loop reads a[i + 1] instead of a[(i == n - 1) ? 0 : i + 1].
+class Specializer {
+public:
+  explicit Specializer(const Box& box) : box_(box) {}
+
+  ExprP operator()(const ExprP& e) {
+    if (!e)
+      throw std::logic_error("internal error: plan: a null expression to specialize");
+    if (e->op == Op::Local) {
+      if (e->local->kernel_level)
+        return e;
+      auto it = memo_.find(e->local.get());
+      if (it != memo_.end())
+        return it->second;
+      ExprP def = (*this)(e->local->def);
+      ExprP out = e;
+      if (def != e->local->def) {
+        auto l = std::make_shared<LocalVar>(*e->local);
+        l->def = def;
+        out = local_ref(l);
+      }
+      memo_[e->local.get()] = out;
+      return out;
+    }
+    if (e->op == Op::Select) {
+      if (auto cd = condition_domain(e->ops[0])) {
+        if (box_inside(box_, *cd))
+          return (*this)(e->ops[1]);
+        if (box_disjoint(box_, *cd))
+          return (*this)(e->ops[2]);
+      }
+    }
+    return map_operands(e, [&](const ExprP& o) { return (*this)(o); });
+  }
+
+private:
+  const Box& box_;
+  std::map<const LocalVar*, ExprP> memo_;
+};
+
+// A block's first term in one box of its iterations (BoxTerm). Its partial is
+// never zero: the schedule drops the reads whose partial vanishes.
+BoxTerm box_term(const Block& b, const Box& box) {
+  const Term& t = b.terms.front();
+  if (is_zero(t.partial))
+    throw std::logic_error("internal error: plan: a zero partial reached the loop plan (the "
+                           "schedule drops them)");
+  Specializer spec(box);
+  BoxTerm out{box, spec(t.partial), spec(t.store->index), {}};
+  for (const auto& pc : b.guards)
+    out.guards.push_back(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond)));
+  return out;
+}
+
+CellLoop plan_cell_boxes(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
   CellLoop loop;
   loop.groups = gs;
   const GatherGroup& g0 = *gs.front();
@@ -234,6 +294,31 @@ CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& 
       dims.push_back({c, Poly::symbol(k.fresh("hi_" + v)) - Poly::symbol(k.fresh("lo_" + v))});
     loop.radix = mixed_radix(dims);
   }
+  return loop;
+}
+
+// Each block's term in the boxes an edge cell and an interior cell print
+// (the interior boxes planned first).
+void plan_terms(CellLoop& loop) {
+  for (size_t gi = 0; gi < loop.groups.size(); ++gi) {
+    loop.edge_terms.emplace_back();
+    loop.interior_terms.emplace_back();
+    for (size_t bi = 0; bi < loop.groups[gi]->blocks.size(); ++bi) {
+      const Block& b = loop.groups[gi]->blocks[bi];
+      loop.edge_terms.back().emplace_back();
+      for (const Box& box : b.domain)
+        loop.edge_terms.back().back().push_back(box_term(b, box));
+      loop.interior_terms.back().emplace_back();
+      if (b.bulk && gi < loop.interior_boxes.size())
+        for (const Box& box : loop.interior_boxes[gi][bi])
+          loop.interior_terms.back().back().push_back(box_term(b, box));
+    }
+  }
+}
+
+CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
+  CellLoop loop = plan_cell_boxes(k, gs);
+  plan_terms(loop);
   return loop;
 }
 

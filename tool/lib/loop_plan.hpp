@@ -54,6 +54,17 @@ struct EdgeReach {
   std::set<std::string> cell_dims; // those of the layout
 };
 
+/// A block's term as it is printed in one box of its iterations: its partial,
+/// the index of the seed it multiplies and the store's run-time conditions
+/// (each as it must hold), with the conditional expressions the box decides
+/// folded (an interior loop reads a[i + 1], not a[(i == n - 1) ? 0 : i + 1]).
+struct BoxTerm {
+  Box box;
+  ExprP partial;
+  ExprP seed_index;
+  std::vector<ExprP> guards;
+};
+
 /// One cell loop over one or more gather groups (fused when more than one)
 /// that share a layout and a cell box.
 struct CellLoop {
@@ -65,6 +76,10 @@ struct CellLoop {
   /// Per group and block (bulk blocks only): the boxes of its iteration
   /// domain that an interior cell's iteration lies in.
   std::vector<std::vector<std::vector<Box>>> interior_boxes;
+  /// Per group and block: its first term in each box of its domain (an edge
+  /// cell checks which box its iteration lies in) and, for bulk blocks, in
+  /// each of its interior boxes.
+  std::vector<std::vector<std::vector<BoxTerm>>> edge_terms, interior_terms;
   /// The parallel test: a one-dimensional unit-stride layout needs only
   /// enough cells; any other also the mixed-radix conditions, counters in
   /// `radix` order (dim indexes the layout).
