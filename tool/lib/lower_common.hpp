@@ -65,7 +65,7 @@ struct Access {
   // `im = i == 0 ? nx - 1 : i - 1`): its indices per dimension, some a
   // select of affine arms. A read is then the select of the reads
   // (piecewise_read); `index` is the first arms' (a store is an error).
-  std::vector<ExprP> dims;
+  std::vector<ExprP> dims = {}; // (empty: a flat index)
 };
 
 
