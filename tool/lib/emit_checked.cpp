@@ -75,32 +75,30 @@ struct Range {
 std::map<std::string, Range> access_ranges(const Kernel& k) {
   std::map<std::string, Range> ranges;
   const Nest none; // (the kernel-level locals' reads, before every loop)
+  // Adds the extremes of one access to `r`; false where it cannot be bounded.
+  auto add = [&](Range& r, const ArrayAccess& a) {
+    auto pieces = index_pieces(a.index);
+    if (!a.exact || !pieces)
+      return false;
+    const Nest& nest = a.nest ? *a.nest : none;
+    for (const auto& piece : *pieces)
+      for (const auto& box : intersect(a.where, piece.where)) {
+        std::string lo = extreme(piece.value, box, nest, false, "0");
+        std::string hi = extreme(piece.value, box, nest, true, "-1");
+        if (lo.empty() || hi.empty())
+          return false;
+        // (the same extreme from another access is not repeated)
+        if (std::find(r.lows.begin(), r.lows.end(), lo) == r.lows.end())
+          r.lows.push_back(lo);
+        if (std::find(r.highs.begin(), r.highs.end(), hi) == r.highs.end())
+          r.highs.push_back(hi);
+      }
+    return true;
+  };
   for (const auto& [array, accesses] : array_accesses(k)) {
     Range& r = ranges[array];
-    for (const auto& a : accesses) {
-      auto pieces = index_pieces(a.index);
-      if (!a.exact || !pieces) {
-        r.bounded = false;
-        break;
-      }
-      const Nest& nest = a.nest ? *a.nest : none;
-      for (const auto& piece : *pieces)
-        for (const auto& box : intersect(a.where, piece.where)) {
-          std::string lo = extreme(piece.value, box, nest, false, "0");
-          std::string hi = extreme(piece.value, box, nest, true, "-1");
-          if (lo.empty() || hi.empty()) {
-            r.bounded = false;
-            break;
-          }
-          // (the same extreme from another access is not repeated)
-          if (std::find(r.lows.begin(), r.lows.end(), lo) == r.lows.end())
-            r.lows.push_back(lo);
-          if (std::find(r.highs.begin(), r.highs.end(), hi) == r.highs.end())
-            r.highs.push_back(hi);
-        }
-      if (!r.bounded)
-        break;
-    }
+    r.bounded = std::all_of(accesses.begin(), accesses.end(),
+                            [&](const ArrayAccess& a) { return add(r, a); });
   }
   return ranges;
 }

@@ -103,11 +103,10 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name) {
                                     : fmt::format("{}", fmt::join(shown, " + \", \" + "));
   for (const auto& c : k.size_checks) {
     code.line("// Run-time check (not provable from the kernel alone): {}.", c.what);
-    std::vector<std::string> parts; // (printed with the live RenameScope's names)
-    for (const auto& premise : c.premises)
-      parts.push_back(premise.code());
-    parts.push_back(fmt::format("!({})", c.must_hold_code()));
-    code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
+    // (printed with the live RenameScope's names)
+    const std::string premises = join_code(c.premises, " && ");
+    code.open(fmt::format("if ({}{}!({}))", premises, premises.empty() ? "" : " && ",
+                          c.must_hold_code()));
     bool tangent = fn_name.size() > 8 && fn_name.compare(fn_name.size() - 8, 8, "_tangent") == 0;
     std::string msg = fmt::format("{}:{}: {}: these sizes break the rule that {}, so the "
                                   "{} would be wrong (",

@@ -408,38 +408,33 @@ std::vector<SizeCond> sorted_conds(std::vector<SizeCond> v) {
   return out;
 }
 
+std::string join_code(const std::vector<SizeCond>& conds, const char* sep) {
+  std::string out;
+  for (const auto& c : conds)
+    out += (out.empty() ? "" : sep) + c.code();
+  return out;
+}
+
 std::string SizeCheck::must_hold_code() const {
   std::vector<std::string> all;
   for (const auto& any : must_hold) {
-    std::vector<std::string> alternatives;
-    for (const auto& c : any)
-      alternatives.push_back(c.code());
-    std::string one = fmt::format("{}", fmt::join(alternatives, " || "));
+    std::string one = join_code(any, " || ");
     all.push_back(any.size() > 1 && must_hold.size() > 1 ? "(" + one + ")" : one);
   }
   return fmt::format("{}", fmt::join(all, " && "));
 }
 
 bool SizeCheck::same_as(const SizeCheck& o) const {
-  auto codes = [](const std::vector<SizeCond>& v) {
-    std::vector<std::string> out;
-    for (const auto& c : v)
-      out.push_back(c.code());
-    return out;
-  };
-  return must_hold_code() == o.must_hold_code() && codes(premises) == codes(o.premises);
+  return must_hold_code() == o.must_hold_code() &&
+         join_code(premises, " && ") == join_code(o.premises, " && ");
 }
 
 namespace {
 
 std::string end_code(const Extent::End& e) {
   std::string end = e.end.code();
-  if (!e.runs.empty()) {
-    std::vector<std::string> runs;
-    for (const auto& r : e.runs)
-      runs.push_back(r.code());
-    end = fmt::format("{} ? {} : 0", fmt::join(runs, " && "), end);
-  }
+  if (!e.runs.empty())
+    end = fmt::format("{} ? {} : 0", join_code(e.runs, " && "), end);
   return fmt::format("static_cast<std::ptrdiff_t>({})", end);
 }
 

@@ -389,6 +389,8 @@ struct SizeCond {
 
 /// The conditions in the order of their code, each once (a SizeCheck's premises).
 std::vector<SizeCond> sorted_conds(std::vector<SizeCond> v);
+/// The conditions' C++ (code()) joined by `sep` (" && ", " || ").
+std::string join_code(const std::vector<SizeCond>& conds, const char* sep);
 
 /// A condition on the sizes that the generated adjoint checks on entry, for a
 /// write-once rule dpgen could not prove from the kernel alone (a fixed row

@@ -156,15 +156,9 @@ std::string print_ir(const Kernel& k) {
         out += fmt::format("{}  where {} = {}\n", indent, l->name, print(l->def));
     }
   }
-  auto premises_code = [](const SizeCheck& c) {
-    std::vector<std::string> ps;
-    for (const auto& p : c.premises)
-      ps.push_back(p.code());
-    return fmt::format("{}", fmt::join(ps, " && "));
-  };
   for (const auto& c : k.size_checks)
     out += fmt::format("  size-check {}{}  ({})\n",
-                       c.premises.empty() ? "" : fmt::format("{} => ", premises_code(c)),
+                       c.premises.empty() ? "" : join_code(c.premises, " && ") + " => ",
                        c.must_hold_code(), c.what);
   for (const auto& w : k.intermediates)
     out += fmt::format("  intermediate {}\n", w);
