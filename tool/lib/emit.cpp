@@ -302,9 +302,8 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
   // The cell functions capture by copy (scalars, pointers, shallow views);
   // by reference where the kernel takes a view by reference, whose copy may
   // be deep or read-only (an AthenaArray-like class).
-  const bool by_ref = std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
-    return p.view && !p.view_type.empty() && p.view_type.back() == '&';
-  });
+  const bool by_ref = std::any_of(k.params.begin(), k.params.end(),
+                                  [](const Param& p) { return p.view && view_by_reference(p); });
   const std::string capture = by_ref ? "[&]" : "[=]";
   // Edge cell: every block, each checked against its iteration domain.
   code.open(fmt::format("auto {} = {}({})", edge_fn, capture, params));

@@ -278,7 +278,7 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
                               bool c_language) {
   std::string c = is_const ? "const " : "";
   if (p.view) // an array view: the kernel's type, or the same view of non-const elements
-    return fmt::format("{} {}", is_const ? p.view_type : p.view_mutable, name);
+    return fmt::format("{} {}", view_declared_type(p, is_const), name);
   if (p.plane_pointers) // `double*** a`: `const double* const* const* a` (C: `double** const* a`)
     return c_language ? fmt::format("{}** const* {}", p.elem_name, name)
                       : fmt::format("{}{}* const* const* {}", c, p.elem_name, name);

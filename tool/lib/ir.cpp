@@ -330,13 +330,26 @@ void test_internal_error(const char* pass) {
 }
 
 std::string view_buffer_type(const Param& p) {
-  std::string t = p.view_mutable; // "const amrex::Array4<double>&", "AthenaArray<double>&"
-  if (t.rfind("const ", 0) == 0)
-    t = t.substr(6);
-  while (!t.empty() && (t.back() == '&' || t.back() == ' '))
-    t.pop_back();
-  return fmt::format("dpgen::ViewBuffer<{}, {}>", t, p.elem_name);
+  return fmt::format("dpgen::ViewBuffer<{}, {}>", p.view_class, p.elem_name);
 }
+
+std::string view_declared_type(const Param& p, bool is_const) {
+  if (p.view_buffered)
+    return "const " + view_buffer_type(p) + "&";
+  if (is_const)
+    return p.view_type;
+  switch (p.view_pass) {
+  case Param::ViewPass::ConstRef:
+    return "const " + p.view_class + "&";
+  case Param::ViewPass::Ref:
+    return p.view_class + "&";
+  case Param::ViewPass::Value:
+    break;
+  }
+  return p.view_class;
+}
+
+bool view_by_reference(const Param& p) { return p.view_buffered || p.view_reference; }
 
 namespace {
 bool ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }

@@ -249,15 +249,27 @@ struct Param {
   /// and plane symbols of row-pointer arrays (a view's layout gives distinct
   /// indices distinct elements, as rows of their own would); generated code
   /// reads and writes it through its own operator(). `view_type` is the
-  /// parameter's type as generated code declares it ("const
-  /// amrex::Array4<const double>&"); `view_mutable` the type of an adjoint or
-  /// tangent of it (the same view over non-const elements, "const
-  /// amrex::Array4<double>&"). The generated headers include what declares
-  /// the class (`tag_declaration`: `#include "amrex_lite.hpp"`, as the kernel
-  /// file spells it).
+  /// parameter's type as the kernel declares it ("const
+  /// amrex::Array4<const double>&"; `view_reference`: a reference);
+  /// `view_class` the same view over non-const elements
+  /// ("amrex::Array4<double>"), the class of an adjoint or tangent of it,
+  /// taken as `view_pass` says (view_declared_type). The generated headers
+  /// include what declares the class (`tag_declaration`: `#include
+  /// "amrex_lite.hpp"`, as the kernel file spells it).
   bool view = false;
   int view_rank = 0;
-  std::string view_type, view_mutable;
+  std::string view_type;
+  bool view_reference = false;
+  std::string view_class;
+  enum class ViewPass {
+    Value,    // as the kernel takes it
+    ConstRef, // a shallow view (its const operator() gives non-const elements)
+    Ref,      // a deep-const class (AthenaArray-like): by non-const reference
+  } view_pass = ViewPass::Value;
+  /// A work array's view in a stage of a staged adjoint (schedule.cpp): the
+  /// driver's dpgen::ViewBuffer (view_buffer_type), taken by const reference
+  /// as the array and as its adjoint.
+  bool view_buffered = false;
   /// An unannotated parameter of a class type that is no view (AMReX's `Box
   /// const& bx`, a struct of grid constants): passed along unchanged, read
   /// only through its integer and floating members (constants of the kernel,
@@ -304,6 +316,13 @@ bool names_identifier(const std::string& text, const std::string& name);
 /// the output's seed, "dpgen::ViewBuffer<amrex::Array4<double>, double>"
 /// (runtime/include/dpgen/view_buffer.hpp).
 std::string view_buffer_type(const Param& p);
+/// The type generated code declares view `p` with: the kernel's own
+/// (`view_type`) for the array an adjoint reads (`is_const`); its
+/// `view_class` taken as `view_pass` says for an adjoint or tangent of it; a
+/// stage's buffer (`view_buffered`) by const reference either way.
+std::string view_declared_type(const Param& p, bool is_const);
+/// Whether generated code takes view `p` by reference (its copy may be deep).
+bool view_by_reference(const Param& p);
 
 /// The symbol standing for the (unbounded) row length of row-pointer array `a`.
 inline std::string row_symbol(const std::string& array) { return "dpgen_rows_" + array; }

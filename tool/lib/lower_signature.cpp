@@ -205,9 +205,13 @@ void Signature::parameter(const DeclaratorDecl* p) {
   // A scalar by reference: `const double& dx` (a value, like `double dx`),
   // `DPGEN_OUT double& mass` / `DPGEN_IN const double& c` (a one-element
   // array, Param::scalar_ref).
-  std::optional<Type> ref_scalar =
+  // (as a flag and a value: GCC warns, wrongly, that an optional<Type> read
+  // under its own test may be uninitialized)
+  const std::optional<Type> ref_type =
       q->isReferenceType() ? L.scalar_type(q.getNonReferenceType().getUnqualifiedType())
                            : std::nullopt;
+  const bool ref_scalar = ref_type.has_value();
+  const Type ref_elem = ref_type.value_or(Type::Bool);
   const CXXRecordDecl* record = q.getNonReferenceType()->getAsCXXRecordDecl();
   if (record && span_elem.isNull() && L.vector_element(q.getNonReferenceType()).isNull() &&
       !record->isLambda()) {
@@ -219,16 +223,14 @@ void Signature::parameter(const DeclaratorDecl* p) {
       L.objects_.object_param(p, ann, out);
     any_in_ = any_in_ || out.kind == ParamKind::In;
     any_out_ = any_out_ || out.kind == ParamKind::Out;
-  } else if (ref_scalar && *ref_scalar != Type::Bool &&
-      (ann == "dpgen.in" || ann == "dpgen.out")) {
-    scalar_ref_parameter(p, ann, *ref_scalar, out);
+  } else if (ref_scalar && ref_elem != Type::Bool && (ann == "dpgen.in" || ann == "dpgen.out")) {
+    scalar_ref_parameter(p, ann, ref_elem, out);
   } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
     // const double& dx: read like a value; the adjoint takes it the same way.
     out.kind = ParamKind::Scalar;
-    out.elem = *ref_scalar;
+    out.elem = ref_elem;
     out.elem_name = Lowerer::spelled(q.getNonReferenceType().getUnqualifiedType());
-    out.is_unsigned = *ref_scalar == Type::Int &&
-                      q.getNonReferenceType()->isUnsignedIntegerType();
+    out.is_unsigned = ref_elem == Type::Int && q.getNonReferenceType()->isUnsignedIntegerType();
   } else if (ref_scalar && ann.empty()) {
     L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
                                        "mark it DPGEN_OUT, or make it const",

@@ -150,14 +150,16 @@ std::string Views::without_element_const(QualType t, bool& changed) const {
                      fmt::join(args, ", "));
 }
 
-std::string Views::mutable_view_type(const DeclaratorDecl* p) const {
+void Views::mutable_view_type(const DeclaratorDecl* p, Param& out) const {
   QualType q = p->getType();
   bool ref = q->isReferenceType();
   QualType cls = q.getNonReferenceType();
   bool changed = false;
-  std::string type = without_element_const(cls.getUnqualifiedType(), changed);
+  out.view_reference = ref;
+  out.view_class = without_element_const(cls.getUnqualifiedType(), changed);
+  out.view_pass = Param::ViewPass::Value;
   if (!ref)
-    return type;
+    return;
   // Taken by const reference where the view is shallow (its const operator()
   // returns a non-const element: Array4<double>, View<double**>) or its
   // elements' constness was in its template arguments; else (a deep-const
@@ -169,7 +171,7 @@ std::string Views::mutable_view_type(const DeclaratorDecl* p) const {
         !m->getReturnType().getNonReferenceType().isConstQualified())
       shallow = true;
   }
-  return shallow ? "const " + type + "&" : type + "&";
+  out.view_pass = shallow ? Param::ViewPass::ConstRef : Param::ViewPass::Ref;
 }
 
 void Views::view_param(const DeclaratorDecl* p, const std::string& ann, Param& out) {
@@ -224,7 +226,7 @@ void Views::view_param(const DeclaratorDecl* p, const std::string& ann, Param& o
   out.view = true;
   out.view_rank = 0; // from its first element access (view_element)
   out.view_type = Lowerer::spelled(p->getType(), /*keep_const=*/true);
-  out.view_mutable = mutable_view_type(p);
+  mutable_view_type(p, out);
   out.tag_declaration = include_for(rd, p->getLocation(), fmt::format("view '{}'", out.name));
 }
 

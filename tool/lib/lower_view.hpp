@@ -51,9 +51,10 @@ public:
 private:
   Lowerer& L;
 
-  // The adjoint's type of a view parameter: the same class over non-const
-  // elements (recursively through template arguments).
-  std::string mutable_view_type(const clang::DeclaratorDecl* p) const;
+  // The adjoint's type of a view parameter (Param::view_class, view_pass):
+  // the same class over non-const elements (recursively through template
+  // arguments), and how it is taken.
+  void mutable_view_type(const clang::DeclaratorDecl* p, Param& out) const;
   std::string without_element_const(clang::QualType t, bool& changed) const;
   // The operator() a view is called with maps indices one-to-one (a layout).
   void check_layout(const clang::FunctionDecl* op, const Param& p, clang::SourceLocation use);

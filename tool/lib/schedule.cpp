@@ -367,8 +367,7 @@ AdjointPlan schedule(const Kernel& k, Partials& partials) {
       for (auto& p : s->params)
         if (k.intermediates.count(p.name)) {
           p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
-          if (p.view) // the driver's buffers, read and written as the view is
-            p.view_type = p.view_mutable = "const " + view_buffer_type(p) + "&";
+          p.view_buffered = p.view; // the driver's buffers, read and written as the view is
         }
       Partials stage_partials = derive(*s);
       auto stage_plan = std::make_shared<AdjointPlan>(schedule_reads(*s, stage_partials));
