@@ -106,7 +106,7 @@ int main(int argc, const char** argv) {
                                    "  dpgen [options] <kernel.cpp>... --out-dir <dir> "
                                    "[-- <compiler flags>]\n\n"
                                    "  --print-after=<pass>[,<pass>...]: print the IR after "
-                                   "the passes lower, derive, schedule, plan (stdout)\n",
+                                   "the passes lower, derive, schedule, plan, hoist (stdout)\n",
                                    &llvm::errs()))
     return 2;
   if (!llvm::sys::fs::is_directory(resource_dir + "/include")) {
@@ -125,8 +125,11 @@ int main(int argc, const char** argv) {
   for (const auto& p : print_after) {
     const auto& known = dpgen::pass_names();
     if (std::find(known.begin(), known.end(), p) == known.end()) {
-      llvm::errs() << "dpgen: error: --print-after: no pass '" << p << "' (the passes: lower, "
-                   << "derive, schedule, plan)\n";
+      std::string list;
+      for (const auto& n : known)
+        list += (list.empty() ? "" : ", ") + n;
+      llvm::errs() << "dpgen: error: --print-after: no pass '" << p << "' (the passes: " << list
+                   << ")\n";
       return 2;
     }
     opts.print_after.insert(p);

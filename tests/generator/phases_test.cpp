@@ -253,14 +253,51 @@ TEST_CASE("emit: the adjoint's signature and body follow the signature rule") {
   CHECK(adjoint_signature(k) ==
         "void up_adjoint(const double* d, double* d_adj, const double* out_adj, int n, double c)");
   const AdjointPlan plan = schedule_of(k);
-  const EmittedFile f = emit_file({plan_loops(plan)}, "unit.cpp", "unit");
+  LoopPlan loops = plan_loops(plan);
+  hoist_invariants(loops);
+  const EmittedFile f = emit_file({loops}, "unit.cpp", "unit");
   CHECK(f.header.find(adjoint_signature(k)) != std::string::npos);
   CHECK(f.source.find("d_adj[") != std::string::npos);
   CHECK(f.source.find("out_adj[") != std::string::npos);
   CHECK(f.kernels.find("void up(") != std::string::npos);
-  // Printing is a pure function of the plan.
+  // Printing is a pure function of the plan: it rewrites nothing, so the same
+  // plan prints the same again, and a plan made again prints the same.
+  CHECK(emit_file({loops}, "unit.cpp", "unit").source == f.source);
   const AdjointPlan again = schedule_of(k);
-  CHECK(emit_file({plan_loops(again)}, "unit.cpp", "unit").source == f.source);
+  LoopPlan loops_again = plan_loops(again);
+  hoist_invariants(loops_again);
+  CHECK(emit_file({loops_again}, "unit.cpp", "unit").source == f.source);
+}
+
+TEST_CASE("hoist: the pass rewrites the planned terms; emit prints them as they are") {
+  // A kernel whose adjoint divides under a condition: c * u[i] / dx.
+  const Kernel k = lower_one(R"(
+#include <dpgen/annotate.hpp>
+DPGEN_KERNEL void sc(DPGEN_IN const double* u, DPGEN_OUT double* out, int n, double dx) {
+  for (int i = 0; i < n; ++i)
+    out[i] = u[i] > 0.0 ? u[i] / dx : 0.0;
+}
+)");
+  const AdjointPlan plan = schedule_of(k);
+  LoopPlan loops = plan_loops(plan);
+  // Before the pass: the interior term divides by dx; nothing hoisted.
+  const BoxTerm& t = loops.inputs.at(0).gathers.at(0).loops.at(0).interior_terms.at(0).at(0).at(0);
+  CHECK(print(t.partial).find("1.0 / dx") != std::string::npos);
+  CHECK(loops.hoisted.empty());
+  const std::string unhoisted = emit_file({loops}, "unit.cpp", "unit").source;
+  hoist_invariants(loops);
+  REQUIRE(loops.hoisted.size() == 1);
+  CHECK(loops.hoisted[0]->name == "inv_dx");
+  CHECK(print(loops.hoisted[0]->def) == "1.0 / dx");
+  CHECK(print(t.partial).find("inv_dx") != std::string::npos);
+  CHECK(print(t.partial).find("1.0 / dx") == std::string::npos);
+  CHECK(t.same_everywhere == false);
+  CHECK(t.factor == -1); // (it reads u: not the same in every iteration)
+  // The forward form's own: u[i] / dx stays (it reads u), nothing to hoist.
+  CHECK(loops.forward.hoisted.empty());
+  const std::string hoisted = emit_file({loops}, "unit.cpp", "unit").source;
+  CHECK(hoisted != unhoisted);
+  CHECK(hoisted.find("const auto inv_dx = 1.0 / dx;") != std::string::npos);
 }
 
 TEST_CASE("hoist: loop-invariant subexpressions, exactly as written, before the loops") {
@@ -290,7 +327,7 @@ TEST_CASE("hoist: loop-invariant subexpressions, exactly as written, before the 
   const ExprP by_n = binary(Op::Div, one, cast(binary(Op::Div, int_const(100), n), Type::Double));
   CHECK(print(hoist(binary(Op::Mul, by_n, u))) == "1.0 / static_cast<double>(100 / n) * u[i]");
   Code code;
-  hoist.emit(code);
+  emit_hoisted(code, hoist.hoisted());
   CHECK(code.str() == "// loop-invariant, hoisted: computed once here, the same expressions as in "
                       "the loops below\n"
                       "const auto inv_dx_ = 1.0 / dx;\n"

@@ -34,73 +34,29 @@ std::string loop_type(const Nest&, const std::string&) { return kCellType; }
 
 // ---- one block: the terms of one (store, shift, piece) at one iteration -------
 
-struct Factored;
-
 struct BlockContext {
   const Kernel& k;
-  Hoister& hoist; // the function's loop-invariant subexpressions
   const GatherGroup& g;
   Code& code;
   std::string acc;
   std::string hit;    // flag set when a term applies (edge cells)
   bool edge;          // guarded: check that the iteration is in the domain
   const std::vector<BoxTerm>* terms; // the block's term in each box it prints (loop_plan)
-  Factored* factored = nullptr; // interior: shared invariant partials
 };
 
-// The locals a term needs, recomputed at its iteration, then `acc += partial
-// * seed`, all specialized to the box the iteration is known to lie in.
-// True when `e` is the same in every iteration (parameters and kernel-level
-// locals only): a partial that can be factored out of the cell's sum.
-bool invariant(const ExprP& e) {
-  if (e->op == Op::LoopVar || e->op == Op::Read)
-    return false;
-  if (e->op == Op::Local && !e->local->kernel_level)
-    return false;
-  for (const auto& o : e->ops)
-    if (!invariant(o))
-      return false;
-  return true;
+// The sum of seeds that interior partial `n` of accumulator `acc` factors
+// out (CellLoop::factored).
+std::string factored_sum(const Kernel& k, const std::string& acc, int n) {
+  return k.fresh(fmt::format("{}_s{}", acc, n));
 }
 
-// Partials shared by several terms of an interior cell, factored out:
-//   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0
-// (one multiplication instead of one per term, and a shorter dependence
-// chain on acc; the sum is the same up to rounding).
-struct Factored {
-  const Kernel& k;
-  std::string prefix;                              // the accumulator's name
-  std::vector<std::pair<std::string, ExprP>> sums; // name, partial
-  std::string name_for(const ExprP& partial) {
-    std::string key = print(partial);
-    for (const auto& [name, p] : sums)
-      if (print(p) == key)
-        return name;
-    sums.push_back({k.fresh(fmt::format("{}_s{}", prefix, sums.size())), partial});
-    return sums.back().first;
-  }
-};
-
-// A scatter read's partial as the schedule leaves it: never null, never zero()
-// (the schedule drops the reads whose partial vanishes).
-const ExprP& nonzero_partial(const ExprP& partial) {
-  if (is_zero(partial))
-    throw std::logic_error("internal error: emit: a zero partial reached the emitter (the "
-                           "schedule drops them)");
-  return partial;
-}
-
-// The term `t` in one box of its iterations, as loop_plan specialized it (bt).
-void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, const BoxTerm& bt,
-                const std::string& acc, const std::string& set_hit, Factored* factored = nullptr) {
-  // (Factored or not is decided on the partial as derived: hoisting makes a
-  // moved local kernel-level, which must not change the order of the sums.)
-  const bool same_everywhere = invariant(bt.partial);
-  ExprP partial = hoist(bt.partial);
-  ExprP seed_index = hoist(bt.seed_index);
-  std::vector<ExprP> gs;
-  for (const auto& g : bt.guards)
-    gs.push_back(hoist(g));
+// The term `t` in one box of its iterations, as planned (bt): the locals it
+// needs, recomputed at its iteration, then `acc += partial * seed`.
+void emit_terms(Code& code, const Kernel& k, const Term& t, const BoxTerm& bt,
+                const std::string& acc, const std::string& set_hit) {
+  const ExprP& partial = bt.partial;
+  const ExprP& seed_index = bt.seed_index;
+  const std::vector<ExprP>& gs = bt.guards;
   std::map<int, LocalP> locals;
   std::set<std::string> vars;
   collect(partial, locals, vars);
@@ -123,12 +79,11 @@ void emit_terms(Code& code, const Kernel& k, Hoister& hoist, const Term& t, cons
   define_locals(code, locals, done);
   ExprP seed = read(t.store->array + "_adj", seed_index, t.store->value->type, {},
                     k.shape_of(t.store->array));
-  if (factored && gs.empty() && same_everywhere) {
-    std::string sum = factored->name_for(partial);
+  if (bt.factor >= 0) {
+    std::string sum = factored_sum(k, acc, bt.factor);
     code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
     code.line("{} += {};", sum, print(seed));
-  }
-  else
+  } else
     code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())
     code.line("{}", set_hit);
@@ -189,8 +144,7 @@ void emit_block(const BlockContext& cx, const Block& b) {
                             print_max(d->second.lo, t), r, print_min(d->second.hi, t), r));
       ++opened;
     }
-    emit_terms(code, cx.k, cx.hoist, b.terms.front(), bt, cx.acc,
-               cx.hit.empty() ? "" : cx.hit + " = true;", cx.factored);
+    emit_terms(code, cx.k, b.terms.front(), bt, cx.acc, cx.hit.empty() ? "" : cx.hit + " = true;");
     for (int i = 0; i < opened; ++i)
       code.close();
     code.close();
@@ -229,7 +183,7 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
 
 // One cell loop for one or more gather groups that share a layout and a cell
 // box (several inputs of one kernel, fused so the loop reads shared data once).
-void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& plan) {
+void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   const std::vector<const GatherGroup*>& gs = plan.groups;
   const GatherGroup& g0 = *gs.front();
   const bool fused = gs.size() > 1;
@@ -277,7 +231,7 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
       code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
       code.line("bool {} = false;", hit_name(*g));
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
-        emit_block({k, hoist, *g, code, acc_name(*g), hit_name(*g), true, &plan.edge_terms[gi][bi]},
+        emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, &plan.edge_terms[gi][bi]},
                    g->blocks[bi]);
       code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
@@ -328,22 +282,20 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
         guarded = guarded || (b.bulk && !b.guards.empty());
       if (guarded)
         code.line("bool {} = false;", hit_name(*g));
-      // The blocks go to a buffer first: the sums they factor out are
-      // declared before them.
-      Factored factored{k, acc_name(*g), {}};
-      Code blocks(code.depth());
+      const std::vector<ExprP>& factored = plan.factored.at(gi);
+      if (!factored.empty())
+        code.line("// partials the same in every iteration, factored out: sums of seeds");
+      for (size_t n = 0; n < factored.size(); ++n)
+        code.line("{} {} = 0;", elem, factored_sum(k, acc_name(*g), int(n)));
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         if (g->blocks[bi].bulk)
-          emit_block({k, hoist, *g, blocks, acc_name(*g), guarded ? hit_name(*g) : "", false,
-                      &plan.interior_terms[gi][bi], guarded ? nullptr : &factored},
+          emit_block({k, *g, code, acc_name(*g), guarded ? hit_name(*g) : "", false,
+                      &plan.interior_terms[gi][bi]},
                      g->blocks[bi]);
-      if (!factored.sums.empty())
-        code.line("// partials the same in every iteration, factored out: sums of seeds");
-      for (const auto& [name, p] : factored.sums)
-        code.line("{} {} = 0;", elem, name);
-      code.raw(blocks.str());
-      for (const auto& [name, p] : factored.sums)
-        code.line("{} += {};", acc_name(*g), print(binary(Op::Mul, p, param(name, p->type))));
+      for (size_t n = 0; n < factored.size(); ++n)
+        code.line("{} += {};", acc_name(*g),
+                  print(binary(Op::Mul, factored[n],
+                               param(factored_sum(k, acc_name(*g), int(n)), factored[n]->type))));
       std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
       if (!cond.empty())
         code.line("{}", cond);
@@ -486,10 +438,11 @@ void emit_gather(Code& code, const Kernel& k, Hoister& hoist, const CellLoop& pl
 
 // ---- scatter units ---------------------------------------------------------------
 
-void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit& u) {
+void emit_scatter(Code& code, const Kernel& k, const ScatterLoop& plan) {
+  const ScatterUnit& u = *plan.unit;
   const Nest& nest = *u.nest;
   const Store& s = *u.store;
-  const ExprP out_index = hoist(s.index);
+  const ExprP& out_index = plan.seed_index;
   const std::string out_sub = subscript(out_index, k.shape_of(s.array));
   code.line("// {}_adj: reads of {} in {}{} at indices that cannot be inverted; scatter form, "
             "serial",
@@ -509,26 +462,26 @@ void emit_scatter(Code& code, const Kernel& k, Hoister& hoist, const ScatterUnit
   // read guarded by the arms it sits in.
   std::set<int> done;
   std::set<std::string> vars;
-  if (open_guard(code, s.path, hoist, done, vars))
+  if (open_guard(code, plan.path, done, vars))
     ++opened;
   std::map<int, LocalP> seed_locals;
   collect(out_index, seed_locals, vars);
   define_locals(code, seed_locals, done);
   const std::string seed = k.fresh("seed");
   code.line("const {} {} = {}_adj{};", type_spelling(s.value->type), seed, s.array, out_sub);
-  for (const auto& r : u.reads) {
-    code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array,
-              out_sub, r.read->source, r.read->name, subscript(r.read->ops[0], r.read->shape),
-              r.read->source);
-    bool guarded = open_guard(code, r.conds, hoist, done, vars);
-    ExprP partial = hoist(nonzero_partial(r.partial));
-    ExprP index = hoist(r.read->ops[0]);
+  for (const auto& r : plan.reads) {
+    code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array, out_sub,
+              r.read->read->source, r.read->read->name,
+              subscript(r.read->read->ops[0], r.read->read->shape), r.read->read->source);
+    bool guarded = open_guard(code, r.conds, done, vars);
+    const ExprP& partial = r.partial;
+    const ExprP& index = r.index;
     std::map<int, LocalP> locals;
     collect(partial, locals, vars);
     collect(index, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
-    code.line("{}_adj{} += {};", r.read->name, subscript(index, r.read->shape),
+    code.line("{}_adj{} += {};", r.read->read->name, subscript(index, r.read->read->shape),
               print(binary(Op::Mul, partial, param(seed, s.value->type))));
     if (guarded)
       code.close();
@@ -626,14 +579,11 @@ void emit_body(Code& out, const LoopPlan& plan) {
   const Kernel& k = *plan.adjoint->kernel;
   define_kernel_locals(out, k);
   emit_size_checks(out, k, k.name + "_adjoint");
-  // The loops go to a buffer first: the subexpressions they hoist are
-  // defined before them.
-  Hoister hoist(k);
-  Code code(out.depth());
+  emit_hoisted(out, plan.hoisted);
   for (const auto& in : plan.inputs) {
     for (const auto& step : in.gathers) {
-      if (!step.fused()) {
-        emit_gather(code, k, hoist, step.loops.front());
+      if (step.loops.size() == 1) {
+        emit_gather(out, k, step.loops.front());
         continue;
       }
       // Fused when every input is active; one loop each when some adjoint
@@ -642,23 +592,17 @@ void emit_body(Code& out, const LoopPlan& plan) {
       for (const auto* f : step.loops.front().groups)
         if (!k.find_param(f->array)->view) // (a view has no null: always active)
           all.push_back(f->array + "_adj != nullptr");
-      if (all.empty()) {
-        emit_gather(code, k, hoist, step.loops.front());
-        continue;
-      }
-      code.open(fmt::format("if ({})", fmt::join(all, " && ")));
-      emit_gather(code, k, hoist, step.loops.front());
-      code.close();
-      code.open("else");
+      out.open(fmt::format("if ({})", fmt::join(all, " && ")));
+      emit_gather(out, k, step.loops.front());
+      out.close();
+      out.open("else");
       for (size_t i = 1; i < step.loops.size(); ++i)
-        emit_gather(code, k, hoist, step.loops[i]);
-      code.close();
+        emit_gather(out, k, step.loops[i]);
+      out.close();
     }
-    for (const auto* u : in.scatters)
-      emit_scatter(code, k, hoist, *u);
+    for (const auto& u : in.scatters)
+      emit_scatter(out, k, u);
   }
-  hoist.emit(out);
-  out.raw(code.str());
 }
 
 } // namespace adjoint

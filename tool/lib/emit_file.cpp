@@ -65,7 +65,7 @@ public:
   void define(Code& c, const LoopPlan& l) const override {
     const Kernel& k = *l.adjoint->kernel;
     open_namespaces(c, k);
-    emit_parallel_forward(c, k);
+    emit_parallel_forward(c, l.forward);
     close_namespaces(c, k);
   }
 };

@@ -21,8 +21,8 @@ std::string bound(const ExprP& e) {
 
 } // namespace
 
-void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoister& hoist,
-                       const std::vector<ExprP>* dots, const ForwardOptions& options) {
+void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
+                       const ForwardOptions& options) {
   const Nest& nest = *plan.nest;
   code.open("");
   int opened = 1;
@@ -53,16 +53,15 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoi
   }
   std::set<int> done;
   std::set<std::string> vars;
-  for (size_t i = 0; i < nest.stores.size(); ++i) {
-    const Store& s = nest.stores[i];
-    // `+=` adds the values to the elements (hoist.hpp: summed).
-    const ExprP index = hoist(s.index);
-    const bool summed = s.accumulate && s.extremum == 0;
-    const ExprP value = hoist(s.value, summed);
-    const ExprP dot = !dots                 ? zero(s.value->type)
-                      : is_zero((*dots)[i]) ? (*dots)[i]
-                                            : hoist((*dots)[i], summed);
-    bool guarded = open_guard(code, s.path, hoist, done, vars);
+  if (plan.stores.size() != nest.stores.size() ||
+      (tangent && !plan.stores.empty() && !plan.stores.front().dot))
+    throw std::logic_error("internal error: emit: a forward nest's stores are not planned");
+  for (const ForwardStore& fs : plan.stores) {
+    const Store& s = *fs.store;
+    const ExprP& index = fs.index;
+    const ExprP& value = fs.value;
+    const ExprP dot = tangent ? fs.dot : zero(s.value->type);
+    bool guarded = open_guard(code, fs.path, done, vars);
     std::map<int, LocalP> locals;
     collect(index, locals, vars);
     collect(value, locals, vars);
@@ -84,13 +83,13 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoi
       const std::string value_dot = k.fresh(u + "_new_dot");
       code.open("");
       code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
-      if (dots)
+      if (tangent)
         code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
       code.line("{}{} = {};", u, idx, new_value);
-      if (dots)
+      if (tangent)
         code.line("{}_dot{} = {};", u, idx, value_dot);
       code.close();
-    } else if (s.extremum != 0 || !dots) {
+    } else if (s.extremum != 0 || !tangent) {
       // (a min/max scan is a constant to derivatives: its tangent stays what
       // its first store set, 0)
       code.line("{}", store_statement(s, s.array + idx, print(value)));
@@ -112,7 +111,8 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoi
   }
 }
 
-void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
+void emit_recompute(Code& code, const ForwardPlan& plan, const std::string& name) {
+  const Kernel& k = *plan.kernel;
   std::vector<std::string> ps;
   for (const auto& p : k.params) {
     if (p.global)
@@ -162,23 +162,20 @@ void emit_recompute(Code& code, const Kernel& k, const std::string& name) {
   ForwardOptions serial;
   serial.threads = false;
   serial.in_place = false;
-  emit_forward_nests(code, k, serial, false);
+  emit_forward_nests(code, plan, serial, false);
   code.close();
 }
 
-void emit_forward_nests(Code& code, const Kernel& k, const ForwardOptions& options, bool comments) {
-  const ForwardPlan plan = plan_forward(k);
-  Hoister hoist(k); // (the nests to a buffer: what they hoist comes first)
-  Code nests(code.depth());
+void emit_forward_nests(Code& code, const ForwardPlan& plan, const ForwardOptions& options,
+                        bool comments) {
+  emit_hoisted(code, plan.hoisted);
   for (size_t n = 0; n < plan.nests.size(); ++n) {
     const ForwardNest& f = plan.nests[n];
     if (comments)
-      nests.line("// loop nest {}{}", n + 1,
-                 f.parallel || f.nest->loops.empty() ? "" : " (serial: a store adds)");
-    emit_forward_nest(nests, k, f, hoist, nullptr, options);
+      code.line("// loop nest {}{}", n + 1,
+                f.parallel || f.nest->loops.empty() ? "" : " (serial: a store adds)");
+    emit_forward_nest(code, *plan.kernel, f, false, options);
   }
-  hoist.emit(code);
-  code.raw(nests.str());
 }
 
 bool has_parallel_forward(const Kernel& k) {
@@ -206,14 +203,15 @@ std::string parallel_forward_signature(const Kernel& k) {
   return fmt::format("void {}_parallel_forward({})", k.name, fmt::join(ps, ", "));
 }
 
-void emit_parallel_forward(Code& code, const Kernel& k) {
+void emit_parallel_forward(Code& code, const ForwardPlan& plan) {
+  const Kernel& k = *plan.kernel;
   code.line("// {} ({}:{}) printed from the IR, its nests that set each element once on every "
             "thread: the same stores in the same order per element, so the same results.",
             k.name, base_name(k.file), k.pos.line);
   code.open(parallel_forward_signature(k));
   define_kernel_locals(code, k);
   emit_size_checks(code, k, k.name);
-  emit_forward_nests(code, k, ForwardOptions{}, true);
+  emit_forward_nests(code, plan, ForwardOptions{}, true);
   code.close();
 }
 

@@ -31,21 +31,23 @@ struct ForwardOptions {
 
 /// Nest `plan` of `k`: its loops (a descending one counted down, as the
 /// kernel counts, so that a sum adds in the kernel's order: the same bits),
-/// each store under its path; with `dots` (the tangent: per store its
-/// tangent, possibly zero()) each store followed by its tangent
-/// `<array>_dot`. Loop-invariant subexpressions go to `hoist`.
-void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, Hoister& hoist,
-                       const std::vector<ExprP>* dots, const ForwardOptions& options);
+/// each store under its path, as planned (the pass `hoist` has moved their
+/// loop-invariant subexpressions before the loops: ForwardPlan::hoisted);
+/// with `tangent` each store followed by its tangent `<array>_dot`
+/// (ForwardStore::dot).
+void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
+                       const ForwardOptions& options);
 
 /// `void <name>(<the kernel's parameters, flat>, T* <hidden array>...)`: the
 /// kernel's loop nests and stores in order, serial, each store under its
 /// path; the stores to hidden arrays fill them. A view output is a
 /// `dpgen::ViewBuffer<...>&`.
-void emit_recompute(Code& code, const Kernel& k, const std::string& name);
+void emit_recompute(Code& code, const ForwardPlan& plan, const std::string& name);
 
-/// Every nest of `k` (each printed by emit_forward_nest, the loop-invariant subexpressions
+/// Every nest of `plan` (each printed by emit_forward_nest, the loop-invariant subexpressions
 /// before them), each under a `// loop nest <n>` comment if `comments`.
-void emit_forward_nests(Code& code, const Kernel& k, const ForwardOptions& options, bool comments);
+void emit_forward_nests(Code& code, const ForwardPlan& plan, const ForwardOptions& options,
+                        bool comments);
 
 /// Whether `k` has a parallel forward (emit_parallel_forward): some nest runs on every
 /// thread (loop_plan.hpp: ForwardNest::parallel), and the kernel has plain arrays only and no
@@ -60,6 +62,6 @@ std::string parallel_forward_signature(const Kernel& k);
 /// stores in the same order as in the kernel, so the results are the kernel's, bit for bit
 /// (where the compiler contracts both alike: no `-ffp-contract=fast` differences). In the
 /// adjoint files (emit_file.cpp), for C++ callers and the torch ops' forward.
-void emit_parallel_forward(Code& code, const Kernel& k);
+void emit_parallel_forward(Code& code, const ForwardPlan& plan);
 
 } // namespace dpgen

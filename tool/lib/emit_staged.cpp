@@ -189,7 +189,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
                            std::any_of(k.params.begin(), k.params.end(),
                                        [](const Param& p) { return p.view && !p.global; });
   if (own_forward)
-    emit_recompute(code, k, recompute);
+    emit_recompute(code, plan.forward, recompute);
   code.raw("} // namespace\n\n");
   if (!own_forward) {
     code.line("// The forward kernel, which recomputes the work arrays.");

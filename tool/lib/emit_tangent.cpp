@@ -26,9 +26,8 @@ namespace {
 // by several stores get one tangent each.
 struct TangentPlan {
   const Kernel* k = nullptr;
-  ForwardPlan loops;
-  std::set<std::string> active;       // DPGEN_IN arrays and work arrays
-  std::vector<std::vector<ExprP>> dot; // per nest, per store: its tangent (may be zero())
+  ForwardPlan loops;            // each store with its tangent (ForwardStore::dot, may be zero())
+  std::set<std::string> active; // DPGEN_IN arrays and work arrays
   DeriveNames names;
   TangentLocals locals;
 };
@@ -65,11 +64,11 @@ TangentPlan plan_tangent(const Kernel& k) {
   for (const auto& n : k.nests)
     for (const auto& s : n.stores)
       names_in(s.value, p.locals.taken, seen);
-  for (const auto& n : k.nests) {
-    p.dot.emplace_back();
-    for (const auto& s : n.stores)
-      p.dot.back().push_back(tangent(s.value, p.active, p.names, p.locals));
-  }
+  for (auto& n : p.loops.nests)
+    for (auto& s : n.stores)
+      s.dot = tangent(s.store->value, p.active, p.names, p.locals);
+  // (after every tangent local is named: the hoisted ones take none of them)
+  hoist_invariants(p.loops, &p.locals.taken);
   return p;
 }
 
@@ -162,16 +161,11 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
     }
   emit_size_checks(code, k, k.name + "_tangent");
-  // The nests go to a buffer first: the subexpressions they hoist are defined
-  // before them.
-  Hoister hoist(k, &tp.locals.taken);
-  Code nests(code.depth());
-  for (size_t n = 0; n < k.nests.size(); ++n) {
-    nests.line("// loop nest {}: each store, then its tangent", n + 1);
-    emit_forward_nest(nests, k, tp.loops.nests[n], hoist, &tp.dot[n], ForwardOptions{});
+  emit_hoisted(code, tp.loops.hoisted);
+  for (size_t n = 0; n < tp.loops.nests.size(); ++n) {
+    code.line("// loop nest {}: each store, then its tangent", n + 1);
+    emit_forward_nest(code, k, tp.loops.nests[n], true, ForwardOptions{});
   }
-  hoist.emit(code);
-  code.raw(nests.str());
   code.close();
   if (shaped) {
     code.raw("} // namespace\n\n");

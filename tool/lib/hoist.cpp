@@ -1,9 +1,11 @@
-// Loop-invariant subexpressions hoisted out of generated loops (hoist.hpp).
+// The pass `hoist`: loop-invariant subexpressions moved out of the planned
+// loops (hoist.hpp).
 #include "hoist.hpp"
 
 #include "ir_walk.hpp"
 #include "print.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <functional>
 
@@ -223,27 +225,125 @@ std::string Hoister::name_for(const ExprP& e) {
   return name;
 }
 
-void Hoister::emit(Code& code) const {
-  if (hoisted_.empty())
+// ---- the pass: the planned expressions, in the order emit prints them ----------
+
+namespace {
+
+void hoist_term(Hoister& hoist, BoxTerm& t) {
+  t.partial = hoist(t.partial);
+  t.seed_index = hoist(t.seed_index);
+  for (auto& g : t.guards)
+    g = hoist(g);
+}
+
+// The interior partials that are the same in every iteration, factored out
+// of the cell's sum (CellLoop::factored): those of unguarded terms, where no
+// bulk block of the group is guarded (a guarded cell may not be written).
+void factor_interior(CellLoop& loop, size_t gi) {
+  const GatherGroup& g = *loop.groups[gi];
+  std::vector<ExprP>& sums = loop.factored[gi];
+  for (const auto& b : g.blocks)
+    if (b.bulk && !b.guards.empty())
+      return;
+  for (size_t bi = 0; bi < g.blocks.size(); ++bi)
+    if (g.blocks[bi].bulk)
+      for (auto& t : loop.interior_terms[gi][bi]) {
+        if (!t.guards.empty() || !t.same_everywhere)
+          continue;
+        const std::string key = print(t.partial);
+        auto same =
+            std::find_if(sums.begin(), sums.end(), [&](const ExprP& p) { return print(p) == key; });
+        t.factor = int(same - sums.begin());
+        if (same == sums.end())
+          sums.push_back(t.partial);
+      }
+}
+
+// emit_gather's order: every block's edge terms; the interior's (bulk blocks;
+// none for a single cell), whose invariant partials are then factored out.
+void hoist_cell_loop(Hoister& hoist, CellLoop& loop) {
+  for (auto& per_group : loop.edge_terms)
+    for (auto& per_block : per_group)
+      for (auto& t : per_block)
+        hoist_term(hoist, t);
+  loop.factored.assign(loop.groups.size(), {});
+  if (loop.groups.front()->layout.empty() || !loop.any_bulk)
+    return;
+  for (size_t gi = 0; gi < loop.groups.size(); ++gi) {
+    for (size_t bi = 0; bi < loop.groups[gi]->blocks.size(); ++bi)
+      if (loop.groups[gi]->blocks[bi].bulk)
+        for (auto& t : loop.interior_terms[gi][bi])
+          hoist_term(hoist, t);
+    factor_interior(loop, gi);
+  }
+}
+
+// emit_scatter's order: the seed's index, the store's path, then per read its
+// conditions, partial and index.
+void hoist_scatter(Hoister& hoist, ScatterLoop& u) {
+  u.seed_index = hoist(u.seed_index);
+  hoist.all(u.path);
+  for (auto& r : u.reads) {
+    hoist.all(r.conds);
+    r.partial = hoist(r.partial);
+    r.index = hoist(r.index);
+  }
+}
+
+} // namespace
+
+void hoist_invariants(LoopPlan& plan) {
+  for (auto& s : plan.stages)
+    hoist_invariants(s);
+  if (plan.forward.kernel)
+    hoist_invariants(plan.forward);
+  if (!plan.stages.empty())
+    return; // (a staged adjoint's loops are its stages')
+  Hoister hoist(*plan.adjoint->kernel);
+  for (auto& in : plan.inputs) {
+    for (auto& step : in.gathers)
+      for (auto& loop : step.loops)
+        hoist_cell_loop(hoist, loop);
+    for (auto& u : in.scatters)
+      hoist_scatter(hoist, u);
+  }
+  plan.hoisted = hoist.hoisted();
+}
+
+// emit_forward_nest's order, per store: index, value, tangent, path. `+=`
+// adds the value to the element (summed).
+void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken) {
+  Hoister hoist(*plan.kernel, taken);
+  for (auto& nest : plan.nests)
+    for (auto& s : nest.stores) {
+      const bool summed = s.store->accumulate && s.store->extremum == 0;
+      s.index = hoist(s.index);
+      s.value = hoist(s.value, summed);
+      if (s.dot && !is_zero(s.dot))
+        s.dot = hoist(s.dot, summed);
+      hoist.all(s.path);
+    }
+  plan.hoisted = hoist.hoisted();
+}
+
+void emit_hoisted(Code& code, const std::vector<LocalP>& hoisted) {
+  if (hoisted.empty())
     return;
   code.line("// loop-invariant, hoisted: computed once here, the same expressions as in the "
             "loops below");
-  for (const auto& l : hoisted_)
+  for (const auto& l : hoisted)
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
 }
 
-bool open_guard(Code& code, const std::vector<PathCond>& conds, Hoister& hoist,
-                std::set<int>& done, std::set<std::string>& vars) {
+bool open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
+                std::set<std::string>& vars) {
   if (conds.empty())
     return false;
-  std::vector<PathCond> hoisted;
-  for (const auto& pc : conds)
-    hoisted.push_back(hoist(pc));
   std::map<int, LocalP> cond_locals;
-  for (const auto& pc : hoisted)
+  for (const auto& pc : conds)
     collect(pc.cond, cond_locals, vars);
   define_locals(code, cond_locals, done);
-  code.open(fmt::format("if ({})", conjunction(hoisted)));
+  code.open(fmt::format("if ({})", conjunction(conds)));
   return true;
 }
 

@@ -1,10 +1,12 @@
-// Emit (phase 6), shared by the emitters: loop-invariant subexpressions of
-// the code one generated function prints, hoisted out of its loops into
-// `const` locals defined once before them.
+// The pass `hoist` (after plan, before emit): loop-invariant subexpressions
+// of the expressions a generated function prints inside its loops, moved
+// into `const` locals the printer defines once before them. The planned
+// terms are rewritten in place; emit prints them as they are.
 #pragma once
 
 #include "emit_util.hpp"
 #include "ir.hpp"
+#include "loop_plan.hpp"
 
 #include <map>
 #include <set>
@@ -16,10 +18,11 @@ namespace dpgen {
 /// Replaces, in the expressions a generated function prints inside its
 /// loops, each loop-invariant subexpression (over parameters, constants and
 /// kernel-level locals only: `1.0 / dx`, `nu / (dx * dx)`) by a local that
-/// emit() defines before the loops. The local holds the very same expression
-/// tree, printed the same way and declared `auto`, so it has the type the
-/// expression had in place and every result stays bit-identical. Why: a
-/// derivative often copies a division of the forward into a conditional
+/// the function defines before the loops (`hoisted`, in order of first use:
+/// the expressions are visited in the order they are printed). The local holds the very same
+/// expression tree, printed the same way and declared `auto`, so it has the type the expression had
+/// in place and every result stays bit-identical. Why: a derivative often copies a division of the
+/// forward into a conditional
 /// (`u[i] / dx <= 0.0 ? 1.0 / dx : 0.0`), and GCC will not evaluate a
 /// division that may trap where the source does not, so it does not
 /// vectorize such a loop; hoisted, the conditional selects between two values.
@@ -32,6 +35,9 @@ namespace dpgen {
 /// that pair into one fused multiply-add where it sees both, so the product
 /// stays next to its sum. A loop-level local whose whole definition is
 /// invariant moves as it is (same name, same type), under the same rules.
+///
+/// The rewrite of one function's expressions (the pass below runs one per
+/// generated function).
 class Hoister {
 public:
   /// `taken`: names of generated locals the hoisted ones must not take
@@ -44,10 +50,12 @@ public:
   ExprP operator()(const ExprP& e, bool summed = false);
   /// The path condition with its condition rewritten.
   PathCond operator()(const PathCond& pc);
-  bool empty() const { return hoisted_.empty(); }
-  /// The definitions, in order of first use, under a comment saying what
-  /// they are; nothing if there are none.
-  void emit(Code& code) const;
+  void all(std::vector<PathCond>& conds) {
+    for (auto& pc : conds)
+      pc = (*this)(pc);
+  }
+  /// The definitions, in order of first use.
+  std::vector<LocalP> hoisted() const { return hoisted_; }
 
 private:
   ExprP rewrite(const ExprP& e, bool summed);
@@ -72,10 +80,26 @@ private:
   std::map<std::string, std::pair<std::string, ExprP>> moved_;
 };
 
-/// Opens `if (<conds>)` for a guarded statement of a generated loop: each
-/// condition hoisted, the locals they use defined first (into `done`, as
+/// The pass: for an adjoint, its gather and scatter loops (LoopPlan::hoisted),
+/// each stage's (a staged adjoint) and the kernel's forward loops
+/// (LoopPlan::forward); the expressions are visited in the order emit prints
+/// them, so the hoisted locals are numbered in order of first use.
+void hoist_invariants(LoopPlan& plan);
+
+/// The same for a forward form (the parallel forward, a staged adjoint's
+/// recompute, the tangent with its stores' tangents). `taken`: names of
+/// generated locals the hoisted ones must not take besides the kernel's (the
+/// tangent's `<local>_dot`); may be null.
+void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken = nullptr);
+
+/// The hoisted definitions, under a comment saying what they are; nothing if
+/// there are none.
+void emit_hoisted(Code& code, const std::vector<LocalP>& hoisted);
+
+/// Opens `if (<conds>)` for a guarded statement of a generated loop (`conds`
+/// as planned, hoisted), the locals they use defined first (into `done`, as
 /// define_locals does). False, and nothing written, when `conds` is empty.
-bool open_guard(Code& code, const std::vector<PathCond>& conds, Hoister& hoist,
-                std::set<int>& done, std::set<std::string>& vars);
+bool open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
+                std::set<std::string>& vars);
 
 } // namespace dpgen

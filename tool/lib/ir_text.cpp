@@ -101,7 +101,7 @@ void made_locals(const ExprP& e, std::string& out, const std::string& indent) {
 } // namespace
 
 const std::vector<std::string>& pass_names() {
-  static const std::vector<std::string> names = {"lower", "derive", "schedule", "plan"};
+  static const std::vector<std::string> names = {"lower", "derive", "schedule", "plan", "hoist"};
   return names;
 }
 
@@ -278,8 +278,8 @@ std::string print_plan(const LoopPlan& plan) {
               }
       }
     }
-    for (const auto* s : in.scatters)
-      out += fmt::format("    scatter from store #{} (serial)\n", s->store->seq);
+    for (const auto& s : in.scatters)
+      out += fmt::format("    scatter from store #{} (serial)\n", s.unit->store->seq);
   }
   for (size_t i = 0; i < plan.stages.size(); ++i) {
     std::string inner = print_plan(plan.stages[i]);
@@ -289,6 +289,48 @@ std::string print_plan(const LoopPlan& plan) {
       out += "    " + inner.substr(a, b - a) + "\n";
     }
   }
+  return out;
+}
+
+namespace {
+
+void hoisted_text(std::string& out, const std::string& indent, const std::string& what,
+                  const std::vector<LocalP>& hoisted) {
+  if (hoisted.empty())
+    return;
+  out += fmt::format("{}{}:\n", indent, what);
+  for (const auto& l : hoisted)
+    out += fmt::format("{}  {} = {}\n", indent, l->name, print(l->def));
+}
+
+void hoisted_text(std::string& out, const std::string& indent, const LoopPlan& plan) {
+  hoisted_text(out, indent, "adjoint", plan.hoisted);
+  for (size_t i = 0; i < plan.stages.size(); ++i) {
+    out += fmt::format("{}stage {}\n", indent, i);
+    hoisted_text(out, indent + "  ", plan.stages[i]);
+  }
+}
+
+} // namespace
+
+std::string print_hoisted(const LoopPlan& plan) {
+  std::string out = fmt::format("hoisted in {}\n", plan.adjoint->kernel->name);
+  hoisted_text(out, "  ", plan);
+  hoisted_text(out, "  ", "forward", plan.forward.hoisted);
+  // What the loops print with them: the interior terms that use a hoisted local.
+  for (const auto& in : plan.inputs)
+    for (const auto& step : in.gathers)
+      for (const auto& loop : step.loops)
+        for (size_t gi = 0; gi < loop.interior_terms.size(); ++gi)
+          for (size_t bi = 0; bi < loop.interior_terms[gi].size(); ++bi)
+            for (const auto& t : loop.interior_terms[gi][bi])
+              if (std::any_of(plan.hoisted.begin(), plan.hoisted.end(), [&](const LocalP& l) {
+                    return names_identifier(print(t.partial), l->name);
+                  }))
+                out +=
+                    fmt::format("  interior term of {}{}, block {}: {}\n", loop.groups[gi]->array,
+                                step.fused() && &loop == &step.loops.front() ? " (fused)" : "", bi,
+                                print(t.partial));
   return out;
 }
 

@@ -29,6 +29,9 @@ std::string print_schedule(const AdjointPlan& plan);
 /// After `plan`: per input, the cell loops (cell box, interior, parallel
 /// test) of each gather step, and the scatter units.
 std::string print_plan(const LoopPlan& plan);
+/// After the pass `hoist`: the locals each function of the adjoint files
+/// defines before its loops, and the interior terms that use them.
+std::string print_hoisted(const LoopPlan& plan);
 /// The forward forms' loops (loop_plan.hpp: ForwardPlan): each nest serial or parallel.
 std::string print_forward_plan(const ForwardPlan& plan);
 

@@ -203,15 +203,38 @@ private:
 
 // A block's first term in one box of its iterations (BoxTerm). Its partial is
 // never zero: the schedule drops the reads whose partial vanishes.
-BoxTerm box_term(const Block& b, const Box& box) {
-  const Term& t = b.terms.front();
-  if (is_zero(t.partial))
+// The same in every iteration: parameters and kernel-level locals only.
+bool same_everywhere(const ExprP& e) {
+  if (e->op == Op::LoopVar || e->op == Op::Read)
+    return false;
+  if (e->op == Op::Local && !e->local->kernel_level)
+    return false;
+  return std::all_of(e->ops.begin(), e->ops.end(), same_everywhere);
+}
+
+// A partial as the schedule leaves it: never zero() (it drops the reads
+// whose partial vanishes).
+const ExprP& nonzero_partial(const ExprP& partial) {
+  if (is_zero(partial))
     throw std::logic_error("internal error: plan: a zero partial reached the loop plan (the "
                            "schedule drops them)");
+  return partial;
+}
+
+BoxTerm box_term(const Block& b, const Box& box) {
+  const Term& t = b.terms.front();
   Specializer spec(box);
-  BoxTerm out{box, spec(t.partial), spec(t.store->index), {}};
+  BoxTerm out{box, spec(nonzero_partial(t.partial)), spec(t.store->index), {}};
   for (const auto& pc : b.guards)
     out.guards.push_back(spec(pc.positive ? pc.cond : unary(Op::Not, pc.cond)));
+  out.same_everywhere = same_everywhere(out.partial);
+  return out;
+}
+
+ScatterLoop scatter_loop(const ScatterUnit& u) {
+  ScatterLoop out{&u, u.store->index, u.store->path, {}};
+  for (const auto& r : u.reads)
+    out.reads.push_back({&r, r.conds, nonzero_partial(r.partial), r.read->ops[0]});
   return out;
 }
 
@@ -319,16 +342,15 @@ void plan_terms(CellLoop& loop) {
 CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
   CellLoop loop = plan_cell_boxes(k, gs);
   plan_terms(loop);
+  loop.factored.assign(gs.size(), {}); // (none until the pass `hoist`)
   return loop;
 }
 
-} // namespace
-
-LoopPlan plan_loops(const AdjointPlan& plan) {
+LoopPlan plan_adjoint_loops(const AdjointPlan& plan) {
   LoopPlan out;
   out.adjoint = &plan;
   for (const auto& s : plan.stages)
-    out.stages.push_back(plan_loops(*s.plan));
+    out.stages.push_back(plan_adjoint_loops(*s.plan));
   if (!plan.stages.empty())
     return out; // printed stage by stage
   const Kernel& k = *plan.kernel;
@@ -359,16 +381,27 @@ LoopPlan plan_loops(const AdjointPlan& plan) {
         done[size_t(f - plan.gathers.data())] = true;
       GatherStep step;
       step.loops.push_back(plan_cell_loop(k, fused));
-      if (fused.size() > 1)
+      // A loop of each alone, for when some input is inactive (a view never is).
+      if (fused.size() > 1 && std::any_of(fused.begin(), fused.end(), [&](const auto* f) {
+            return !k.find_param(f->array)->view;
+          }))
         for (const auto* f : fused)
           step.loops.push_back(plan_cell_loop(k, {f}));
       in.gathers.push_back(std::move(step));
     }
     for (const auto& u : plan.scatters)
       if (u.array == p.name)
-        in.scatters.push_back(&u);
+        in.scatters.push_back(scatter_loop(u));
     out.inputs.push_back(std::move(in));
   }
+  return out;
+}
+
+} // namespace
+
+LoopPlan plan_loops(const AdjointPlan& plan) {
+  LoopPlan out = plan_adjoint_loops(plan);
+  out.forward = plan_forward(*plan.kernel);
   return out;
 }
 
@@ -378,7 +411,9 @@ ForwardPlan plan_forward(const Kernel& k) {
   for (const auto& nest : k.nests) {
     const bool adds = std::any_of(nest.stores.begin(), nest.stores.end(),
                                   [](const Store& s) { return s.accumulate; });
-    plan.nests.push_back({&nest, !nest.loops.empty() && !adds});
+    plan.nests.push_back({&nest, !nest.loops.empty() && !adds, {}});
+    for (const auto& st : nest.stores)
+      plan.nests.back().stores.push_back({&st, st.index, st.value, nullptr, st.path});
   }
   return plan;
 }

@@ -6,8 +6,10 @@
 // reach into the interior (checked at run time), and the parallel test (the
 // mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
 // when their fusion keys, compared by fields, are equal. emit.cpp prints the
-// plan: it decides no box, bound, fusion or test; it only specializes each
-// term's expressions to the box the plan puts it in (its Specializer).
+// plan: it decides no box, bound, fusion or test, and rewrites no
+// expression. Each term's expressions are specialized here to the box the
+// plan puts it in (loop_plan.cpp's Specializer); the pass `hoist` (hoist.hpp)
+// then moves their loop-invariant subexpressions before the loops.
 #pragma once
 
 #include "affine.hpp"
@@ -58,11 +60,19 @@ struct EdgeReach {
 /// the index of the seed it multiplies and the store's run-time conditions
 /// (each as it must hold), with the conditional expressions the box decides
 /// folded (an interior loop reads a[i + 1], not a[(i == n - 1) ? 0 : i + 1]).
+/// (After the pass `hoist`, the expressions use the plan's hoisted locals.)
 struct BoxTerm {
   Box box;
   ExprP partial;
   ExprP seed_index;
   std::vector<ExprP> guards;
+  /// The partial, as derived, is the same in every iteration (parameters and
+  /// kernel-level locals only): an interior cell factors it out of its sum.
+  /// (Decided before hoisting, which makes moved locals kernel-level.)
+  bool same_everywhere = false;
+  /// An interior term whose partial is factored out of the cell's sum (the
+  /// pass `hoist`): its index in CellLoop::factored of its group; else -1.
+  int factor = -1;
 };
 
 /// One cell loop over one or more gather groups (fused when more than one)
@@ -80,6 +90,13 @@ struct CellLoop {
   /// cell checks which box its iteration lies in) and, for bulk blocks, in
   /// each of its interior boxes.
   std::vector<std::vector<std::vector<BoxTerm>>> edge_terms, interior_terms;
+  /// Per group: the partials that are the same in every iteration, factored
+  /// out of an interior cell's sum (the pass `hoist`), in order of first use:
+  ///   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0
+  /// (one multiplication instead of one per term, and a shorter dependence
+  /// chain on acc; the sum is the same up to rounding). Only where no bulk
+  /// block of the group has a run-time guard (BoxTerm::factor).
+  std::vector<std::vector<ExprP>> factored;
   /// The parallel test: a one-dimensional unit-stride layout needs only
   /// enough cells; any other also the mixed-radix conditions, counters in
   /// `radix` order (dim indexes the layout).
@@ -88,30 +105,46 @@ struct CellLoop {
 };
 
 /// Gather groups run in one step: `loops[0]` is the loop over all of them;
-/// for fused groups, `loops[1..]` are the loops of each group alone, run when
-/// some input is inactive (a null adjoint).
+/// for fused groups of which some input may be inactive (a null adjoint; a
+/// view is always active), `loops[1..]` are the loops of each group alone,
+/// run when one is.
 struct GatherStep {
   std::vector<CellLoop> loops;
-  bool fused() const { return loops.size() > 1; }
+  bool fused() const { return loops.front().groups.size() > 1; }
+};
+
+/// A scatter read as printed: its conditions, its partial (never zero) and
+/// the index of the element its adjoint adds to.
+struct ScatterTerm {
+  const ScatterRead* read = nullptr;
+  std::vector<PathCond> conds;
+  ExprP partial;
+  ExprP index;
+};
+
+/// A scatter unit's loop as printed: the index of the seed it reads, the
+/// store's path and its reads.
+struct ScatterLoop {
+  const ScatterUnit* unit = nullptr;
+  ExprP seed_index;
+  std::vector<PathCond> path;
+  std::vector<ScatterTerm> reads;
 };
 
 /// The loops of one differentiable input, in order: gathers, then scatters.
 struct InputLoops {
   std::string array;
   std::vector<GatherStep> gathers;
-  std::vector<const ScatterUnit*> scatters;
+  std::vector<ScatterLoop> scatters;
 };
 
-/// The plan emit prints for one kernel (or one stage of a kernel with work
-/// arrays).
-struct LoopPlan {
-  const AdjointPlan* adjoint = nullptr;
-  std::vector<InputLoops> inputs;
-  std::vector<LoopPlan> stages; // a kernel with work arrays: one per stage
+/// One store of a forward nest as printed: its index, value and path, and in
+/// a tangent its tangent (null in other forms; possibly zero()).
+struct ForwardStore {
+  const Store* store = nullptr;
+  ExprP index, value, dot;
+  std::vector<PathCond> path;
 };
-
-/// Phase 5: the loops of `plan` (which must outlive the result).
-LoopPlan plan_loops(const AdjointPlan& plan);
 
 /// Fewer iterations than this run serially in a forward form: a parallel
 /// region costs microseconds.
@@ -127,16 +160,36 @@ constexpr int kMinParallelIterations = 8192;
 struct ForwardNest {
   const Nest* nest = nullptr;
   bool parallel = false;
+  std::vector<ForwardStore> stores; // the nest's, in order
 };
 
-/// The loops of a forward form of one kernel.
+/// The loops of a forward form of one kernel, and the loop-invariant
+/// subexpressions its printer defines before them (the pass `hoist`).
 struct ForwardPlan {
   const Kernel* kernel = nullptr;
   std::vector<ForwardNest> nests;
+  std::vector<LocalP> hoisted;
 };
 
 /// Phase 5 for the forward forms: the loops of `k` (which must outlive the
 /// result).
 ForwardPlan plan_forward(const Kernel& k);
+
+/// The plan emit prints for one kernel (or one stage of a kernel with work
+/// arrays).
+struct LoopPlan {
+  const AdjointPlan* adjoint = nullptr;
+  std::vector<InputLoops> inputs;
+  std::vector<LoopPlan> stages; // a kernel with work arrays: one per stage
+  /// The loop-invariant subexpressions the adjoint defines before its loops
+  /// (the pass `hoist`), in order of first use.
+  std::vector<LocalP> hoisted;
+  /// The kernel's forward loops (the parallel forward of the adjoint files;
+  /// a staged adjoint's recompute): top level only.
+  ForwardPlan forward;
+};
+
+/// Phase 5: the loops of `plan` (which must outlive the result).
+LoopPlan plan_loops(const AdjointPlan& plan);
 
 } // namespace dpgen

@@ -5,6 +5,7 @@
 #include "emit_file.hpp"
 #include "emit_tangent.hpp"
 #include "emit_torch.hpp"
+#include "hoist.hpp"
 #include "ir_text.hpp"
 #include "loop_plan.hpp"
 
@@ -22,7 +23,8 @@ std::string out_path(const FileIR& ir, const std::string& suffix) {
 }
 
 // <stem>_adjoint.{hpp,cpp} and <stem>_kernels.hpp: the adjoints in gather form
-// (with their checked entries and parallel forwards), planned by plan_loops.
+// (with their checked entries and parallel forwards), planned by plan_loops,
+// their loop invariants hoisted (hoist_invariants).
 class AdjointFiles : public OutputForm {
 public:
   const char* name() const override { return "adjoint"; }
@@ -34,7 +36,10 @@ public:
       test_internal_error("plan");
       loops.push_back(plan_loops(p));
       ir.print_after("plan", [&] { return print_plan(loops.back()); });
-      ir.print_after("plan", [&] { return print_forward_plan(plan_forward(*p.kernel)); });
+      ir.print_after("plan", [&] { return print_forward_plan(loops.back().forward); });
+      ir.enter("hoist", p.kernel);
+      hoist_invariants(loops.back());
+      ir.print_after("hoist", [&] { return print_hoisted(loops.back()); });
     }
     ir.enter("emit", nullptr);
     EmittedFile f = emit_file(loops, ir.source_name, ir.stem);
