@@ -265,6 +265,11 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   code.close(";");
   if (any_bulk) {
     code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
+    // Every accumulator before any store: to the compiler a store to one
+    // input's adjoint may alias what the next input's terms read, which it
+    // would then load and compute again (`u[i] / dx` after `d_adj[c_i] +=`).
+    std::vector<std::string> stores;
+    int stored = 0; // accumulators
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
       bool has_bulk = false;
@@ -298,9 +303,15 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
                                param(factored_sum(k, acc_name(*g), int(n)), factored[n]->type))));
       std::string cond = store_if(*g, guarded ? hit_name(*g) : "");
       if (!cond.empty())
-        code.line("{}", cond);
-      code.line("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(k, *g), acc_name(*g));
+        stores.push_back(cond);
+      stores.push_back(
+          fmt::format("{}{} += {};", cond.empty() ? "" : "  ", adj_cell(k, *g), acc_name(*g)));
+      ++stored;
     }
+    if (stored > 1)
+      code.line("// the cell's adjoints, once every accumulator is computed");
+    for (const auto& l : stores)
+      code.line("{}", l);
     code.close(";");
   }
 
