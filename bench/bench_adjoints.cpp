@@ -35,14 +35,43 @@ std::vector<double> random_field(size_t n, double lo, double hi, unsigned seed) 
 }
 
 // Runs `body` as the timed loop with `state.range(0)` OpenMP threads, and
-// reports the cells processed per second.
-template <typename Body> void run(benchmark::State& state, size_t cells, Body&& body) {
+// reports the cells processed per second and, given the bytes a cell must
+// move at the least (each array read once, each written once: STREAM's
+// count), the bytes per second.
+template <typename Body>
+void run(benchmark::State& state, size_t cells, Body&& body, int bytes_per_cell = 0) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     body();
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(cells));
+  if (bytes_per_cell > 0)
+    state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
+                            static_cast<int64_t>(cells) * bytes_per_cell);
+}
+
+// ---- STREAM triad, a[i] = b[i] + s c[i], on 2048 x 2048 doubles per array ------
+// The memory bandwidth the 2D adjoints are held against: 24 bytes per cell,
+// threads as the generated loops use them (a static OpenMP split).
+struct Triad {
+  size_t n = size_t(kN2) * kN2;
+  std::vector<double> a = std::vector<double>(n), b = random_field(n, -1, 1, 11),
+                      c = random_field(n, -1, 1, 12);
+};
+void BM_triad(benchmark::State& s) {
+  static Triad d;
+  const auto n = static_cast<std::ptrdiff_t>(d.n);
+  double* a = d.a.data();
+  const double *b = d.b.data(), *c = d.c.data();
+  run(
+      s, d.n,
+      [&] {
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < n; ++i)
+          a[i] = b[i] + 3.0 * c[i];
+      },
+      24);
 }
 
 // ---- laplacian2d -------------------------------------------------------------
@@ -65,11 +94,15 @@ void BM_laplacian2d_forward_peeled(benchmark::State& s) {
 }
 void BM_laplacian2d_generated(benchmark::State& s) {
   auto& d = lap2();
-  run(s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+  // seed read, adjoint read and written: 24 bytes per cell
+  run(
+      s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); },
+      24);
 }
 void BM_laplacian2d_hand(benchmark::State& s) {
   auto& d = lap2();
-  run(s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+  run(
+      s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); }, 24);
 }
 void BM_laplacian2d_scatter(benchmark::State& s) {
   auto& d = lap2();
@@ -98,15 +131,21 @@ void BM_divergence2d_forward_peeled(benchmark::State& s) {
 }
 void BM_divergence2d_generated(benchmark::State& s) {
   auto& d = div2();
-  run(s, d.n, [&] {
-    divergence2d_adjoint(d.u.data(), d.u_adj.data(), d.v.data(), d.v_adj.data(), d.g.data(), kN2,
-                         kN2, 0.1);
-  });
+  // seed read, two adjoints read and written: 40 bytes per cell
+  run(
+      s, d.n,
+      [&] {
+        divergence2d_adjoint(d.u.data(), d.u_adj.data(), d.v.data(), d.v_adj.data(), d.g.data(),
+                             kN2, kN2, 0.1);
+      },
+      40);
 }
 void BM_divergence2d_hand(benchmark::State& s) {
   auto& d = div2();
-  run(s, d.n,
-      [&] { hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1); });
+  run(
+      s, d.n,
+      [&] { hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1); },
+      40);
 }
 void BM_divergence2d_scatter(benchmark::State& s) {
   auto& d = div2();
@@ -222,6 +261,7 @@ void BM_burgers_scatter(benchmark::State& s) {
 } // namespace
 
 #define THREADS ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK(BM_triad) THREADS;
 BENCHMARK(BM_laplacian2d_forward) THREADS;
 BENCHMARK(BM_laplacian2d_forward_peeled) THREADS;
 BENCHMARK(BM_laplacian2d_generated) THREADS;

@@ -5,8 +5,12 @@ between the '<!-- bench:begin -->' and '<!-- bench:end -->' markers.
 usage: bench_table.py adjoints.json solvers.json generator.tsv vectorizes.tsv results.md README.md
                       command"""
 import json
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_bandwidth import bandwidth_lines  # noqa: E402
 
 
 def load(path):
@@ -51,6 +55,13 @@ def main():
         row = [k, cells, f"{t(f)} ({vectorizes.get(k, '?')})", t(fp), t(g), t(hg), t(sc),
                r(g, f), r(g, fp), r(g, hg), r(sc, g), f"{ms(g) / ms(g2):.2f}x" if g2 else "–"]
         lines.append("| " + " | ".join(row) + " |")
+    bw = bandwidth_lines(list(adj.values()))
+    if bw:
+        lines.append("\n### Attained bandwidth of the 2D adjoints against a STREAM triad in the same run\n")
+        lines.append("The least bytes each must move per cell (seed read, adjoints read and written; "
+                     "STREAM's count): laplacian2d 24, divergence2d 40, the triad 24. Goal: >= 0.70 "
+                     "of the triad.\n")
+        lines += bw
     lines.append("\n### Multigrid-preconditioned CG against Jacobi-preconditioned CG (`-div(k grad p)`, periodic, tol 1e-8, 1 thread)\n")
     lines.append("Goals: MG-PCG iterations <= 20 at every n, time per cell flat, 1024² >= 10x faster "
                  "than Jacobi-PCG, backward / forward <= 1.2. The forward time includes the multigrid "
