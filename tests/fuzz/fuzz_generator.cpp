@@ -5,6 +5,7 @@
 #include "lib/derive.hpp"
 #include "lib/emit_file.hpp"
 #include "lib/find.hpp"
+#include "lib/hoist.hpp"
 #include "lib/loop_plan.hpp"
 #include "lib/schedule.hpp"
 
@@ -75,7 +76,7 @@ bool compiles(const dpgen::EmittedFile& f) {
 }
 
 // The phases after lowering, as generate.cpp runs them: derive, schedule,
-// plan the loops, emit.
+// plan the loops, hoist their invariants, emit.
 dpgen::EmittedFile generate(const std::vector<dpgen::Kernel>& kernels) {
   std::vector<dpgen::AdjointPlan> plans;
   plans.reserve(kernels.size()); // the loop plans point into this vector
@@ -84,8 +85,10 @@ dpgen::EmittedFile generate(const std::vector<dpgen::Kernel>& kernels) {
     plans.push_back(dpgen::schedule(k, partials));
   }
   std::vector<dpgen::LoopPlan> loops;
-  for (const auto& p : plans)
+  for (const auto& p : plans) {
     loops.push_back(dpgen::plan_loops(p));
+    dpgen::hoist_invariants(loops.back());
+  }
   return dpgen::emit_file(loops, "fuzz.cpp", "fuzz");
 }
 

@@ -54,7 +54,8 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
   std::set<int> done;
   std::set<std::string> vars;
   if (plan.stores.size() != nest.stores.size() ||
-      (tangent && !plan.stores.empty() && !plan.stores.front().dot))
+      (tangent && std::any_of(plan.stores.begin(), plan.stores.end(),
+                              [](const ForwardStore& fs) { return !fs.dot; })))
     throw std::logic_error("internal error: emit: a forward nest's stores are not planned");
   for (const ForwardStore& fs : plan.stores) {
     const Store& s = *fs.store;

@@ -144,9 +144,9 @@ ExprP Hoister::rewrite(const ExprP& e, bool summed) {
 // stays where the index algebra sees it) whose definition is invariant, safe
 // anywhere and worth hoisting (`s = 0.0` stays), not a product (a sum may use
 // the local: see hoist.hpp), every local it uses moves too, and no other
-// local of its name moved with another definition (the emitter specializes
-// locals per box). The same test wherever the local is met, so a local is
-// defined either before the loops or in them, never both.
+// local of its name moved with another definition (the plan specializes
+// locals per box: loop_plan.cpp's Specializer). The same test wherever the local is met, so a local
+// is defined either before the loops or in them, never both.
 bool Hoister::movable(const ExprP& e) const {
   const ExprP& def = e->local->def;
   std::map<const LocalVar*, bool> memo;
