@@ -5,9 +5,7 @@
 // index conditions of its terms are decided there), the edge boxes that may
 // reach into the interior (checked at run time), and the parallel test (the
 // mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
-// when their fusion keys, compared by fields, are equal, or differ only in
-// cell boxes a constant apart (the loop then runs over the box around them,
-// if that keeps a branch-free interior no edge term reaches into). emit.cpp prints the
+// when their fusion keys, compared by fields, are equal. emit.cpp prints the
 // plan: it decides no box, bound, fusion or test, and rewrites no
 // expression. Each term's expressions are specialized here to the box the
 // plan puts it in (loop_plan.cpp's Specializer); the pass `hoist` (hoist.hpp)
