@@ -295,6 +295,8 @@ DPGEN_KERNEL void sc(DPGEN_IN const double* u, DPGEN_OUT double* out, int n, dou
   CHECK(t.factor == -1); // (it reads u: not the same in every iteration)
   // The forward form's own: u[i] / dx stays (it reads u), nothing to hoist.
   CHECK(loops.forward.hoisted.empty());
+  // Once only: a second run would hoist from its own locals.
+  CHECK_THROWS_AS(hoist_invariants(loops), std::logic_error);
   const std::string hoisted = emit_file({loops}, "unit.cpp", "unit").source;
   CHECK(hoisted != unhoisted);
   CHECK(hoisted.find("const auto inv_dx = 1.0 / dx;") != std::string::npos);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <functional>
+#include <stdexcept>
 
 namespace dpgen {
 
@@ -145,8 +146,9 @@ ExprP Hoister::rewrite(const ExprP& e, bool summed) {
 // anywhere and worth hoisting (`s = 0.0` stays), not a product (a sum may use
 // the local: see hoist.hpp), every local it uses moves too, and no other
 // local of its name moved with another definition (the plan specializes
-// locals per box: loop_plan.cpp's Specializer). The same test wherever the local is met, so a local
-// is defined either before the loops or in them, never both.
+// locals per box: loop_plan.cpp's Specializer). The same test wherever the
+// local is met, so a local is defined either before the loops or in them,
+// never both.
 bool Hoister::movable(const ExprP& e) const {
   const ExprP& def = e->local->def;
   std::map<const LocalVar*, bool> memo;
@@ -292,7 +294,16 @@ void hoist_scatter(Hoister& hoist, ScatterLoop& u) {
 
 } // namespace
 
+// Once per plan: run again, it would hoist from what it made and keep only
+// the new definitions.
+template <typename Plan> void first_time(Plan& plan) {
+  if (plan.invariants_hoisted)
+    throw std::logic_error("internal error: hoist: the plan's invariants are hoisted already");
+  plan.invariants_hoisted = true;
+}
+
 void hoist_invariants(LoopPlan& plan) {
+  first_time(plan);
   for (auto& s : plan.stages)
     hoist_invariants(s);
   if (plan.forward.kernel)
@@ -313,6 +324,7 @@ void hoist_invariants(LoopPlan& plan) {
 // emit_forward_nest's order, per store: index, value, tangent, path. `+=`
 // adds the value to the element (summed).
 void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken) {
+  first_time(plan);
   Hoister hoist(*plan.kernel, taken);
   for (auto& nest : plan.nests)
     for (auto& s : nest.stores) {

@@ -19,13 +19,14 @@ namespace dpgen {
 /// loops, each loop-invariant subexpression (over parameters, constants and
 /// kernel-level locals only: `1.0 / dx`, `nu / (dx * dx)`) by a local that
 /// the function defines before the loops (`hoisted`, in order of first use:
-/// the expressions are visited in the order they are printed). The local holds the very same
-/// expression tree, printed the same way and declared `auto`, so it has the type the expression had
-/// in place and every result stays bit-identical. Why: a derivative often copies a division of the
-/// forward into a conditional
-/// (`u[i] / dx <= 0.0 ? 1.0 / dx : 0.0`), and GCC will not evaluate a
-/// division that may trap where the source does not, so it does not
-/// vectorize such a loop; hoisted, the conditional selects between two values.
+/// the expressions are visited in the order they are printed). The local
+/// holds the very same expression tree, printed the same way and declared
+/// `auto`, so it has the type the expression had in place and every result
+/// stays bit-identical. Why: a derivative often copies a division of the
+/// forward into a conditional (`u[i] / dx <= 0.0 ? 1.0 / dx : 0.0`), and GCC
+/// will not evaluate a division that may trap where the source does not, so
+/// it does not vectorize such a loop; hoisted, the conditional selects
+/// between two values.
 ///
 /// Not hoisted (the operands may be): a subtree that could behave otherwise
 /// when evaluated where the source would not evaluate it (integer division or
@@ -50,6 +51,7 @@ public:
   ExprP operator()(const ExprP& e, bool summed = false);
   /// The path condition with its condition rewritten.
   PathCond operator()(const PathCond& pc);
+  /// Each of `conds` rewritten in place, in order.
   void all(std::vector<PathCond>& conds) {
     for (auto& pc : conds)
       pc = (*this)(pc);

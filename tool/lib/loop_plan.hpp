@@ -169,6 +169,7 @@ struct ForwardPlan {
   const Kernel* kernel = nullptr;
   std::vector<ForwardNest> nests;
   std::vector<LocalP> hoisted;
+  bool invariants_hoisted = false; // the pass `hoist` ran (once only)
 };
 
 /// Phase 5 for the forward forms: the loops of `k` (which must outlive the
@@ -184,6 +185,7 @@ struct LoopPlan {
   /// The loop-invariant subexpressions the adjoint defines before its loops
   /// (the pass `hoist`), in order of first use.
   std::vector<LocalP> hoisted;
+  bool invariants_hoisted = false; // the pass `hoist` ran (once only)
   /// The kernel's forward loops (the parallel forward of the adjoint files;
   /// a staged adjoint's recompute): top level only.
   ForwardPlan forward;
