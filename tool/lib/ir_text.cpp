@@ -318,19 +318,24 @@ std::string print_hoisted(const LoopPlan& plan) {
   hoisted_text(out, "  ", plan);
   hoisted_text(out, "  ", "forward", plan.forward.hoisted);
   // What the loops print with them: the interior terms that use a hoisted local.
+  auto uses_hoisted = [&](const std::string& text) {
+    return std::any_of(plan.hoisted.begin(), plan.hoisted.end(),
+                       [&](const LocalP& l) { return names_identifier(text, l->name); });
+  };
+  auto terms = [&](const CellLoop& loop, const char* label) {
+    for (size_t gi = 0; gi < loop.interior_terms.size(); ++gi)
+      for (size_t bi = 0; bi < loop.interior_terms[gi].size(); ++bi)
+        for (const auto& t : loop.interior_terms[gi][bi]) {
+          const std::string text = print(t.partial);
+          if (uses_hoisted(text))
+            out += fmt::format("  interior term of {}{}, block {}: {}\n", loop.groups[gi]->array,
+                               label, bi, text);
+        }
+  };
   for (const auto& in : plan.inputs)
     for (const auto& step : in.gathers)
       for (const auto& loop : step.loops)
-        for (size_t gi = 0; gi < loop.interior_terms.size(); ++gi)
-          for (size_t bi = 0; bi < loop.interior_terms[gi].size(); ++bi)
-            for (const auto& t : loop.interior_terms[gi][bi])
-              if (std::any_of(plan.hoisted.begin(), plan.hoisted.end(), [&](const LocalP& l) {
-                    return names_identifier(print(t.partial), l->name);
-                  }))
-                out +=
-                    fmt::format("  interior term of {}{}, block {}: {}\n", loop.groups[gi]->array,
-                                step.fused() && &loop == &step.loops.front() ? " (fused)" : "", bi,
-                                print(t.partial));
+        terms(loop, step.fused() && &loop == &step.loops.front() ? " (fused)" : "");
   return out;
 }
 
