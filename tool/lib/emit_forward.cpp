@@ -21,43 +21,15 @@ std::string bound(const ExprP& e) {
 
 } // namespace
 
-void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
-                       const ForwardOptions& options) {
-  const Nest& nest = *plan.nest;
-  code.open("");
-  int opened = 1;
-  // The outermost loop on every thread: its body a lambda of its counter (threaded_loop).
-  std::string threads, header, iteration;
-  for (size_t d = 0; d < nest.loops.size(); ++d) {
-    const Loop& l = nest.loops[d];
-    const std::string for_line = fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var,
-                                             bound(l.lo), l.var, bound(l.hi), l.var);
-    if (d == 0 && plan.parallel && options.threads) {
-      // Every element is written by one iteration (proved, or checked on
-      // entry), so iterations are independent (and their order is free).
-      std::vector<std::string> extents;
-      for (const auto& m : nest.loops)
-        extents.push_back(fmt::format("({} - {})", bound(m.hi), bound(m.lo)));
-      threads = fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelIterations);
-      header = for_line;
-      iteration = k.fresh("iteration");
-      code.open(fmt::format("auto {} = [&](const {} {})", iteration, kCellType, l.var));
-    } else if (l.descending) {
-      // counted down as the kernel counts: a sum adds in the kernel's order
-      code.open(fmt::format("for ({} {} = {} - 1; {} >= {}; --{})", kCellType, l.var, bound(l.hi),
-                            l.var, bound(l.lo), l.var));
-    } else {
-      code.open(for_line);
-    }
-    ++opened;
-  }
+namespace {
+
+// The stores of one iteration, in order (each with its guard and the locals
+// it reads).
+void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& stores, bool tangent,
+                 const ForwardOptions& options) {
   std::set<int> done;
   std::set<std::string> vars;
-  if (plan.stores.size() != nest.stores.size() ||
-      (tangent && std::any_of(plan.stores.begin(), plan.stores.end(),
-                              [](const ForwardStore& fs) { return !fs.dot; })))
-    throw std::logic_error("internal error: emit: a forward nest's stores are not planned");
-  for (const ForwardStore& fs : plan.stores) {
+  for (const ForwardStore& fs : stores) {
     const Store& s = *fs.store;
     const ExprP& index = fs.index;
     const ExprP& value = fs.value;
@@ -101,6 +73,100 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
     if (guarded)
       code.close();
   }
+}
+
+// The innermost loop of a peeled nest (ForwardNest::interior): the iterations
+// near its ends, then those inside (on every thread where `threads` is a
+// condition), then the rest, in the loop's order.
+void emit_peeled(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
+                 const ForwardOptions& options, const std::string& threads) {
+  const Loop& l = plan.nest->loops.back();
+  const std::string t = kCellType;
+  const std::string edge = k.fresh("edge"), interior = k.fresh("interior");
+  const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
+  const std::string lo = bound(l.lo), hi = bound(l.hi);
+  code.line("// iterations near the ends of the {} loop: as the kernel writes them", l.var);
+  code.open(fmt::format("auto {} = [&](const {} {})", edge, t, l.var));
+  emit_stores(code, k, plan.stores, tangent, options);
+  code.close(";");
+  code.line("// inside [{}, {}): the index conditions decided there folded (same results)", in_lo,
+            in_hi);
+  code.open(fmt::format("auto {} = [&](const {} {})", interior, t, l.var));
+  emit_stores(code, k, plan.interior_stores, tangent, options);
+  code.close(";");
+  const Interval& iv = plan.interior;
+  code.line("const {} {} = {};", t, in_lo,
+            iv.lo.empty() ? lo
+                          : fmt::format("std::max<{}>({}, std::min<{}>({}, {}))", t, lo, t,
+                                        print_max(iv.lo, t), hi));
+  code.line("const {} {} = {};", t, in_hi,
+            iv.hi.empty() ? fmt::format("std::max<{}>({}, {})", t, in_lo, hi)
+                          : fmt::format("std::max<{}>({}, std::min<{}>({}, {}))", t, in_lo, t,
+                                        print_min(iv.hi, t), hi));
+  auto loop = [&](const std::string& from, const std::string& to) {
+    return fmt::format("for ({} {} = {}; {} < {}; ++{})", t, l.var, from, l.var, to, l.var);
+  };
+  code.line("{}", loop(lo, in_lo));
+  code.line("  {}({});", edge, l.var);
+  if (!threads.empty()) {
+    threaded_loop(code, threads, loop(in_lo, in_hi), fmt::format("{}({});", interior, l.var));
+  } else {
+    code.line("{}", loop(in_lo, in_hi));
+    code.line("  {}({});", interior, l.var);
+  }
+  code.line("{}", loop(in_hi, hi));
+  code.line("  {}({});", edge, l.var);
+}
+
+} // namespace
+
+void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
+                       const ForwardOptions& options) {
+  const Nest& nest = *plan.nest;
+  auto unplanned = [&](const std::vector<ForwardStore>& stores) {
+    return tangent && std::any_of(stores.begin(), stores.end(),
+                                  [](const ForwardStore& fs) { return !fs.dot; });
+  };
+  if (plan.stores.size() != nest.stores.size() || unplanned(plan.stores) ||
+      unplanned(plan.interior_stores))
+    throw std::logic_error("internal error: emit: a forward nest's stores are not planned");
+  code.open("");
+  int opened = 1;
+  const bool threaded = plan.parallel && options.threads && !nest.loops.empty();
+  // Every element is written by one iteration (proved, or checked on entry),
+  // so iterations are independent (and their order is free).
+  std::string threads;
+  if (threaded) {
+    std::vector<std::string> extents;
+    for (const auto& m : nest.loops)
+      extents.push_back(fmt::format("({} - {})", bound(m.hi), bound(m.lo)));
+    threads = fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelIterations);
+  }
+  // The outermost loop on every thread: its body a lambda of its counter
+  // (threaded_loop); a peeled innermost loop is printed by emit_peeled.
+  const size_t opened_loops = plan.peeled() ? nest.loops.size() - 1 : nest.loops.size();
+  std::string header, iteration;
+  for (size_t d = 0; d < opened_loops; ++d) {
+    const Loop& l = nest.loops[d];
+    const std::string for_line = fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var,
+                                             bound(l.lo), l.var, bound(l.hi), l.var);
+    if (d == 0 && threaded) {
+      header = for_line;
+      iteration = k.fresh("iteration");
+      code.open(fmt::format("auto {} = [&](const {} {})", iteration, kCellType, l.var));
+    } else if (l.descending) {
+      // counted down as the kernel counts: a sum adds in the kernel's order
+      code.open(fmt::format("for ({} {} = {} - 1; {} >= {}; --{})", kCellType, l.var, bound(l.hi),
+                            l.var, bound(l.lo), l.var));
+    } else {
+      code.open(for_line);
+    }
+    ++opened;
+  }
+  if (plan.peeled())
+    emit_peeled(code, k, plan, tangent, options, opened_loops == 0 ? threads : std::string());
+  else
+    emit_stores(code, k, plan.stores, tangent, options);
   for (int i = 0; i < opened; ++i) {
     if (i == opened - 2 && !iteration.empty()) { // the outermost loop's body
       code.close(";");

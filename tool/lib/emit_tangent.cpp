@@ -67,6 +67,7 @@ TangentPlan plan_tangent(const Kernel& k) {
   for (auto& n : p.loops.nests)
     for (auto& s : n.stores)
       s.dot = tangent(s.store->value, p.active, p.names, p.locals);
+  peel_forward(p.loops); // (with the tangents: it folds them too)
   // (after every tangent local is named: the hoisted ones take none of them)
   hoist_invariants(p.loops, &p.locals.taken);
   return p;

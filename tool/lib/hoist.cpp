@@ -321,13 +321,14 @@ void hoist_invariants(LoopPlan& plan) {
   plan.hoisted = hoist.hoisted();
 }
 
-// emit_forward_nest's order, per store: index, value, tangent, path. `+=`
+// emit_forward_nest's order, per store: index, value, tangent, path (a peeled
+// nest: its edge stores, then its interior's). `+=`
 // adds the value to the element (summed).
 void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken) {
   first_time(plan);
   Hoister hoist(*plan.kernel, taken);
-  for (auto& nest : plan.nests)
-    for (auto& s : nest.stores) {
+  auto stores = [&](std::vector<ForwardStore>& v) {
+    for (auto& s : v) {
       const bool summed = s.store->accumulate && s.store->extremum == 0;
       s.index = hoist(s.index);
       s.value = hoist(s.value, summed);
@@ -335,6 +336,11 @@ void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken) {
         s.dot = hoist(s.dot, summed);
       hoist.all(s.path);
     }
+  };
+  for (auto& nest : plan.nests) {
+    stores(nest.stores);
+    stores(nest.interior_stores); // (a peeled loop prints its interior after its edges)
+  }
   plan.hoisted = hoist.hoisted();
 }
 

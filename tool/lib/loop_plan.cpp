@@ -402,6 +402,7 @@ LoopPlan plan_adjoint_loops(const AdjointPlan& plan) {
 LoopPlan plan_loops(const AdjointPlan& plan) {
   LoopPlan out = plan_adjoint_loops(plan);
   out.forward = plan_forward(*plan.kernel);
+  peel_forward(out.forward);
   return out;
 }
 
@@ -411,11 +412,143 @@ ForwardPlan plan_forward(const Kernel& k) {
   for (const auto& nest : k.nests) {
     const bool adds = std::any_of(nest.stores.begin(), nest.stores.end(),
                                   [](const Store& s) { return s.accumulate; });
-    plan.nests.push_back({&nest, !nest.loops.empty() && !adds, {}});
+    plan.nests.push_back({&nest, !nest.loops.empty() && !adds, {}, {}, {}});
     for (const auto& st : nest.stores)
       plan.nests.back().stores.push_back({&st, st.index, st.value, nullptr, st.path});
   }
   return plan;
+}
+
+namespace {
+
+// Adds `p` to one side of an interval's bounds (`lower`: the interval starts
+// at their maximum; else it ends at their minimum) unless a bound there is at
+// least as tight; drops the bounds `p` makes loose.
+void tighten(std::vector<Poly>& bounds, const Poly& p, bool lower) {
+  for (auto it = bounds.begin(); it != bounds.end();) {
+    Poly d = p - *it;
+    if (!d.is_constant()) {
+      ++it;
+      continue;
+    }
+    const long long v = d.constant_term();
+    if (lower ? v <= 0 : v >= 0)
+      return; // as tight already
+    it = bounds.erase(it);
+  }
+  bounds.push_back(p);
+}
+
+// The interval of the innermost counter where the index conditions of
+// `stores` (their selects and guards) are decided: a piece of a condition's
+// domain, or of its complement, that ends a constant from one end of the loop
+// is left to the edge loops (`i == n - 1`: the last iteration; `i + 1 < n`
+// fails only there). Empty bounds: nothing decided.
+Interval forward_interior(const Loop& l, const std::vector<ForwardStore>& stores) {
+  Interval in;
+  const auto lo = to_poly(l.lo), hi = to_poly(l.hi);
+  if (!lo || !hi || l.descending)
+    return in;
+  std::vector<ExprP> conds;
+  std::set<const LocalVar*> seen;
+  for (const auto& s : stores) {
+    for (const ExprP& e : {s.index, s.value, s.dot})
+      if (e)
+        collect_selects(e, conds, seen);
+    for (const auto& pc : s.path) {
+      conds.push_back(pc.cond);
+      collect_selects(pc.cond, conds, seen);
+    }
+  }
+  std::vector<Poly> los = {*lo}, his = {*hi}; // (the loop's own bounds first)
+  for (const auto& c : conds) {
+    auto cd = condition_domain(c);
+    if (!cd)
+      continue;
+    for (const Domain& d : {*cd, subtract(universe(), *cd)})
+      for (const Box& box : d) {
+        auto it = box.dims.find(l.var);
+        if (it == box.dims.end())
+          continue;
+        // (the piece ends below each of its upper bounds, starts at or above
+        // each lower one)
+        const Interval& iv = it->second;
+        auto near = [](const std::vector<Poly>& set, const Poly& end) -> const Poly* {
+          for (const auto& p : set)
+            if ((p - end).is_constant())
+              return &p;
+          return nullptr;
+        };
+        if (const Poly* p = near(iv.hi, *lo))
+          tighten(los, *p, true); // a piece at the low end
+        else if (const Poly* q = near(iv.lo, *hi))
+          tighten(his, *q, false); // at the high end
+      }
+  }
+  for (const auto& p : los)
+    if (!(p == *lo))
+      in.lo.push_back(p);
+  for (const auto& p : his)
+    if (!(p == *hi))
+      in.hi.push_back(p);
+  return in;
+}
+
+// A store as printed inside `box`: its conditions folded where the box
+// decides them; false when its guard fails everywhere there.
+bool fold_store(const Box& box, Specializer& spec, ForwardStore& s) {
+  s.index = spec(s.index);
+  s.value = spec(s.value);
+  if (s.dot)
+    s.dot = spec(s.dot);
+  std::vector<PathCond> path;
+  for (const auto& pc : s.path) {
+    const ExprP cond = spec(pc.cond);
+    if (auto cd = condition_domain(cond)) {
+      const Domain holds = pc.positive ? *cd : subtract(universe(), *cd);
+      if (box_inside(box, holds))
+        continue; // holds in every iteration of the box
+      if (box_disjoint(box, holds))
+        return false; // in none
+    }
+    path.push_back({cond, pc.positive});
+  }
+  s.path = std::move(path);
+  return true;
+}
+
+} // namespace
+
+void peel_forward(ForwardPlan& plan) {
+  for (auto& nest : plan.nests) {
+    if (nest.nest->loops.empty() || nest.peeled())
+      continue;
+    const Loop& l = nest.nest->loops.back();
+    Interval in = forward_interior(l, nest.stores);
+    if (in.lo.empty() && in.hi.empty())
+      continue;
+    Box box;
+    Interval& iv = box.dims[l.var];
+    iv = in;
+    iv.lo.push_back(*to_poly(l.lo));
+    iv.hi.push_back(*to_poly(l.hi));
+    std::vector<ForwardStore> inside;
+    bool folded = false;
+    Specializer spec(box); // (one for the nest: its stores share their locals)
+    for (ForwardStore s : nest.stores) {
+      const size_t before = s.path.size();
+      const ExprP index = s.index, value = s.value, dot = s.dot;
+      const bool kept = fold_store(box, spec, s);
+      folded = folded || !kept || s.path.size() != before || s.index != index || s.value != value ||
+               s.dot != dot;
+      if (kept)
+        inside.push_back(std::move(s));
+    }
+    if (!folded || inside.empty())
+      continue; // (nothing to gain; no store at all inside: keep one loop)
+    nest.interior = std::move(in);
+    nest.interior_stores = std::move(inside);
+  }
 }
 
 } // namespace dpgen

@@ -161,6 +161,19 @@ struct ForwardNest {
   const Nest* nest = nullptr;
   bool parallel = false;
   std::vector<ForwardStore> stores; // the nest's, in order
+  /// The innermost loop split edge / interior / edge (peel_forward): inside
+  /// `interior` (its counter at least the maximum of `interior.lo`, below the
+  /// minimum of `interior.hi`, and within the loop's own bounds) the index
+  /// conditions of the stores are decided, and `interior_stores` are the
+  /// stores with them folded: `d[i + 1]`, not `d[i == n - 1 ? 0 : i + 1]`; a
+  /// guard that holds there is dropped, a store whose guard fails there is
+  /// left out. The same iterations in the same order, so the same results;
+  /// the interior loop is branch-free where the source's was not, and the
+  /// compiler may vectorize it. Not split (no interior store) when no
+  /// condition is decided near the loop's ends, or the loop counts down.
+  Interval interior;
+  std::vector<ForwardStore> interior_stores;
+  bool peeled() const { return !interior_stores.empty(); }
 };
 
 /// The loops of a forward form of one kernel, and the loop-invariant
@@ -175,6 +188,12 @@ struct ForwardPlan {
 /// Phase 5 for the forward forms: the loops of `k` (which must outlive the
 /// result).
 ForwardPlan plan_forward(const Kernel& k);
+
+/// Splits the innermost loop of each nest of `plan` where the index
+/// conditions of its stores are decided away from its ends (ForwardNest::
+/// interior). After the tangents are set (ForwardStore::dot: it folds them
+/// too), before the pass `hoist`.
+void peel_forward(ForwardPlan& plan);
 
 /// The plan emit prints for one kernel (or one stage of a kernel with work
 /// arrays).

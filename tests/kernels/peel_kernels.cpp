@@ -1,0 +1,65 @@
+// Kernels whose forward forms split their innermost loop (peel_forward):
+// boundary conditions written the ways real code writes them, decided in a
+// branch-free interior. tests/kernels/peel_test.cpp checks each forward form
+// against the kernel bit for bit, at sizes with and without an interior.
+#include "test_kernels.hpp"
+
+#include <algorithm>
+
+// C89: counter declared before the loop, the periodic neighbours by ternaries.
+DPGEN_KERNEL void peel_wrap_c89(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i;
+  for (i = 0; i < n; i++) {
+    int l = (i == 0) ? n - 1 : i - 1;
+    int r = (i == n - 1) ? 0 : i + 1;
+    out[i] = 0.5 * (a[l] + a[r]) - a[i] * a[i];
+  }
+}
+
+// Periodic in both directions, row-major: the inner loop's wrap is folded,
+// the outer one's stays (one value per row).
+DPGEN_KERNEL void peel_torus2d(DPGEN_IN const double* a, DPGEN_IN const double* k,
+                               DPGEN_OUT double* out, int nx, int ny) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int ip = i + 1 < nx ? i + 1 : 0, im = i > 0 ? i - 1 : nx - 1;
+      const int jp = j + 1 < ny ? j + 1 : 0, jm = j > 0 ? j - 1 : ny - 1;
+      out[j * nx + i] = k[j * nx + i] * (a[j * nx + ip] + a[j * nx + im] + a[jp * nx + i] +
+                                         a[jm * nx + i] - 4.0 * a[j * nx + i]);
+    }
+}
+
+// Boundary cells set by an if/else: the interior runs the first branch only.
+DPGEN_KERNEL void peel_guarded(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, double h) {
+  for (int i = 0; i < n; ++i) {
+    if (i > 0 && i < n - 1)
+      out[i] = (a[i - 1] - 2.0 * a[i] + a[i + 1]) / (h * h);
+    else
+      out[i] = a[i];
+  }
+}
+
+// A five-point periodic stencil: two cells at each end are edges.
+DPGEN_KERNEL void peel_wide_wrap(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    const int m2 = i < 2 ? i + n - 2 : i - 2;
+    const int p2 = i >= n - 2 ? i + 2 - n : i + 2;
+    const int m1 = i < 1 ? i + n - 1 : i - 1;
+    const int p1 = i >= n - 1 ? i + 1 - n : i + 1;
+    out[i] = (-a[m2] + 16.0 * a[m1] - 30.0 * a[i] + 16.0 * a[p1] - a[p2]) / 12.0;
+  }
+}
+
+// Counted down: not split (kept as the kernel counts).
+DPGEN_KERNEL void peel_descending(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = n - 1; i >= 0; --i)
+    out[i] = a[i] * (i == n - 1 ? a[0] : a[i + 1]);
+}
+
+// A clamped neighbour (std::min/std::max of indices): the ends read themselves.
+DPGEN_KERNEL void peel_clamped(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    const int l = std::max(i - 1, 0), r = std::min(i + 1, n - 1);
+    out[i] = a[l] - 2.0 * a[i] + a[r];
+  }
+}

@@ -1,0 +1,145 @@
+// The forward forms of peel_kernels.cpp, whose innermost loops are split into edge and
+// branch-free interior iterations (loop_plan.cpp: peel_forward): <kernel>_parallel_forward
+// must give the kernel's values bit for bit, on 1 and 2 threads, at sizes with no interior
+// (1, 2, 3 cells: every iteration an edge, some conditions holding at both ends at once),
+// small interiors and one above the threading threshold; the tangent (printed the same way)
+// must reproduce the outputs bit for bit and agree with finite differences and the adjoint
+// (support/adjoint_check.hpp).
+#include "support/adjoint_check.hpp"
+
+#include "peel_kernels_adjoint.hpp"
+#include "peel_kernels_kernels.hpp"
+#include "peel_kernels_tangent.hpp"
+
+#include <doctest/doctest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+std::vector<double> values(size_t n, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> dist(-1.0, 1.0);
+  std::vector<double> v(n);
+  for (auto& x : v)
+    x = dist(gen);
+  return v;
+}
+
+// `kernel` and `split` write the same bits into outputs prefilled with NaN (an element one
+// writes and the other does not shows), on 1 and 2 threads.
+void same_bits(size_t out_size, const std::function<void(double*)>& kernel,
+               const std::function<void(double*)>& split) {
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    omp_set_num_threads(threads);
+    std::vector<double> a(out_size, std::nan("")), b(out_size, std::nan(""));
+    kernel(a.data());
+    split(b.data());
+    CHECK(std::memcmp(a.data(), b.data(), sizeof(double) * out_size) == 0);
+  }
+}
+
+const int kSizes[] = {1, 2, 3, 4, 5, 8, 33, 9001}; // 9001: above 8192, on every thread
+
+} // namespace
+
+TEST_CASE("peeled forward: 1D kernels bit for bit at every size") {
+  for (int n : kSizes) {
+    CAPTURE(n);
+    const auto a = values(size_t(n), 1);
+    same_bits(
+        size_t(n), [&](double* o) { peel_wrap_c89(a.data(), o, n); },
+        [&](double* o) { peel_wrap_c89_parallel_forward(a.data(), o, n); });
+    same_bits(
+        size_t(n), [&](double* o) { peel_guarded(a.data(), o, n, 0.3); },
+        [&](double* o) { peel_guarded_parallel_forward(a.data(), o, n, 0.3); });
+    if (n >= 2) { // (its wraps i + n - 2 need two cells)
+      same_bits(
+          size_t(n), [&](double* o) { peel_wide_wrap(a.data(), o, n); },
+          [&](double* o) { peel_wide_wrap_parallel_forward(a.data(), o, n); });
+    }
+    same_bits(
+        size_t(n), [&](double* o) { peel_descending(a.data(), o, n); },
+        [&](double* o) { peel_descending_parallel_forward(a.data(), o, n); });
+    same_bits(
+        size_t(n), [&](double* o) { peel_clamped(a.data(), o, n); },
+        [&](double* o) { peel_clamped_parallel_forward(a.data(), o, n); });
+  }
+}
+
+TEST_CASE("peeled forward: a torus, the inner loop split in every row") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {1, 4}, {4, 1}, {2, 3}, {3, 2}, {5, 7}, {130, 90}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t cells = size_t(nx) * size_t(ny);
+    const auto a = values(cells, 2), k = values(cells, 3);
+    same_bits(
+        cells, [&](double* o) { peel_torus2d(a.data(), k.data(), o, nx, ny); },
+        [&](double* o) { peel_torus2d_parallel_forward(a.data(), k.data(), o, nx, ny); });
+  }
+}
+
+namespace {
+
+// One input, one output of n cells: adjoint, tangent (outputs bit for bit) and checked entry.
+template <typename Fwd, typename Adj, typename Chk, typename Tan>
+void check_1d(int n, Fwd fwd, Adj adj, Chk chk, Tan tan) {
+  dpgen_test::Problem<double> p;
+  p.in_sizes = {size_t(n)};
+  p.out_sizes = {size_t(n)};
+  p.forward = [&](auto in, auto out) { fwd(in[0], out[0], n); };
+  p.adjoint = [&](auto in, auto a, auto seed) { adj(in[0], a[0], seed[0], n); };
+  p.checked = [&](auto in, auto a, auto seed, auto in_n, auto out_n) {
+    chk(in[0], in_n[0], a[0], in_n[0], seed[0], out_n[0], n);
+  };
+  p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+    tan(in[0], dir[0], out[0], outd[0], n);
+  };
+  dpgen_test::check_adjoint(p);
+}
+
+} // namespace
+
+TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the adjoint") {
+  for (int n : {1, 2, 3, 4, 6, 17}) {
+    CAPTURE(n);
+    check_1d(n, peel_wrap_c89, peel_wrap_c89_adjoint, peel_wrap_c89_adjoint_checked,
+             peel_wrap_c89_tangent);
+    check_1d(
+        n, [](auto a, auto o, int m) { peel_guarded(a, o, m, 0.7); },
+        [](auto a, auto aa, auto s, int m) { peel_guarded_adjoint(a, aa, s, m, 0.7); },
+        [](auto a, auto an, auto aa, auto aan, auto s, auto sn, int m) {
+          peel_guarded_adjoint_checked(a, an, aa, aan, s, sn, m, 0.7);
+        },
+        [](auto a, auto d, auto o, auto od, int m) { peel_guarded_tangent(a, d, o, od, m, 0.7); });
+    if (n >= 2)
+      check_1d(n, peel_wide_wrap, peel_wide_wrap_adjoint, peel_wide_wrap_adjoint_checked,
+               peel_wide_wrap_tangent);
+    check_1d(n, peel_descending, peel_descending_adjoint, peel_descending_adjoint_checked,
+             peel_descending_tangent);
+    check_1d(n, peel_clamped, peel_clamped_adjoint, peel_clamped_adjoint_checked,
+             peel_clamped_tangent);
+  }
+  for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {3, 2}, {5, 4}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t cells = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {cells, cells};
+    p.out_sizes = {cells};
+    p.forward = [&](auto in, auto out) { peel_torus2d(in[0], in[1], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto a, auto seed) {
+      peel_torus2d_adjoint(in[0], a[0], in[1], a[1], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_torus2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
