@@ -63,3 +63,16 @@ DPGEN_KERNEL void peel_clamped(DPGEN_IN const double* a, DPGEN_OUT double* out, 
     out[i] = a[l] - 2.0 * a[i] + a[r];
   }
 }
+
+// Walls in y (an if/else on the row), periodic in x: interior rows run one
+// branch-free inner loop; the wall rows and the wrap column run as written.
+DPGEN_KERNEL void peel_walls2d(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int ip = i == nx - 1 ? 0 : i + 1;
+      if (j == 0 || j == ny - 1)
+        out[j * nx + i] = a[j * nx + i];
+      else
+        out[j * nx + i] = a[j * nx + ip] * a[(j + 1) * nx + i] - a[(j - 1) * nx + i];
+    }
+}

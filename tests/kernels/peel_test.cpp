@@ -73,7 +73,7 @@ TEST_CASE("peeled forward: 1D kernels bit for bit at every size") {
   }
 }
 
-TEST_CASE("peeled forward: a torus, the inner loop split in every row") {
+TEST_CASE("peeled forward: 2D kernels, the inner loop split in interior rows") {
   for (auto [nx, ny] : {std::pair{1, 1}, {1, 4}, {4, 1}, {2, 3}, {3, 2}, {5, 7}, {130, 90}}) {
     CAPTURE(nx);
     CAPTURE(ny);
@@ -82,6 +82,9 @@ TEST_CASE("peeled forward: a torus, the inner loop split in every row") {
     same_bits(
         cells, [&](double* o) { peel_torus2d(a.data(), k.data(), o, nx, ny); },
         [&](double* o) { peel_torus2d_parallel_forward(a.data(), k.data(), o, nx, ny); });
+    same_bits(
+        cells, [&](double* o) { peel_walls2d(a.data(), o, nx, ny); },
+        [&](double* o) { peel_walls2d_parallel_forward(a.data(), o, nx, ny); });
   }
 }
 
@@ -141,5 +144,16 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
       peel_torus2d_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny);
     };
     dpgen_test::check_adjoint(p);
+    dpgen_test::Problem<double> w;
+    w.in_sizes = {cells};
+    w.out_sizes = {cells};
+    w.forward = [&](auto in, auto out) { peel_walls2d(in[0], out[0], nx, ny); };
+    w.adjoint = [&](auto in, auto a, auto seed) {
+      peel_walls2d_adjoint(in[0], a[0], seed[0], nx, ny);
+    };
+    w.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_walls2d_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(w);
   }
 }

@@ -75,38 +75,48 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
   }
 }
 
-// The innermost loop of a peeled nest (ForwardNest::interior): the iterations
-// near its ends, then those inside (on every thread where `threads` is a
-// condition), then the rest, in the loop's order.
-void emit_peeled(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
-                 const ForwardOptions& options, const std::string& threads) {
-  const Loop& l = plan.nest->loops.back();
-  const std::string t = kCellType;
-  const std::string edge = k.fresh("edge"), interior = k.fresh("interior");
-  const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
-  const std::string lo = bound(l.lo), hi = bound(l.hi);
-  code.line("// iterations near the ends of the {} loop: as the kernel writes them", l.var);
-  code.open(fmt::format("auto {} = [&](const {} {})", edge, t, l.var));
-  emit_stores(code, k, plan.stores, tangent, options);
-  code.close(";");
-  code.line("// inside [{}, {}): the index conditions decided there folded (same results)", in_lo,
-            in_hi);
-  code.open(fmt::format("auto {} = [&](const {} {})", interior, t, l.var));
-  emit_stores(code, k, plan.interior_stores, tangent, options);
-  code.close(";");
-  const Interval& iv = plan.interior;
-  code.line("const {} {} = {};", t, in_lo,
-            iv.lo.empty() ? lo
-                          : fmt::format("std::max<{}>({}, std::min<{}>({}, {}))", t, lo, t,
-                                        print_max(iv.lo, t), hi));
+// The interior of loop `l` (ForwardNest::interior): `in_lo`, `in_hi` within
+// its bounds, empty where `edge` (an outer counter's test) holds.
+void emit_interior_bounds(Code& code, const Loop& l, const Interval& iv, const std::string& in_lo,
+                          const std::string& in_hi, const std::string& edge) {
+  const std::string t = kCellType, lo = bound(l.lo), hi = bound(l.hi);
+  std::string from = iv.lo.empty() ? lo
+                                   : fmt::format("std::max<{}>({}, std::min<{}>({}, {}))", t, lo, t,
+                                                 print_max(iv.lo, t), hi);
+  if (!edge.empty())
+    from = fmt::format("{} ? {} : {}", edge, hi, from);
+  code.line("const {} {} = {};", t, in_lo, from);
   code.line("const {} {} = {};", t, in_hi,
             iv.hi.empty() ? fmt::format("std::max<{}>({}, {})", t, in_lo, hi)
                           : fmt::format("std::max<{}>({}, std::min<{}>({}, {}))", t, in_lo, t,
                                         print_min(iv.hi, t), hi));
+}
+
+// The innermost loop of a peeled nest: the iterations near its ends (all of
+// them where `edge`, an outer counter's test, holds), then those inside (on
+// every thread where `threads` is a condition), then the rest, in the loop's
+// order.
+void emit_peeled(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
+                 const ForwardOptions& options, const std::string& threads,
+                 const std::string& edge_flag) {
+  const Loop& l = plan.nest->loops.back();
+  const std::string t = kCellType;
+  const std::string edge = k.fresh("edge"), interior = k.fresh("interior");
+  const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
+  code.line("// iterations near the ends of the loops: as the kernel writes them");
+  code.open(fmt::format("auto {} = [&](const {} {})", edge, t, l.var));
+  emit_stores(code, k, plan.stores, tangent, options);
+  code.close(";");
+  code.line("// inside: the index conditions decided there folded (the same results)");
+  code.open(fmt::format("auto {} = [&](const {} {})", interior, t, l.var));
+  emit_stores(code, k, plan.interior_stores, tangent, options);
+  code.close(";");
+  emit_interior_bounds(code, l, plan.interior.back(), in_lo, in_hi, edge_flag);
   auto loop = [&](const std::string& from, const std::string& to) {
     return fmt::format("for ({} {} = {}; {} < {}; ++{})", t, l.var, from, l.var, to, l.var);
   };
-  code.line("{}", loop(lo, in_lo));
+  const std::string hi = bound(l.hi);
+  code.line("{}", loop(bound(l.lo), in_lo));
   code.line("  {}({});", edge, l.var);
   if (!threads.empty()) {
     threaded_loop(code, threads, loop(in_lo, in_hi), fmt::format("{}({});", interior, l.var));
@@ -128,7 +138,8 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
                                   [](const ForwardStore& fs) { return !fs.dot; });
   };
   if (plan.stores.size() != nest.stores.size() || unplanned(plan.stores) ||
-      unplanned(plan.interior_stores))
+      unplanned(plan.interior_stores) ||
+      (plan.peeled() && plan.interior.size() != nest.loops.size()))
     throw std::logic_error("internal error: emit: a forward nest's stores are not planned");
   code.open("");
   int opened = 1;
@@ -143,11 +154,17 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
     threads = fmt::format("{} >= {}", fmt::join(extents, " * "), kMinParallelIterations);
   }
   // The outermost loop on every thread: its body a lambda of its counter
-  // (threaded_loop); a peeled innermost loop is printed by emit_peeled.
+  // (threaded_loop). A peeled nest's outer loops test their counters against
+  // their interiors (edge_<v>); its innermost loop is printed by emit_peeled.
   const size_t opened_loops = plan.peeled() ? nest.loops.size() - 1 : nest.loops.size();
-  std::string header, iteration;
+  std::string header, iteration, edge_flag;
   for (size_t d = 0; d < opened_loops; ++d) {
     const Loop& l = nest.loops[d];
+    const bool narrows =
+        plan.peeled() && (!plan.interior[d].lo.empty() || !plan.interior[d].hi.empty());
+    const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
+    if (narrows)
+      emit_interior_bounds(code, l, plan.interior[d], in_lo, in_hi, "");
     const std::string for_line = fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, l.var,
                                              bound(l.lo), l.var, bound(l.hi), l.var);
     if (d == 0 && threaded) {
@@ -162,9 +179,16 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
       code.open(for_line);
     }
     ++opened;
+    if (narrows) {
+      const std::string flag = k.fresh("edge_" + l.var);
+      code.line("const bool {} = {}{} < {} || {} >= {};", flag,
+                edge_flag.empty() ? "" : edge_flag + " || ", l.var, in_lo, l.var, in_hi);
+      edge_flag = flag;
+    }
   }
   if (plan.peeled())
-    emit_peeled(code, k, plan, tangent, options, opened_loops == 0 ? threads : std::string());
+    emit_peeled(code, k, plan, tangent, options, opened_loops == 0 ? threads : std::string(),
+                edge_flag);
   else
     emit_stores(code, k, plan.stores, tangent, options);
   for (int i = 0; i < opened; ++i) {

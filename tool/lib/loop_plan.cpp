@@ -447,7 +447,7 @@ void tighten(std::vector<Poly>& bounds, const Poly& p, bool lower) {
 Interval forward_interior(const Loop& l, const std::vector<ForwardStore>& stores) {
   Interval in;
   const auto lo = to_poly(l.lo), hi = to_poly(l.hi);
-  if (!lo || !hi || l.descending)
+  if (!lo || !hi)
     return in;
   std::vector<ExprP> conds;
   std::set<const LocalVar*> seen;
@@ -494,6 +494,44 @@ Interval forward_interior(const Loop& l, const std::vector<ForwardStore>& stores
   return in;
 }
 
+// A condition inside `box`: `value` 1 or 0 where the box decides it, else -1
+// and `cond` with the operands of its && and || that the box decides dropped
+// (`i == 0 || j == 0` is `j == 0` for i inside; the conditions are pure, so
+// an operand left unevaluated changes nothing).
+struct FoldedCond {
+  ExprP cond;
+  int value = -1;
+};
+
+FoldedCond fold_cond(const Box& box, const ExprP& c) {
+  if (auto cd = condition_domain(c)) {
+    if (box_inside(box, *cd))
+      return {nullptr, 1};
+    if (box_disjoint(box, *cd))
+      return {nullptr, 0};
+  }
+  if (c->op == Op::And || c->op == Op::Or) {
+    const FoldedCond a = fold_cond(box, c->ops[0]), b = fold_cond(box, c->ops[1]);
+    const int absorbing = c->op == Op::And ? 0 : 1; // (false && x, true || x)
+    if (a.value == absorbing || b.value == absorbing)
+      return {nullptr, absorbing};
+    if (a.value >= 0)
+      return b; // (true && x, false || x)
+    if (b.value >= 0)
+      return a;
+    if (a.cond == c->ops[0] && b.cond == c->ops[1])
+      return {c, -1};
+    return {binary(c->op, a.cond, b.cond), -1};
+  }
+  if (c->op == Op::Not) {
+    const FoldedCond a = fold_cond(box, c->ops[0]);
+    if (a.value >= 0)
+      return {nullptr, 1 - a.value};
+    return {a.cond == c->ops[0] ? c : unary(Op::Not, a.cond), -1};
+  }
+  return {c, -1};
+}
+
 // A store as printed inside `box`: its conditions folded where the box
 // decides them; false when its guard fails everywhere there.
 bool fold_store(const Box& box, Specializer& spec, ForwardStore& s) {
@@ -503,15 +541,13 @@ bool fold_store(const Box& box, Specializer& spec, ForwardStore& s) {
     s.dot = spec(s.dot);
   std::vector<PathCond> path;
   for (const auto& pc : s.path) {
-    const ExprP cond = spec(pc.cond);
-    if (auto cd = condition_domain(cond)) {
-      const Domain holds = pc.positive ? *cd : subtract(universe(), *cd);
-      if (box_inside(box, holds))
-        continue; // holds in every iteration of the box
-      if (box_disjoint(box, holds))
-        return false; // in none
+    const FoldedCond f = fold_cond(box, spec(pc.cond));
+    if (f.value >= 0) {
+      if (f.value != int(pc.positive))
+        return false; // fails in every iteration of the box
+      continue;       // holds in every one
     }
-    path.push_back({cond, pc.positive});
+    path.push_back({f.cond, pc.positive});
   }
   s.path = std::move(path);
   return true;
@@ -521,32 +557,45 @@ bool fold_store(const Box& box, Specializer& spec, ForwardStore& s) {
 
 void peel_forward(ForwardPlan& plan) {
   for (auto& nest : plan.nests) {
-    if (nest.nest->loops.empty() || nest.peeled())
+    const std::vector<Loop>& loops = nest.nest->loops;
+    // (the innermost loop runs as three: counted down, it would need them
+    // reversed; outer loops only test each iteration)
+    if (loops.empty() || nest.peeled() || loops.back().descending)
       continue;
-    const Loop& l = nest.nest->loops.back();
-    Interval in = forward_interior(l, nest.stores);
-    if (in.lo.empty() && in.hi.empty())
-      continue;
+    std::vector<Interval> ins;
     Box box;
-    Interval& iv = box.dims[l.var];
-    iv = in;
-    iv.lo.push_back(*to_poly(l.lo));
-    iv.hi.push_back(*to_poly(l.hi));
+    bool any = false;
+    for (const Loop& l : loops) {
+      ins.push_back(forward_interior(l, nest.stores));
+      const auto lo = to_poly(l.lo), hi = to_poly(l.hi);
+      if (!lo || !hi)
+        continue;
+      any = any || !ins.back().lo.empty() || !ins.back().hi.empty();
+      Interval& iv = box.dims[l.var];
+      iv = ins.back();
+      iv.lo.push_back(*lo);
+      iv.hi.push_back(*hi);
+    }
+    if (!any)
+      continue;
     std::vector<ForwardStore> inside;
     bool folded = false;
     Specializer spec(box); // (one for the nest: its stores share their locals)
     for (ForwardStore s : nest.stores) {
-      const size_t before = s.path.size();
-      const ExprP index = s.index, value = s.value, dot = s.dot;
+      const ForwardStore before = s;
       const bool kept = fold_store(box, spec, s);
-      folded = folded || !kept || s.path.size() != before || s.index != index || s.value != value ||
-               s.dot != dot;
+      const bool same_path =
+          s.path.size() == before.path.size() &&
+          std::equal(s.path.begin(), s.path.end(), before.path.begin(),
+                     [](const PathCond& a, const PathCond& b) { return a.cond == b.cond; });
+      folded = folded || !kept || !same_path || s.index != before.index ||
+               s.value != before.value || s.dot != before.dot;
       if (kept)
         inside.push_back(std::move(s));
     }
     if (!folded || inside.empty())
       continue; // (nothing to gain; no store at all inside: keep one loop)
-    nest.interior = std::move(in);
+    nest.interior = std::move(ins);
     nest.interior_stores = std::move(inside);
   }
 }

@@ -161,17 +161,20 @@ struct ForwardNest {
   const Nest* nest = nullptr;
   bool parallel = false;
   std::vector<ForwardStore> stores; // the nest's, in order
-  /// The innermost loop split edge / interior / edge (peel_forward): inside
-  /// `interior` (its counter at least the maximum of `interior.lo`, below the
-  /// minimum of `interior.hi`, and within the loop's own bounds) the index
-  /// conditions of the stores are decided, and `interior_stores` are the
-  /// stores with them folded: `d[i + 1]`, not `d[i == n - 1 ? 0 : i + 1]`; a
-  /// guard that holds there is dropped, a store whose guard fails there is
-  /// left out. The same iterations in the same order, so the same results;
-  /// the interior loop is branch-free where the source's was not, and the
-  /// compiler may vectorize it. Not split (no interior store) when no
-  /// condition is decided near the loop's ends, or the loop counts down.
-  Interval interior;
+  /// The loops split where the index conditions of the stores are decided
+  /// (peel_forward): per loop, outermost first, the bounds that narrow it to
+  /// its interior (the counter at least the maximum of `lo`, below the
+  /// minimum of `hi`, and within the loop's own bounds; none: the whole
+  /// loop). An iteration whose counters all lie in their interiors runs
+  /// `interior_stores`, the stores with those conditions folded: `d[i + 1]`,
+  /// not `d[i == n - 1 ? 0 : i + 1]`; a guard that holds there is dropped, a
+  /// store whose guard fails there is left out. The innermost loop runs as
+  /// edge / interior / edge, an outer one tests its counter. The same
+  /// iterations in the same order, so the same results; the interior loop is
+  /// branch-free where the source's was not, and the compiler may vectorize
+  /// it. Not split (no interior store) when no condition is decided near
+  /// the loops' ends, or the innermost loop counts down.
+  std::vector<Interval> interior;
   std::vector<ForwardStore> interior_stores;
   bool peeled() const { return !interior_stores.empty(); }
 };
