@@ -159,12 +159,25 @@ FusionKey fusion_key(const Kernel& k, const GatherGroup& g) {
 
 // ---- the terms of each box: expressions under a known box --------------------
 
+// An integer min/max of two operands (dpgen_min(a, b) = b < a ? b : a,
+// dpgen_max(a, b) = a < b ? b : a): the condition under which it is its
+// second operand; null for any other expression.
+ExprP clamp_condition(const ExprP& e) {
+  if (e->op != Op::Call || e->type != Type::Int || e->ops.size() != 2 ||
+      (e->name != "min" && e->name != "max"))
+    return nullptr;
+  return e->name == "min" ? binary(Op::Lt, e->ops[1], e->ops[0])
+                          : binary(Op::Lt, e->ops[0], e->ops[1]);
+}
+
 // Replaces conditional expressions whose index condition is decided inside
 // `box` (only comparisons differing by a constant are decided), so an
 // interior loop reads a[i + 1] instead of a[(i == n - 1) ? 0 : i + 1].
 class Specializer {
 public:
-  explicit Specializer(const Box& box) : box_(box) {}
+  /// `clamps`: also an integer min/max whose comparison the box decides
+  /// (`std::max(i - 1, 0)` is `i - 1` for i >= 1; the forward forms' split).
+  explicit Specializer(const Box& box, bool clamps = false) : box_(box), clamps_(clamps) {}
 
   ExprP operator()(const ExprP& e) {
     if (!e)
@@ -193,11 +206,22 @@ public:
           return (*this)(e->ops[2]);
       }
     }
+    if (clamps_) {
+      if (const ExprP c = clamp_condition(e)) { // the second operand where c holds, else the first
+        if (auto cd = condition_domain(c)) {
+          if (box_inside(box_, *cd))
+            return (*this)(e->ops[1]);
+          if (box_disjoint(box_, *cd))
+            return (*this)(e->ops[0]);
+        }
+      }
+    }
     return map_operands(e, [&](const ExprP& o) { return (*this)(o); });
   }
 
 private:
   const Box& box_;
+  bool clamps_ = false;
   std::map<const LocalVar*, ExprP> memo_;
 };
 
@@ -451,13 +475,25 @@ Interval forward_interior(const Loop& l, const std::vector<ForwardStore>& stores
     return in;
   std::vector<ExprP> conds;
   std::set<const LocalVar*> seen;
+  auto collect = [&](const ExprP& e) {
+    walk(
+        e,
+        [&](const ExprP& x) {
+          if (x->op == Op::Select)
+            conds.push_back(x->ops[0]);
+          else if (const ExprP c = clamp_condition(x))
+            conds.push_back(c);
+          return true;
+        },
+        [](const ExprP& l) { return !l->local->kernel_level; }, seen);
+  };
   for (const auto& s : stores) {
     for (const ExprP& e : {s.index, s.value, s.dot})
       if (e)
-        collect_selects(e, conds, seen);
+        collect(e);
     for (const auto& pc : s.path) {
       conds.push_back(pc.cond);
-      collect_selects(pc.cond, conds, seen);
+      collect(pc.cond);
     }
   }
   std::vector<Poly> los = {*lo}, his = {*hi}; // (the loop's own bounds first)
@@ -580,7 +616,7 @@ void peel_forward(ForwardPlan& plan) {
       continue;
     std::vector<ForwardStore> inside;
     bool folded = false;
-    Specializer spec(box); // (one for the nest: its stores share their locals)
+    Specializer spec(box, /*clamps=*/true); // (one for the nest: its stores share their locals)
     for (ForwardStore s : nest.stores) {
       const ForwardStore before = s;
       const bool kept = fold_store(box, spec, s);
