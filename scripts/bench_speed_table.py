@@ -82,6 +82,23 @@ def main():
             print(f"| {n}² | {int(n1['cg_iterations'])} | {ms(o1):.1f} / {t2(o2)} | {up(o1, o2)} | "
                   f"{ms(n1):.1f} / {t2(n2)} | {up(n1, n2)} | {cell(n1)} / {cell(n2)} | "
                   f"{ms(n1) / ms(o1):.2f} |")
+        rows = [(n, new.get(f"BM_mgpcg_parallel_forward/{n}/1"),
+                 new.get(f"BM_mgpcg_parallel_forward/{n}/2"), new.get(f"BM_mgpcg/{n}/1"))
+                for n in (256, 512, 1024, 2048)]
+        if any(p1 for _, p1, _, _ in rows):
+            print("\nThe same, the operator passed as its generated `<kernel>_parallel_forward` (the "
+                  "same bits; its interior loop split from the periodic wrap and vectorized)\n")
+            print("| grid | 1T / 2T ms | 2T speed-up | ns/cell 1T / 2T | 1T against the kernel as "
+                  "written |")
+            print("|---|---|---|---|---|")
+            for n, p1, p2, n1 in rows:
+                if not (p1 and n1):
+                    continue
+                t2 = f"{ms(p2):.1f}" if p2 else "–"
+                up = f"{ms(p1) / ms(p2):.2f}" if p2 else "–"
+                c2 = f"{ms(p2) * 1e6 / n / n:.0f}" if p2 else "–"
+                print(f"| {n}² | {ms(p1):.1f} / {t2} | {up} | {ms(p1) * 1e6 / n / n:.0f} / {c2} | "
+                      f"{ms(p1) / ms(n1):.2f} |")
         print("\nFlow solver, 4 steps (closed box, semi-Lagrangian, MG-PCG pressure to 1e-10): "
               "gradient / forward and the 2-thread speed-up of each\n")
         print("| grid | baseline forward ms 1T | baseline gradient / forward 1T / 2T | "
