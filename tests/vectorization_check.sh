@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Regression guard for the gather form's main property: the branch-free
 # interior loop of every generated adjoint given as an argument vectorizes
-# (GCC -fopt-info-vec), each interior of each file, not just one per file.
+# (GCC -fopt-info-vec), each interior of each file, not just one per file; so
+# does the interior of each <kernel>_parallel_forward split from its boundary
+# conditions (an `interior` lambda capturing by reference).
 # Timing is for bench/; this only asks the compiler.
 #   vectorization_check.sh [--flags="<compiler flags>"] <c++ compiler> <generated_adjoint.cpp>...
 # The flags default to -O3 -march=native; --flags=-O3 checks what a user's
@@ -23,14 +25,15 @@ for f in "$@"; do
              -c "$f" -o /dev/null -fopt-info-vec-optimized 2>&1 || true)
   vectorized=$(grep -oE "^[^:]*:[0-9]+:[0-9]+: optimized: loop vectorized" <<<"$report" |
                  cut -d: -f2 | sort -u)
-  # Each interior lambda: "<its line> <a line of it>..." — its body, and the
-  # loops that call it (GCC reports an inlined body at either place).
+  # Each interior lambda (the adjoint's [=], the forward's [&]): "<its line> <a
+  # line of it>..." — its body, and the loops that call it (GCC reports an
+  # inlined body at either place).
   interiors=$(awk '
-    /auto interior_* = \[=\]/ { if (start) print start, lines; start = NR; lines = ""; body = 1 }
+    /auto interior_* = \[[=&]\]/ { if (start) print start, lines; start = NR; lines = ""; body = 1 }
     start && body { lines = lines " " NR }
     start && body && /^ *};/ { body = 0 }
     /for \(/ { f = NR }
-    start && !body && /interior_*\(c_/ { lines = lines " " f }
+    start && !body && /[^_[:alnum:]]interior_*\(/ { lines = lines " " f }
     END { if (start) print start, lines }' "$f")
   total=0 bad=()
   while read -r start lines; do

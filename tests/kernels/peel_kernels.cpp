@@ -1,5 +1,5 @@
-// Kernels whose forward forms split their innermost loop (peel_forward):
-// boundary conditions written the ways real code writes them, decided in a
+// Kernels whose forward forms split their loops (peel_forward): boundary
+// conditions written the ways real code writes them, decided in a
 // branch-free interior. tests/kernels/peel_test.cpp checks each forward form
 // against the kernel bit for bit, at sizes with and without an interior.
 #include "test_kernels.hpp"
@@ -75,4 +75,38 @@ DPGEN_KERNEL void peel_walls2d(DPGEN_IN const double* a, DPGEN_OUT double* out, 
       else
         out[j * nx + i] = a[j * nx + ip] * a[(j + 1) * nx + i] - a[(j - 1) * nx + i];
     }
+}
+
+// A local whose definition the split makes loop-invariant inside (1.0 / dx) while the edges
+// keep the condition: it must stay in the loops (a copy moved before them would be shadowed
+// by the edges' own: tests/CMakeLists.txt compiles these files with -Wshadow -Werror).
+DPGEN_KERNEL void peel_coef(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, double dx) {
+  for (int i = 0; i < n; ++i) {
+    const double w = (i == 0 || i == n - 1) ? 0.5 / dx : 1.0 / dx;
+    out[i] = w * a[i];
+  }
+}
+
+// Offsets from a loop that starts at 2 and ends at n - 3 inclusive, a clamp nested in a clamp,
+// its operands swapped, and a floating-point min that must stay as written.
+DPGEN_KERNEL void peel_offsets(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 2; i <= n - 3; ++i) {
+    const int l = std::min(std::max(i - 3, 0), n - 1);
+    const int r = std::min(n - 1, i + 3);
+    out[i] = (i == 2 ? a[i] : a[i - 1]) + (i >= n - 4 ? 0.0 : a[i + 2]) + a[l] * a[r] +
+             std::min(a[i], 0.0);
+  }
+}
+
+// Three loops: the outer and inner split, the middle one (no condition on j) passes the outer
+// edge test through.
+DPGEN_KERNEL void peel_box3d(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny,
+                             int nz) {
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const long c = (static_cast<long>(k) * ny + j) * nx + i;
+        const long e = i == nx - 1 ? c - i : c + 1;
+        out[c] = k == 0 ? a[c] : a[c - nx * ny] + a[e];
+      }
 }

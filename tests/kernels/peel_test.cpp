@@ -1,5 +1,5 @@
-// The forward forms of peel_kernels.cpp, whose innermost loops are split into edge and
-// branch-free interior iterations (loop_plan.cpp: peel_forward): <kernel>_parallel_forward
+// The forward forms of peel_kernels.cpp, whose loops are split into edge and branch-free
+// interior iterations (loop_plan.cpp: peel_forward): <kernel>_parallel_forward
 // must give the kernel's values bit for bit, on 1 and 2 threads, at sizes with no interior
 // (1, 2, 3 cells: every iteration an edge, some conditions holding at both ends at once),
 // small interiors and one above the threading threshold; the tangent (printed the same way)
@@ -18,6 +18,7 @@
 #include <cstring>
 #include <functional>
 #include <random>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -70,6 +71,26 @@ TEST_CASE("peeled forward: 1D kernels bit for bit at every size") {
     same_bits(
         size_t(n), [&](double* o) { peel_clamped(a.data(), o, n); },
         [&](double* o) { peel_clamped_parallel_forward(a.data(), o, n); });
+    same_bits(
+        size_t(n), [&](double* o) { peel_coef(a.data(), o, n, 0.3); },
+        [&](double* o) { peel_coef_parallel_forward(a.data(), o, n, 0.3); });
+    same_bits(
+        size_t(n), [&](double* o) { peel_offsets(a.data(), o, n); },
+        [&](double* o) { peel_offsets_parallel_forward(a.data(), o, n); });
+  }
+}
+
+TEST_CASE("peeled forward: three loops, the middle one not split") {
+  for (auto [nx, ny, nz] :
+       {std::tuple{1, 1, 1}, {2, 1, 3}, {1, 3, 2}, {3, 2, 2}, {5, 4, 3}, {40, 20, 12}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    CAPTURE(nz);
+    const size_t cells = size_t(nx) * size_t(ny) * size_t(nz);
+    const auto a = values(cells, 4);
+    same_bits(
+        cells, [&](double* o) { peel_box3d(a.data(), o, nx, ny, nz); },
+        [&](double* o) { peel_box3d_parallel_forward(a.data(), o, nx, ny, nz); });
   }
 }
 
@@ -128,6 +149,15 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
              peel_descending_tangent);
     check_1d(n, peel_clamped, peel_clamped_adjoint, peel_clamped_adjoint_checked,
              peel_clamped_tangent);
+    check_1d(n, peel_offsets, peel_offsets_adjoint, peel_offsets_adjoint_checked,
+             peel_offsets_tangent);
+    check_1d(
+        n, [](auto a, auto o, int m) { peel_coef(a, o, m, 0.4); },
+        [](auto a, auto aa, auto s, int m) { peel_coef_adjoint(a, aa, s, m, 0.4); },
+        [](auto a, auto an, auto aa, auto aan, auto s, auto sn, int m) {
+          peel_coef_adjoint_checked(a, an, aa, aan, s, sn, m, 0.4);
+        },
+        [](auto a, auto d, auto o, auto od, int m) { peel_coef_tangent(a, d, o, od, m, 0.4); });
   }
   for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {3, 2}, {5, 4}}) {
     CAPTURE(nx);

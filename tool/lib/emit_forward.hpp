@@ -34,7 +34,10 @@ struct ForwardOptions {
 /// each store under its path, as planned (the pass `hoist` has moved their
 /// loop-invariant subexpressions before the loops: ForwardPlan::hoisted);
 /// with `tangent` each store followed by its tangent `<array>_dot`
-/// (ForwardStore::dot).
+/// (ForwardStore::dot). A split nest (ForwardNest::interior, peel_forward):
+/// its outer loops test their counters, its innermost loop runs edge /
+/// interior / edge in the kernel's order, the interior printing
+/// `interior_stores`.
 void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
                        const ForwardOptions& options);
 

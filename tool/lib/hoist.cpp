@@ -112,6 +112,7 @@ ExprP Hoister::rewrite(const ExprP& e, bool summed) {
     if (movable(e)) {
       out = move(e);
     } else {
+      kept_.insert(e->local->name);
       ExprP def = rewrite(e->local->def, true);
       if (def != e->local->def) {
         auto l = std::make_shared<LocalVar>(*e->local);
@@ -145,10 +146,13 @@ ExprP Hoister::rewrite(const ExprP& e, bool summed) {
 // stays where the index algebra sees it) whose definition is invariant, safe
 // anywhere and worth hoisting (`s = 0.0` stays), not a product (a sum may use
 // the local: see hoist.hpp), every local it uses moves too, and no other
-// local of its name moved with another definition (the plan specializes
-// locals per box: loop_plan.cpp's Specializer). The same test wherever the
-// local is met, so a local is defined either before the loops or in them,
-// never both.
+// local of its name moved with another definition or stayed in the loops
+// (the plan specializes locals per box: loop_plan.cpp's Specializer; a split
+// forward's edge keeps `w = i == 0 ? 0.5 / dx : 1.0 / dx` where its interior
+// has the invariant `w = 1.0 / dx`). Boxes are visited in print order, edges
+// before interiors, so a name an edge keeps is never moved after it. (The
+// other order, a name moved and a later box keeping it, still defines it in
+// both places: correct values, a -Wshadow warning.)
 bool Hoister::movable(const ExprP& e) const {
   const ExprP& def = e->local->def;
   std::map<const LocalVar*, bool> memo;
@@ -157,7 +161,7 @@ bool Hoister::movable(const ExprP& e) const {
       (def->op == Op::Neg && def->ops[0]->op == Op::Mul))
     return false;
   auto it = moved_.find(e->local->name);
-  if (it != moved_.end() && it->second.first != print(def))
+  if ((it != moved_.end() && it->second.first != print(def)) || kept_.count(e->local->name))
     return false;
   return locals_move(def);
 }

@@ -80,6 +80,10 @@ private:
   /// Locals moved before the loops, by name: their definition as printed, and
   /// the reference to the moved one.
   std::map<std::string, std::pair<std::string, ExprP>> moved_;
+  /// Names of loop-level locals kept in the loops: a local of the same name
+  /// specialized to another box (a split forward's interior) does not move,
+  /// or its definition before the loops would be shadowed by the kept one.
+  std::set<std::string> kept_;
 };
 
 /// The pass: for an adjoint, its gather and scatter loops (LoopPlan::hoisted),

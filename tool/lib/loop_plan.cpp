@@ -206,17 +206,19 @@ public:
           return (*this)(e->ops[2]);
       }
     }
+    ExprP out = map_operands(e, [&](const ExprP& o) { return (*this)(o); });
     if (clamps_) {
-      if (const ExprP c = clamp_condition(e)) { // the second operand where c holds, else the first
+      // (its operands first: min(max(i - 3, 0), n - 1) compares i - 3 with n - 1)
+      if (const ExprP c = clamp_condition(out)) { // the second operand where c holds
         if (auto cd = condition_domain(c)) {
           if (box_inside(box_, *cd))
-            return (*this)(e->ops[1]);
+            return out->ops[1];
           if (box_disjoint(box_, *cd))
-            return (*this)(e->ops[0]);
+            return out->ops[0];
         }
       }
     }
-    return map_operands(e, [&](const ExprP& o) { return (*this)(o); });
+    return out;
   }
 
 private:
@@ -463,8 +465,8 @@ void tighten(std::vector<Poly>& bounds, const Poly& p, bool lower) {
   bounds.push_back(p);
 }
 
-// The interval of the innermost counter where the index conditions of
-// `stores` (their selects and guards) are decided: a piece of a condition's
+// The interval of loop `l`'s counter where the index conditions of `stores`
+// (their selects, guards and integer clamps) are decided: a piece of a condition's
 // domain, or of its complement, that ends a constant from one end of the loop
 // is left to the edge loops (`i == n - 1`: the last iteration; `i + 1 < n`
 // fails only there). Empty bounds: nothing decided.

@@ -192,10 +192,9 @@ struct ForwardPlan {
 /// result).
 ForwardPlan plan_forward(const Kernel& k);
 
-/// Splits the innermost loop of each nest of `plan` where the index
-/// conditions of its stores are decided away from its ends (ForwardNest::
-/// interior). After the tangents are set (ForwardStore::dot: it folds them
-/// too), before the pass `hoist`.
+/// Splits the loops of each nest of `plan` where the index conditions of its
+/// stores are decided away from their ends (ForwardNest::interior). After the tangents are set
+/// (ForwardStore::dot: it folds them too), before the pass `hoist`.
 void peel_forward(ForwardPlan& plan);
 
 /// The plan emit prints for one kernel (or one stage of a kernel with work
