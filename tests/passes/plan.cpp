@@ -2,7 +2,8 @@
 // per input, the cell box, the branch-free interior, edges that may reach
 // into it, fusion of inputs with the same cell box, and the parallel test;
 // then the forward forms' loops (the tangent, the torch ops' forward): the
-// kernel's own nests, parallel where every store sets its element.
+// kernel's own nests, parallel where every store sets its element, split
+// where their boundary conditions are decided.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %dpgen --print-after=plan %s --out-dir %t -- -I%runtime_inc | FileCheck %s
 #include "dpgen/annotate.hpp"
@@ -61,4 +62,23 @@ DPGEN_KERNEL void sums(DPGEN_IN const double* a, DPGEN_OUT double* col, DPGEN_OU
   first[0] = a[0];
   for (int i = 0; i < nx; ++i)
     twice[i] = 2.0 * a[i];
+}
+
+// The forward forms split their loops where the stores' index conditions are
+// decided (peel_forward): the interior's bounds beyond the loops' own (`*`:
+// none on that side) and its stores, the wall rows' branch and the wrap gone.
+// CHECK-LABEL: forward loops of walls_wrap
+// CHECK-NEXT: nest 1: parallel, j in [0, ny), i in [0, nx)
+// CHECK-NEXT: split, interior {i: [*, nx - 1); j: [1, ny - 1)}
+// CHECK-NEXT: interior: out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i]
+// CHECK-NOT: interior:
+DPGEN_KERNEL void walls_wrap(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int ip = i == nx - 1 ? 0 : i + 1;
+      if (j == 0 || j == ny - 1)
+        out[j * nx + i] = a[j * nx + i];
+      else
+        out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i];
+    }
 }

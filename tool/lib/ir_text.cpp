@@ -351,6 +351,20 @@ std::string print_forward_plan(const ForwardPlan& plan) {
                        : f.nest->loops.empty() ? "serial (no loop)"
                                                : "serial (a store adds)",
                        loops.empty() ? "" : fmt::format(", {}", fmt::join(loops, ", ")));
+    if (!f.peeled())
+      continue;
+    // (peel_forward: the interior's bounds beyond the loops' own, its stores)
+    Box inside;
+    for (size_t d = 0; d < f.interior.size(); ++d)
+      if (!f.interior[d].lo.empty() || !f.interior[d].hi.empty())
+        inside.dims[f.nest->loops[d].var] = f.interior[d];
+    out += fmt::format("    split, interior {}\n", box_text(inside));
+    for (const auto& st : f.interior_stores) {
+      const std::string path = path_text(st.path);
+      out += fmt::format("    interior: {}[{}] {} {}{}\n", st.store->array, print(st.index),
+                         st.store->accumulate ? "+=" : "=", print(st.value),
+                         path.empty() ? "" : " if " + path);
+    }
   }
   return out;
 }
