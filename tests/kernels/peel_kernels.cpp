@@ -110,3 +110,30 @@ DPGEN_KERNEL void peel_box3d(DPGEN_IN const double* a, DPGEN_OUT double* out, in
         out[c] = k == 0 ? a[c] : a[c - nx * ny] + a[e];
       }
 }
+
+// Counted down in the outer loop (which only tests its counter), a wrap in the inner one.
+DPGEN_KERNEL void peel_descending_rows(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx,
+                                       int ny) {
+  for (int j = ny - 1; j >= 0; --j)
+    for (int i = 0; i < nx; ++i)
+      out[j * nx + i] =
+          (j == 0 ? 0.0 : a[(j - 1) * nx + i]) + (i == nx - 1 ? a[j * nx] : a[j * nx + i + 1]);
+}
+
+// A lower triangle: the inner loop's bound is the outer counter.
+DPGEN_KERNEL void peel_triangle(DPGEN_IN const double* a, DPGEN_OUT double* l, int n) {
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j)
+      l[i * n + j] = (j == 0 ? a[i] : a[i * n + j - 1]) * (j == i ? 2.0 : 1.0);
+}
+
+// A nest that adds (the trapezoid rule's end weights by a condition) runs serially in the
+// kernel's order, split like the others; the nest before it is parallel.
+DPGEN_KERNEL void peel_trapezoid(DPGEN_IN const double* a, DPGEN_OUT double* twice,
+                                 DPGEN_OUT double* sum, int n, double h) {
+  for (int i = 0; i < n; ++i)
+    twice[i] = 2.0 * a[i];
+  sum[0] = 0.0;
+  for (int i = 0; i < n; ++i)
+    sum[0] += (i == 0 || i == n - 1 ? 0.5 : 1.0) * h * a[i];
+}

@@ -77,6 +77,29 @@ TEST_CASE("peeled forward: 1D kernels bit for bit at every size") {
     same_bits(
         size_t(n), [&](double* o) { peel_offsets(a.data(), o, n); },
         [&](double* o) { peel_offsets_parallel_forward(a.data(), o, n); });
+    // (twice[n] then sum[1] in one buffer; the sum serial, in the kernel's order)
+    same_bits(
+        size_t(n) + 1, [&](double* o) { peel_trapezoid(a.data(), o, o + n, n, 0.1); },
+        [&](double* o) { peel_trapezoid_parallel_forward(a.data(), o, o + n, n, 0.1); });
+  }
+}
+
+TEST_CASE("peeled forward: a descending outer loop and a triangle") {
+  for (int n : {1, 2, 3, 5, 100}) {
+    CAPTURE(n);
+    const size_t cells = size_t(n) * size_t(n);
+    const auto a = values(cells, 5);
+    same_bits(
+        cells, [&](double* o) { peel_triangle(a.data(), o, n); },
+        [&](double* o) { peel_triangle_parallel_forward(a.data(), o, n); });
+    for (int ny : {1, 2, 3, 97}) {
+      CAPTURE(ny);
+      const size_t grid = size_t(n) * size_t(ny);
+      const auto b = values(grid, 6);
+      same_bits(
+          grid, [&](double* o) { peel_descending_rows(b.data(), o, n, ny); },
+          [&](double* o) { peel_descending_rows_parallel_forward(b.data(), o, n, ny); });
+    }
   }
 }
 
@@ -159,10 +182,35 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
         },
         [](auto a, auto d, auto o, auto od, int m) { peel_coef_tangent(a, d, o, od, m, 0.4); });
   }
+  for (int n : {1, 2, 3, 7}) { // two outputs, the second a serial sum
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n), 1};
+    p.forward = [&](auto in, auto out) { peel_trapezoid(in[0], out[0], out[1], n, 0.3); };
+    p.adjoint = [&](auto in, auto a, auto seed) {
+      peel_trapezoid_adjoint(in[0], a[0], seed[0], seed[1], n, 0.3);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_trapezoid_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n, 0.3);
+    };
+    dpgen_test::check_adjoint(p);
+  }
   for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {3, 2}, {5, 4}}) {
     CAPTURE(nx);
     CAPTURE(ny);
     const size_t cells = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> d;
+    d.in_sizes = {cells};
+    d.out_sizes = {cells};
+    d.forward = [&](auto in, auto out) { peel_descending_rows(in[0], out[0], nx, ny); };
+    d.adjoint = [&](auto in, auto a, auto seed) {
+      peel_descending_rows_adjoint(in[0], a[0], seed[0], nx, ny);
+    };
+    d.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_descending_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(d);
     dpgen_test::Problem<double> p;
     p.in_sizes = {cells, cells};
     p.out_sizes = {cells};
