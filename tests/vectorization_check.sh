@@ -31,7 +31,7 @@ for f in "$@"; do
   interiors=$(awk '
     /auto interior_* = \[[=&]\]/ { if (start) print start, lines; start = NR; lines = ""; body = 1 }
     start && body { lines = lines " " NR }
-    start && body && /^ *};/ { body = 0 }
+    start && body && (/^ *};/ || (NR == start && /\};[[:space:]]*$/)) { body = 0 }
     /for \(/ { f = NR }
     start && !body && /[^_[:alnum:]]interior_*\(/ { lines = lines " " f }
     END { if (start) print start, lines }' "$f")

@@ -111,7 +111,8 @@ DPGEN_KERNEL void peel_box3d(DPGEN_IN const double* a, DPGEN_OUT double* out, in
       }
 }
 
-// Counted down in the outer loop (which only tests its counter), a wrap in the inner one.
+// Counted down in the outer loop, a wrap in the inner one (a parallel nest: its forward forms
+// count up, the order being free; peel_column_sums counts down).
 DPGEN_KERNEL void peel_descending_rows(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx,
                                        int ny) {
   for (int j = ny - 1; j >= 0; --j)
@@ -136,4 +137,15 @@ DPGEN_KERNEL void peel_trapezoid(DPGEN_IN const double* a, DPGEN_OUT double* twi
   sum[0] = 0.0;
   for (int i = 0; i < n; ++i)
     sum[0] += (i == 0 || i == n - 1 ? 0.5 : 1.0) * h * a[i];
+}
+
+// A nest that adds, counted down in its outer loop: serial, in the kernel's order (rows from
+// the top), its outer loop testing its counter and its inner one split from the wrap.
+DPGEN_KERNEL void peel_column_sums(DPGEN_IN const double* a, DPGEN_OUT double* col, int nx,
+                                   int ny) {
+  for (int i = 0; i < nx; ++i)
+    col[i] = 0.0;
+  for (int j = ny - 1; j >= 0; --j)
+    for (int i = 0; i < nx; ++i)
+      col[i] += (j == 0 ? 0.5 : 1.0) * a[j * nx + (i == nx - 1 ? 0 : i + 1)];
 }

@@ -84,7 +84,7 @@ TEST_CASE("peeled forward: 1D kernels bit for bit at every size") {
   }
 }
 
-TEST_CASE("peeled forward: a descending outer loop and a triangle") {
+TEST_CASE("peeled forward: descending outer loops (parallel and serial) and a triangle") {
   for (int n : {1, 2, 3, 5, 100}) {
     CAPTURE(n);
     const size_t cells = size_t(n) * size_t(n);
@@ -99,6 +99,9 @@ TEST_CASE("peeled forward: a descending outer loop and a triangle") {
       same_bits(
           grid, [&](double* o) { peel_descending_rows(b.data(), o, n, ny); },
           [&](double* o) { peel_descending_rows_parallel_forward(b.data(), o, n, ny); });
+      same_bits(
+          size_t(n), [&](double* o) { peel_column_sums(b.data(), o, n, ny); },
+          [&](double* o) { peel_column_sums_parallel_forward(b.data(), o, n, ny); });
     }
   }
 }
@@ -211,6 +214,17 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
       peel_descending_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
     };
     dpgen_test::check_adjoint(d);
+    dpgen_test::Problem<double> c;
+    c.in_sizes = {cells};
+    c.out_sizes = {size_t(nx)};
+    c.forward = [&](auto in, auto out) { peel_column_sums(in[0], out[0], nx, ny); };
+    c.adjoint = [&](auto in, auto a, auto seed) {
+      peel_column_sums_adjoint(in[0], a[0], seed[0], nx, ny);
+    };
+    c.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_column_sums_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(c);
     dpgen_test::Problem<double> p;
     p.in_sizes = {cells, cells};
     p.out_sizes = {cells};

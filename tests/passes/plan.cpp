@@ -70,7 +70,7 @@ DPGEN_KERNEL void sums(DPGEN_IN const double* a, DPGEN_OUT double* col, DPGEN_OU
 // CHECK-LABEL: forward loops of walls_wrap
 // CHECK-NEXT: nest 1: parallel, j in [0, ny), i in [0, nx)
 // CHECK-NEXT: split, interior {i: [*, nx - 1); j: [1, ny - 1)}
-// CHECK-NEXT: interior: out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i]
+// CHECK-NEXT: interior: out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i]{{$}}
 // CHECK-NOT: interior:
 DPGEN_KERNEL void walls_wrap(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
   for (int j = 0; j < ny; ++j)

@@ -190,6 +190,9 @@ ExprP Hoister::move(const ExprP& e) {
   hoisted_.push_back(l);
   ExprP out = local_ref(l);
   moved_[l->name] = {print(e->local->def), out};
+  // (met again directly, it is the moved one: a name kept since then must not
+  // make it stay in the loops as well)
+  locals_[e->local.get()] = {e->local, out};
   return out;
 }
 
