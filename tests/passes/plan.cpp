@@ -66,19 +66,13 @@ DPGEN_KERNEL void sums(DPGEN_IN const double* a, DPGEN_OUT double* col, DPGEN_OU
 
 // The forward forms split their loops where the stores' index conditions are
 // decided (peel_forward): the interior's bounds beyond the loops' own (`*`:
-// none on that side) and its stores, the wall rows' branch and the wrap gone.
-// CHECK-LABEL: forward loops of walls_wrap
-// CHECK-NEXT: nest 1: parallel, j in [0, ny), i in [0, nx)
-// CHECK-NEXT: split, interior {i: [*, nx - 1); j: [1, ny - 1)}
-// CHECK-NEXT: interior: out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i]{{$}}
-// CHECK-NOT: interior:
-DPGEN_KERNEL void walls_wrap(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int ip = i == nx - 1 ? 0 : i + 1;
-      if (j == 0 || j == ny - 1)
-        out[j * nx + i] = a[j * nx + i];
-      else
-        out[j * nx + i] = a[j * nx + ip] - a[(j - 1) * nx + i];
-    }
-}
+// none on that side) and its stores, the wall rows' branch and the wrap gone
+// (peel_walls2d of the kernels tests/kernels/peel_test.cpp runs).
+// RUN: %dpgen --print-after=plan %S/../kernels/peel_kernels.cpp --out-dir %t -- \
+// RUN:   -I%runtime_inc -I%S/../kernels | FileCheck %s --check-prefix=PEEL
+// PEEL-LABEL: forward loops of peel_walls2d
+// PEEL-NEXT: nest 1: parallel, j in [0, ny), i in [0, nx)
+// PEEL-NEXT: split, interior {i: [*, nx - 1); j: [1, ny - 1)}
+// PEEL-NEXT: interior: out[j * nx + i] = a[j * nx + ip] * a[(j + 1) * nx + i] - a[(j - 1) * nx + i]{{$}}
+// PEEL-NOT: interior:
+// PEEL-LABEL: forward loops of peel_coef
