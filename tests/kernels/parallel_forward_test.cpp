@@ -99,6 +99,22 @@ TEST_CASE("parallel forward: the shipped kernels' values, bit for bit") {
           flow_divergence_parallel_forward(fu.data(), fv.data(), out, nx, ny, 0.5, periodic,
                                            1 - periodic);
         });
+    // the pressure solve's operator (the multigrid applies the parallel form by row strips,
+    // also on grids below the threshold and on single rows)
+    for (auto [mx, my] : {std::pair{nx, ny}, {2, 2}, {3, 5}, {7, 1}, {1, 4}}) {
+      CAPTURE(mx);
+      CAPTURE(my);
+      const double ox = periodic, oy = 1 - periodic;
+      same_bits(
+          "flow_pressure_operator", size_t(mx) * my,
+          [&](double* out) {
+            flow_pressure_operator(s.data(), inflow.data(), out, mx, my, 0.5, ox, oy);
+          },
+          [&](double* out) {
+            flow_pressure_operator_parallel_forward(s.data(), inflow.data(), out, mx, my, 0.5, ox,
+                                                    oy);
+          });
+    }
   }
 }
 
