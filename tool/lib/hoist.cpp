@@ -181,17 +181,19 @@ bool Hoister::locals_move(const ExprP& e) const {
 }
 
 ExprP Hoister::move(const ExprP& e) {
+  // (met again directly, a local is the moved one: a name kept since then must
+  // not make it stay in the loops as well; so in both branches)
   auto it = moved_.find(e->local->name);
-  if (it != moved_.end())
+  if (it != moved_.end()) {
+    locals_[e->local.get()] = {e->local, it->second.second};
     return it->second.second;
+  }
   auto l = std::make_shared<LocalVar>(*e->local);
   l->def = with_moved_locals(e->local->def);
   l->kernel_level = true;
   hoisted_.push_back(l);
   ExprP out = local_ref(l);
   moved_[l->name] = {print(e->local->def), out};
-  // (met again directly, it is the moved one: a name kept since then must not
-  // make it stay in the loops as well)
   locals_[e->local.get()] = {e->local, out};
   return out;
 }
