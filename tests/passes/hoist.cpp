@@ -37,13 +37,24 @@ DPGEN_KERNEL void flux_limit(DPGEN_IN const double* u, DPGEN_OUT double* out, in
 // CODE-LABEL: void flux_limit_parallel_forward(
 // CODE: const auto hoisted0 = nu / (dx * dx);
 // CODE: u[i - 1] * hoisted0
+// CODE-LABEL: void two_pass_nest1_adjoint(
+// CODE: const auto hoisted0 = 1.0 / (2.0 * dx);
+// CODE: (u[i] + u[i]) * hoisted0
+// CODE-NOT: / hoisted0
+// CODE-LABEL: void two_pass_nest2_adjoint(
+// CODE-LABEL: void two_pass_parallel_forward(
+// CODE: const auto hoisted0 = 2.0 * dx;
+// CODE: w[i] = u[i] * u[i] / hoisted0;
 
 // A kernel with a work array (w): each stage of its staged adjoint hoists
 // its own; the forward's (here the parallel forward's; a staged adjoint's
 // recompute, where it has one, prints the same plan) are numbered apart.
+// Stage 0's partial of u[i] * u[i] / (2.0 * dx) divides a value read in the
+// loop by an invariant: derive writes it as a product with 1 / (2.0 * dx),
+// hoisted, where the forward divides as the kernel does.
 // CHECK-NEXT: stage 0
 // CHECK-NEXT: adjoint:
-// CHECK-NEXT: hoisted0 = 2.0 * dx
+// CHECK-NEXT: hoisted0 = 1.0 / (2.0 * dx)
 // CHECK-NEXT: stage 1
 // CHECK-NEXT: adjoint:
 // CHECK-NEXT: inv_dx = 1.0 / dx

@@ -67,10 +67,16 @@ public:
       return add(mul(b, d(a)), mul(a, d(b)));
     }
     case Op::Div: {
-      // d(a/b) = da/b - a·db/b²
+      // d(a/b) = da/b - a·db/b²; da/b is da·(1/b) when b is the same in every
+      // iteration and da is not (1/b is then hoisted: no division per cell, as
+      // a hand-written adjoint would have it; at most one rounding more than
+      // da/b). An invariant da/b stays as written: it is hoisted whole.
       const ExprP &a = e->ops[0], &b = e->ops[1];
       ExprP da = d(a), db = d(b);
-      ExprP t1 = is_zero(da) ? da : binary(Op::Div, da, b);
+      const bool reciprocal = loop_invariant(b) && !loop_invariant(da);
+      ExprP t1 = is_zero(da)  ? da
+                 : reciprocal ? mul(da, binary(Op::Div, real_const(1, e->type), b))
+                              : binary(Op::Div, da, b);
       ExprP t2 = is_zero(db) ? db : binary(Op::Div, binary(Op::Mul, a, db), binary(Op::Mul, b, b));
       return add(t1, neg(t2));
     }
@@ -119,6 +125,30 @@ private:
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
+  // Built from scalar parameters, constants and locals defined before the
+  // loops only: the same value in every iteration of the kernel's loops.
+  static bool loop_invariant(const ExprP& e) {
+    switch (e->op) {
+    case Op::IntConst:
+    case Op::RealConst:
+    case Op::Param:
+      return true;
+    case Op::Local:
+      return e->local->kernel_level;
+    case Op::Cast:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+      for (const ExprP& o : e->ops)
+        if (!loop_invariant(o))
+          return false;
+      return true;
+    default:
+      return false;
+    }
+  }
   // A derivative as an arm of conditional `like`: an exact zero in its type.
   static ExprP arm(const ExprP& d, const ExprP& like) { return is_zero(d) ? zero(like->type) : d; }
 
