@@ -24,6 +24,11 @@ namespace {
 constexpr int kN2 = 2048;    // 2D grids: 2048 x 2048
 constexpr int kN1 = 1 << 22; // 1D: 2^22 cells
 constexpr int kN3 = 160;     // 3D: 160^3
+// In cache (the `_cache` benchmarks of the generated and hand-written adjoints):
+// 2^14 cells or fewer, every array of a kernel together within one core's L2.
+constexpr int kC2 = 128;     // 128 x 128
+constexpr int kC1 = 1 << 14; // 2^14
+constexpr int kC3 = 24;      // 24^3
 
 std::vector<double> random_field(size_t n, double lo, double hi, unsigned seed) {
   std::mt19937_64 rng(seed);
@@ -76,12 +81,14 @@ void BM_triad(benchmark::State& s) {
 
 // ---- laplacian2d -------------------------------------------------------------
 struct Lap2 {
-  size_t n = size_t(kN2) * kN2;
+  explicit Lap2(int side) : side(side) {}
+  int side;
+  size_t n = size_t(side) * side;
   std::vector<double> a = random_field(n, -1, 1, 1), out = std::vector<double>(n),
                       g = random_field(n, -1, 1, 2), a_adj = std::vector<double>(n);
 };
-Lap2& lap2() {
-  static Lap2 d;
+template <int Side = kN2> Lap2& lap2() {
+  static Lap2 d(Side);
   return d;
 }
 void BM_laplacian2d_forward(benchmark::State& s) {
@@ -92,17 +99,17 @@ void BM_laplacian2d_forward_peeled(benchmark::State& s) {
   auto& d = lap2();
   run(s, d.n, [&] { hand::laplacian2d_peeled(d.a.data(), d.out.data(), kN2, kN2, 0.1); });
 }
-void BM_laplacian2d_generated(benchmark::State& s) {
-  auto& d = lap2();
+template <int Side> void BM_laplacian2d_generated(benchmark::State& s) {
+  auto& d = lap2<Side>();
   // seed read, adjoint read and written: 24 bytes per cell
   run(
-      s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); },
+      s, d.n, [&] { laplacian2d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), Side, Side, 0.1); },
       24);
 }
-void BM_laplacian2d_hand(benchmark::State& s) {
-  auto& d = lap2();
+template <int Side> void BM_laplacian2d_hand(benchmark::State& s) {
+  auto& d = lap2<Side>();
   run(
-      s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), kN2, kN2, 0.1); }, 24);
+      s, d.n, [&] { hand::laplacian2d_gather(d.a_adj.data(), d.g.data(), Side, Side, 0.1); }, 24);
 }
 void BM_laplacian2d_scatter(benchmark::State& s) {
   auto& d = lap2();
@@ -111,13 +118,15 @@ void BM_laplacian2d_scatter(benchmark::State& s) {
 
 // ---- divergence2d ------------------------------------------------------------
 struct Div2 {
-  size_t n = size_t(kN2) * kN2;
+  explicit Div2(int side) : side(side) {}
+  int side;
+  size_t n = size_t(side) * side;
   std::vector<double> u = random_field(n, -1, 1, 3), v = random_field(n, -1, 1, 4),
                       out = std::vector<double>(n), g = random_field(n, -1, 1, 5),
                       u_adj = std::vector<double>(n), v_adj = std::vector<double>(n);
 };
-Div2& div2() {
-  static Div2 d;
+template <int Side = kN2> Div2& div2() {
+  static Div2 d(Side);
   return d;
 }
 void BM_divergence2d_forward(benchmark::State& s) {
@@ -129,22 +138,24 @@ void BM_divergence2d_forward_peeled(benchmark::State& s) {
   run(s, d.n,
       [&] { hand::divergence2d_peeled(d.u.data(), d.v.data(), d.out.data(), kN2, kN2, 0.1); });
 }
-void BM_divergence2d_generated(benchmark::State& s) {
-  auto& d = div2();
+template <int Side> void BM_divergence2d_generated(benchmark::State& s) {
+  auto& d = div2<Side>();
   // seed read, two adjoints read and written: 40 bytes per cell
   run(
       s, d.n,
       [&] {
         divergence2d_adjoint(d.u.data(), d.u_adj.data(), d.v.data(), d.v_adj.data(), d.g.data(),
-                             kN2, kN2, 0.1);
+                             Side, Side, 0.1);
       },
       40);
 }
-void BM_divergence2d_hand(benchmark::State& s) {
-  auto& d = div2();
+template <int Side> void BM_divergence2d_hand(benchmark::State& s) {
+  auto& d = div2<Side>();
   run(
       s, d.n,
-      [&] { hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), kN2, kN2, 0.1); },
+      [&] {
+        hand::divergence2d_gather(d.u_adj.data(), d.v_adj.data(), d.g.data(), Side, Side, 0.1);
+      },
       40);
 }
 void BM_divergence2d_scatter(benchmark::State& s) {
@@ -156,13 +167,14 @@ void BM_divergence2d_scatter(benchmark::State& s) {
 
 // ---- upwind_step -------------------------------------------------------------
 struct Up1 {
-  size_t n = size_t(kN1);
+  explicit Up1(int cells) : n(size_t(cells)) {}
+  size_t n;
   std::vector<double> d = random_field(n, 0, 1, 6), u = random_field(n, -1, 1, 7),
                       out = std::vector<double>(n), g = random_field(n, -1, 1, 8),
                       d_adj = std::vector<double>(n), u_adj = std::vector<double>(n);
 };
-Up1& up1() {
-  static Up1 d;
+template <int Cells = kN1> Up1& up1() {
+  static Up1 d(Cells);
   return d;
 }
 const double kDt = 0.2, kDx = 1.0;
@@ -174,17 +186,17 @@ void BM_upwind_forward_peeled(benchmark::State& s) {
   auto& d = up1();
   run(s, d.n, [&] { hand::upwind_peeled(d.d.data(), d.u.data(), d.out.data(), kN1, kDt, kDx); });
 }
-void BM_upwind_generated(benchmark::State& s) {
-  auto& d = up1();
+template <int Cells> void BM_upwind_generated(benchmark::State& s) {
+  auto& d = up1<Cells>();
   run(s, d.n, [&] {
-    upwind_step_adjoint(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
+    upwind_step_adjoint(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), Cells,
                         kDt, kDx);
   });
 }
-void BM_upwind_hand(benchmark::State& s) {
-  auto& d = up1();
+template <int Cells> void BM_upwind_hand(benchmark::State& s) {
+  auto& d = up1<Cells>();
   run(s, d.n, [&] {
-    hand::upwind_gather(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), kN1,
+    hand::upwind_gather(d.d.data(), d.d_adj.data(), d.u.data(), d.u_adj.data(), d.g.data(), Cells,
                         kDt, kDx);
   });
 }
@@ -198,26 +210,27 @@ void BM_upwind_scatter(benchmark::State& s) {
 
 // ---- laplacian3d (tests/kernels) -----------------------------------------------
 struct Lap3 {
-  size_t n = size_t(kN3) * kN3 * kN3;
+  explicit Lap3(int side) : n(size_t(side) * side * side) {}
+  size_t n;
   std::vector<double> a = random_field(n, -1, 1, 9), out = std::vector<double>(n),
                       g = random_field(n, -1, 1, 10), a_adj = std::vector<double>(n);
 };
-Lap3& lap3() {
-  static Lap3 d;
+template <int Side = kN3> Lap3& lap3() {
+  static Lap3 d(Side);
   return d;
 }
 void BM_laplacian3d_forward(benchmark::State& s) {
   auto& d = lap3();
   run(s, d.n, [&] { laplacian3d(d.a.data(), d.out.data(), kN3, kN3, kN3, 0.1); });
 }
-void BM_laplacian3d_generated(benchmark::State& s) {
-  auto& d = lap3();
+template <int Side> void BM_laplacian3d_generated(benchmark::State& s) {
+  auto& d = lap3<Side>();
   run(s, d.n,
-      [&] { laplacian3d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
+      [&] { laplacian3d_adjoint(d.a.data(), d.a_adj.data(), d.g.data(), Side, Side, Side, 0.1); });
 }
-void BM_laplacian3d_hand(benchmark::State& s) {
-  auto& d = lap3();
-  run(s, d.n, [&] { hand::laplacian3d_gather(d.a_adj.data(), d.g.data(), kN3, kN3, kN3, 0.1); });
+template <int Side> void BM_laplacian3d_hand(benchmark::State& s) {
+  auto& d = lap3<Side>();
+  run(s, d.n, [&] { hand::laplacian3d_gather(d.a_adj.data(), d.g.data(), Side, Side, Side, 0.1); });
 }
 void BM_laplacian3d_scatter(benchmark::State& s) {
   auto& d = lap3();
@@ -226,12 +239,13 @@ void BM_laplacian3d_scatter(benchmark::State& s) {
 
 // ---- burgers_step (tests/kernels): nonlinear -----------------------------------
 struct Burg {
-  size_t n = size_t(kN1);
+  explicit Burg(int cells) : n(size_t(cells)) {}
+  size_t n;
   std::vector<double> u = random_field(n, -1, 1, 11), out = std::vector<double>(n),
                       g = random_field(n, -1, 1, 12), u_adj = std::vector<double>(n);
 };
-Burg& burg() {
-  static Burg d;
+template <int Cells = kN1> Burg& burg() {
+  static Burg d(Cells);
   return d;
 }
 void BM_burgers_forward(benchmark::State& s) {
@@ -242,15 +256,17 @@ void BM_burgers_forward_peeled(benchmark::State& s) {
   auto& d = burg();
   run(s, d.n, [&] { hand::burgers_peeled(d.u.data(), d.out.data(), kN1, 0.01, 0.1, 0.05); });
 }
-void BM_burgers_generated(benchmark::State& s) {
-  auto& d = burg();
-  run(s, d.n,
-      [&] { burgers_step_adjoint(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
+template <int Cells> void BM_burgers_generated(benchmark::State& s) {
+  auto& d = burg<Cells>();
+  run(s, d.n, [&] {
+    burgers_step_adjoint(d.u.data(), d.u_adj.data(), d.g.data(), Cells, 0.01, 0.1, 0.05);
+  });
 }
-void BM_burgers_hand(benchmark::State& s) {
-  auto& d = burg();
-  run(s, d.n,
-      [&] { hand::burgers_gather(d.u.data(), d.u_adj.data(), d.g.data(), kN1, 0.01, 0.1, 0.05); });
+template <int Cells> void BM_burgers_hand(benchmark::State& s) {
+  auto& d = burg<Cells>();
+  run(s, d.n, [&] {
+    hand::burgers_gather(d.u.data(), d.u_adj.data(), d.g.data(), Cells, 0.01, 0.1, 0.05);
+  });
 }
 void BM_burgers_scatter(benchmark::State& s) {
   auto& d = burg();
@@ -264,26 +280,36 @@ void BM_burgers_scatter(benchmark::State& s) {
 BENCHMARK(BM_triad) THREADS;
 BENCHMARK(BM_laplacian2d_forward) THREADS;
 BENCHMARK(BM_laplacian2d_forward_peeled) THREADS;
-BENCHMARK(BM_laplacian2d_generated) THREADS;
-BENCHMARK(BM_laplacian2d_hand) THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian2d_generated, kN2)->Name("BM_laplacian2d_generated") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian2d_generated, kC2)->Name("BM_laplacian2d_generated_cache") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian2d_hand, kN2)->Name("BM_laplacian2d_hand") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian2d_hand, kC2)->Name("BM_laplacian2d_hand_cache") THREADS;
 BENCHMARK(BM_laplacian2d_scatter) THREADS;
 BENCHMARK(BM_divergence2d_forward) THREADS;
 BENCHMARK(BM_divergence2d_forward_peeled) THREADS;
-BENCHMARK(BM_divergence2d_generated) THREADS;
-BENCHMARK(BM_divergence2d_hand) THREADS;
+BENCHMARK_TEMPLATE(BM_divergence2d_generated, kN2)->Name("BM_divergence2d_generated") THREADS;
+BENCHMARK_TEMPLATE(BM_divergence2d_generated, kC2)->Name("BM_divergence2d_generated_cache") THREADS;
+BENCHMARK_TEMPLATE(BM_divergence2d_hand, kN2)->Name("BM_divergence2d_hand") THREADS;
+BENCHMARK_TEMPLATE(BM_divergence2d_hand, kC2)->Name("BM_divergence2d_hand_cache") THREADS;
 BENCHMARK(BM_divergence2d_scatter) THREADS;
 BENCHMARK(BM_upwind_forward) THREADS;
 BENCHMARK(BM_upwind_forward_peeled) THREADS;
-BENCHMARK(BM_upwind_generated) THREADS;
-BENCHMARK(BM_upwind_hand) THREADS;
+BENCHMARK_TEMPLATE(BM_upwind_generated, kN1)->Name("BM_upwind_generated") THREADS;
+BENCHMARK_TEMPLATE(BM_upwind_generated, kC1)->Name("BM_upwind_generated_cache") THREADS;
+BENCHMARK_TEMPLATE(BM_upwind_hand, kN1)->Name("BM_upwind_hand") THREADS;
+BENCHMARK_TEMPLATE(BM_upwind_hand, kC1)->Name("BM_upwind_hand_cache") THREADS;
 BENCHMARK(BM_upwind_scatter) THREADS;
 BENCHMARK(BM_laplacian3d_forward) THREADS;
-BENCHMARK(BM_laplacian3d_generated) THREADS;
-BENCHMARK(BM_laplacian3d_hand) THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian3d_generated, kN3)->Name("BM_laplacian3d_generated") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian3d_generated, kC3)->Name("BM_laplacian3d_generated_cache") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian3d_hand, kN3)->Name("BM_laplacian3d_hand") THREADS;
+BENCHMARK_TEMPLATE(BM_laplacian3d_hand, kC3)->Name("BM_laplacian3d_hand_cache") THREADS;
 BENCHMARK(BM_laplacian3d_scatter) THREADS;
 BENCHMARK(BM_burgers_forward) THREADS;
 BENCHMARK(BM_burgers_forward_peeled) THREADS;
-BENCHMARK(BM_burgers_generated) THREADS;
-BENCHMARK(BM_burgers_hand) THREADS;
+BENCHMARK_TEMPLATE(BM_burgers_generated, kN1)->Name("BM_burgers_generated") THREADS;
+BENCHMARK_TEMPLATE(BM_burgers_generated, kC1)->Name("BM_burgers_generated_cache") THREADS;
+BENCHMARK_TEMPLATE(BM_burgers_hand, kN1)->Name("BM_burgers_hand") THREADS;
+BENCHMARK_TEMPLATE(BM_burgers_hand, kC1)->Name("BM_burgers_hand_cache") THREADS;
 BENCHMARK(BM_burgers_scatter) THREADS;
 BENCHMARK_MAIN();
