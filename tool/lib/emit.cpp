@@ -196,6 +196,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   auto in_lo = [&](const std::string& v) { return k.fresh("in_lo_" + v); };
   auto in_hi = [&](const std::string& v) { return k.fresh("in_hi_" + v); };
   const std::string edge_fn = k.fresh("edge"), interior_fn = k.fresh("interior");
+  const std::string row_fn = k.fresh("edge_row");
   const std::string parallel_ok = k.fresh("parallel_ok");
 
   std::string layout_desc;
@@ -225,14 +226,16 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     return cond.empty() ? std::string() : fmt::format("if ({})", cond);
   };
 
-  auto edge_body = [&]() {
+  // An edge cell's body: every block, each term checked against its box
+  // (`terms`: the edge terms, or those of an edge row's cells in the
+  // innermost interior range).
+  auto edge_body = [&](const std::vector<std::vector<std::vector<BoxTerm>>>& terms) {
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
       code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
       code.line("bool {} = false;", hit_name(*g));
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
-        emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, &plan.edge_terms[gi][bi]},
-                   g->blocks[bi]);
+        emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, &terms[gi][bi]}, g->blocks[bi]);
       code.line("{}", store_if(*g, hit_name(*g)));
       code.line("  {} += {};", adj_cell(k, *g), acc_name(*g));
     }
@@ -240,7 +243,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   if (g0.layout.empty()) {
     // A single cell (a constant index, e.g. the periodic wrap d[0]): sum the
     // iterations that read it.
-    edge_body();
+    edge_body(plan.edge_terms);
     code.close();
     return;
   }
@@ -261,8 +264,17 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   const std::string capture = by_ref ? "[&]" : "[=]";
   // Edge cell: every block, each checked against its iteration domain.
   code.open(fmt::format("auto {} = {}({})", edge_fn, capture, params));
-  edge_body();
+  edge_body(plan.edge_terms);
   code.close(";");
+  const bool rows = !plan.row_terms.empty();
+  if (rows) {
+    code.line("// a cell of an edge row with {} in the interior's range: as at an edge, less "
+              "the checks that range decides",
+              cell(g0.layout.back().first));
+    code.open(fmt::format("auto {} = {}({})", row_fn, capture, params));
+    edge_body(plan.row_terms);
+    code.close(";");
+  }
   if (any_bulk) {
     code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
     // Every accumulator before any store: to the compiler a store to one
@@ -434,7 +446,13 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     }
     if (!outer_edge.empty()) {
       code.open(fmt::format("if ({})", outer_edge));
-      loop(lo_of(v), hi_of(v), edge_fn, false);
+      if (rows) {
+        loop(lo_of(v), in_lo(v), edge_fn, false);
+        loop(in_lo(v), in_hi(v), row_fn, false);
+        loop(in_hi(v), hi_of(v), edge_fn, false);
+      } else {
+        loop(lo_of(v), hi_of(v), edge_fn, false);
+      }
       // (the row of the outermost counter is a lambda: its loop goes on with `return`)
       code.line(level == 1 ? "return;" : "continue;");
       code.close();

@@ -270,13 +270,15 @@ void factor_interior(CellLoop& loop, size_t gi) {
       }
 }
 
-// emit_gather's order: every block's edge terms; the interior's (bulk blocks;
-// none for a single cell), whose invariant partials are then factored out.
+// emit_gather's order: every block's edge terms; those of an edge row's
+// cells in the innermost interior range; the interior's (bulk blocks; none
+// for a single cell), whose invariant partials are then factored out.
 void hoist_cell_loop(Hoister& hoist, CellLoop& loop) {
-  for (auto& per_group : loop.edge_terms)
-    for (auto& per_block : per_group)
-      for (auto& t : per_block)
-        hoist_term(hoist, t);
+  for (auto* terms : {&loop.edge_terms, &loop.row_terms})
+    for (auto& per_group : *terms)
+      for (auto& per_block : per_group)
+        for (auto& t : per_block)
+          hoist_term(hoist, t);
   loop.factored.assign(loop.groups.size(), {});
   if (loop.groups.front()->layout.empty() || !loop.any_bulk)
     return;

@@ -276,6 +276,32 @@ std::string print_plan(const LoopPlan& plan) {
                 for (const auto& [id, l] : loop_locals({t.partial}))
                   out += fmt::format("          where {} = {}\n", l->name, print(l->def));
               }
+        // The cells of an edge row in the interior's range of the innermost
+        // counter: the terms and checks that range decides.
+        if (!loop.row_terms.empty()) {
+          const std::string& v = loop.groups.front()->layout.back().first;
+          size_t n = 0, left_out = 0, unchecked = 0;
+          for (size_t gi = 0; gi < loop.row_terms.size(); ++gi)
+            for (size_t bi = 0; bi < loop.row_terms[gi].size(); ++bi) {
+              const Block& b = loop.groups[gi]->blocks[bi];
+              left_out += loop.edge_terms[gi][bi].size() - loop.row_terms[gi][bi].size();
+              for (const auto& t : loop.row_terms[gi][bi]) {
+                ++n;
+                unchecked += t.box.dims.count(v) == 0 &&
+                             std::any_of(b.domain.begin(), b.domain.end(),
+                                         [&](const Box& d) { return d.dims.count(v) != 0; });
+              }
+            }
+          out += fmt::format("        edge rows, {} in the interior's range: {} terms ({} left "
+                             "out), {} without their check of {}\n",
+                             v, n, left_out, unchecked, v);
+          for (size_t gi = 0; gi < loop.row_terms.size(); ++gi)
+            for (size_t bi = 0; bi < loop.row_terms[gi].size(); ++bi)
+              for (const auto& t : loop.row_terms[gi][bi])
+                if (print(t.partial) != print(loop.groups[gi]->blocks[bi].terms.front().partial))
+                  out += fmt::format("        edge-row term of {}, block {}: {}\n",
+                                     loop.groups[gi]->array, bi, print(t.partial));
+        }
       }
     }
     for (const auto& s : in.scatters)

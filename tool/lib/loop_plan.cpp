@@ -3,6 +3,7 @@
 #include "loop_plan.hpp"
 
 #include "ir_walk.hpp"
+#include "print.hpp"
 
 #include <stdexcept>
 
@@ -365,9 +366,59 @@ void plan_terms(CellLoop& loop) {
   }
 }
 
+// The terms of an edge row's cells in the interior's range of the innermost
+// counter (CellLoop::row_terms); none if no term would change.
+void plan_row_terms(CellLoop& loop) {
+  const GatherGroup& g0 = *loop.groups.front();
+  if (g0.layout.size() < 2 || !loop.any_bulk)
+    return;
+  const std::string& v = g0.layout.back().first;
+  Box row; // cell space: the innermost counter in the interior's range
+  row.dims[v] = loop.interior.dims.at(v);
+  bool changed = false;
+  std::vector<std::vector<std::vector<BoxTerm>>> terms;
+  for (size_t gi = 0; gi < loop.groups.size(); ++gi) {
+    terms.emplace_back();
+    for (size_t bi = 0; bi < loop.groups[gi]->blocks.size(); ++bi) {
+      const Block& b = loop.groups[gi]->blocks[bi];
+      terms.back().emplace_back();
+      std::map<std::string, Poly> back; // cell space -> iteration space
+      for (const auto& [u, c] : loop.groups[gi]->layout)
+        back[u] = -shift_of(b, u);
+      const Box reach = shift({row}, back).front(); // the iterations' innermost counter
+      for (size_t i = 0; i < b.domain.size(); ++i) {
+        const Box& box = b.domain[i];
+        if (box_disjoint(reach, {box})) {
+          changed = true; // applies to no cell of the range
+          continue;
+        }
+        const Domain narrowed = intersect({box}, {reach});
+        BoxTerm t = narrowed.size() == 1 ? box_term(b, narrowed.front()) : box_term(b, box);
+        t.box = box; // the checks printed: the box's own, ...
+        auto it = box.dims.find(v);
+        if (it != box.dims.end()) {
+          Box inner;
+          inner.dims[v] = it->second;
+          if (box_inside(reach, {inner})) { // ... less the one the range decides
+            t.box.dims.erase(v);
+            changed = true;
+          }
+        }
+        const BoxTerm& e = loop.edge_terms[gi][bi][i];
+        changed = changed || print(t.partial) != print(e.partial) ||
+                  print(t.seed_index) != print(e.seed_index);
+        terms.back().back().push_back(std::move(t));
+      }
+    }
+  }
+  if (changed)
+    loop.row_terms = std::move(terms);
+}
+
 CellLoop plan_cell_loop(const Kernel& k, const std::vector<const GatherGroup*>& gs) {
   CellLoop loop = plan_cell_boxes(k, gs);
   plan_terms(loop);
+  plan_row_terms(loop);
   loop.factored.assign(gs.size(), {}); // (none until the pass `hoist`)
   return loop;
 }

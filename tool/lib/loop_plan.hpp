@@ -90,6 +90,16 @@ struct CellLoop {
   /// cell checks which box its iteration lies in) and, for bulk blocks, in
   /// each of its interior boxes.
   std::vector<std::vector<std::vector<BoxTerm>>> edge_terms, interior_terms;
+  /// Per group and block: its terms for the cells of an edge row whose
+  /// innermost counter lies in the interior's range of it (emit's
+  /// `edge_row`): each edge term with what that range decides folded. A box
+  /// the range keeps the iteration's innermost counter inside is printed
+  /// without that check, one it keeps it outside of is left out, and the term
+  /// is specialized to its box narrowed by the range (a wrap in the innermost
+  /// counter folds). The same terms in the same order as an edge cell, so the
+  /// same sum. Empty for a one-counter layout, without bulk blocks, or where
+  /// no term would change: edge rows then run the edge function throughout.
+  std::vector<std::vector<std::vector<BoxTerm>>> row_terms;
   /// Per group: the partials that are the same in every iteration, factored
   /// out of an interior cell's sum (the pass `hoist`), in order of first use:
   ///   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0

@@ -80,6 +80,24 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:       if (hit)
 // CPP-NEXT:         a_adj[c_i + 64 * c_j] += acc;
 // CPP-NEXT:     };
+// CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
+// CPP-NEXT:     // range decides
+// CPP-NEXT:     auto edge_row = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       bool hit = false;
+// CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
+// CPP-NEXT:       // 64 + i]
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         if (j >= 0 && j < n) {
+// CPP-NEXT:           acc += (a[j * 64 + i] * s + s * a[j * 64 + i]) * b_adj[j * 64 + i];
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       if (hit)
+// CPP-NEXT:         a_adj[c_i + 64 * c_j] += acc;
+// CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
@@ -102,7 +120,11 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
-// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:           edge(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
 // CPP-NEXT:       }

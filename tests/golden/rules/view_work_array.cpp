@@ -100,6 +100,33 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:       if (hit)
 // CPP-NEXT:         u_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
+// CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
+// CPP-NEXT:     // range decides
+// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       bool hit = false;
+// CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         if (j >= 0 && j < un_adj.rows()) {
+// CPP-NEXT:           acc += u(j, i + 1) * 0.5 * flux_adj(j, i);
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       // flux(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂flux(j, i)/∂u(j, i + 1) ·
+// CPP-NEXT:       // flux_adj(j, i)
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         if (j >= 0 && j < un_adj.rows()) {
+// CPP-NEXT:           acc += 0.5 * u(j, i) * flux_adj(j, i);
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       if (hit)
+// CPP-NEXT:         u_adj(c_j, c_i) += acc;
+// CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
@@ -131,7 +158,11 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
-// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:           edge(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
 // CPP-NEXT:       }
@@ -181,6 +212,24 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:       if (hit)
 // CPP-NEXT:         u_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
+// CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
+// CPP-NEXT:     // range decides
+// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       bool hit = false;
+// CPP-NEXT:       // un(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂u(j, i + 1) ·
+// CPP-NEXT:       // un_adj(j, i)
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         if (j >= 0 && j < un_adj.rows()) {
+// CPP-NEXT:           acc += un_adj(j, i);
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       if (hit)
+// CPP-NEXT:         u_adj(c_j, c_i) += acc;
+// CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
@@ -210,7 +259,11 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
-// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:           edge(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
 // CPP-NEXT:       }
@@ -257,6 +310,33 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:       if (hit)
 // CPP-NEXT:         flux_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
+// CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
+// CPP-NEXT:     // range decides
+// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       bool hit = false;
+// CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
+// CPP-NEXT:       // un_adj(j, i)
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:         if (j >= 0 && j < un_adj.rows()) {
+// CPP-NEXT:           acc += -(c * un_adj(j, i));
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       // un(j, i) reads flux(j, i) at j = c_j, i = c_i: acc += ∂un(j, i)/∂flux(j, i) · un_adj(j, i)
+// CPP-NEXT:       {
+// CPP-NEXT:         const std::ptrdiff_t j = c_j;
+// CPP-NEXT:         const std::ptrdiff_t i = c_i;
+// CPP-NEXT:         if (j >= 0 && j < un_adj.rows()) {
+// CPP-NEXT:           acc += c * un_adj(j, i);
+// CPP-NEXT:           hit = true;
+// CPP-NEXT:         }
+// CPP-NEXT:       }
+// CPP-NEXT:       if (hit)
+// CPP-NEXT:         flux_adj(c_j, c_i) += acc;
+// CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
@@ -295,7 +375,11 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     auto row_j = [&](const std::ptrdiff_t c_j) {
 // CPP-NEXT:       const bool edge_j = c_j < in_lo_j || c_j >= in_hi_j;
 // CPP-NEXT:       if (edge_j) {
-// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:           edge(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
 // CPP-NEXT:       }
