@@ -149,3 +149,19 @@ DPGEN_KERNEL void peel_column_sums(DPGEN_IN const double* a, DPGEN_OUT double* c
     for (int i = 0; i < nx; ++i)
       col[i] += (j == 0 ? 0.5 : 1.0) * a[j * nx + (i == nx - 1 ? 0 : i + 1)];
 }
+
+// The adjoint's edge rows (loop_plan.cpp: CellLoop::row_terms): the stencil's interior starts
+// two cells in (i - 2), and the west layer `i < m` is a box the interior's range of i does
+// not decide (m is the caller's): an edge row's cell in that range must still check it.
+DPGEN_KERNEL void peel_edge_rows(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny,
+                                 int m) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int k = j * nx + i;
+      if (i < 2 || i >= nx - 2 || j == 0 || j == ny - 1) {
+        out[k] = i < m ? 3.0 * a[k] : 0.0;
+        continue;
+      }
+      out[k] = a[k - 2] - 2.0 * a[k + 1] + 0.5 * a[k + 2] + a[k - nx] * a[k + nx];
+    }
+}

@@ -249,3 +249,28 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
     dpgen_test::check_adjoint(w);
   }
 }
+
+// The adjoint's edge rows (CellLoop::row_terms): the west layer `i < m` stays checked in an edge
+// row's cells within the interior's range of i. m = 0 and 1 leave the interior (the layer is
+// apart from it), 3 and nx make every cell an edge (it reaches in).
+TEST_CASE("adjoint edge rows: a term the interior's range does not decide is still checked") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {5, 4}, {9, 6}, {12, 7}}) {
+    for (int m : {0, 1, 3, nx}) {
+      CAPTURE(nx);
+      CAPTURE(ny);
+      CAPTURE(m);
+      const size_t cells = size_t(nx) * size_t(ny);
+      dpgen_test::Problem<double> p;
+      p.in_sizes = {cells};
+      p.out_sizes = {cells};
+      p.forward = [&](auto in, auto out) { peel_edge_rows(in[0], out[0], nx, ny, m); };
+      p.adjoint = [&](auto in, auto a, auto seed) {
+        peel_edge_rows_adjoint(in[0], a[0], seed[0], nx, ny, m);
+      };
+      p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+        peel_edge_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ny, m);
+      };
+      dpgen_test::check_adjoint(p);
+    }
+  }
+}
