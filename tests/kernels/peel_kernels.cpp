@@ -165,3 +165,17 @@ DPGEN_KERNEL void peel_edge_rows(DPGEN_IN const double* a, DPGEN_OUT double* out
       out[k] = a[k - 2] - 2.0 * a[k + 1] + 0.5 * a[k + 2] + a[k - nx] * a[k + nx];
     }
 }
+
+// Counters named `row` and `col`: the adjoint's generated names (the edge flag `edge_row`, the
+// edge-row function) must not meet.
+DPGEN_KERNEL void peel_row_col(DPGEN_IN const double* a, DPGEN_OUT double* out, int nrows,
+                               int ncols) {
+  for (int row = 0; row < nrows; ++row)
+    for (int col = 0; col < ncols; ++col) {
+      const int k = row * ncols + col;
+      if (row == 0 || row == nrows - 1 || col == 0 || col == ncols - 1)
+        out[k] = 0.0;
+      else
+        out[k] = a[k - 1] + a[k + 1] + a[k - ncols] + a[k + ncols] - 4.0 * a[k];
+    }
+}

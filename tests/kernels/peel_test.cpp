@@ -251,11 +251,11 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
 }
 
 // The adjoint's edge rows (CellLoop::row_terms): the west layer `i < m` stays checked in an edge
-// row's cells within the interior's range of i. m = 0 and 1 leave the interior (the layer is
-// apart from it), 3 and nx make every cell an edge (it reaches in).
+// row's cells within the interior's range of i, [2, nx - 2): m up to 2 applies to none of
+// them, m = nx / 2 to part of the range (a row split by the check), m = nx to all of it.
 TEST_CASE("adjoint edge rows: a term the interior's range does not decide is still checked") {
   for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {5, 4}, {9, 6}, {12, 7}}) {
-    for (int m : {0, 1, 3, nx}) {
+    for (int m : {0, 1, 3, nx / 2, nx}) {
       CAPTURE(nx);
       CAPTURE(ny);
       CAPTURE(m);
@@ -272,5 +272,24 @@ TEST_CASE("adjoint edge rows: a term the interior's range does not decide is sti
       };
       dpgen_test::check_adjoint(p);
     }
+  }
+}
+
+TEST_CASE("adjoint edge rows: counters named row and col") {
+  for (auto [nrows, ncols] : {std::pair{1, 1}, {3, 2}, {6, 9}}) {
+    CAPTURE(nrows);
+    CAPTURE(ncols);
+    const size_t cells = size_t(nrows) * size_t(ncols);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {cells};
+    p.out_sizes = {cells};
+    p.forward = [&](auto in, auto out) { peel_row_col(in[0], out[0], nrows, ncols); };
+    p.adjoint = [&](auto in, auto a, auto seed) {
+      peel_row_col_adjoint(in[0], a[0], seed[0], nrows, ncols);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      peel_row_col_tangent(in[0], dir[0], out[0], outd[0], nrows, ncols);
+    };
+    dpgen_test::check_adjoint(p);
   }
 }

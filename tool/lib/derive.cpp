@@ -125,29 +125,37 @@ private:
   std::map<const LocalVar*, ExprP> local_memo_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
-  // Built from scalar parameters, constants and locals defined before the
-  // loops only: the same value in every iteration of the kernel's loops.
+  // The same value in every iteration of the kernel's loops, and computable
+  // before them: scalar parameters, constants and locals defined before the
+  // loops, combined by arithmetic, comparisons, selects and math functions;
+  // nothing the pass `hoist` would not move (an integer division, a shift, a
+  // real converted to an integer: hoist.cpp's safe_anywhere), so 1 / b is
+  // then computed once.
   static bool loop_invariant(const ExprP& e) {
     switch (e->op) {
-    case Op::IntConst:
-    case Op::RealConst:
-    case Op::Param:
-      return true;
+    case Op::LoopVar:
+    case Op::Read:
+    case Op::Shl:
+    case Op::Shr:
+      return false;
     case Op::Local:
       return e->local->kernel_level;
-    case Op::Cast:
-    case Op::Neg:
-    case Op::Add:
-    case Op::Sub:
-    case Op::Mul:
     case Op::Div:
-      for (const ExprP& o : e->ops)
-        if (!loop_invariant(o))
-          return false;
-      return true;
+    case Op::Rem:
+      if (!is_real(e->type))
+        return false;
+      break;
+    case Op::Cast:
+      if (!is_real(e->type) && is_real(e->ops[0]->type))
+        return false;
+      break;
     default:
-      return false;
+      break;
     }
+    for (const ExprP& o : e->ops)
+      if (!loop_invariant(o))
+        return false;
+    return true;
   }
   // A derivative as an arm of conditional `like`: an exact zero in its type.
   static ExprP arm(const ExprP& d, const ExprP& like) { return is_zero(d) ? zero(like->type) : d; }

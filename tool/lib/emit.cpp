@@ -196,7 +196,8 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   auto in_lo = [&](const std::string& v) { return k.fresh("in_lo_" + v); };
   auto in_hi = [&](const std::string& v) { return k.fresh("in_hi_" + v); };
   const std::string edge_fn = k.fresh("edge"), interior_fn = k.fresh("interior");
-  const std::string row_fn = k.fresh("edge_row");
+  // (not `edge_row`: that is the edge flag of a counter named `row`)
+  const std::string row_fn = k.fresh("interior_row");
   const std::string parallel_ok = k.fresh("parallel_ok");
 
   std::string layout_desc;

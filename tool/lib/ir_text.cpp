@@ -295,12 +295,18 @@ std::string print_plan(const LoopPlan& plan) {
           out += fmt::format("        edge rows, {} in the interior's range: {} terms ({} left "
                              "out), {} without their check of {}\n",
                              v, n, left_out, unchecked, v);
+          // (the partials the range changes: a row term's edge term has its box)
           for (size_t gi = 0; gi < loop.row_terms.size(); ++gi)
             for (size_t bi = 0; bi < loop.row_terms[gi].size(); ++bi)
-              for (const auto& t : loop.row_terms[gi][bi])
-                if (print(t.partial) != print(loop.groups[gi]->blocks[bi].terms.front().partial))
+              for (const auto& t : loop.row_terms[gi][bi]) {
+                const auto& edges = loop.edge_terms[gi][bi];
+                const bool changed = std::none_of(edges.begin(), edges.end(), [&](const auto& e) {
+                  return print(e.partial) == print(t.partial);
+                });
+                if (changed)
                   out += fmt::format("        edge-row term of {}, block {}: {}\n",
                                      loop.groups[gi]->array, bi, print(t.partial));
+              }
         }
       }
     }

@@ -375,6 +375,8 @@ void plan_row_terms(CellLoop& loop) {
   const std::string& v = g0.layout.back().first;
   Box row; // cell space: the innermost counter in the interior's range
   row.dims[v] = loop.interior.dims.at(v);
+  if (box_disjoint(row, universe()))
+    return; // an empty range (box_disjoint with the universe: box_empty)
   bool changed = false;
   std::vector<std::vector<std::vector<BoxTerm>>> terms;
   for (size_t gi = 0; gi < loop.groups.size(); ++gi) {
@@ -392,8 +394,8 @@ void plan_row_terms(CellLoop& loop) {
           changed = true; // applies to no cell of the range
           continue;
         }
-        const Domain narrowed = intersect({box}, {reach});
-        BoxTerm t = narrowed.size() == 1 ? box_term(b, narrowed.front()) : box_term(b, box);
+        const Domain narrowed = intersect({box}, {reach}); // one box: not disjoint
+        BoxTerm t = box_term(b, narrowed.size() == 1 ? narrowed.front() : box);
         t.box = box; // the checks printed: the box's own, ...
         auto it = box.dims.find(v);
         if (it != box.dims.end()) {

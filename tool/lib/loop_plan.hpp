@@ -92,7 +92,7 @@ struct CellLoop {
   std::vector<std::vector<std::vector<BoxTerm>>> edge_terms, interior_terms;
   /// Per group and block: its terms for the cells of an edge row whose
   /// innermost counter lies in the interior's range of it (emit's
-  /// `edge_row`): each edge term with what that range decides folded. A box
+  /// `interior_row`): each edge term with what that range decides folded. A box
   /// the range keeps the iteration's innermost counter inside is printed
   /// without that check, one it keeps it outside of is left out, and the term
   /// is specialized to its box narrowed by the range (a wrap in the innermost

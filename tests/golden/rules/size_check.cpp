@@ -82,7 +82,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:     };
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
-// CPP-NEXT:     auto edge_row = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:     auto interior_row = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
@@ -123,7 +123,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:           interior_row(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;

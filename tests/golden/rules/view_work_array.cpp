@@ -102,7 +102,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     };
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
-// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
@@ -161,7 +161,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:           interior_row(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
@@ -214,7 +214,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     };
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
-// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂u(j, i + 1) ·
@@ -262,7 +262,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:           interior_row(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
@@ -312,7 +312,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     };
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
-// CPP-NEXT:     auto edge_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
+// CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
@@ -378,7 +378,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:           edge_row(c_j, c_i);
+// CPP-NEXT:           interior_row(c_j, c_i);
 // CPP-NEXT:         for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
 // CPP-NEXT:           edge(c_j, c_i);
 // CPP-NEXT:         return;
