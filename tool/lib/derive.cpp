@@ -70,7 +70,8 @@ public:
       // d(a/b) = da/b - a·db/b²; da/b is da·(1/b) when b is the same in every
       // iteration and da is not (1/b is then hoisted: no division per cell, as
       // a hand-written adjoint would have it; at most one rounding more than
-      // da/b). An invariant da/b stays as written: it is hoisted whole.
+      // da/b while 1/b is a normal number: a subnormal b gives an infinite
+      // 1/b). An invariant da/b stays as written: it is hoisted whole.
       const ExprP &a = e->ops[0], &b = e->ops[1];
       ExprP da = d(a), db = d(b);
       const bool reciprocal = loop_invariant(b) && !loop_invariant(da);
