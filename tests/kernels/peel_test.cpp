@@ -154,6 +154,19 @@ void check_1d(int n, Fwd fwd, Adj adj, Chk chk, Tan tan) {
   dpgen_test::check_adjoint(p);
 }
 
+// One input of `in` cells, one output of `out` cells (the kernel's sizes bound in `fwd`,
+// `adj`, `tan`): adjoint and tangent.
+template <typename Fwd, typename Adj, typename Tan>
+void check_one_to_one(size_t in, size_t out, Fwd fwd, Adj adj, Tan tan) {
+  dpgen_test::Problem<double> p;
+  p.in_sizes = {in};
+  p.out_sizes = {out};
+  p.forward = [&](auto x, auto y) { fwd(x[0], y[0]); };
+  p.adjoint = [&](auto x, auto a, auto seed) { adj(x[0], a[0], seed[0]); };
+  p.tangent = [&](auto x, auto dir, auto y, auto yd) { tan(x[0], dir[0], y[0], yd[0]); };
+  dpgen_test::check_adjoint(p);
+}
+
 } // namespace
 
 TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the adjoint") {
@@ -203,28 +216,16 @@ TEST_CASE("peeled tangents: outputs bit for bit, J v against differences and the
     CAPTURE(nx);
     CAPTURE(ny);
     const size_t cells = size_t(nx) * size_t(ny);
-    dpgen_test::Problem<double> d;
-    d.in_sizes = {cells};
-    d.out_sizes = {cells};
-    d.forward = [&](auto in, auto out) { peel_descending_rows(in[0], out[0], nx, ny); };
-    d.adjoint = [&](auto in, auto a, auto seed) {
-      peel_descending_rows_adjoint(in[0], a[0], seed[0], nx, ny);
-    };
-    d.tangent = [&](auto in, auto dir, auto out, auto outd) {
-      peel_descending_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
-    };
-    dpgen_test::check_adjoint(d);
-    dpgen_test::Problem<double> c;
-    c.in_sizes = {cells};
-    c.out_sizes = {size_t(nx)};
-    c.forward = [&](auto in, auto out) { peel_column_sums(in[0], out[0], nx, ny); };
-    c.adjoint = [&](auto in, auto a, auto seed) {
-      peel_column_sums_adjoint(in[0], a[0], seed[0], nx, ny);
-    };
-    c.tangent = [&](auto in, auto dir, auto out, auto outd) {
-      peel_column_sums_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
-    };
-    dpgen_test::check_adjoint(c);
+    check_one_to_one(
+        cells, cells, [&](auto a, auto o) { peel_descending_rows(a, o, nx, ny); },
+        [&](auto a, auto aa, auto s) { peel_descending_rows_adjoint(a, aa, s, nx, ny); },
+        [&](auto a, auto d, auto o, auto od) {
+          peel_descending_rows_tangent(a, d, o, od, nx, ny);
+        });
+    check_one_to_one(
+        cells, size_t(nx), [&](auto a, auto o) { peel_column_sums(a, o, nx, ny); },
+        [&](auto a, auto aa, auto s) { peel_column_sums_adjoint(a, aa, s, nx, ny); },
+        [&](auto a, auto d, auto o, auto od) { peel_column_sums_tangent(a, d, o, od, nx, ny); });
     dpgen_test::Problem<double> p;
     p.in_sizes = {cells, cells};
     p.out_sizes = {cells};
@@ -260,17 +261,10 @@ TEST_CASE("adjoint edge rows: a term the interior's range does not decide is sti
       CAPTURE(ny);
       CAPTURE(m);
       const size_t cells = size_t(nx) * size_t(ny);
-      dpgen_test::Problem<double> p;
-      p.in_sizes = {cells};
-      p.out_sizes = {cells};
-      p.forward = [&](auto in, auto out) { peel_edge_rows(in[0], out[0], nx, ny, m); };
-      p.adjoint = [&](auto in, auto a, auto seed) {
-        peel_edge_rows_adjoint(in[0], a[0], seed[0], nx, ny, m);
-      };
-      p.tangent = [&](auto in, auto dir, auto out, auto outd) {
-        peel_edge_rows_tangent(in[0], dir[0], out[0], outd[0], nx, ny, m);
-      };
-      dpgen_test::check_adjoint(p);
+      check_one_to_one(
+          cells, cells, [&](auto a, auto o) { peel_edge_rows(a, o, nx, ny, m); },
+          [&](auto a, auto aa, auto s) { peel_edge_rows_adjoint(a, aa, s, nx, ny, m); },
+          [&](auto a, auto d, auto o, auto od) { peel_edge_rows_tangent(a, d, o, od, nx, ny, m); });
     }
   }
 }
@@ -280,16 +274,9 @@ TEST_CASE("adjoint edge rows: counters named row and col") {
     CAPTURE(nrows);
     CAPTURE(ncols);
     const size_t cells = size_t(nrows) * size_t(ncols);
-    dpgen_test::Problem<double> p;
-    p.in_sizes = {cells};
-    p.out_sizes = {cells};
-    p.forward = [&](auto in, auto out) { peel_row_col(in[0], out[0], nrows, ncols); };
-    p.adjoint = [&](auto in, auto a, auto seed) {
-      peel_row_col_adjoint(in[0], a[0], seed[0], nrows, ncols);
-    };
-    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
-      peel_row_col_tangent(in[0], dir[0], out[0], outd[0], nrows, ncols);
-    };
-    dpgen_test::check_adjoint(p);
+    check_one_to_one(
+        cells, cells, [&](auto a, auto o) { peel_row_col(a, o, nrows, ncols); },
+        [&](auto a, auto aa, auto s) { peel_row_col_adjoint(a, aa, s, nrows, ncols); },
+        [&](auto a, auto d, auto o, auto od) { peel_row_col_tangent(a, d, o, od, nrows, ncols); });
   }
 }
