@@ -154,18 +154,7 @@ void check_1d(int n, Fwd fwd, Adj adj, Chk chk, Tan tan) {
   dpgen_test::check_adjoint(p);
 }
 
-// One input of `in` cells, one output of `out` cells (the kernel's sizes bound in `fwd`,
-// `adj`, `tan`): adjoint and tangent.
-template <typename Fwd, typename Adj, typename Tan>
-void check_one_to_one(size_t in, size_t out, Fwd fwd, Adj adj, Tan tan) {
-  dpgen_test::Problem<double> p;
-  p.in_sizes = {in};
-  p.out_sizes = {out};
-  p.forward = [&](auto x, auto y) { fwd(x[0], y[0]); };
-  p.adjoint = [&](auto x, auto a, auto seed) { adj(x[0], a[0], seed[0]); };
-  p.tangent = [&](auto x, auto dir, auto y, auto yd) { tan(x[0], dir[0], y[0], yd[0]); };
-  dpgen_test::check_adjoint(p);
-}
+using dpgen_test::check_one_to_one;
 
 } // namespace
 

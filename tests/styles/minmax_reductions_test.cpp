@@ -10,23 +10,7 @@
 
 #include <tuple>
 
-namespace {
-
-// A kernel with one input array of n elements and one output of m, checked
-// (adjoint against finite differences and the dot-product test, tangent)
-// through its three entry points, each given the flat arrays.
-template <typename F, typename A, typename T>
-void check_one_to_one(size_t n, size_t m, F forward, A adjoint, T tangent) {
-  dpgen_test::Problem<double> p;
-  p.in_sizes = {n};
-  p.out_sizes = {m};
-  p.forward = [&](auto in, auto out) { forward(in[0], out[0]); };
-  p.adjoint = [&](auto in, auto adj, auto seed) { adjoint(in[0], adj[0], seed[0]); };
-  p.tangent = [&](auto in, auto d, auto out, auto dout) { tangent(in[0], d[0], out[0], dout[0]); };
-  dpgen_test::check_adjoint(p);
-}
-
-} // namespace
+using dpgen_test::check_one_to_one;
 
 TEST_CASE("styles: red_maxnorm") {
   for (int n : {1, 4, 33}) {

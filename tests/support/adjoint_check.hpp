@@ -343,6 +343,20 @@ template <typename T> void check_adjoint(const Problem<T>& p, uint64_t seed = 20
   Checker<T>(p, seed).run();
 }
 
+/// A kernel with one input array of n elements and one output of m, checked (check_adjoint)
+/// through its three entry points, each given the flat arrays (the kernel's sizes bound in
+/// `forward(in, out)`, `adjoint(in, in_adj, seed)`, `tangent(in, dir, out, out_dot)`).
+template <typename F, typename A, typename T>
+void check_one_to_one(size_t n, size_t m, F forward, A adjoint, T tangent) {
+  Problem<double> p;
+  p.in_sizes = {n};
+  p.out_sizes = {m};
+  p.forward = [&](auto in, auto out) { forward(in[0], out[0]); };
+  p.adjoint = [&](auto in, auto adj, auto seed) { adjoint(in[0], adj[0], seed[0]); };
+  p.tangent = [&](auto in, auto d, auto out, auto dout) { tangent(in[0], d[0], out[0], dout[0]); };
+  check_adjoint(p);
+}
+
 // The checker works through std::function, so one compiled copy serves every test: a test
 // executable that links tests/kernels/main.cpp (which instantiates it) defines
 // DPGEN_TEST_CHECKER_COMPILED_ONCE and its hundreds of test files skip compiling it again
