@@ -179,3 +179,31 @@ DPGEN_KERNEL void peel_row_col(DPGEN_IN const double* a, DPGEN_OUT double* out, 
         out[k] = a[k - 1] + a[k + 1] + a[k - ncols] + a[k + ncols] - 4.0 * a[k];
     }
 }
+
+// Two inputs whose cell boxes differ by a constant at each end (loop_plan.cpp: fusable): a's
+// cells are [0, n - 2), b's [1, n). The adjoint runs one loop over [0, n), where a cell
+// outside one input's box must write nothing to that input's adjoint.
+DPGEN_KERNEL void peel_near_boxes_1d(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                     DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i < 2 || i >= n - 3) {
+      out[i] = 0.0;
+      continue;
+    }
+    out[i] = a[i - 2] - 2.0 * a[i + 1] + b[i + 3] * b[i - 1];
+  }
+}
+
+// A MAC-grid style divergence with a product term: u is read at k and k + 1 (its cells:
+// rows [0, ny - 1), every column), v at k and k + nx (every row, columns [0, nx - 1)).
+DPGEN_KERNEL void peel_near_boxes_mac(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                                      DPGEN_OUT double* div, int nx, int ny, double h) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int k = j * nx + i;
+      if (i == nx - 1 || j == ny - 1)
+        div[k] = 0.0;
+      else
+        div[k] = (u[k + 1] - u[k]) / h + (v[k + nx] - v[k]) / h + u[k] * v[k + nx];
+    }
+}

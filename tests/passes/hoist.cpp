@@ -67,3 +67,19 @@ DPGEN_KERNEL void two_pass(DPGEN_IN const double* u, DPGEN_OUT double* w, DPGEN_
   for (int i = 1; i < n; ++i)
     out[i] = (w[i] - w[i - 1]) / dx;
 }
+
+// Factored partials the same up to sign share one sum, the seeds of -c
+// subtracted from it: one product per cell instead of one per sign.
+// CODE-LABEL: void central_adjoint(
+// CODE: double acc_s0 = 0;
+// CODE-NOT: acc_s1
+// CODE: acc_s0 += out_adj[i];
+// CODE: acc_s0 -= out_adj[i];
+// CODE: acc_s0 -= out_adj[i];
+// CODE-NEXT: }
+// CODE-NEXT: acc += c * acc_s0;
+// CODE-NEXT: a_adj[c_i] += acc;
+DPGEN_KERNEL void central(DPGEN_IN const double* a, DPGEN_OUT double* out, int n, double c) {
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = (a[i + 1] - a[i - 1]) * c - a[i] * c;
+}

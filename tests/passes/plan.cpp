@@ -1,6 +1,7 @@
 // --print-after=plan: the loops of the adjoint before anything is printed:
 // per input, the cell box, the branch-free interior, edges that may reach
-// into it, fusion of inputs with the same cell box, and the parallel test;
+// into it, fusion of inputs with the same cell box or boxes a constant apart,
+// and the parallel test;
 // then the forward forms' loops (the tangent, the torch ops' forward): the
 // kernel's own nests, parallel where every store sets its element, split
 // where their boundary conditions are decided.
@@ -8,10 +9,35 @@
 // RUN: %dpgen --print-after=plan %s --out-dir %t -- -I%runtime_inc | FileCheck %s
 #include "dpgen/annotate.hpp"
 
-// Two inputs with different cell boxes: a loop each (a fused loop needs
-// the same box, tests/passes/fused.test); the interior of a's 3-point reads
-// leaves two cells at each end to the edge code.
+// Two inputs whose cell boxes differ by constants (a: [0, n), b: [1, n - 1)):
+// one fused loop over the box around both, its interior inside each one's
+// (a's 3-point reads leave two cells at each end to the edge code, where b's
+// terms apply only inside b's box); and a loop of each alone, run when the
+// other's adjoint is null.
 // CHECK-LABEL: plan of blend
+// CHECK-NEXT: input a
+// CHECK-NEXT: step fused
+// CHECK-NEXT: cells of [a, b]
+// CHECK-NEXT: i in [0, n)
+// CHECK-NEXT: interior {i: [2, n - 2)}
+// CHECK-NEXT: parallel: unit stride
+// CHECK-NEXT: cells of [a]
+// CHECK-NEXT: i in [0, n)
+// CHECK-NEXT: interior {i: [2, n - 2)}
+// CHECK-NEXT: parallel: unit stride
+// CHECK-NEXT: cells of [b]
+// CHECK-NEXT: i in [1, n - 1)
+// CHECK: forward loops of blend
+// CHECK-NEXT: nest 1: parallel, i in [1, n - 1)
+DPGEN_KERNEL void blend(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* c,
+                        int n) {
+  for (int i = 1; i < n - 1; ++i)
+    c[i] = a[i - 1] + a[i + 1] - 2.0 * b[i];
+}
+
+// Cell boxes that differ by more than constants (b's ends at min(n - 1, m)):
+// a loop each, as the box around both could hold many cells of neither.
+// CHECK-LABEL: plan of apart
 // CHECK-NEXT: input a
 // CHECK-NEXT: step
 // CHECK-NEXT: cells of [a]
@@ -21,13 +47,11 @@
 // CHECK-NEXT: input b
 // CHECK-NEXT: step
 // CHECK-NEXT: cells of [b]
-// CHECK-NEXT: i in [1, n - 1)
-// CHECK: forward loops of blend
-// CHECK-NEXT: nest 1: parallel, i in [1, n - 1)
-DPGEN_KERNEL void blend(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* c,
-                        int n) {
+// CHECK-NEXT: i in [1, min(n - 1, m))
+DPGEN_KERNEL void apart(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGEN_OUT double* c,
+                        int n, int m) {
   for (int i = 1; i < n - 1; ++i)
-    c[i] = a[i - 1] + a[i + 1] - 2.0 * b[i];
+    c[i] = a[i - 1] + a[i + 1] + (i < m ? b[i] : 0.0);
 }
 
 // A 2D layout: the parallel test is the mixed-radix one (columns step 1 and

@@ -81,8 +81,14 @@ void emit_terms(Code& code, const Kernel& k, const Term& t, const BoxTerm& bt,
                     k.shape_of(t.store->array));
   if (bt.factor >= 0) {
     std::string sum = factored_sum(k, acc, bt.factor);
-    code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
-    code.line("{} += {};", sum, print(seed));
+    if (bt.factor_negated) {
+      code.line("// (the partial, negated, is the same in every iteration: acc += it · {} below)",
+                sum);
+      code.line("{} -= {};", sum, print(seed));
+    } else {
+      code.line("// (the partial is the same in every iteration: acc += it · {} below)", sum);
+      code.line("{} += {};", sum, print(seed));
+    }
   } else
     code.line("{} += {};", acc, print(binary(Op::Mul, partial, seed)));
   if (!set_hit.empty())
@@ -181,8 +187,9 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   return g.array + "_adj" + subscript(index, k.shape_of(g.array));
 }
 
-// One cell loop for one or more gather groups that share a layout and a cell
-// box (several inputs of one kernel, fused so the loop reads shared data once).
+// One cell loop for one or more gather groups that share a layout (several
+// inputs of one kernel, fused so the loop reads shared data once), over the
+// box around their cell boxes.
 void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   const std::vector<const GatherGroup*>& gs = plan.groups;
   const GatherGroup& g0 = *gs.front();
@@ -603,7 +610,8 @@ std::string flat_arguments(const Kernel& k) {
 }
 
 // The statements of an adjoint function: kernel-level locals, size checks,
-// the gather loops (fused where they share a nest, layout and cell box) and
+// the gather loops (fused where they share a nest and layout, with near cell
+// boxes) and
 // the scatter loops.
 void emit_body(Code& out, const LoopPlan& plan) {
   const Kernel& k = *plan.adjoint->kernel;

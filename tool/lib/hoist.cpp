@@ -261,12 +261,19 @@ void factor_interior(CellLoop& loop, size_t gi) {
       for (auto& t : loop.interior_terms[gi][bi]) {
         if (!t.guards.empty() || !t.same_everywhere)
           continue;
-        const std::string key = print(t.partial);
+        // A partial -P shares P's sum, its seed subtracted (divergence2d's
+        // `c * (g[k - 1] - g[k + 1])`: one product where there were two). A
+        // sum of one sign only gives the same bits as before: -a - b is
+        // -(a + b) exactly.
+        const bool negated = t.partial->op == Op::Neg;
+        const ExprP& base = negated ? t.partial->ops[0] : t.partial;
+        const std::string key = print(base);
         auto same =
             std::find_if(sums.begin(), sums.end(), [&](const ExprP& p) { return print(p) == key; });
         t.factor = int(same - sums.begin());
+        t.factor_negated = negated;
         if (same == sums.end())
-          sums.push_back(t.partial);
+          sums.push_back(base);
       }
 }
 

@@ -148,6 +148,25 @@ std::map<std::string, CellRange> cell_bounds(const GatherGroup& g) {
   return bounds;
 }
 
+// Whether the cell boxes of two keys differ by constants only (each end one
+// bound, the same up to a constant): fused over the box around both, the loop
+// has a few more edge cells than either alone (divergence2d: u's cells are
+// i in [0, nx), j in [1, ny - 1); v's i in [1, nx - 1), j in [0, ny)).
+bool near_boxes(const FusionKey& a, const FusionKey& b) {
+  if (a.bounds.size() != b.bounds.size())
+    return false;
+  auto one = [](const CellBound& c) { return c.parts.size() == 1 && c.parts[0].size() == 1; };
+  auto near = [&](const CellBound& x, const CellBound& y) {
+    return one(x) && one(y) && (x.parts[0][0] - y.parts[0][0]).is_constant();
+  };
+  for (const auto& [v, r] : a.bounds) {
+    auto it = b.bounds.find(v);
+    if (it == b.bounds.end() || !near(r.lo, it->second.lo) || !near(r.hi, it->second.hi))
+      return false;
+  }
+  return true;
+}
+
 FusionKey fusion_key(const Kernel& k, const GatherGroup& g) {
   FusionKey key;
   key.nest = size_t(g.nest - k.nests.data());
@@ -271,7 +290,20 @@ CellLoop plan_cell_boxes(const Kernel& k, const std::vector<const GatherGroup*>&
   const GatherGroup& g0 = *gs.front();
   if (g0.layout.empty())
     return loop; // a single cell: summed over the iterations that read it
-  loop.bounds = cell_bounds(g0);
+  // The box around every group's cells (the same box for groups fused by
+  // equal keys; near_boxes: each end the outermost). A cell outside a
+  // group's own box is an edge cell where none of its terms applies: each
+  // term checks its iteration's domain, so `hit` stays false and the cell is
+  // not written, as the group's own loop would not visit it.
+  for (const auto& [v, c] : g0.layout) {
+    std::vector<std::vector<Poly>> los, his;
+    for (const auto* g : gs) {
+      const CellRange r = cell_bounds(*g).at(v);
+      los.insert(los.end(), r.lo.parts.begin(), r.lo.parts.end());
+      his.insert(his.end(), r.hi.parts.begin(), r.hi.parts.end());
+    }
+    loop.bounds[v] = {bound_of(los, true), bound_of(his, false)};
+  }
 
   // Interior box (cell space): inside every bulk block of every
   // group, narrowed so index conditions are decided.
@@ -433,8 +465,8 @@ LoopPlan plan_adjoint_loops(const AdjointPlan& plan) {
   if (!plan.stages.empty())
     return out; // printed stage by stage
   const Kernel& k = *plan.kernel;
-  // Gather groups of different inputs that share a loop nest, a layout and a
-  // cell box run in one fused loop.
+  // Gather groups of different inputs that share a loop nest and a layout,
+  // with the same cell box or boxes a constant apart, run in one fused loop.
   std::vector<FusionKey> keys;
   for (const auto& g : plan.gathers)
     keys.push_back(fusion_key(k, g));
@@ -449,12 +481,34 @@ LoopPlan plan_adjoint_loops(const AdjointPlan& plan) {
       if (g.array != p.name || done[i])
         continue;
       std::vector<const GatherGroup*> fused = {&g};
-      for (size_t j = 0; j < plan.gathers.size(); ++j) {
+      auto candidate = [&](size_t j) {
         const GatherGroup& h = plan.gathers[j];
-        if (j != i && h.array != g.array && !done[j] && !h.layout.empty() && keys[j] == keys[i] &&
-            std::none_of(fused.begin(), fused.end(),
-                         [&](const auto* f) { return f->array == h.array; }))
-          fused.push_back(&h);
+        return j != i && h.array != g.array && !done[j] && !h.layout.empty() &&
+               keys[j].nest == keys[i].nest && keys[j].cell == keys[i].cell &&
+               std::none_of(fused.begin(), fused.end(),
+                            [&](const auto* f) { return f->array == h.array; });
+      };
+      for (size_t j = 0; j < plan.gathers.size(); ++j)
+        if (candidate(j) && keys[j] == keys[i])
+          fused.push_back(&plan.gathers[j]);
+      // Groups whose boxes differ by constants join too (one pass over the
+      // seed, one parallel region), if the loop around them keeps a
+      // branch-free interior that no edge term can reach into (else each
+      // would lose its interior to the other's edges) and every group has
+      // terms there.
+      auto has_bulk = [](const GatherGroup* f) {
+        return std::any_of(f->blocks.begin(), f->blocks.end(),
+                           [](const Block& b) { return b.bulk; });
+      };
+      for (size_t j = 0; j < plan.gathers.size(); ++j) {
+        if (!candidate(j) || keys[j] == keys[i] || !near_boxes(keys[j], keys[i]))
+          continue;
+        std::vector<const GatherGroup*> with = fused;
+        with.push_back(&plan.gathers[j]);
+        const CellLoop trial = plan_cell_boxes(k, with);
+        if (trial.any_bulk && trial.reaches.empty() &&
+            std::all_of(with.begin(), with.end(), has_bulk))
+          fused = std::move(with);
       }
       for (const auto* f : fused)
         done[size_t(f - plan.gathers.data())] = true;

@@ -5,7 +5,8 @@
 // index conditions of its terms are decided there), the edge boxes that may
 // reach into the interior (checked at run time), and the parallel test (the
 // mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
-// when their fusion keys, compared by fields, are equal. emit.cpp prints the
+// when their fusion keys are near (the same nest and cell index, cell boxes the
+// same or apart by a constant at each end). emit.cpp prints the
 // plan: it decides no box, bound, fusion or test, and rewrites no
 // expression. Each term's expressions are specialized here to the box the
 // plan puts it in (loop_plan.cpp's Specializer); the pass `hoist` (hoist.hpp)
@@ -36,9 +37,10 @@ struct CellRange {
   bool operator==(const CellRange& o) const { return lo == o.lo && hi == o.hi; }
 };
 
-/// What gather groups of different inputs must share to run in one loop: the
-/// loop nest (its index in the kernel), the memory index of a cell and the
-/// cell box.
+/// What decides whether gather groups of different inputs run in one loop
+/// (loop_plan.cpp's `fusable`): the loop nest (its index in the kernel) and
+/// the memory index of a cell, the same, and the cell boxes, the same or
+/// apart by a constant at each end.
 struct FusionKey {
   size_t nest = 0;
   Poly cell;
@@ -73,10 +75,12 @@ struct BoxTerm {
   /// An interior term whose partial is factored out of the cell's sum (the
   /// pass `hoist`): its index in CellLoop::factored of its group; else -1.
   int factor = -1;
+  /// The partial is -P for the factored P: the seed is subtracted from P's sum.
+  bool factor_negated = false;
 };
 
 /// One cell loop over one or more gather groups (fused when more than one)
-/// that share a layout and a cell box.
+/// that share a layout, over the box around their cell boxes.
 struct CellLoop {
   std::vector<const GatherGroup*> groups;
   std::map<std::string, CellRange> bounds; // the cell box, per layout counter
@@ -103,6 +107,7 @@ struct CellLoop {
   /// Per group: the partials that are the same in every iteration, factored
   /// out of an interior cell's sum (the pass `hoist`), in order of first use:
   ///   acc += P * g1; acc += P * g2   ->   s0 += g1; s0 += g2; ... acc += P * s0
+  /// (a partial -P subtracts its seed from P's sum: s0 -= g3)
   /// (one multiplication instead of one per term, and a shorter dependence
   /// chain on acc; the sum is the same up to rounding). Only where no bulk
   /// block of the group has a run-time guard (BoxTerm::factor).

@@ -100,7 +100,6 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
 // CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       double acc_s1 = 0;
 // CPP-NEXT:       // rhs[i] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i]/∂q[i + 1] · rhs_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
@@ -110,14 +109,14 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:       // rhs[i] reads q[i] at i = c_i: acc += ∂rhs[i]/∂q[i] · rhs_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
-// CPP-NEXT:         acc_s1 += rhs_adj[i];
+// CPP-NEXT:         // (the partial, negated, is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:         acc_s0 -= rhs_adj[i];
 // CPP-NEXT:       }
 // CPP-NEXT:       // rhs[i + 1] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i + 1]/∂q[i + 1] · rhs_adj[i + 1]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
-// CPP-NEXT:         acc_s1 += rhs_adj[i + 1];
+// CPP-NEXT:         // (the partial, negated, is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:         acc_s0 -= rhs_adj[i + 1];
 // CPP-NEXT:       }
 // CPP-NEXT:       // rhs[i + 1] reads q[i] at i = c_i: acc += ∂rhs[i + 1]/∂q[i] · rhs_adj[i + 1]
 // CPP-NEXT:       {
@@ -126,7 +125,6 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:         acc_s0 += rhs_adj[i + 1];
 // CPP-NEXT:       }
 // CPP-NEXT:       acc += 0.5 * acc_s0;
-// CPP-NEXT:       acc += -(0.5 * acc_s1);
 // CPP-NEXT:       q_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     const std::ptrdiff_t lo_i = 0, hi_i = n;

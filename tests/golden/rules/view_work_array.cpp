@@ -341,24 +341,22 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:       double acc = 0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
 // CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       double acc_s1 = 0;
 // CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
-// CPP-NEXT:         acc_s0 += un_adj(j, i);
+// CPP-NEXT:         // (the partial, negated, is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:         acc_s0 -= un_adj(j, i);
 // CPP-NEXT:       }
 // CPP-NEXT:       // un(j, i) reads flux(j, i) at j = c_j, i = c_i: acc += ∂un(j, i)/∂flux(j, i) · un_adj(j, i)
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
-// CPP-NEXT:         acc_s1 += un_adj(j, i);
+// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:         acc_s0 += un_adj(j, i);
 // CPP-NEXT:       }
-// CPP-NEXT:       acc += -(c * acc_s0);
-// CPP-NEXT:       acc += c * acc_s1;
+// CPP-NEXT:       acc += c * acc_s0;
 // CPP-NEXT:       flux_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     const std::ptrdiff_t lo_j = 0, hi_j = un_adj.rows();

@@ -117,117 +117,204 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: // Adjoint of loop nest 2 of work_array (work_array.cpp:14).
 // CPP-NEXT: void work_array_nest2_adjoint(const double* q, double* q_adj, const double* flux, double* flux_adj,
 // CPP-NEXT:                               const double* q_new_adj, int n, double c) {
-// CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
-// CPP-NEXT:   if (q_adj != nullptr) {
-// CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
-// CPP-NEXT:       bool hit = false;
-// CPP-NEXT:       // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           acc += q_new_adj[i];
-// CPP-NEXT:           hit = true;
+// CPP-NEXT:   if (q_adj != nullptr && flux_adj != nullptr) {
+// CPP-NEXT:     // q_adj[c_i], flux_adj[c_i]: each cell gathers the reads of q, flux made by the iterations (i)
+// CPP-NEXT:     {
+// CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc_q = 0;
+// CPP-NEXT:         bool hit_q = false;
+// CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc_q += q_new_adj[i];
+// CPP-NEXT:             hit_q = true;
+// CPP-NEXT:           }
 // CPP-NEXT:         }
+// CPP-NEXT:         if (hit_q)
+// CPP-NEXT:           q_adj[c_i] += acc_q;
+// CPP-NEXT:         double acc_flux = 0;
+// CPP-NEXT:         bool hit_flux = false;
+// CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc_flux += -(c * q_new_adj[i]);
+// CPP-NEXT:             hit_flux = true;
+// CPP-NEXT:           }
+// CPP-NEXT:         }
+// CPP-NEXT:         // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc_flux += c * q_new_adj[i];
+// CPP-NEXT:             hit_flux = true;
+// CPP-NEXT:           }
+// CPP-NEXT:         }
+// CPP-NEXT:         if (hit_flux)
+// CPP-NEXT:           flux_adj[c_i] += acc_flux;
+// CPP-NEXT:       };
+// CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc_q = 0;
+// CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
+// CPP-NEXT:         double acc_q_s0 = 0;
+// CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           // (the partial is the same in every iteration: acc += it · acc_q_s0 below)
+// CPP-NEXT:           acc_q_s0 += q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         acc_q += acc_q_s0;
+// CPP-NEXT:         double acc_flux = 0;
+// CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
+// CPP-NEXT:         double acc_flux_s0 = 0;
+// CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:           // (the partial, negated, is the same in every iteration: acc += it · acc_flux_s0 below)
+// CPP-NEXT:           acc_flux_s0 -= q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           // (the partial is the same in every iteration: acc += it · acc_flux_s0 below)
+// CPP-NEXT:           acc_flux_s0 += q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         acc_flux += c * acc_flux_s0;
+// CPP-NEXT:         // the cell's adjoints, once every accumulator is computed
+// CPP-NEXT:         q_adj[c_i] += acc_q;
+// CPP-NEXT:         flux_adj[c_i] += acc_flux;
+// CPP-NEXT:       };
+// CPP-NEXT:       const std::ptrdiff_t lo_i = 1, hi_i = n;
+// CPP-NEXT:       std::ptrdiff_t in_lo_i = std::max<std::ptrdiff_t>(lo_i, std::min<std::ptrdiff_t>(2, hi_i));
+// CPP-NEXT:       std::ptrdiff_t in_hi_i =
+// CPP-NEXT:           std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n - 1, hi_i));
+// CPP-NEXT:       // threads if the cells are many
+// CPP-NEXT:       const bool parallel_ok = (hi_i - lo_i) >= 8192;
+// CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
+// CPP-NEXT:       if (parallel_ok) {
+// CPP-NEXT: #pragma omp parallel for
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
+// CPP-NEXT:       } else {
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
 // CPP-NEXT:       }
-// CPP-NEXT:       if (hit)
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
+// CPP-NEXT:     }
+// CPP-NEXT:   } else {
+// CPP-NEXT:     // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
+// CPP-NEXT:     if (q_adj != nullptr) {
+// CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         bool hit = false;
+// CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc += q_new_adj[i];
+// CPP-NEXT:             hit = true;
+// CPP-NEXT:           }
+// CPP-NEXT:         }
+// CPP-NEXT:         if (hit)
+// CPP-NEXT:           q_adj[c_i] += acc;
+// CPP-NEXT:       };
+// CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
+// CPP-NEXT:         double acc_s0 = 0;
+// CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           // (the partial is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:           acc_s0 += q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         acc += acc_s0;
 // CPP-NEXT:         q_adj[c_i] += acc;
-// CPP-NEXT:     };
-// CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
-// CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
-// CPP-NEXT:         acc_s0 += q_new_adj[i];
-// CPP-NEXT:       }
-// CPP-NEXT:       acc += acc_s0;
-// CPP-NEXT:       q_adj[c_i] += acc;
-// CPP-NEXT:     };
-// CPP-NEXT:     const std::ptrdiff_t lo_i = 1, hi_i = n - 1;
-// CPP-NEXT:     std::ptrdiff_t in_lo_i = std::max<std::ptrdiff_t>(lo_i, std::min<std::ptrdiff_t>(1, hi_i));
-// CPP-NEXT:     std::ptrdiff_t in_hi_i =
-// CPP-NEXT:         std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n - 1, hi_i));
-// CPP-NEXT:     // threads if the cells are many
-// CPP-NEXT:     const bool parallel_ok = (hi_i - lo_i) >= 8192;
-// CPP-NEXT:     for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
-// CPP-NEXT:       edge(c_i);
-// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT:       };
+// CPP-NEXT:       const std::ptrdiff_t lo_i = 1, hi_i = n - 1;
+// CPP-NEXT:       std::ptrdiff_t in_lo_i = std::max<std::ptrdiff_t>(lo_i, std::min<std::ptrdiff_t>(1, hi_i));
+// CPP-NEXT:       std::ptrdiff_t in_hi_i =
+// CPP-NEXT:           std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n - 1, hi_i));
+// CPP-NEXT:       // threads if the cells are many
+// CPP-NEXT:       const bool parallel_ok = (hi_i - lo_i) >= 8192;
+// CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
+// CPP-NEXT:       if (parallel_ok) {
 // CPP-NEXT: #pragma omp parallel for
-// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:         interior(c_i);
-// CPP-NEXT:     } else {
-// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
+// CPP-NEXT:       } else {
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
+// CPP-NEXT:       }
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
 // CPP-NEXT:     }
-// CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
-// CPP-NEXT:       edge(c_i);
-// CPP-NEXT:   }
-// CPP-NEXT:   // flux_adj[c_i]: each cell gathers the reads of flux made by the iterations (i)
-// CPP-NEXT:   if (flux_adj != nullptr) {
-// CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
-// CPP-NEXT:       bool hit = false;
-// CPP-NEXT:       // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
-// CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           acc += -(c * q_new_adj[i]);
-// CPP-NEXT:           hit = true;
+// CPP-NEXT:     // flux_adj[c_i]: each cell gathers the reads of flux made by the iterations (i)
+// CPP-NEXT:     if (flux_adj != nullptr) {
+// CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         bool hit = false;
+// CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc += -(c * q_new_adj[i]);
+// CPP-NEXT:             hit = true;
+// CPP-NEXT:           }
 // CPP-NEXT:         }
-// CPP-NEXT:       }
-// CPP-NEXT:       // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         if (i >= 1 && i < n - 1) {
-// CPP-NEXT:           acc += c * q_new_adj[i];
-// CPP-NEXT:           hit = true;
+// CPP-NEXT:         // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           if (i >= 1 && i < n - 1) {
+// CPP-NEXT:             acc += c * q_new_adj[i];
+// CPP-NEXT:             hit = true;
+// CPP-NEXT:           }
 // CPP-NEXT:         }
-// CPP-NEXT:       }
-// CPP-NEXT:       if (hit)
+// CPP-NEXT:         if (hit)
+// CPP-NEXT:           flux_adj[c_i] += acc;
+// CPP-NEXT:       };
+// CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
+// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
+// CPP-NEXT:         double acc_s0 = 0;
+// CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
+// CPP-NEXT:           // (the partial, negated, is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:           acc_s0 -= q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
+// CPP-NEXT:         {
+// CPP-NEXT:           const std::ptrdiff_t i = c_i;
+// CPP-NEXT:           // (the partial is the same in every iteration: acc += it · acc_s0 below)
+// CPP-NEXT:           acc_s0 += q_new_adj[i];
+// CPP-NEXT:         }
+// CPP-NEXT:         acc += c * acc_s0;
 // CPP-NEXT:         flux_adj[c_i] += acc;
-// CPP-NEXT:     };
-// CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
-// CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       double acc_s1 = 0;
-// CPP-NEXT:       // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s0 below)
-// CPP-NEXT:         acc_s0 += q_new_adj[i];
-// CPP-NEXT:       }
-// CPP-NEXT:       // q_new[i] reads flux[i] at i = c_i: acc += ∂q_new[i]/∂flux[i] · q_new_adj[i]
-// CPP-NEXT:       {
-// CPP-NEXT:         const std::ptrdiff_t i = c_i;
-// CPP-NEXT:         // (the partial is the same in every iteration: acc += it · acc_s1 below)
-// CPP-NEXT:         acc_s1 += q_new_adj[i];
-// CPP-NEXT:       }
-// CPP-NEXT:       acc += -(c * acc_s0);
-// CPP-NEXT:       acc += c * acc_s1;
-// CPP-NEXT:       flux_adj[c_i] += acc;
-// CPP-NEXT:     };
-// CPP-NEXT:     const std::ptrdiff_t lo_i = 1, hi_i = n;
-// CPP-NEXT:     std::ptrdiff_t in_lo_i = std::max<std::ptrdiff_t>(lo_i, std::min<std::ptrdiff_t>(2, hi_i));
-// CPP-NEXT:     std::ptrdiff_t in_hi_i =
-// CPP-NEXT:         std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n - 1, hi_i));
-// CPP-NEXT:     // threads if the cells are many
-// CPP-NEXT:     const bool parallel_ok = (hi_i - lo_i) >= 8192;
-// CPP-NEXT:     for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
-// CPP-NEXT:       edge(c_i);
-// CPP-NEXT:     if (parallel_ok) {
+// CPP-NEXT:       };
+// CPP-NEXT:       const std::ptrdiff_t lo_i = 1, hi_i = n;
+// CPP-NEXT:       std::ptrdiff_t in_lo_i = std::max<std::ptrdiff_t>(lo_i, std::min<std::ptrdiff_t>(2, hi_i));
+// CPP-NEXT:       std::ptrdiff_t in_hi_i =
+// CPP-NEXT:           std::max<std::ptrdiff_t>(in_lo_i, std::min<std::ptrdiff_t>(n - 1, hi_i));
+// CPP-NEXT:       // threads if the cells are many
+// CPP-NEXT:       const bool parallel_ok = (hi_i - lo_i) >= 8192;
+// CPP-NEXT:       for (std::ptrdiff_t c_i = lo_i; c_i < in_lo_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
+// CPP-NEXT:       if (parallel_ok) {
 // CPP-NEXT: #pragma omp parallel for
-// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:         interior(c_i);
-// CPP-NEXT:     } else {
-// CPP-NEXT:       for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
-// CPP-NEXT:         interior(c_i);
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
+// CPP-NEXT:       } else {
+// CPP-NEXT:         for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; ++c_i)
+// CPP-NEXT:           interior(c_i);
+// CPP-NEXT:       }
+// CPP-NEXT:       for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
+// CPP-NEXT:         edge(c_i);
 // CPP-NEXT:     }
-// CPP-NEXT:     for (std::ptrdiff_t c_i = in_hi_i; c_i < hi_i; ++c_i)
-// CPP-NEXT:       edge(c_i);
 // CPP-NEXT:   }
 // CPP-NEXT: }
 // CPP-EMPTY:
