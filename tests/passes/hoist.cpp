@@ -71,7 +71,7 @@ DPGEN_KERNEL void two_pass(DPGEN_IN const double* u, DPGEN_OUT double* w, DPGEN_
 // Factored partials the same up to sign share one sum, the seeds of -c
 // subtracted from it: one product per cell instead of one per sign.
 // CODE-LABEL: void central_adjoint(
-// CODE: double acc_s0 = 0;
+// CODE: double acc_s0 = -0.0;
 // CODE-NOT: acc_s1
 // CODE: acc_s0 += out_adj[i];
 // CODE: acc_s0 -= out_adj[i];

@@ -157,6 +157,11 @@ void emit_block(const BlockContext& cx, const Block& b) {
   }
 }
 
+// The value an accumulator starts from: -0.0, the identity of +, so a sum is
+// its first term exactly and the compiler drops the addition (0.0 + x is not
+// x for x = -0.0, so `acc = 0` cost an addition per accumulator and cell).
+constexpr const char* kEmptySum = "-0.0";
+
 // Fewer cells than this run serially: a parallel region costs microseconds.
 constexpr int kMinParallelCells = 8192;
 
@@ -240,7 +245,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
   auto edge_body = [&](const std::vector<std::vector<std::vector<BoxTerm>>>& terms) {
     for (size_t gi = 0; gi < gs.size(); ++gi) {
       const GatherGroup* g = gs[gi];
-      code.line("{} {} = 0;", elem_of(k, g->array), acc_name(*g));
+      code.line("{} {} = {};", elem_of(k, g->array), acc_name(*g), kEmptySum);
       code.line("bool {} = false;", hit_name(*g));
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         emit_block({k, *g, code, acc_name(*g), hit_name(*g), true, &terms[gi][bi]}, g->blocks[bi]);
@@ -298,7 +303,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       if (!has_bulk)
         continue; // no term of this input reaches the interior
       std::string elem = elem_of(k, g->array);
-      code.line("{} {} = 0;", elem, acc_name(*g));
+      code.line("{} {} = {};", elem, acc_name(*g), kEmptySum);
       // A term under a run-time guard (a condition that is not a box of
       // counters) may apply to no iteration of an interior cell, which the
       // source then never read: such a cell is not written, as at an edge.
@@ -311,7 +316,7 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       if (!factored.empty())
         code.line("// partials the same in every iteration, factored out: sums of seeds");
       for (size_t n = 0; n < factored.size(); ++n)
-        code.line("{} {} = 0;", elem, factored_sum(k, acc_name(*g), int(n)));
+        code.line("{} {} = {};", elem, factored_sum(k, acc_name(*g), int(n)), kEmptySum);
       for (size_t bi = 0; bi < g->blocks.size(); ++bi)
         if (g->blocks[bi].bulk)
           emit_block({k, *g, code, acc_name(*g), guarded ? hit_name(*g) : "", false,

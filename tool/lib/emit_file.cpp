@@ -185,7 +185,8 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
         "// Gather form: each adjoint cell is written by exactly one loop iteration, which\n"
         "// sums the contributions of every forward iteration that read that cell, each\n"
         "// recomputed from the primal inputs (no tape). Interior cells run a branch-free\n"
-        "// loop; edge cells check each term's iteration domain.\n");
+        "// loop; edge cells check each term's iteration domain. Sums start at -0.0, the\n"
+        "// identity of +: each is its first term exactly.\n");
   if (std::any_of(plans.begin(), plans.end(),
                   [](const auto& p) { return !p->kernel->member_class.empty(); }))
     c.raw("#define DPGEN_NO_MEMBER_WRAPPERS // (they need the classes, which this file does not "

@@ -22,7 +22,8 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "accumulate_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -59,7 +60,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
 // CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // rhs[i] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i]/∂q[i + 1] · rhs_adj[i]
 // CPP-NEXT:       {
@@ -97,9 +98,9 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:         q_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
+// CPP-NEXT:       double acc_s0 = -0.0;
 // CPP-NEXT:       // rhs[i] reads q[i + 1] at i = c_i - 1: acc += ∂rhs[i]/∂q[i + 1] · rhs_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i - 1;
@@ -149,7 +150,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
 // CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // energy[0] reads q[i] at i = c_i: acc += ∂energy[0]/∂q[i] · energy_adj[0]
 // CPP-NEXT:       {
@@ -163,7 +164,7 @@ DPGEN_KERNEL void accumulate(DPGEN_IN const double* q, DPGEN_OUT double* rhs,
 // CPP-NEXT:         q_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // energy[0] reads q[i] at i = c_i: acc += ∂energy[0]/∂q[i] · energy_adj[0]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;

@@ -27,7 +27,8 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "c89_private_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -65,7 +66,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   const double w_2 = 0.25;
 // CPP-NEXT:   // u_adj[0]: one cell, summed over the iterations () that read it
 // CPP-NEXT:   if (u_adj != nullptr) {
-// CPP-NEXT:     double acc = 0;
+// CPP-NEXT:     double acc = -0.0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[0] reads u[0]: acc += ∂v[0]/∂u[0] · v_adj[0]
 // CPP-NEXT:     {
@@ -79,7 +80,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   }
 // CPP-NEXT:   // u_adj[n - 1]: one cell, summed over the iterations () that read it
 // CPP-NEXT:   if (u_adj != nullptr) {
-// CPP-NEXT:     double acc = 0;
+// CPP-NEXT:     double acc = -0.0;
 // CPP-NEXT:     bool hit = false;
 // CPP-NEXT:     // v[n - 1] reads u[n - 1]: acc += ∂v[n - 1]/∂u[n - 1] · v_adj[n - 1]
 // CPP-NEXT:     {
@@ -94,7 +95,7 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   // u_adj[c_i]: each cell gathers the reads of u made by the iterations (i)
 // CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i + 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
@@ -124,11 +125,11 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:         u_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       double acc_s1 = 0;
-// CPP-NEXT:       double acc_s2 = 0;
+// CPP-NEXT:       double acc_s0 = -0.0;
+// CPP-NEXT:       double acc_s1 = -0.0;
+// CPP-NEXT:       double acc_s2 = -0.0;
 // CPP-NEXT:       // v[i] reads u[i - 1 + m] at i = c_i + 1: acc += ∂v[i]/∂u[i - 1 + m] · v_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i + 1;

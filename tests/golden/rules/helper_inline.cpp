@@ -22,7 +22,8 @@ DPGEN_KERNEL void helper_inline(DPGEN_IN const double* q, DPGEN_OUT double* slop
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "helper_inline_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -58,7 +59,7 @@ DPGEN_KERNEL void helper_inline(DPGEN_IN const double* q, DPGEN_OUT double* slop
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
 // CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // slope[i] reads q[i] at i = c_i: acc += ∂slope[i]/∂q[i] · slope_adj[i]
 // CPP-NEXT:       {
@@ -94,7 +95,7 @@ DPGEN_KERNEL void helper_inline(DPGEN_IN const double* q, DPGEN_OUT double* slop
 // CPP-NEXT:         q_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // slope[i] reads q[i] at i = c_i: acc += ∂slope[i]/∂q[i] · slope_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;

@@ -21,7 +21,8 @@ DPGEN_KERNEL void reciprocal(DPGEN_IN const double* u, DPGEN_OUT double* u_next,
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "reciprocal_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -61,7 +62,7 @@ DPGEN_KERNEL void reciprocal(DPGEN_IN const double* u, DPGEN_OUT double* u_next,
 // CPP-NEXT:   // u_adj[c_i]: each cell gathers the reads of u made by the iterations (i)
 // CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // u_next[i] reads u[i] at i = c_i: acc += ∂u_next[i]/∂u[i] · u_next_adj[i]
 // CPP-NEXT:       {
@@ -91,7 +92,7 @@ DPGEN_KERNEL void reciprocal(DPGEN_IN const double* u, DPGEN_OUT double* u_next,
 // CPP-NEXT:         u_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // u_next[i] reads u[i] at i = c_i: acc += ∂u_next[i]/∂u[i] · u_next_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;

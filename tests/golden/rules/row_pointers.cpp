@@ -22,7 +22,8 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "row_pointers_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -63,7 +64,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:   // u_adj[c_j][c_i]: each cell gathers the reads of u made by the iterations (j, i)
 // CPP-NEXT:   if (u_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un[j][i] reads u[j][i] at j = c_j, i = c_i: acc += ∂un[j][i]/∂u[j][i] · un_adj[j][i]
 // CPP-NEXT:       {
@@ -120,7 +121,7 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
 // CPP-NEXT:     auto interior_row = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un[j][i] reads u[j][i] at j = c_j, i = c_i: acc += ∂un[j][i]/∂u[j][i] · un_adj[j][i]
 // CPP-NEXT:       {
@@ -175,10 +176,10 @@ DPGEN_KERNEL void row_pointers(DPGEN_IN double** u, DPGEN_OUT double** un, int n
 // CPP-NEXT:         u_adj[c_j][c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
-// CPP-NEXT:       double acc_s1 = 0;
+// CPP-NEXT:       double acc_s0 = -0.0;
+// CPP-NEXT:       double acc_s1 = -0.0;
 // CPP-NEXT:       // un[j][i] reads u[j][i] at j = c_j, i = c_i: acc += ∂un[j][i]/∂u[j][i] · un_adj[j][i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;

@@ -18,7 +18,8 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "size_check_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -65,7 +66,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:   // a_adj[c_i + 64 * c_j]: each cell gathers the reads of a made by the iterations (j, i)
 // CPP-NEXT:   if (a_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
 // CPP-NEXT:       // 64 + i]
@@ -83,7 +84,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
 // CPP-NEXT:     auto interior_row = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
 // CPP-NEXT:       // 64 + i]
@@ -99,7 +100,7 @@ DPGEN_KERNEL void size_check(DPGEN_IN const double (*a)[64], DPGEN_OUT double b[
 // CPP-NEXT:         a_adj[c_i + 64 * c_j] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // b[j * 64 + i] reads a[j][i] at j = c_j, i = c_i: acc += ∂b[j * 64 + i]/∂a[j][i] · b_adj[j *
 // CPP-NEXT:       // 64 + i]
 // CPP-NEXT:       {

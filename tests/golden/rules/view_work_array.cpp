@@ -29,7 +29,8 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "view_work_array_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -76,7 +77,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:   // u_adj(c_j, c_i): each cell gathers the reads of u made by the iterations (j, i)
 // CPP-NEXT:   {
 // CPP-NEXT:     auto edge = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
 // CPP-NEXT:       {
@@ -103,7 +104,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
 // CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
 // CPP-NEXT:       {
@@ -128,7 +129,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         u_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // flux(j, i) reads u(j, i) at j = c_j, i = c_i: acc += ∂flux(j, i)/∂u(j, i) · flux_adj(j, i)
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t j = c_j;
@@ -197,7 +198,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:   // u_adj(c_j, c_i): each cell gathers the reads of u made by the iterations (j, i)
 // CPP-NEXT:   {
 // CPP-NEXT:     auto edge = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂u(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
@@ -215,7 +216,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
 // CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂u(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
@@ -231,9 +232,9 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         u_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
+// CPP-NEXT:       double acc_s0 = -0.0;
 // CPP-NEXT:       // un(j, i) reads u(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂u(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
 // CPP-NEXT:       {
@@ -286,7 +287,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:   // flux_adj(c_j, c_i): each cell gathers the reads of flux made by the iterations (j, i)
 // CPP-NEXT:   {
 // CPP-NEXT:     auto edge = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
@@ -313,7 +314,7 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:     // a cell of an edge row with c_i in the interior's range: as at an edge, less the checks that
 // CPP-NEXT:     // range decides
 // CPP-NEXT:     auto interior_row = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
@@ -338,9 +339,9 @@ DPGEN_KERNEL void view_work_array(DPGEN_IN grid::View2D<const double> u,
 // CPP-NEXT:         flux_adj(c_j, c_i) += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [&](const std::ptrdiff_t c_j, const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:       double acc_s0 = 0;
+// CPP-NEXT:       double acc_s0 = -0.0;
 // CPP-NEXT:       // un(j, i) reads flux(j, i + 1) at j = c_j, i = c_i - 1: acc += ∂un(j, i)/∂flux(j, i + 1) ·
 // CPP-NEXT:       // un_adj(j, i)
 // CPP-NEXT:       {

@@ -19,7 +19,8 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT: // Gather form: each adjoint cell is written by exactly one loop iteration, which
 // CPP-NEXT: // sums the contributions of every forward iteration that read that cell, each
 // CPP-NEXT: // recomputed from the primal inputs (no tape). Interior cells run a branch-free
-// CPP-NEXT: // loop; edge cells check each term's iteration domain.
+// CPP-NEXT: // loop; edge cells check each term's iteration domain. Sums start at -0.0, the
+// CPP-NEXT: // identity of +: each is its first term exactly.
 // CPP-NEXT: #include "work_array_adjoint.hpp"
 // CPP-EMPTY:
 // CPP-NEXT: #include <algorithm>
@@ -58,7 +59,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:   // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
 // CPP-NEXT:   if (q_adj != nullptr) {
 // CPP-NEXT:     auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       bool hit = false;
 // CPP-NEXT:       // flux[i] reads q[i] at i = c_i: acc += ∂flux[i]/∂q[i] · flux_adj[i]
 // CPP-NEXT:       {
@@ -80,7 +81,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:         q_adj[c_i] += acc;
 // CPP-NEXT:     };
 // CPP-NEXT:     auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:       double acc = 0;
+// CPP-NEXT:       double acc = -0.0;
 // CPP-NEXT:       // flux[i] reads q[i] at i = c_i: acc += ∂flux[i]/∂q[i] · flux_adj[i]
 // CPP-NEXT:       {
 // CPP-NEXT:         const std::ptrdiff_t i = c_i;
@@ -121,7 +122,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:     // q_adj[c_i], flux_adj[c_i]: each cell gathers the reads of q, flux made by the iterations (i)
 // CPP-NEXT:     {
 // CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc_q = 0;
+// CPP-NEXT:         double acc_q = -0.0;
 // CPP-NEXT:         bool hit_q = false;
 // CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
 // CPP-NEXT:         {
@@ -133,7 +134,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:         }
 // CPP-NEXT:         if (hit_q)
 // CPP-NEXT:           q_adj[c_i] += acc_q;
-// CPP-NEXT:         double acc_flux = 0;
+// CPP-NEXT:         double acc_flux = -0.0;
 // CPP-NEXT:         bool hit_flux = false;
 // CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
 // CPP-NEXT:         {
@@ -155,9 +156,9 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:           flux_adj[c_i] += acc_flux;
 // CPP-NEXT:       };
 // CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc_q = 0;
+// CPP-NEXT:         double acc_q = -0.0;
 // CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:         double acc_q_s0 = 0;
+// CPP-NEXT:         double acc_q_s0 = -0.0;
 // CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
 // CPP-NEXT:         {
 // CPP-NEXT:           const std::ptrdiff_t i = c_i;
@@ -165,9 +166,9 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:           acc_q_s0 += q_new_adj[i];
 // CPP-NEXT:         }
 // CPP-NEXT:         acc_q += acc_q_s0;
-// CPP-NEXT:         double acc_flux = 0;
+// CPP-NEXT:         double acc_flux = -0.0;
 // CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:         double acc_flux_s0 = 0;
+// CPP-NEXT:         double acc_flux_s0 = -0.0;
 // CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
 // CPP-NEXT:         {
 // CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
@@ -208,7 +209,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:     // q_adj[c_i]: each cell gathers the reads of q made by the iterations (i)
 // CPP-NEXT:     if (q_adj != nullptr) {
 // CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         double acc = -0.0;
 // CPP-NEXT:         bool hit = false;
 // CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
 // CPP-NEXT:         {
@@ -222,9 +223,9 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:           q_adj[c_i] += acc;
 // CPP-NEXT:       };
 // CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         double acc = -0.0;
 // CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:         double acc_s0 = 0;
+// CPP-NEXT:         double acc_s0 = -0.0;
 // CPP-NEXT:         // q_new[i] reads q[i] at i = c_i: acc += ∂q_new[i]/∂q[i] · q_new_adj[i]
 // CPP-NEXT:         {
 // CPP-NEXT:           const std::ptrdiff_t i = c_i;
@@ -256,7 +257,7 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:     // flux_adj[c_i]: each cell gathers the reads of flux made by the iterations (i)
 // CPP-NEXT:     if (flux_adj != nullptr) {
 // CPP-NEXT:       auto edge = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         double acc = -0.0;
 // CPP-NEXT:         bool hit = false;
 // CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
 // CPP-NEXT:         {
@@ -278,9 +279,9 @@ DPGEN_KERNEL void work_array(DPGEN_IN const double* q, DPGEN_OUT double* flux,
 // CPP-NEXT:           flux_adj[c_i] += acc;
 // CPP-NEXT:       };
 // CPP-NEXT:       auto interior = [=](const std::ptrdiff_t c_i) {
-// CPP-NEXT:         double acc = 0;
+// CPP-NEXT:         double acc = -0.0;
 // CPP-NEXT:         // partials the same in every iteration, factored out: sums of seeds
-// CPP-NEXT:         double acc_s0 = 0;
+// CPP-NEXT:         double acc_s0 = -0.0;
 // CPP-NEXT:         // q_new[i] reads flux[i + 1] at i = c_i - 1: acc += ∂q_new[i]/∂flux[i + 1] · q_new_adj[i]
 // CPP-NEXT:         {
 // CPP-NEXT:           const std::ptrdiff_t i = c_i - 1;
