@@ -5,7 +5,10 @@
 # generated .cpp), and runs the two side by side, alternating, 3 rounds.
 #   scripts/bench_vs_commit.sh <commit> [build-dir]
 # Needs a build dir configured with -DDPGEN_BUILD_BENCHMARKS=ON (default:
-# build). Compiles with -O3 -march=native like scripts/bench.sh.
+# build). Compiles with -O3 -march=native like scripts/bench.sh, or with the
+# flags in DPGEN_BENCH_FLAGS (DPGEN_BENCH_FLAGS=-O3: a CMake Release build's).
+# Runs each kernel's generated and hand-written adjoints far beyond the caches
+# and in them (_cache), on 1 and 2 threads.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 commit=${1:?usage: bench_vs_commit.sh <commit> [build-dir]}
@@ -27,7 +30,8 @@ for f in "$gk"/*.cpp; do
   case " $kernels " in *" $(basename "$f" _adjoint.cpp) "*) continue ;; esac
   common+=("$f")
 done
-flags=(-std=c++17 -O3 -march=native -DNDEBUG -fopenmp -I"$gk" -I"$root/kernels" -I"$root/runtime/include"
+read -r -a opt <<<"${DPGEN_BENCH_FLAGS:--O3 -march=native}"
+flags=(-std=c++17 "${opt[@]}" -DNDEBUG -fopenmp -I"$gk" -I"$root/kernels" -I"$root/runtime/include"
        -I"$gb" -I"$root/tests/kernels" -I"$root/bench")
 for v in new old; do
   own=()
@@ -42,10 +46,10 @@ for v in new old; do
   done
   g++ -fopenmp -o "$work/bench_$v" "${objs[@]}" -lbenchmark -lpthread
 done
-filter='(laplacian2d|divergence2d|upwind)_(generated|hand)/1/'
+filter='(laplacian2d|divergence2d|upwind)_(generated|hand)(_cache)?/[12]/'
 for r in 1 2 3; do
   for v in new old; do
-    "$work/bench_$v" --benchmark_filter="$filter" --benchmark_min_time=0.3 --benchmark_repetitions=3 \
+    "$work/bench_$v" --benchmark_filter="$filter" --benchmark_min_time=0.2 --benchmark_repetitions=3 \
       --benchmark_report_aggregates_only=true 2>/dev/null | grep median | sed "s/^/$v (round $r) /"
   done
 done
