@@ -180,7 +180,7 @@ DPGEN_KERNEL void peel_row_col(DPGEN_IN const double* a, DPGEN_OUT double* out, 
     }
 }
 
-// Two inputs whose cell boxes differ by a constant at each end (loop_plan.cpp: fusable): a's
+// Two inputs whose cell boxes differ by a constant at each end (loop_plan.cpp: near_boxes): a's
 // cells are [0, n - 2), b's [1, n). The adjoint runs one loop over [0, n), where a cell
 // outside one input's box must write nothing to that input's adjoint.
 DPGEN_KERNEL void peel_near_boxes_1d(DPGEN_IN const double* a, DPGEN_IN const double* b,

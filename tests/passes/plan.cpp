@@ -35,6 +35,31 @@ DPGEN_KERNEL void blend(DPGEN_IN const double* a, DPGEN_IN const double* b, DPGE
     c[i] = a[i - 1] + a[i + 1] - 2.0 * b[i];
 }
 
+// A MAC-grid divergence (as tests/kernels/peel_kernels.cpp's peel_near_boxes_mac): u's cells
+// are rows [0, ny - 1), v's columns [0, nx - 1); one loop over the box around both, whose
+// interior lies inside each.
+// CHECK-LABEL: plan of mac_div
+// CHECK-NEXT: input u
+// CHECK-NEXT: step fused
+// CHECK-NEXT: cells of [u, v]
+// CHECK-NEXT: i in [0, nx)
+// CHECK-NEXT: j in [0, ny)
+// CHECK-NEXT: interior {i: [1, nx - 1); j: [1, ny - 1)}
+// CHECK: cells of [u]
+// CHECK-NEXT: i in [0, nx)
+// CHECK-NEXT: j in [0, ny - 1)
+// CHECK: cells of [v]
+// CHECK-NEXT: i in [0, nx - 1)
+// CHECK-NEXT: j in [0, ny)
+DPGEN_KERNEL void mac_div(DPGEN_IN const double* u, DPGEN_IN const double* v, DPGEN_OUT double* div,
+                          int nx, int ny) {
+  for (int j = 0; j < ny - 1; ++j)
+    for (int i = 0; i < nx - 1; ++i) {
+      const int k = j * nx + i;
+      div[k] = u[k + 1] - u[k] + v[k + nx] - v[k];
+    }
+}
+
 // Cell boxes that differ by more than constants (b's ends at min(n - 1, m)):
 // a loop each, as the box around both could hold many cells of neither.
 // CHECK-LABEL: plan of apart

@@ -6,7 +6,8 @@
 //  3. the += contract: adjoints accumulate into what the caller passed;
 //  4. no out-of-bounds access: every array sits between guard cells, NaN
 //     around what the kernels read and -0.0 around the adjoints they write
-//     (even an added +0.0 flips its sign).
+//     (even an added +0.0 flips its sign; an added empty sum does not: sums
+//     start at -0.0, and x + -0.0 is x).
 // Include after doctest.h.
 #pragma once
 

@@ -5,8 +5,9 @@
 // index conditions of its terms are decided there), the edge boxes that may
 // reach into the interior (checked at run time), and the parallel test (the
 // mixed-radix one-to-one test of affine.hpp). Groups of different inputs fuse
-// when their fusion keys are near (the same nest and cell index, cell boxes the
-// same or apart by a constant at each end). emit.cpp prints the
+// when they share the nest and cell index and their cell boxes are the same,
+// or apart by a constant at each end with the loop around them keeping its
+// interior (FusionKey). emit.cpp prints the
 // plan: it decides no box, bound, fusion or test, and rewrites no
 // expression. Each term's expressions are specialized here to the box the
 // plan puts it in (loop_plan.cpp's Specializer); the pass `hoist` (hoist.hpp)
@@ -38,9 +39,10 @@ struct CellRange {
 };
 
 /// What decides whether gather groups of different inputs run in one loop
-/// (loop_plan.cpp's `fusable`): the loop nest (its index in the kernel) and
-/// the memory index of a cell, the same, and the cell boxes, the same or
-/// apart by a constant at each end.
+/// (plan_adjoint_loops): the loop nest (its index in the kernel) and the
+/// memory index of a cell, the same; and the cell boxes, the same, or apart
+/// by a constant at each end (`near_boxes`) where the loop around them keeps
+/// an interior no edge term reaches into and every group has terms there.
 struct FusionKey {
   size_t nest = 0;
   Poly cell;
