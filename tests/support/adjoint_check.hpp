@@ -5,9 +5,9 @@
 //     every input component;
 //  3. the += contract: adjoints accumulate into what the caller passed;
 //  4. no out-of-bounds access: every array sits between guard cells, NaN
-//     around what the kernels read and -0.0 around the adjoints they write
-//     (even an added +0.0 flips its sign; an added empty sum does not: sums
-//     start at -0.0, and x + -0.0 is x).
+//     around what the kernels read and a signaling NaN around the adjoints
+//     they write (any arithmetic on it returns a quiet NaN, other bits: even
+//     an added empty sum, -0.0, shows, which leaves every number as it was).
 // Include after doctest.h.
 #pragma once
 
@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -61,7 +62,7 @@ public:
   }
 
 private:
-  // Bit for bit: a guard of -0.0 catches even `+= 0.0` (it turns into +0.0).
+  // Bit for bit: a signaling-NaN guard catches even `+= -0.0` (it turns quiet).
   bool same(T v) const { return std::memcmp(&v, &guard_, sizeof(T)) == 0; }
   std::vector<T> data_;
   size_t n_;
@@ -181,7 +182,7 @@ private:
   }
 
   Arrays zeros(const std::vector<size_t>& sizes) {
-    Arrays z = make(sizes, T(-0.0));
+    Arrays z = make(sizes, std::numeric_limits<T>::signaling_NaN());
     for (auto& arr : z)
       for (size_t i = 0; i < arr.size(); ++i)
         arr[i] = 0;
