@@ -16,8 +16,10 @@
 #      (OpenMPI's run-time-loaded components leak; bounds and UB checks stay),
 #      but without the PyTorch parts: Debian's libtorch and Python are not
 #      built with ASan, and loading an ASan-instrumented library into them
-#      does not work;
-#   3. a libFuzzer smoke run of the generator (build-fuzz/, clang, 60 s;
+#      does not work; and without the generator's own tests: it generates with
+#      the dpgen of 1. (the generator runs under ASan and UBSan in 3.);
+#   3. the generator under libFuzzer (build-fuzz/, clang, ASan, UBSan): every
+#      seed kernel once, and a fuzz run from the small ones (180 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
 set -euo pipefail
@@ -58,10 +60,15 @@ run_ctest "$build" release
 # 2. Everything again under AddressSanitizer + UndefinedBehaviorSanitizer
 #    (but the consumer.* tests: their projects build without the sanitizers,
 #    exactly as in 1.).
+#    It generates with the release stage's dpgen (DPGEN_GENERATOR): the
+#    generator itself runs under ASan+UBSan in stage 3, over the same kernels.
+#    -O1 -g1 (line tables): RelWithDebInfo's -O2 -g made this stage the
+#    longest of the three.
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${mpi[@]}" \
-  -DCMAKE_CXX_FLAGS="-O1 $san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF \
-  -DDPGEN_WITH_TORCH=OFF
+  -DCMAKE_CXX_FLAGS="$san" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF -DDPGEN_WITH_TORCH=OFF \
+  -DDPGEN_INSTALL=OFF -DDPGEN_GENERATOR="$build/tool/dpgen"
 cmake --build "$root/build-asan" -j2
 run_ctest "$root/build-asan" sanitizers
 
@@ -69,8 +76,9 @@ run_ctest "$root/build-asan" sanitizers
 cmake -S "$root" -B "$root/build-fuzz" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-19 -DCMAKE_CXX_COMPILER=clang++-19 -DDPGEN_BUILD_FUZZ=ON \
   -DDPGEN_BUILD_TESTS=OFF -DDPGEN_BUILD_EXAMPLES=OFF \
-  -DDPGEN_FUZZ_SECONDS="${DPGEN_FUZZ_SECONDS:-60}" \
-  -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined" \
+  -DDPGEN_FUZZ_SECONDS="${DPGEN_FUZZ_SECONDS:-180}" \
+  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build "$root/build-fuzz" -j2 --target fuzz_generator
 run_ctest "$root/build-fuzz" fuzz

@@ -4,7 +4,9 @@
 #                 already built tool), then find_package(dpgen) from there;
 #   subdirectory  add_subdirectory(<dpgen's source>): dpgen builds its tool and
 #                 runtime, nothing else;
-#   fetchcontent  FetchContent from the local source tree, likewise.
+#   fetchcontent  FetchContent from the local source tree, with the tool of
+#                 dpgen's build tree (-DDPGEN_GENERATOR): the runtime only is
+#                 built (one way builds the tool as a subproject, one not).
 # Everything is written under WORK_DIR (in dpgen's build tree), cleared first.
 # -D arguments: WAY, SOURCE_DIR, BUILD_DIR (dpgen's build tree), WORK_DIR,
 # GENERATOR, CXX_COMPILER; optional C_COMPILER, MAKE_PROGRAM, LLVM_PREFIX.
@@ -56,6 +58,9 @@ if(WAY STREQUAL "package")
 else()
   list(APPEND configure -DDPGEN_SOURCE_DIR=${SOURCE_DIR})
 endif()
+if(WAY STREQUAL "fetchcontent")
+  list(APPEND configure -DDPGEN_GENERATOR=${BUILD_DIR}/tool/dpgen)
+endif()
 
 step("configure" ${CMAKE_COMMAND} ${configure})
 if(WAY STREQUAL "package")
@@ -69,6 +74,13 @@ if(WAY STREQUAL "package")
 endif()
 
 step("build" ${CMAKE_COMMAND} --build ${build} --parallel 2)
+if(WAY STREQUAL "fetchcontent")
+  file(GLOB_RECURSE built_tools ${build}/_deps/*/tool/dpgen ${build}/_deps/*/libdpgen_core.a)
+  if(built_tools)
+    message(FATAL_ERROR "consumer.fetchcontent: DPGEN_GENERATOR was given, yet the tool was "
+                        "built: ${built_tools}")
+  endif()
+endif()
 step("run" ${build}/consumer)
 message(STATUS "${step_output}")
 if(NOT step_output MATCHES "relative difference")

@@ -1,9 +1,11 @@
 // libFuzzer target over the generator's front half: mutated kernel sources go
-// through lowering, scheduling and emission. The tool must never crash or
-// hang, and every kernel it accepts must produce code that compiles: the
-// generated file is parsed by Clang, and a failure aborts (a finding).
+// through lowering, scheduling and emission of the adjoint and the tangent
+// files. The tool must never crash or hang, and every kernel it accepts must
+// produce code that compiles: each generated file is parsed by Clang, and a
+// failure aborts (a finding).
 #include "lib/derive.hpp"
 #include "lib/emit_file.hpp"
+#include "lib/emit_tangent.hpp"
 #include "lib/find.hpp"
 #include "lib/hoist.hpp"
 #include "lib/loop_plan.hpp"
@@ -61,23 +63,28 @@ dpgen::FrontendOptions options() {
   return o;
 }
 
-// Parses the generated source with its header; true when it compiles.
-bool compiles(const dpgen::EmittedFile& f) {
+// Parses a generated source with its header (`fuzz_<form>.hpp`, the name the
+// source includes); true when it compiles.
+bool compiles(const dpgen::EmittedFile& f, const std::string& form) {
   // (-I.: the mapped headers include each other by these names, as
   // include/member_classes.hpp includes "dpgen/annotate.hpp")
   std::vector<std::string> args = {"-std=c++17", "-w", "-I.",
                                    "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
-  clang::tooling::FileContentMappings files = {{"fuzz_adjoint.hpp", f.header}};
+  clang::tooling::FileContentMappings files = {{"fuzz_" + form + ".hpp", f.header}};
   for (const auto& [name, text] : headers())
     files.push_back({name, text});
   return clang::tooling::runToolOnCodeWithArgs(
-      std::make_unique<clang::SyntaxOnlyAction>(), f.source, args, "fuzz_adjoint.cpp",
+      std::make_unique<clang::SyntaxOnlyAction>(), f.source, args, "fuzz_" + form + ".cpp",
       DPGEN_CLANG_DRIVER, std::make_shared<clang::PCHContainerOperations>(), files);
 }
 
+struct Generated {
+  dpgen::EmittedFile adjoint, tangent;
+};
+
 // The phases after lowering, as generate.cpp runs them: derive, schedule,
-// plan the loops, hoist their invariants, emit.
-dpgen::EmittedFile generate(const std::vector<dpgen::Kernel>& kernels) {
+// plan the loops, hoist their invariants, emit; and the tangent file.
+Generated generate(const std::vector<dpgen::Kernel>& kernels) {
   std::vector<dpgen::AdjointPlan> plans;
   plans.reserve(kernels.size()); // the loop plans point into this vector
   for (const auto& k : kernels) {
@@ -89,7 +96,15 @@ dpgen::EmittedFile generate(const std::vector<dpgen::Kernel>& kernels) {
     loops.push_back(dpgen::plan_loops(p));
     dpgen::hoist_invariants(loops.back());
   }
-  return dpgen::emit_file(loops, "fuzz.cpp", "fuzz");
+  std::vector<const dpgen::Kernel*> ks;
+  for (const auto& k : kernels)
+    ks.push_back(&k);
+  return {dpgen::emit_file(loops, "fuzz.cpp", "fuzz"),
+          dpgen::emit_tangent_file(ks, "fuzz.cpp", "fuzz")};
+}
+
+bool same(const dpgen::EmittedFile& a, const dpgen::EmittedFile& b) {
+  return a.source == b.source && a.header == b.header;
 }
 
 } // namespace
@@ -101,22 +116,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<dpgen::Kernel> kernels;
   if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels, headers()))
     return 0; // rejected with a diagnostic: fine
-  dpgen::EmittedFile f = generate(kernels);
+  Generated f = generate(kernels);
   // The output is a function of the kernel alone: the same input again, in
   // the same process, gives the same text (no counters that survive a run).
   std::vector<dpgen::Kernel> again;
   dpgen::lower_code(code, "fuzz.cpp", options(), again, headers());
-  dpgen::EmittedFile f2 = generate(again);
-  if (f2.source != f.source || f2.header != f.header) {
+  Generated f2 = generate(again);
+  if (!same(f2.adjoint, f.adjoint) || !same(f2.tangent, f.tangent)) {
     llvm::errs() << "fuzz: the same kernel generated different code on a second run:\n"
                  << code << "\n";
     std::abort();
   }
-  if (!compiles(f)) {
-    llvm::errs() << "fuzz: accepted kernel produced code that does not compile:\n"
-                 << f.source << "\n--- input ---\n"
-                 << code << "\n";
-    std::abort();
+  for (const auto& [form, file] : {std::pair{"adjoint", &f.adjoint}, {"tangent", &f.tangent}}) {
+    if (!compiles(*file, form)) {
+      llvm::errs() << "fuzz: accepted kernel produced " << form << " code that does not compile:\n"
+                   << file->source << "\n--- input ---\n"
+                   << code << "\n";
+      std::abort();
+    }
   }
   return 0;
 }
