@@ -19,7 +19,7 @@
 #      does not work; and without the generator's own tests: it generates with
 #      the dpgen of 1. (the generator runs under ASan and UBSan in 3.);
 #   3. the generator under libFuzzer (build-fuzz/, clang, ASan, UBSan): every
-#      seed kernel once, and a fuzz run from the small ones (180 s;
+#      kernel of the tree once, and a fuzz run from the shipped ones (180 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
 set -euo pipefail
@@ -61,12 +61,16 @@ run_ctest "$build" release
 #    (but the consumer.* tests: their projects build without the sanitizers,
 #    exactly as in 1.).
 #    It generates with the release stage's dpgen (DPGEN_GENERATOR): the
-#    generator itself runs under ASan+UBSan in stage 3, over the same kernels.
+#    generator itself runs under ASan+UBSan in stage 3, over the kernels the
+#    build generates from, the rejected adversarial ones and the diagnostic
+#    tests' kernels (not over the command-line driver, lit's other inputs or
+#    the issue-22 corpus). The C kernels are instrumented too.
 #    -O1 -g1 (line tables): RelWithDebInfo's -O2 -g made this stage the
 #    longest of the three.
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${mpi[@]}" \
   -DCMAKE_CXX_FLAGS="$san" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DCMAKE_C_FLAGS="$san" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_EXE_LINKER_FLAGS="$san" -DDPGEN_TEST_CONSUMERS=OFF -DDPGEN_WITH_TORCH=OFF \
   -DDPGEN_INSTALL=OFF -DDPGEN_GENERATOR="$build/tool/dpgen"
 cmake --build "$root/build-asan" -j2

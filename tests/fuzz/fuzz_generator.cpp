@@ -3,6 +3,16 @@
 // files. The tool must never crash or hang, and every kernel it accepts must
 // produce code that compiles: each generated file is parsed by Clang, and a
 // failure aborts (a finding).
+//
+// Environment (run_seeds.py sets it to run the tree's kernels as seeds):
+//   DPGEN_FUZZ_EXPECT     accept | reject: an input the generator rejects
+//                         (accepts) is a finding: a seed that stopped being
+//                         accepted, or a truncated one, cannot pass unseen;
+//   DPGEN_FUZZ_NAME       the input's file name (default fuzz.cpp; fuzz.c
+//                         lowers it as C);
+//   DPGEN_FUZZ_STD        the C++ standard of the kernel and of the check that
+//                         the generated code compiles (default c++17);
+//   DPGEN_FUZZ_MAX_BYTES  larger inputs are skipped (default 8192: mutations).
 #include "lib/derive.hpp"
 #include "lib/emit_file.hpp"
 #include "lib/emit_tangent.hpp"
@@ -55,11 +65,30 @@ const std::vector<std::pair<std::string, std::string>>& headers() {
   return h;
 }
 
-dpgen::FrontendOptions options() {
+std::string env(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? v : fallback;
+}
+
+struct Settings {
+  std::string expect = env("DPGEN_FUZZ_EXPECT", "");
+  std::string name = env("DPGEN_FUZZ_NAME", "fuzz.cpp");
+  std::string std = env("DPGEN_FUZZ_STD", "c++17");
+  size_t max_bytes = std::stoul(env("DPGEN_FUZZ_MAX_BYTES", "8192"));
+};
+
+const Settings& settings() {
+  static const Settings s;
+  return s;
+}
+
+dpgen::FrontendOptions options(bool quiet = true) {
   dpgen::FrontendOptions o;
   o.resource_dir = DPGEN_CLANG_RESOURCE_DIR;
   o.driver = DPGEN_CLANG_DRIVER;
-  o.quiet = true;
+  o.quiet = quiet;
+  if (settings().name.size() < 2 || settings().name.compare(settings().name.size() - 2, 2, ".c"))
+    o.compiler_args = {"-std=" + settings().std};
   return o;
 }
 
@@ -68,7 +97,7 @@ dpgen::FrontendOptions options() {
 bool compiles(const dpgen::EmittedFile& f, const std::string& form) {
   // (-I.: the mapped headers include each other by these names, as
   // include/member_classes.hpp includes "dpgen/annotate.hpp")
-  std::vector<std::string> args = {"-std=c++17", "-w", "-I.",
+  std::vector<std::string> args = {"-std=" + settings().std, "-w", "-I.",
                                    "-resource-dir=" DPGEN_CLANG_RESOURCE_DIR};
   clang::tooling::FileContentMappings files = {{"fuzz_" + form + ".hpp", f.header}};
   for (const auto& [name, text] : headers())
@@ -99,8 +128,8 @@ Generated generate(const std::vector<dpgen::Kernel>& kernels) {
   std::vector<const dpgen::Kernel*> ks;
   for (const auto& k : kernels)
     ks.push_back(&k);
-  return {dpgen::emit_file(loops, "fuzz.cpp", "fuzz"),
-          dpgen::emit_tangent_file(ks, "fuzz.cpp", "fuzz")};
+  return {dpgen::emit_file(loops, settings().name, "fuzz"),
+          dpgen::emit_tangent_file(ks, settings().name, "fuzz")};
 }
 
 bool same(const dpgen::EmittedFile& a, const dpgen::EmittedFile& b) {
@@ -110,17 +139,29 @@ bool same(const dpgen::EmittedFile& a, const dpgen::EmittedFile& b) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size > 8192)
+  const Settings& set = settings();
+  if (size > set.max_bytes)
     return 0;
   std::string code(reinterpret_cast<const char*>(data), size);
   std::vector<dpgen::Kernel> kernels;
-  if (!dpgen::lower_code(code, "fuzz.cpp", options(), kernels, headers()))
+  const bool accepted = dpgen::lower_code(code, set.name, options(), kernels, headers());
+  if (!accepted && set.expect == "accept") {
+    llvm::errs() << "fuzz: a seed expected to be accepted was rejected:\n";
+    std::vector<dpgen::Kernel> ignored;
+    dpgen::lower_code(code, set.name, options(/*quiet=*/false), ignored, headers());
+    std::abort();
+  }
+  if (accepted && set.expect == "reject") {
+    llvm::errs() << "fuzz: a seed expected to be rejected was accepted:\n" << code << "\n";
+    std::abort();
+  }
+  if (!accepted)
     return 0; // rejected with a diagnostic: fine
   Generated f = generate(kernels);
   // The output is a function of the kernel alone: the same input again, in
   // the same process, gives the same text (no counters that survive a run).
   std::vector<dpgen::Kernel> again;
-  dpgen::lower_code(code, "fuzz.cpp", options(), again, headers());
+  dpgen::lower_code(code, set.name, options(), again, headers());
   Generated f2 = generate(again);
   if (!same(f2.adjoint, f.adjoint) || !same(f2.tangent, f.tangent)) {
     llvm::errs() << "fuzz: the same kernel generated different code on a second run:\n"

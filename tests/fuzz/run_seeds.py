@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Runs the tree's kernels once each through the instrumented generator.
+
+The ctest tests fuzz.generator_seeds_<k> call it: the kernels that the build
+generates from, and the ones that must be rejected, made self-contained
+(seed_corpus.py) and handed to the libFuzzer binary as files, each run once.
+fuzz_generator.cpp's environment says what is expected of each group
+(DPGEN_FUZZ_EXPECT), so a seed that stops being accepted, or is cut short,
+fails instead of passing as "rejected: fine".
+
+  run_seeds.py --fuzzer BIN --out DIR --part K --parts N
+               [--group EXPECT:STD FILE...]...
+
+EXPECT is accept or reject, STD the C++ standard (c++17, c++20); files ending
+in .c are lowered as C. The files of all groups, in order, are dealt to the
+N parts; this run takes part K (0-based).
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from seed_corpus import inline  # noqa: E402
+
+
+def parse_groups(argv):
+    """Splits `--group E:S f...` runs out of argv (argparse has no repeated nargs='+')."""
+    groups, rest, cur = [], [], None
+    for a in argv:
+        if a == "--group":
+            cur = None
+            groups.append(None)
+            continue
+        if groups and groups[-1] is None:
+            expect, _, std = a.partition(":")
+            if expect not in ("accept", "reject") or not std:
+                sys.exit(f"run_seeds.py: --group {a}: expected accept:STD or reject:STD")
+            cur = (expect, std, [])
+            groups[-1] = cur
+            continue
+        if cur is not None:
+            cur[2].append(a)
+        else:
+            rest.append(a)
+    if groups and groups[-1] is None:
+        sys.exit("run_seeds.py: --group without EXPECT:STD")
+    return groups, rest
+
+
+def main():
+    groups, rest = parse_groups(sys.argv[1:])
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--fuzzer", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--part", type=int, default=0)
+    ap.add_argument("--parts", type=int, default=1)
+    ap.add_argument("--timeout", type=int, default=600, help="seconds per seed")
+    args = ap.parse_args(rest)
+    if not 0 <= args.part < args.parts:
+        sys.exit(f"run_seeds.py: --part {args.part} is not in [0, {args.parts})")
+
+    # Deal every seed to a part; each (expect, std, language) batch is one fuzzer run.
+    dealt = [(e, s, f) for e, s, files in groups for f in files]
+    mine = dealt[args.part::args.parts]
+    if not mine:
+        sys.exit("run_seeds.py: no seeds in this part")
+    batches = {}
+    os.makedirs(args.out, exist_ok=True)
+    for expect, std, path in mine:
+        if not os.path.isfile(path):
+            sys.exit(f"run_seeds.py: no seed file {path}")
+        # a name unique over the tree: its folder and file name
+        name = os.path.basename(os.path.dirname(path)) + "__" + os.path.basename(path)
+        dest = os.path.join(args.out, expect, name)
+        os.makedirs(os.path.dirname(dest), exist_ok=True)
+        with open(dest, "w", encoding="utf-8") as f:
+            f.writelines(inline(path, set()))
+        lang = "c" if path.endswith(".c") else "c++"
+        batches.setdefault((expect, std, lang), []).append(dest)
+
+    status = 0
+    slowest = []
+    for (expect, std, lang), files in sorted(batches.items()):
+        env = dict(os.environ)
+        env.update({
+            "DPGEN_FUZZ_EXPECT": expect,
+            "DPGEN_FUZZ_STD": std,
+            "DPGEN_FUZZ_NAME": "fuzz.c" if lang == "c" else "fuzz.cpp",
+            "DPGEN_FUZZ_MAX_BYTES": str(1 << 20),
+            # ASan's allocation stack traces cost most in the allocating phases;
+            # 5 frames still name the caller (the user's own options come after, and win)
+            "ASAN_OPTIONS": "malloc_context_size=5:" + os.environ.get("ASAN_OPTIONS", ""),
+        })
+        cmd = [args.fuzzer, f"-timeout={args.timeout}", "-rss_limit_mb=6000"] + files
+        print(f"== {len(files)} seeds, expected to be {expect}ed ({lang}, {std})", flush=True)
+        start = time.time()
+        proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                              text=True, errors="replace")
+        out = proc.stdout
+        runs = re.findall(r"^Executed (\S+) in (\d+) ms", out, re.M)
+        slowest += [(int(ms), os.path.basename(f)) for f, ms in runs]
+        if proc.returncode != 0 or len(runs) != len(files):
+            status = 1
+            print(out)
+            print(f"run_seeds.py: FAILED (exit {proc.returncode}; {len(runs)} of {len(files)} "
+                  f"seeds ran)", flush=True)
+        else:
+            print(f"   all {len(files)} ran ({time.time() - start:.0f} s)", flush=True)
+    slowest.sort(reverse=True)
+    print("slowest: " + ", ".join(f"{n} {ms / 1000:.1f} s" for ms, n in slowest[:5]))
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
