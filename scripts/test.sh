@@ -19,7 +19,8 @@
 #      does not work; and without the generator's own tests: it generates with
 #      the dpgen of 1. (the generator runs under ASan and UBSan in 3.);
 #   3. the generator under libFuzzer (build-fuzz/, clang, ASan, UBSan): every
-#      kernel of the tree once, and a fuzz run from the shipped ones (180 s;
+#      kernel the build generates from once, and a fuzz run from the shipped
+#      ones (180 s;
 #      DPGEN_FUZZ_SECONDS changes the length).
 # Ends with one line "tests: N passed, M failed" over all of them.
 set -euo pipefail
@@ -76,7 +77,7 @@ cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInf
 cmake --build "$root/build-asan" -j2
 run_ctest "$root/build-asan" sanitizers
 
-# 3. The generator under libFuzzer (clang), from the shipped and test kernels.
+# 3. The generator under libFuzzer (clang), ASan and UBSan (tests/fuzz/CMakeLists.txt).
 cmake -S "$root" -B "$root/build-fuzz" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-19 -DCMAKE_CXX_COMPILER=clang++-19 -DDPGEN_BUILD_FUZZ=ON \
   -DDPGEN_BUILD_TESTS=OFF -DDPGEN_BUILD_EXAMPLES=OFF \

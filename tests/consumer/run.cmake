@@ -115,5 +115,5 @@ else()
     message(FATAL_ERROR "consumer.${WAY}: dpgen as a subproject built more than it should "
                         "(${built} object files):\n  ${unexpected}")
   endif()
-  message(STATUS "consumer.${WAY}: ${built} object files, all of the consumer or the tool")
+  message(STATUS "consumer.${WAY}: ${built} object files, none of them unexpected")
 endif()

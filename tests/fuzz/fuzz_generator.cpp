@@ -74,7 +74,17 @@ struct Settings {
   std::string expect = env("DPGEN_FUZZ_EXPECT", "");
   std::string name = env("DPGEN_FUZZ_NAME", "fuzz.cpp");
   std::string std = env("DPGEN_FUZZ_STD", "c++17");
-  size_t max_bytes = std::stoul(env("DPGEN_FUZZ_MAX_BYTES", "8192"));
+  size_t max_bytes = bytes(env("DPGEN_FUZZ_MAX_BYTES", "8192"));
+
+  static size_t bytes(const std::string& v) {
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+    if (v.empty() || *end || v[0] == '-' || n == 0) {
+      llvm::errs() << "fuzz: DPGEN_FUZZ_MAX_BYTES=" << v << " is not a positive byte count\n";
+      std::abort();
+    }
+    return static_cast<size_t>(n);
+  }
 };
 
 const Settings& settings() {
@@ -140,8 +150,13 @@ bool same(const dpgen::EmittedFile& a, const dpgen::EmittedFile& b) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const Settings& set = settings();
-  if (size > set.max_bytes)
-    return 0;
+  if (size > set.max_bytes) {
+    if (set.expect.empty())
+      return 0; // (a mutation grown too large)
+    llvm::errs() << "fuzz: a seed of " << size << " bytes is over DPGEN_FUZZ_MAX_BYTES ("
+                 << set.max_bytes << ")\n";
+    std::abort();
+  }
   std::string code(reinterpret_cast<const char*>(data), size);
   std::vector<dpgen::Kernel> kernels;
   const bool accepted = dpgen::lower_code(code, set.name, options(), kernels, headers());

@@ -27,26 +27,24 @@ from seed_corpus import inline  # noqa: E402
 
 
 def parse_groups(argv):
-    """Splits `--group E:S f...` runs out of argv (argparse has no repeated nargs='+')."""
+    """Splits `--group E:S f...` runs out of argv (argparse has no repeated nargs='+').
+    The groups come last: a token starting with -- after one is an error."""
     groups, rest, cur = [], [], None
-    for a in argv:
+    it = iter(argv)
+    for a in it:
         if a == "--group":
-            cur = None
-            groups.append(None)
-            continue
-        if groups and groups[-1] is None:
-            expect, _, std = a.partition(":")
+            spec = next(it, None)
+            expect, _, std = (spec or "").partition(":")
             if expect not in ("accept", "reject") or not std:
-                sys.exit(f"run_seeds.py: --group {a}: expected accept:STD or reject:STD")
+                sys.exit(f"run_seeds.py: --group {spec}: expected accept:STD or reject:STD")
             cur = (expect, std, [])
-            groups[-1] = cur
-            continue
-        if cur is not None:
+            groups.append(cur)
+        elif cur is not None:
+            if a.startswith("--"):
+                sys.exit(f"run_seeds.py: {a} after a --group: the groups come last")
             cur[2].append(a)
         else:
             rest.append(a)
-    if groups and groups[-1] is None:
-        sys.exit("run_seeds.py: --group without EXPECT:STD")
     return groups, rest
 
 
@@ -63,18 +61,23 @@ def main():
         sys.exit(f"run_seeds.py: --part {args.part} is not in [0, {args.parts})")
 
     # Deal every seed to a part; each (expect, std, language) batch is one fuzzer run.
-    dealt = [(e, s, f) for e, s, files in groups for f in files]
+    dealt = [(i, e, s, f) for i, (e, s, f) in
+             enumerate((e, s, f) for e, s, files in groups for f in files)]
+    if not dealt:
+        sys.exit("run_seeds.py: no seeds given")
     mine = dealt[args.part::args.parts]
     if not mine:
-        sys.exit("run_seeds.py: no seeds in this part")
+        print(f"run_seeds.py: part {args.part} of {args.parts}: no seeds ({len(dealt)} in all)")
+        return 0
     batches = {}
-    os.makedirs(args.out, exist_ok=True)
-    for expect, std, path in mine:
+    out = os.path.join(args.out, f"part{args.part}")
+    for i, expect, std, path in mine:
         if not os.path.isfile(path):
             sys.exit(f"run_seeds.py: no seed file {path}")
-        # a name unique over the tree: its folder and file name
-        name = os.path.basename(os.path.dirname(path)) + "__" + os.path.basename(path)
-        dest = os.path.join(args.out, expect, name)
+        # unique over the tree (kernels/, tests/kernels/, examples/kernels/ share a
+        # folder name): the seed's position, its folder and its file name
+        name = f"{i:04d}_{os.path.basename(os.path.dirname(path))}__{os.path.basename(path)}"
+        dest = os.path.join(out, expect, name)
         os.makedirs(os.path.dirname(dest), exist_ok=True)
         with open(dest, "w", encoding="utf-8") as f:
             f.writelines(inline(path, set()))
@@ -100,7 +103,7 @@ def main():
         proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               text=True, errors="replace")
         out = proc.stdout
-        runs = re.findall(r"^Executed (\S+) in (\d+) ms", out, re.M)
+        runs = re.findall(r"^Executed (.+) in (\d+) ms$", out, re.M)
         slowest += [(int(ms), os.path.basename(f)) for f, ms in runs]
         if proc.returncode != 0 or len(runs) != len(files):
             status = 1
