@@ -46,7 +46,16 @@ Poly Poly::operator+(const Poly& o) const {
   return r;
 }
 
-Poly Poly::operator-(const Poly& o) const { return *this + (-o); }
+Poly Poly::operator-(const Poly& o) const {
+  // (as *this + (-o), without building -o)
+  Poly r = *this;
+  for (const auto& [m, c] : o.terms_) {
+    long long v = (r.terms_[m] -= c);
+    if (v == 0)
+      r.terms_.erase(m);
+  }
+  return r;
+}
 
 Poly Poly::operator*(const Poly& o) const {
   Poly r;
@@ -289,12 +298,24 @@ std::optional<Poly> to_poly(const ExprP& e) {
 
 namespace {
 
-// `a - b` as a constant, if it is one.
+// `a - b` as a constant, if it is one: their terms but the constant ones are
+// the same (no zero coefficients are stored, and the constant term, of the
+// empty monomial, comes first). Builds no polynomial: the domain operations
+// call this for every pair of bounds.
 std::optional<long long> const_diff(const Poly& a, const Poly& b) {
-  Poly d = a - b;
-  if (!d.is_constant())
+  auto ia = a.terms().begin(), ib = b.terms().begin();
+  const auto ea = a.terms().end(), eb = b.terms().end();
+  long long ca = 0, cb = 0;
+  if (ia != ea && ia->first.empty())
+    ca = (ia++)->second;
+  if (ib != eb && ib->first.empty())
+    cb = (ib++)->second;
+  for (; ia != ea && ib != eb; ++ia, ++ib)
+    if (ia->second != ib->second || ia->first != ib->first)
+      return std::nullopt;
+  if (ia != ea || ib != eb)
     return std::nullopt;
-  return d.constant_term();
+  return ca - cb;
 }
 
 bool box_empty(const Box& b) {

@@ -48,7 +48,12 @@ public:
   Poly operator+(const Poly& o) const;
   Poly operator-(const Poly& o) const;
   Poly operator*(const Poly& o) const;
-  Poly operator-() const { return *this * constant(-1); }
+  Poly operator-() const {
+    Poly r = *this; // (the product with -1: every coefficient negated)
+    for (auto& [m, c] : r.terms_)
+      c = -c;
+    return r;
+  }
   bool operator==(const Poly& o) const { return terms_ == o.terms_; }
   bool operator<(const Poly& o) const { return terms_ < o.terms_; }
 
