@@ -97,8 +97,8 @@ dpgen::FrontendOptions options(bool quiet = true) {
   o.resource_dir = DPGEN_CLANG_RESOURCE_DIR;
   o.driver = DPGEN_CLANG_DRIVER;
   o.quiet = quiet;
-  if (settings().name.size() < 2 || settings().name.compare(settings().name.size() - 2, 2, ".c"))
-    o.compiler_args = {"-std=" + settings().std};
+  // (lowering a .c file drops a C++ -std=: find.cpp, language_flag's caller)
+  o.compiler_args = {"-std=" + settings().std};
   return o;
 }
 
