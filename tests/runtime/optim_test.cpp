@@ -432,6 +432,17 @@ TEST_CASE("HIG on a wide Jacobian (fewer outputs than parameters, as a batch's) 
   const dpgen::HigUpdate half = dpgen::hig_update(a, g, hig_options(0.7, -0.5, 1e-10, 1));
   CHECK((half.step - expected).norm() <= 1e-12 * expected.norm());
   CHECK((half.singular_values - svd.singularValues()).norm() <= 1e-12 * svd.singularValues()[0]);
+  // The decomposition is a template parameter: Jacobi's SVD gives the same update as the
+  // default BDCSVD (which hands a matrix with fewer than 16 rows and columns to Jacobi itself,
+  // hence 20 x 30).
+  const Eigen::MatrixXd wide =
+      Eigen::Map<const Eigen::MatrixXd>(dpgen_test::random_vector(600, 64).data(), 20, 30);
+  const VectorXd gw = dpgen_test::random_vector(20, 65);
+  const dpgen::HigUpdate bdc = dpgen::hig_update(wide, gw, hig_options(0.7, -0.5, 1e-10, 1));
+  const dpgen::HigUpdate jacobi = dpgen::hig_update<Eigen::JacobiSVD<Eigen::MatrixXd>>(
+      wide, gw, hig_options(0.7, -0.5, 1e-10, 1));
+  CHECK(jacobi.rank == 20);
+  CHECK((jacobi.step - bdc.step).norm() <= 1e-12 * bdc.step.norm());
 }
 
 TEST_CASE("HIG beats GD on an ill-conditioned least-squares problem in the same iterations") {

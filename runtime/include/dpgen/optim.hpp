@@ -364,8 +364,13 @@ inline void require_finite_hig(const Eigen::VectorXd& r, const Eigen::MatrixXd& 
 /// r = dL/dy (the book's form; e.g. 2 (y - y*) / batch for a mean squared error).
 /// Throws std::invalid_argument on bad options or sizes and OptimizationError when r or J is
 /// not finite or the SVD fails.
-inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r,
-                            const HigOptions& options = {}) {
+/// Svd is the decomposition (Eigen::JacobiSVD<Eigen::MatrixXd> is more accurate for small,
+/// ill-conditioned Jacobians). It is a template parameter so that only the files that call
+/// hig_update compile Eigen's SVD: as an inline function it cost every file that includes this
+/// header (train.hpp does) about 15 s of compile time.
+template <class Svd = Eigen::BDCSVD<Eigen::MatrixXd>>
+HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r,
+                     const HigOptions& options = {}) {
   detail::check_hig_options(options);
   detail::require_size(r.size(), jac.rows(), "hig", "residual");
   detail::require_finite_hig(r, jac, "");
@@ -374,7 +379,7 @@ inline HigUpdate hig_update(const Eigen::MatrixXd& jac, const Eigen::VectorXd& r
     update.step.setZero(jac.cols());
     return update;
   }
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Svd svd(jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
   if (svd.info() != Eigen::Success)
     throw OptimizationError("hig: the SVD of the Jacobian failed");
   update.singular_values = svd.singularValues();
@@ -405,9 +410,10 @@ struct HigSummary : MinimizerSummary {
 /// (termination loss_not_finite or gradient_not_finite; x then holds the offending iterate) it
 /// throws OptimizationError ("hig: residual is NaN at index 3 in iteration 7") carrying the
 /// summary, or returns it when options.throw_on_failure is off. Throws std::invalid_argument on
-/// bad options or when f returns the wrong sizes.
-inline HigSummary hig_minimize(const ResidualJacobian& f, Eigen::VectorXd& x,
-                               const HigOptions& options = {}) {
+/// bad options or when f returns the wrong sizes. Svd: as for hig_update.
+template <class Svd = Eigen::BDCSVD<Eigen::MatrixXd>>
+HigSummary hig_minimize(const ResidualJacobian& f, Eigen::VectorXd& x,
+                        const HigOptions& options = {}) {
   using clock = std::chrono::steady_clock;
   const clock::time_point start = clock::now();
   detail::check_hig_options(options);
@@ -441,7 +447,7 @@ inline HigSummary hig_minimize(const ResidualJacobian& f, Eigen::VectorXd& x,
       summary.termination = Termination::max_iterations;
       break;
     }
-    const HigUpdate update = hig_update(jac, r, options);
+    const HigUpdate update = hig_update<Svd>(jac, r, options);
     x += update.step;
     summary.rank = update.rank;
     ++summary.iterations;
