@@ -173,6 +173,9 @@ class Package(unittest.TestCase):
     def test_c_cache_hit_in_a_new_process(self):
         if not getattr(type(self), "library", None):
             self.skipTest("needs test_b's build")
+        # (test_b's library: a build would write it anew; a hit only touches the manifest)
+        st = os.stat(type(self).library)
+        built = (st.st_ino, st.st_mtime_ns)
         r = self.child("""
             import json, time, torch, dpgen_torch
             t = time.perf_counter()
@@ -184,7 +187,11 @@ class Package(unittest.TestCase):
         """)
         self.assertEqual(r["library"], type(self).library)  # the same build: nothing rebuilt
         self.assertEqual(r["sum"], 3.0)
-        self.assertLessEqual(r["seconds"], 1.0)
+        st = os.stat(type(self).library)
+        self.assertEqual((st.st_ino, st.st_mtime_ns), built)  # nothing rebuilt
+        # (a build compiles torch's headers, 10 s and more: a hit is milliseconds, and this
+        # bound leaves room for a loaded machine)
+        self.assertLessEqual(r["seconds"], 5.0)
         print(f"load (cache hit, new process): {r['seconds'] * 1e3:.0f} ms", file=sys.stderr)
         # every entry is whole: no temporary build folder left, a manifest in each
         for name in os.listdir(self.cache):
