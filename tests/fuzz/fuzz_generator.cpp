@@ -8,8 +8,10 @@
 //   DPGEN_FUZZ_EXPECT     accept | reject: an input the generator rejects
 //                         (accepts) is a finding: a seed that stopped being
 //                         accepted, or a truncated one, cannot pass unseen
-//                         (and each input is generated once: without it, a
+//                         (and each input is generated once; without it, a
 //                         second time, to check that the output repeats);
+//   DPGEN_FUZZ_RECHECK    1: generate a second time all the same (run_seeds.py
+//                         sets it for a sample of the seeds);
 //   DPGEN_FUZZ_NAME       the input's file name (default fuzz.cpp; fuzz.c
 //                         lowers it as C);
 //   DPGEN_FUZZ_STD        the C++ standard of the kernel and of the check that
@@ -74,6 +76,7 @@ std::string env(const char* name, const char* fallback) {
 
 struct Settings {
   std::string expect = env("DPGEN_FUZZ_EXPECT", "");
+  bool recheck = expect.empty() || env("DPGEN_FUZZ_RECHECK", "0") == "1";
   std::string name = env("DPGEN_FUZZ_NAME", "fuzz.cpp");
   std::string std = env("DPGEN_FUZZ_STD", "c++17");
   size_t max_bytes = bytes(env("DPGEN_FUZZ_MAX_BYTES", "8192"));
@@ -177,10 +180,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Generated f = generate(kernels);
   // The output is a function of the kernel alone: the same input again, in
   // the same process, gives the same text (no counters that survive a run).
-  // Checked on the fuzz run's inputs (the shipped and per-rule kernels it
-  // starts from, and every mutation); the seed runs (DPGEN_FUZZ_EXPECT) skip
-  // it, which halves their time.
-  if (set.expect.empty()) {
+  // Checked on every input of the fuzz run and on a sample of the seeds
+  // (DPGEN_FUZZ_RECHECK): on all of them it doubled the seed runs' time.
+  if (set.recheck) {
     std::vector<dpgen::Kernel> again;
     dpgen::lower_code(code, set.name, options(), again, headers());
     Generated f2 = generate(again);

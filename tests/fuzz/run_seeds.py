@@ -8,12 +8,15 @@ fuzz_generator.cpp's environment says what is expected of each group
 (DPGEN_FUZZ_EXPECT), so a seed that stops being accepted, or is cut short,
 fails instead of passing as "rejected: fine".
 
-  run_seeds.py --fuzzer BIN --out DIR --part K --parts N
+  run_seeds.py --fuzzer BIN --out DIR --part K --parts N [--recheck-every M]
                [--group EXPECT:STD FILE...]...
 
 EXPECT is accept or reject, STD the C++ standard (c++17, c++20); files ending
 in .c are lowered as C. The files of all groups, in order, are dealt to the
-N parts; this run takes part K (0-based).
+N parts; this run takes part K (0-based). Every M-th seed of the part (by
+position, from its first; default 1: all) is generated twice in the same
+process, and the two outputs must be the same (DPGEN_FUZZ_RECHECK); the fuzz
+run checks that on all its inputs.
 """
 import argparse
 import os
@@ -56,11 +59,15 @@ def main():
     ap.add_argument("--part", type=int, default=0)
     ap.add_argument("--parts", type=int, default=1)
     ap.add_argument("--timeout", type=int, default=600, help="seconds per seed")
+    ap.add_argument("--recheck-every", type=int, default=1,
+                    help="generate every M-th seed twice (0: none)")
     args = ap.parse_args(rest)
+    if args.recheck_every < 0:
+        sys.exit(f"run_seeds.py: --recheck-every {args.recheck_every} is negative")
     if not 0 <= args.part < args.parts:
         sys.exit(f"run_seeds.py: --part {args.part} is not in [0, {args.parts})")
 
-    # Deal every seed to a part; each (expect, std, language) batch is one fuzzer run.
+    # Deal every seed to a part; each (expect, std, language, recheck) batch is one fuzzer run.
     dealt = [(i, e, s, f) for i, (e, s, f) in
              enumerate((e, s, f) for e, s, files in groups for f in files)]
     if not dealt:
@@ -71,7 +78,7 @@ def main():
         return 0
     batches = {}
     out = os.path.join(args.out, f"part{args.part}")
-    for i, expect, std, path in mine:
+    for j, (i, expect, std, path) in enumerate(mine):
         if not os.path.isfile(path):
             sys.exit(f"run_seeds.py: no seed file {path}")
         # unique over the tree (kernels/, tests/kernels/, examples/kernels/ share a
@@ -82,13 +89,15 @@ def main():
         with open(dest, "w", encoding="utf-8") as f:
             f.writelines(inline(path, set()))
         lang = "c" if path.endswith(".c") else "c++"
-        batches.setdefault((expect, std, lang), []).append(dest)
+        recheck = args.recheck_every > 0 and j % args.recheck_every == 0
+        batches.setdefault((expect, std, lang, recheck), []).append(dest)
 
     status = 0
     slowest = []
-    for (expect, std, lang), files in sorted(batches.items()):
+    for (expect, std, lang, recheck), files in sorted(batches.items()):
         env = dict(os.environ)
         env.update({
+            "DPGEN_FUZZ_RECHECK": "1" if recheck else "0",
             "DPGEN_FUZZ_EXPECT": expect,
             "DPGEN_FUZZ_STD": std,
             "DPGEN_FUZZ_NAME": "fuzz.c" if lang == "c" else "fuzz.cpp",
@@ -98,7 +107,8 @@ def main():
             "ASAN_OPTIONS": "malloc_context_size=5:" + os.environ.get("ASAN_OPTIONS", ""),
         })
         cmd = [args.fuzzer, f"-timeout={args.timeout}", "-rss_limit_mb=6000"] + files
-        print(f"== {len(files)} seeds, expected to be {expect}ed ({lang}, {std})", flush=True)
+        print(f"== {len(files)} seeds, expected to be {expect}ed ({lang}, {std})"
+              + (", each generated twice" if recheck else ""), flush=True)
         start = time.time()
         proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               text=True, errors="replace")
