@@ -100,7 +100,8 @@ function(dpgen_add_adjoints target)
   target_link_libraries(${target} PUBLIC dpgen::runtime)
 endfunction()
 
-# dpgen_add_torch_ops(<target> KERNELS <file>... [SOURCES <file>...] [COMPILE_ARGS <flag>...])
+# dpgen_add_torch_ops(<target> KERNELS <file>... [SOURCES <file>...] [COMPILE_ARGS <flag>...]
+#                     [NO_UNITY_BUILD])
 #
 # Builds a shared library <target> of PyTorch ops: for each kernel of the given files, the op
 # torch.ops.dpgen.<kernel> (a torch::autograd::Function: forward = the kernel, on every thread
@@ -110,14 +111,17 @@ endfunction()
 # adjoints are the static library <target>_adjoints (dpgen_add_adjoints, position-independent).
 # Load it from Python with torch.ops.load_library("<path of lib<target>.so>"), or link it from
 # C++ (libtorch) and call dpgen::ops::<kernel>(...) from "<stem>_torch.hpp". SOURCES adds
-# hand-written op sources (e.g. time loops or solves built on the same kernels). Needs Torch
-# (find_package(Torch) is called here if the parent has not).
+# hand-written op sources (e.g. time loops or solves built on the same kernels). The
+# generated op files are compiled as one translation unit (each includes torch's headers,
+# ~15 s apiece); NO_UNITY_BUILD compiles them one by one (then an edit of one kernel
+# recompiles only its op). Needs Torch (find_package(Torch) is called here if the parent has
+# not).
 function(dpgen_add_torch_ops target)
-  cmake_parse_arguments(ARG "" "" "KERNELS;SOURCES;COMPILE_ARGS" ${ARGN})
+  cmake_parse_arguments(ARG "NO_UNITY_BUILD" "" "KERNELS;SOURCES;COMPILE_ARGS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "dpgen_add_torch_ops(${target}): unexpected arguments "
                         "'${ARG_UNPARSED_ARGUMENTS}' (expected KERNELS <file>... "
-                        "[SOURCES <file>...] [COMPILE_ARGS <flag>...])")
+                        "[SOURCES <file>...] [COMPILE_ARGS <flag>...] [NO_UNITY_BUILD])")
   endif()
   if(NOT ARG_KERNELS)
     message(FATAL_ERROR "dpgen_add_torch_ops(${target}): no KERNELS given")
@@ -153,10 +157,14 @@ function(dpgen_add_torch_ops target)
   # The generated op files are compiled as one translation unit (a unity build of them
   # alone; SOURCES stay apart): each includes torch's headers, ~15 s of every file's compile
   # time, and what they define is named after their kernels (one op per kernel name).
-  set(op_sources ${generated})
-  list(FILTER op_sources INCLUDE REGEX "\\.cpp$")
-  set_source_files_properties(${op_sources} PROPERTIES UNITY_GROUP ops)
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+  if(ARG_NO_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
+  else()
+    set(op_sources ${generated})
+    list(FILTER op_sources INCLUDE REGEX "\\.cpp$")
+    set_source_files_properties(${op_sources} PROPERTIES UNITY_GROUP ops)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+  endif()
   target_include_directories(${target} PUBLIC ${gen_dir})
   target_link_libraries(${target} PUBLIC ${target}_adjoints ${TORCH_LIBRARIES})
   # torch's headers bring their own warnings; the generated code is checked by its tests.

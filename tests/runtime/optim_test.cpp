@@ -433,7 +433,7 @@ TEST_CASE("HIG on a wide Jacobian (fewer outputs than parameters, as a batch's) 
   CHECK((half.step - expected).norm() <= 1e-12 * expected.norm());
   CHECK((half.singular_values - svd.singularValues()).norm() <= 1e-12 * svd.singularValues()[0]);
   // The decomposition is a template parameter: Jacobi's SVD gives the same update as the
-  // default BDCSVD (which hands a matrix with fewer than 16 rows and columns to Jacobi itself,
+  // default BDCSVD (which hands a matrix with fewer than 16 rows or columns to Jacobi itself,
   // hence 20 x 30).
   const Eigen::MatrixXd wide =
       Eigen::Map<const Eigen::MatrixXd>(dpgen_test::random_vector(600, 64).data(), 20, 30);

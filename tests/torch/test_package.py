@@ -2,7 +2,8 @@
 of this source tree into a fresh virtual environment in a temporary folder, then, in new
 processes of that environment run from another folder with no dpgen variables set:
 dpgen_torch.load of a kernel file written here (gradcheck of its ops, rollout and solve over
-them, Revolve == full tape bit for bit), the cache hit in a new process (<= 1 s), each error
+them, Revolve == full tape bit for bit), the cache hit in a new process (the same library,
+nothing rebuilt), each error
 path (dpgen's file:line:col for a file and a string, the compiler's with its log), an edited
 included header (rebuilds), and the README's quick start example (a string kernel) run by two
 processes at once on one cache.
@@ -173,7 +174,8 @@ class Package(unittest.TestCase):
     def test_c_cache_hit_in_a_new_process(self):
         if not getattr(type(self), "library", None):
             self.skipTest("needs test_b's build")
-        # (test_b's library: a build would write it anew; a hit only touches the manifest)
+        # (test_b's library: a hit only touches its entry's manifest, a build would write a
+        # new lib<stem>-<id>.so and remove the old entry)
         st = os.stat(type(self).library)
         built = (st.st_ino, st.st_mtime_ns)
         r = self.child("""
