@@ -8,10 +8,11 @@
 //   DPGEN_FUZZ_EXPECT     accept | reject: an input the generator rejects
 //                         (accepts) is a finding: a seed that stopped being
 //                         accepted, or a truncated one, cannot pass unseen
-//                         (and each input is generated once; without it, a
+//                         (and each input is generated once, unless
+//                         DPGEN_FUZZ_RECHECK=1; without DPGEN_FUZZ_EXPECT, a
 //                         second time, to check that the output repeats);
-//   DPGEN_FUZZ_RECHECK    1: generate a second time all the same (run_seeds.py
-//                         sets it for a sample of the seeds);
+//   DPGEN_FUZZ_RECHECK    1: with DPGEN_FUZZ_EXPECT, generate a second time all
+//                         the same (run_seeds.py sets it for a sample of seeds);
 //   DPGEN_FUZZ_NAME       the input's file name (default fuzz.cpp; fuzz.c
 //                         lowers it as C);
 //   DPGEN_FUZZ_STD        the C++ standard of the kernel and of the check that

@@ -3,10 +3,9 @@ of this source tree into a fresh virtual environment in a temporary folder, then
 processes of that environment run from another folder with no dpgen variables set:
 dpgen_torch.load of a kernel file written here (gradcheck of its ops, rollout and solve over
 them, Revolve == full tape bit for bit), the cache hit in a new process (the same library,
-nothing rebuilt), each error
-path (dpgen's file:line:col for a file and a string, the compiler's with its log), an edited
-included header (rebuilds), and the README's quick start example (a string kernel) run by two
-processes at once on one cache.
+nothing rebuilt), each error path (dpgen's file:line:col for a file and a string, the
+compiler's with its log), an edited included header (rebuilds), and the README's quick start
+example (a string kernel) run by two processes at once on one cache.
 
 The CMake build pip drives is $DPGEN_CMAKE_BUILD_DIR when set (ctest sets the build folder
 this test belongs to, whose targets are then already up to date), else build-pip/ in the
