@@ -114,8 +114,8 @@ endfunction()
 # hand-written op sources (e.g. time loops or solves built on the same kernels). The
 # generated op files are compiled as one translation unit (each includes torch's headers,
 # ~15 s apiece); NO_UNITY_BUILD compiles them one by one (then an edit of one kernel
-# file recompiles only its op file). Needs Torch (find_package(Torch) is called here if the parent has
-# not).
+# file recompiles only its op file). Needs Torch (find_package(Torch) is called here if the
+# parent has not).
 function(dpgen_add_torch_ops target)
   cmake_parse_arguments(ARG "NO_UNITY_BUILD" "" "KERNELS;SOURCES;COMPILE_ARGS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)

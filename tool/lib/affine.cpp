@@ -36,26 +36,19 @@ Poly Poly::term(long long c, const Monomial& m) {
   return p;
 }
 
-Poly Poly::operator+(const Poly& o) const {
+Poly Poly::plus(const Poly& o, long long sign) const {
   Poly r = *this;
   for (const auto& [m, c] : o.terms_) {
-    long long v = (r.terms_[m] += c);
+    long long v = (r.terms_[m] += sign * c);
     if (v == 0)
       r.terms_.erase(m);
   }
   return r;
 }
 
-Poly Poly::operator-(const Poly& o) const {
-  // (as *this + (-o), without building -o)
-  Poly r = *this;
-  for (const auto& [m, c] : o.terms_) {
-    long long v = (r.terms_[m] -= c);
-    if (v == 0)
-      r.terms_.erase(m);
-  }
-  return r;
-}
+Poly Poly::operator+(const Poly& o) const { return plus(o, 1); }
+
+Poly Poly::operator-(const Poly& o) const { return plus(o, -1); } // (no -o built)
 
 Poly Poly::operator*(const Poly& o) const {
   Poly r;

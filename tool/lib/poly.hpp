@@ -79,6 +79,7 @@ public:
   std::string code() const;
 
 private:
+  Poly plus(const Poly& o, long long sign) const; // *this + sign * o
   std::map<Monomial, long long> terms_; // no zero coefficients
 };
 
