@@ -25,6 +25,7 @@
 #include "lib/hoist.hpp"
 #include "lib/loop_plan.hpp"
 #include "lib/schedule.hpp"
+#include "lib/share.hpp"
 
 #include <clang/Frontend/FrontendActions.h>
 #include <clang/Tooling/Tooling.h>
@@ -128,7 +129,8 @@ struct Generated {
 };
 
 // The phases after lowering, as generate.cpp runs them: derive, schedule,
-// plan the loops, hoist their invariants, emit; and the tangent file.
+// plan the loops, hoist their invariants, share values along strips, emit;
+// and the tangent file.
 Generated generate(const std::vector<dpgen::Kernel>& kernels) {
   std::vector<dpgen::AdjointPlan> plans;
   plans.reserve(kernels.size()); // the loop plans point into this vector
@@ -140,6 +142,7 @@ Generated generate(const std::vector<dpgen::Kernel>& kernels) {
   for (const auto& p : plans) {
     loops.push_back(dpgen::plan_loops(p));
     dpgen::hoist_invariants(loops.back());
+    dpgen::share_shifted_values(loops.back());
   }
   std::vector<const dpgen::Kernel*> ks;
   for (const auto& k : kernels)

@@ -13,6 +13,7 @@
 #include "lib/ops.hpp"
 #include "lib/print.hpp"
 #include "lib/schedule.hpp"
+#include "lib/share.hpp"
 
 #include <doctest/doctest.h>
 
@@ -267,6 +268,65 @@ TEST_CASE("emit: the adjoint's signature and body follow the signature rule") {
   LoopPlan loops_again = plan_loops(again);
   hoist_invariants(loops_again);
   CHECK(emit_file({loops_again}, "unit.cpp", "unit").source == f.source);
+}
+
+// The loop-level locals an expression uses, by id (emit_util.hpp's collect).
+std::map<int, LocalP> locals_of(const ExprP& e) {
+  std::map<int, LocalP> locals;
+  std::set<std::string> vars;
+  collect(e, locals, vars);
+  return locals;
+}
+
+TEST_CASE("share: a quotient read at three shifts is computed once per cell of a strip") {
+  const Kernel k = lower_one(R"(
+#include <dpgen/annotate.hpp>
+DPGEN_KERNEL void sw(DPGEN_IN const double* q, DPGEN_IN const double* u, DPGEN_OUT double* out,
+                     int n, double dx) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double c = u[i] / dx;
+    out[i] = (c > 0.0 ? c : 0.0) * (q[i] - q[i - 1]) + (c < 0.0 ? c : 0.0) * (q[i + 1] - q[i]);
+  }
+}
+)");
+  const AdjointPlan plan = schedule_of(k);
+  LoopPlan loops = plan_loops(plan);
+  hoist_invariants(loops);
+  const CellLoop& fused = loops.inputs.at(0).gathers.at(0).loops.at(0);
+  REQUIRE(fused.groups.size() == 2);
+  CHECK(fused.shared.empty());
+  const std::string before = emit_file({loops}, "unit.cpp", "unit").source;
+  CHECK(before.find("shared0") == std::string::npos);
+  share_shifted_values(loops);
+  // q's terms read c at i = c_i - 1, c_i, c_i + 1 (u's at c_i only): one buffer.
+  REQUIRE(fused.shared.size() == 1);
+  CHECK(fused.shared[0].name == "shared0");
+  CHECK(print(fused.shared[0].value) == "u[i] / dx");
+  CHECK(fused.shared[0].lo == -1);
+  CHECK(fused.shared[0].hi == 1);
+  CHECK(fused.shared[0].outer.empty());
+  // The value is read where a term computed it: in the local c, never in a select's arm
+  // (here c is one: `c > 0.0 ? c : 0.0`, but the local is defined before it).
+  size_t reads = 0;
+  for (const auto& per_block : fused.interior_terms.at(0))
+    for (const auto& t : per_block) {
+      const std::string text = print(t.partial);
+      CHECK(text.find("u[i] / dx") == std::string::npos);
+      for (const auto& [id, l] : locals_of(t.partial))
+        reads += print(l->def) == "shared0[i - shared0_lo]";
+    }
+  CHECK(reads >= 3);
+  // Only the adjoint's interior: the edge terms compute it as before.
+  const BoxTerm& edge = fused.edge_terms.at(0).at(0).at(0);
+  bool edge_divides = false;
+  for (const auto& [id, l] : locals_of(edge.partial))
+    edge_divides = edge_divides || print(l->def) == "u[i] / dx";
+  CHECK(edge_divides);
+  const std::string after = emit_file({loops}, "unit.cpp", "unit").source;
+  CHECK(after.find("double shared0[258];") != std::string::npos);
+  CHECK(after.find("c_i += 256") != std::string::npos);
+  // Once per plan.
+  CHECK_THROWS_AS(share_shifted_values(loops), std::logic_error);
 }
 
 TEST_CASE("hoist: the pass rewrites the planned terms; emit prints them as they are") {

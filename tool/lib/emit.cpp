@@ -9,6 +9,7 @@
 #include "emit_util.hpp"
 #include "hoist.hpp"
 #include "print.hpp"
+#include "share.hpp"
 
 #include <fmt/format.h>
 
@@ -192,6 +193,37 @@ std::string adj_cell(const Kernel& k, const GatherGroup& g) {
   return g.array + "_adj" + subscript(index, k.shape_of(g.array));
 }
 
+// The values an interior strip shares between its cells (CellLoop::shared),
+// each computed once per iteration of the strip into its buffer.
+void emit_shared(Code& code, const Kernel& k, const CellLoop& plan, const std::string& strip_lo,
+                 const std::string& strip_hi) {
+  const auto& layout = plan.groups.front()->layout;
+  const std::string& v = layout.back().first;
+  for (const auto& sv : plan.shared) {
+    const Poly at = Poly::symbol(cell_counter(k, v));
+    code.line("// {} at {} = {} ..= {}, which the cells' terms read: once per iteration of the "
+              "strip",
+              print(sv.value), v, (at + Poly::constant(sv.lo)).code(),
+              (at + Poly::constant(sv.hi)).code());
+    code.line("{} {}[{}];", type_spelling(sv.value->type), sv.name,
+              kShareStripCells + sv.hi - sv.lo);
+    code.line("const {} {} = {};", kCellType, sv.lo_name,
+              (Poly::symbol(strip_lo) + Poly::constant(sv.lo)).code());
+    code.open(fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, v, sv.lo_name, v,
+                          (Poly::symbol(strip_hi) + Poly::constant(sv.hi)).code(), v));
+    for (const auto& [u, shift] : sv.outer)
+      code.line("const {} {} = {};", kCellType, u,
+                (Poly::symbol(cell_counter(k, u)) + Poly::constant(shift)).code());
+    std::map<int, LocalP> locals;
+    std::set<std::string> vars;
+    collect(sv.value, locals, vars);
+    std::set<int> done;
+    define_locals(code, locals, done);
+    code.line("{}[{} - {}] = {};", sv.name, v, sv.lo_name, print(sv.value));
+    code.close();
+  }
+}
+
 // One cell loop for one or more gather groups that share a layout (several
 // inputs of one kernel, fused so the loop reads shared data once), over the
 // box around their cell boxes.
@@ -288,8 +320,25 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     edge_body(plan.row_terms);
     code.close(";");
   }
+  // Values shared between the cells of a strip (the pass `share`): the
+  // interior function runs a strip of the innermost counter's cells.
+  const bool strips = !plan.shared.empty();
+  const std::string strip_lo = k.fresh("strip_lo"), strip_hi = k.fresh("strip_hi");
   if (any_bulk) {
-    code.open(fmt::format("auto {} = {}({})", interior_fn, capture, params));
+    std::string interior_params = params;
+    if (strips) {
+      std::vector<std::string> p(cell_params.begin(), cell_params.end() - 1);
+      p.push_back(fmt::format("const {} {}", kCellType, strip_lo));
+      p.push_back(fmt::format("const {} {}", kCellType, strip_hi));
+      interior_params = fmt::format("{}", fmt::join(p, ", "));
+    }
+    code.open(fmt::format("auto {} = {}({})", interior_fn, capture, interior_params));
+    if (strips) {
+      emit_shared(code, k, plan, strip_lo, strip_hi);
+      const std::string c = cell(g0.layout.back().first);
+      code.open(
+          fmt::format("for ({} {} = {}; {} < {}; ++{})", kCellType, c, strip_lo, c, strip_hi, c));
+    }
     // Every accumulator before any store: to the compiler a store to one
     // input's adjoint may alias what the next input's terms read, which it
     // would then load and compute again (`u[i] / dx` after `d_adj[c_i] +=`).
@@ -337,6 +386,8 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       code.line("// the cell's adjoints, once every accumulator is computed");
     for (const auto& l : stores)
       code.line("{}", l);
+    if (strips)
+      code.close();
     code.close(";");
   }
 
@@ -471,7 +522,26 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       code.close();
     }
     loop(lo_of(v), in_lo(v), edge_fn, false);
-    loop(in_lo(v), in_hi(v), interior_fn, top);
+    if (strips) {
+      std::vector<std::string> strip_args(all_cells.begin(), all_cells.end() - 1);
+      strip_args.push_back(cell(v));
+      strip_args.push_back(
+          fmt::format("std::min<{}>({} + {}, {})", t, cell(v), kShareStripCells, in_hi(v)));
+      code.line("// the interior in strips of {} cells, which share values (above)",
+                kShareStripCells);
+      const std::string header =
+          fmt::format("for ({} {} = {}; {} < {}; {} += {})", t, cell(v), in_lo(v), cell(v),
+                      in_hi(v), cell(v), kShareStripCells);
+      const std::string call = fmt::format("{}({});", interior_fn, fmt::join(strip_args, ", "));
+      if (top) {
+        threaded_loop(code, parallel_ok, header, call);
+      } else {
+        code.line("{}", header);
+        code.line("  {}", call);
+      }
+    } else {
+      loop(in_lo(v), in_hi(v), interior_fn, top);
+    }
     loop(in_hi(v), hi_of(v), edge_fn, false);
   };
   loops(0, "");

@@ -33,10 +33,8 @@ bool invariant(const ExprP& e, std::map<const LocalVar*, bool>& memo) {
   return true;
 }
 
-// Nothing in `e` can behave otherwise when evaluated where the source would
-// not evaluate it: no integer division or remainder (by zero), no shift (by
-// too much), no conversion of a real to an integer (out of range). Real
-// arithmetic and the math functions give a value for every argument.
+} // namespace
+
 bool safe_anywhere(const ExprP& e) {
   return !any_node(e, [](const ExprP& x) {
     switch (x->op) {
@@ -53,6 +51,8 @@ bool safe_anywhere(const ExprP& e) {
     }
   });
 }
+
+namespace {
 
 // Costs an instruction worth saving (a lone cast or sum of parameters does not).
 bool worth_hoisting(const ExprP& e) {

@@ -86,6 +86,12 @@ private:
   std::set<std::string> kept_;
 };
 
+/// Nothing in `e` can behave otherwise when evaluated where the source would
+/// not evaluate it: no integer division or remainder (by zero), no shift (by
+/// too much), no conversion of a real to an integer (out of range). Real
+/// arithmetic and the math functions give a value for every argument.
+bool safe_anywhere(const ExprP& e);
+
 /// The pass: for an adjoint, its gather and scatter loops (LoopPlan::hoisted),
 /// each stage's (a staged adjoint) and the kernel's forward loops
 /// (LoopPlan::forward); the expressions are visited in the order emit prints

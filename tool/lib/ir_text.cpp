@@ -101,7 +101,8 @@ void made_locals(const ExprP& e, std::string& out, const std::string& indent) {
 } // namespace
 
 const std::vector<std::string>& pass_names() {
-  static const std::vector<std::string> names = {"lower", "derive", "schedule", "plan", "hoist"};
+  static const std::vector<std::string> names = {"lower", "derive", "schedule",
+                                                 "plan",  "hoist",  "share"};
   return names;
 }
 
@@ -368,6 +369,39 @@ std::string print_hoisted(const LoopPlan& plan) {
     for (const auto& step : in.gathers)
       for (const auto& loop : step.loops)
         terms(loop, step.fused() && &loop == &step.loops.front() ? " (fused)" : "");
+  return out;
+}
+
+std::string print_shared(const LoopPlan& plan) {
+  std::string out = fmt::format("shared in {}\n", plan.adjoint->kernel->name);
+  auto loops = [&](const LoopPlan& p, const std::string& label, auto&& self) -> void {
+    for (size_t s = 0; s < p.stages.size(); ++s)
+      self(p.stages[s], fmt::format("stage {}: ", s + 1), self);
+    for (const auto& in : p.inputs)
+      for (const auto& step : in.gathers)
+        for (const auto& loop : step.loops) {
+          std::vector<std::string> arrays;
+          for (const auto* g : loop.groups)
+            arrays.push_back(g->array);
+          const std::string& v = loop.groups.front()->layout.empty()
+                                     ? std::string()
+                                     : loop.groups.front()->layout.back().first;
+          for (const auto& sv : loop.shared) {
+            auto at = [](const std::string& u, long long shift) {
+              return (Poly::symbol("c_" + u) + Poly::constant(shift)).code();
+            };
+            std::string outer;
+            for (const auto& [u, shift] : sv.outer)
+              outer += fmt::format(", {} = {}", u, at(u, shift));
+            out += fmt::format("  {}cells of [{}]: {} = {} at {} = {} ..= {}{}\n", label,
+                               fmt::join(arrays, ", "), sv.name, print(sv.value), v, at(v, sv.lo),
+                               at(v, sv.hi), outer);
+            for (const auto& [id, l] : loop_locals({sv.value}))
+              out += fmt::format("    where {} = {}\n", l->name, print(l->def));
+          }
+        }
+  };
+  loops(plan, "", loops);
   return out;
 }
 

@@ -32,6 +32,8 @@ std::string print_plan(const LoopPlan& plan);
 /// After the pass `hoist`: the locals each function of the adjoint files
 /// defines before its loops, and the interior terms that use them.
 std::string print_hoisted(const LoopPlan& plan);
+/// After the pass `share`: the values each gather loop's interior strips share.
+std::string print_shared(const LoopPlan& plan);
 /// The forward forms' loops (loop_plan.hpp: ForwardPlan): each nest serial or parallel.
 std::string print_forward_plan(const ForwardPlan& plan);
 

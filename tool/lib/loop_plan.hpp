@@ -81,6 +81,19 @@ struct BoxTerm {
   bool factor_negated = false;
 };
 
+/// A value the interior terms of a cell loop compute at several shifts of
+/// the innermost counter (the pass `share`): an interior strip of cells
+/// computes it once per iteration into the buffer `name`, whose element 0 is
+/// the iteration `lo_name`; the terms read `name[i - lo_name]`.
+struct SharedValue {
+  std::string name, lo_name;
+  ExprP value; // as a term computes it, its locals and counters included
+  /// The iterations a cell c reads it at: c + lo ..= c + hi of the innermost
+  /// counter, and per other layout counter that it mentions, c + that shift.
+  long long lo = 0, hi = 0;
+  std::map<std::string, long long> outer;
+};
+
 /// One cell loop over one or more gather groups (fused when more than one)
 /// that share a layout, over the box around their cell boxes.
 struct CellLoop {
@@ -119,6 +132,9 @@ struct CellLoop {
   /// `radix` order (dim indexes the layout).
   bool unit_1d = false;
   std::vector<RadixStep> radix;
+  /// The values an interior strip shares between its cells (the pass
+  /// `share`); none: the interior runs cell by cell.
+  std::vector<SharedValue> shared;
 };
 
 /// Gather groups run in one step: `loops[0]` is the loop over all of them;

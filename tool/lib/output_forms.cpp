@@ -8,6 +8,7 @@
 #include "hoist.hpp"
 #include "ir_text.hpp"
 #include "loop_plan.hpp"
+#include "share.hpp"
 
 #include <llvm/ADT/SmallString.h>
 #include <llvm/Support/Path.h>
@@ -24,7 +25,8 @@ std::string out_path(const FileIR& ir, const std::string& suffix) {
 
 // <stem>_adjoint.{hpp,cpp} and <stem>_kernels.hpp: the adjoints in gather form
 // (with their checked entries and parallel forwards), planned by plan_loops,
-// their loop invariants hoisted (hoist_invariants).
+// their loop invariants hoisted (hoist_invariants), values shared along
+// strips of cells (share_shifted_values).
 class AdjointFiles : public OutputForm {
 public:
   const char* name() const override { return "adjoint"; }
@@ -40,6 +42,9 @@ public:
       ir.enter("hoist", p.kernel);
       hoist_invariants(loops.back());
       ir.print_after("hoist", [&] { return print_hoisted(loops.back()); });
+      ir.enter("share", p.kernel);
+      share_shifted_values(loops.back());
+      ir.print_after("share", [&] { return print_shared(loops.back()); });
     }
     ir.enter("emit", nullptr);
     EmittedFile f = emit_file(loops, ir.source_name, ir.stem);

@@ -1,0 +1,312 @@
+// The pass `share`: values the interior terms of a gather loop compute at
+// several shifts of the innermost counter, computed once per iteration of a
+// strip of cells (share.hpp).
+#include "share.hpp"
+
+#include "affine.hpp"
+#include "hoist.hpp"
+#include "print.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+namespace dpgen {
+
+namespace {
+
+// The most shifts of the innermost counter one buffer spans (hi - lo).
+constexpr long long kMaxSpan = 16;
+// A value larger than this (its locals expanded) is not shared; its parts may be.
+constexpr int kMaxNodes = 200;
+
+// A real division, or a math function that costs more than a multiplication.
+bool costly(const ExprP& e) {
+  static const std::set<std::string> calls = {"sqrt",  "cbrt",  "exp", "expm1", "log",
+                                              "log1p", "pow",   "sin", "cos",   "tanh",
+                                              "atan2", "hypot", "erf"};
+  return is_real(e->type) && (e->op == Op::Div || (e->op == Op::Call && calls.count(e->name)));
+}
+
+// At most `budget` nodes, the loop-level locals' definitions expanded.
+bool small(const ExprP& e, int& budget) {
+  if (--budget < 0)
+    return false;
+  if (e->op == Op::Local)
+    return e->local->kernel_level || small(e->local->def, budget);
+  return std::all_of(e->ops.begin(), e->ops.end(),
+                     [&](const ExprP& o) { return small(o, budget); });
+}
+
+// `e` with every loop-level local replaced by its definition.
+ExprP inlined(const ExprP& e) {
+  if (e->op == Op::Local)
+    return e->local->kernel_level ? e : inlined(e->local->def);
+  return map_operands(e, [](const ExprP& o) { return inlined(o); });
+}
+
+// A shareable value, as a function of the counters: its text with its
+// locals expanded, and the layout counters other than the innermost that it
+// mentions.
+struct ValueShape {
+  std::string text;
+  std::set<std::string> outer;
+};
+
+// A term's iteration relative to its cell: per layout counter, the constant
+// shift (iteration = cell + shift); a counter whose shift is not constant is
+// missing.
+using Offsets = std::map<std::string, long long>;
+
+class Sharer {
+public:
+  Sharer(const Kernel& k, CellLoop& loop) : k_(k), loop_(loop) {
+    const auto& layout = loop.groups.front()->layout;
+    inner_ = layout.back().first;
+    for (size_t i = 0; i + 1 < layout.size(); ++i)
+      outer_.insert(layout[i].first);
+  }
+
+  void run() {
+    for_each_term([&](BoxTerm& t, const Offsets& off) {
+      std::set<const LocalVar*> seen;
+      find(t.partial, false, off, seen);
+    });
+    for (const auto& key : order_) {
+      const Found& f = found_.at(key);
+      if (f.inner.size() < 2 || *f.inner.rbegin() - *f.inner.begin() > kMaxSpan)
+        continue;
+      SharedValue v;
+      v.name = k_.fresh(fmt::format("shared{}", loop_.shared.size()));
+      v.lo_name = k_.fresh(v.name + "_lo");
+      v.value = f.value;
+      v.lo = *f.inner.begin();
+      v.hi = *f.inner.rbegin();
+      v.outer = f.outer;
+      buffer_[key] = loop_.shared.size();
+      loop_.shared.push_back(v);
+    }
+    if (loop_.shared.empty())
+      return;
+    for_each_term([&](BoxTerm& t, const Offsets& off) {
+      std::map<const LocalVar*, ExprP> memo;
+      t.partial = rewrite(t.partial, false, off, memo);
+    });
+  }
+
+private:
+  struct Found {
+    ExprP value;
+    std::set<long long> inner;
+    std::map<std::string, long long> outer;
+  };
+
+  // Each interior term that no run-time guard holds, with its offsets. (Not
+  // those of a group that sums over counters inside the cell: such a loop
+  // may run no iteration, and its terms compute nothing.)
+  template <typename F> void for_each_term(F&& f) {
+    for (size_t gi = 0; gi < loop_.groups.size(); ++gi) {
+      const GatherGroup& g = *loop_.groups[gi];
+      if (!g.reduced.empty())
+        continue;
+      for (size_t bi = 0; bi < g.blocks.size(); ++bi) {
+        const Block& b = g.blocks[bi];
+        if (!b.bulk)
+          continue;
+        Offsets off;
+        for (const auto& [v, c] : g.layout) {
+          auto it = b.shift.find(v);
+          const Poly back = it == b.shift.end() ? Poly() : -it->second;
+          if (back.is_constant())
+            off[v] = back.constant_term();
+        }
+        for (auto& t : loop_.interior_terms[gi][bi])
+          if (t.guards.empty())
+            f(t, off);
+      }
+    }
+  }
+
+  // The value's shape if it may be shared (see share.hpp), else nullopt.
+  const std::optional<ValueShape>& shape(const ExprP& e) {
+    auto it = shapes_.find(e.get());
+    if (it != shapes_.end())
+      return it->second.second;
+    std::optional<ValueShape> s = make_shape(e);
+    return shapes_.emplace(e.get(), std::make_pair(e, std::move(s))).first->second.second;
+  }
+
+  std::optional<ValueShape> make_shape(const ExprP& e) const {
+    int budget = kMaxNodes;
+    if (!costly(e) || !small(e, budget))
+      return std::nullopt;
+    const ExprP x = inlined(e);
+    if (!safe_anywhere(x))
+      return std::nullopt;
+    ValueShape s;
+    bool ok = true, inner = false;
+    std::function<void(const ExprP&)> check = [&](const ExprP& n) {
+      switch (n->op) {
+      case Op::Mul: // (a real product could be contracted with a sum otherwise than in place)
+        if (is_real(n->type)) {
+          ok = false;
+          return;
+        }
+        break;
+      case Op::Select:
+      case Op::And:
+      case Op::Or:
+        ok = false;
+        return;
+      case Op::LoopVar:
+        if (n->name == inner_)
+          inner = true;
+        else if (outer_.count(n->name))
+          s.outer.insert(n->name);
+        else
+          ok = false; // a counter summed over inside the cell
+        return;
+      case Op::Read: {
+        const std::optional<Poly> p = n->shape.view ? std::nullopt : to_poly(n->ops[0]);
+        ok = ok && p && affine_in_inner(*p);
+        break;
+      }
+      case Op::Local:
+        return; // (kernel-level: the same everywhere)
+      default:
+        break;
+      }
+      for (const auto& o : n->ops)
+        if (ok)
+          check(o);
+    };
+    check(x);
+    if (!ok || !inner)
+      return std::nullopt;
+    s.text = print(x);
+    return s;
+  }
+
+  bool affine_in_inner(const Poly& p) const {
+    const Sym c = Sym::counter(inner_);
+    for (const auto& [m, coef] : p.terms())
+      if (std::count(m.begin(), m.end(), c) > 1)
+        return false;
+    return true;
+  }
+
+  // The key of `e` at a term with offsets `off`, and its innermost shift;
+  // nullopt when it is not shared there.
+  std::optional<std::pair<std::string, long long>> key(const ExprP& e, const Offsets& off) {
+    const std::optional<ValueShape>& s = shape(e);
+    if (!s || !off.count(inner_))
+      return std::nullopt;
+    std::string key = s->text;
+    for (const auto& v : s->outer) {
+      auto it = off.find(v);
+      if (it == off.end())
+        return std::nullopt;
+      key += fmt::format(" | {} + {}", v, it->second);
+    }
+    return std::make_pair(key, off.at(inner_));
+  }
+
+  // Records the unconditional occurrences of shareable values in `e`. A
+  // local's definition counts where the term defines it: before anything
+  // else, unconditionally (emit.cpp's define_locals).
+  void find(const ExprP& e, bool cond, const Offsets& off, std::set<const LocalVar*>& seen) {
+    if (!cond) {
+      if (auto k = key(e, off)) {
+        auto [it, fresh] = found_.try_emplace(k->first);
+        if (fresh) {
+          order_.push_back(k->first);
+          it->second.value = e;
+          for (const auto& v : shape(e)->outer)
+            it->second.outer[v] = off.at(v);
+        }
+        it->second.inner.insert(k->second);
+        return;
+      }
+    }
+    if (e->op == Op::Local) {
+      if (!e->local->kernel_level && seen.insert(e->local.get()).second)
+        find(e->local->def, false, off, seen);
+      return;
+    }
+    for (size_t i = 0; i < e->ops.size(); ++i)
+      find(e->ops[i], cond || conditional(e, i), off, seen);
+  }
+
+  // Operand i of `e` is evaluated only under a condition.
+  static bool conditional(const ExprP& e, size_t i) {
+    return (e->op == Op::Select && i > 0) || ((e->op == Op::And || e->op == Op::Or) && i > 0);
+  }
+
+  ExprP rewrite(const ExprP& e, bool cond, const Offsets& off,
+                std::map<const LocalVar*, ExprP>& memo) {
+    if (!cond) {
+      if (auto k = key(e, off)) {
+        auto b = buffer_.find(k->first);
+        if (b != buffer_.end()) {
+          const SharedValue& v = loop_.shared[b->second];
+          return read(v.name, binary(Op::Sub, loop_var(inner_), param(v.lo_name, Type::Int)),
+                      e->type, SourcePos{});
+        }
+        return e; // (as find: a value is not looked into)
+      }
+    }
+    if (e->op == Op::Local) {
+      if (e->local->kernel_level)
+        return e;
+      auto it = memo.find(e->local.get());
+      if (it != memo.end())
+        return it->second;
+      ExprP out = e;
+      ExprP def = rewrite(e->local->def, false, off, memo);
+      if (def != e->local->def) {
+        auto l = std::make_shared<LocalVar>(*e->local); // (same id and name)
+        l->def = def;
+        out = local_ref(l);
+      }
+      return memo[e->local.get()] = out;
+    }
+    size_t i = 0;
+    return map_operands(e, [&](const ExprP& o) {
+      const bool c = cond || conditional(e, i++);
+      return rewrite(o, c, off, memo);
+    });
+  }
+
+  const Kernel& k_;
+  CellLoop& loop_;
+  std::string inner_;
+  std::set<std::string> outer_;
+  // Shapes by node (the node kept alive, so its address is not reused).
+  std::map<const Expr*, std::pair<ExprP, std::optional<ValueShape>>> shapes_;
+  std::map<std::string, Found> found_;
+  std::vector<std::string> order_;       // keys in order of first occurrence
+  std::map<std::string, size_t> buffer_; // key -> index in loop_.shared
+};
+
+} // namespace
+
+void share_shifted_values(LoopPlan& plan) {
+  for (auto& s : plan.stages)
+    share_shifted_values(s);
+  if (!plan.stages.empty())
+    return; // (a staged adjoint's loops are its stages')
+  for (auto& in : plan.inputs)
+    for (auto& step : in.gathers)
+      for (auto& loop : step.loops) {
+        if (!loop.shared.empty())
+          throw std::logic_error("internal error: share: the plan's values are shared already");
+        if (loop.any_bulk && !loop.groups.front()->layout.empty())
+          Sharer(*plan.adjoint->kernel, loop).run();
+      }
+}
+
+} // namespace dpgen

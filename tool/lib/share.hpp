@@ -1,0 +1,41 @@
+// The pass `share` (after hoist, before emit): a value that the interior
+// terms of a gather loop compute at several shifts of the innermost counter
+// (the upwind adjoint's `u[i] / dx` at i = c_i - 1, c_i and c_i + 1) is
+// computed once per iteration of a strip of cells into a buffer, which the
+// terms read. The planned terms are rewritten in place (CellLoop::shared);
+// emit prints the strips.
+#pragma once
+
+#include "loop_plan.hpp"
+
+namespace dpgen {
+
+/// Cells of one strip of the innermost interior loop (emit: a buffer of a
+/// shared value holds this many elements and the span of its shifts).
+constexpr int kShareStripCells = 256;
+
+/// The pass, for an adjoint's gather loops (each stage's, for a staged
+/// adjoint). Why: each recomputation of a division or a math function costs
+/// what the forward paid once per iteration (SSE2 divides two doubles at a
+/// time, and more slowly than it multiplies), so the upwind adjoint with a
+/// CMake Release build's flags was bound by its three divisions per cell.
+///
+/// What is shared: a subexpression that a term of the interior evaluates
+/// unconditionally (not under the store's run-time guard, not in an arm of a
+/// conditional or the right operand of && or ||), that is a real division or
+/// a call of a costly math function (sqrt, cbrt, exp, expm1, log, log1p, pow,
+/// sin, cos, tanh, atan2, hypot, erf), depends on the iteration only through
+/// the layout's counters (not in a group that sums over counters inside the
+/// cell), and is met
+/// at two or more shifts of the innermost counter (at most 16 apart), with
+/// the same shifts of the other counters it mentions. It must be safe to
+/// evaluate at the iterations between those (hoist.hpp: safe_anywhere; no
+/// conditional inside; every array read at an index affine in the innermost
+/// counter, not through an accessor class, so an index between two that the
+/// terms read is in bounds too). The buffer holds the very same expression
+/// tree; it may hold no real product (through its locals), so that no
+/// multiply-add can be contracted otherwise than in place, and every result
+/// stays bit-identical.
+void share_shifted_values(LoopPlan& plan);
+
+} // namespace dpgen
