@@ -34,6 +34,12 @@ static cl::opt<bool> torch("torch",
                            cl::desc("write <stem>_torch.{hpp,cpp} (PyTorch autograd ops calling the "
                                     "kernels and their adjoints) instead of the adjoint files"),
                            cl::cat(category));
+static cl::opt<bool> no_share("no-share",
+                              cl::desc("leave out the pass share: each adjoint cell computes the "
+                                       "values it reads at neighbouring iterations itself instead "
+                                       "of reading them from its strip's buffer (the same "
+                                       "results; for comparing)"),
+                              cl::cat(category));
 static cl::opt<bool> verbose("v",
                              cl::desc("report written and unchanged files, and where "
                                       "dpgen/annotate.hpp is found"),
@@ -142,5 +148,6 @@ int main(int argc, const char** argv) {
   opts.tangent = tangent;
   opts.stamp = stamp;
   opts.torch = torch;
+  opts.share = !no_share;
   return dpgen::generate(std::vector<std::string>(inputs.begin(), inputs.end()), opts);
 }

@@ -5,6 +5,9 @@
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %dpgen --print-after=share %s --out-dir %t -- -I%runtime_inc | FileCheck %s
 // RUN: FileCheck %s --check-prefix=CODE < %t/share_adjoint.cpp
+// RUN: %dpgen --no-share %s --out-dir %t/off -- -I%runtime_inc
+// RUN: FileCheck %s --check-prefix=OFF < %t/off/share_adjoint.cpp
+// RUN: %dpgen --print-after=share %S/../styles/shifted_quotients.cpp --out-dir %t/styles -- -I%runtime_inc | FileCheck %s --check-prefix=STYLE
 #include "dpgen/annotate.hpp"
 
 #include <cmath>
@@ -40,23 +43,72 @@ DPGEN_KERNEL void speed_switch(DPGEN_IN const double* q, DPGEN_IN const double* 
 // CODE-NEXT: #pragma omp parallel for
 // CODE-NEXT: for (std::ptrdiff_t c_i = in_lo_i; c_i < in_hi_i; c_i += 256)
 // CODE-NEXT: interior(c_i, std::min<std::ptrdiff_t>(c_i + 256, in_hi_i));
+// With --no-share each cell computes it, as before the pass.
+// OFF-LABEL: void speed_switch_adjoint(
+// OFF-NOT: shared0
+// OFF: const double c = u[i] / dx;
+// OFF-NOT: shared0
+// OFF-LABEL: void speed_switch_adjoint_checked(
 
 // Not shared: a real product (`u[i] * dt / dx`: a multiply-add could be
 // contracted otherwise), a quotient only in a conditional's arm (the source
-// computes it where the condition holds), one under the store's run-time
-// guard, one read at one shift only (exp(u[i])).
+// computes it where the condition holds: q's partials at i = c_i - 1 and
+// c_i + 1 are 1.0 / (1.0 + |u[i]|) in that arm), one under the store's
+// run-time guard, one read at one shift only (exp(u[i])), one with an integer
+// division inside (it may trap where the source would not run it), a pow
+// (GCC writes pow(x, 2.0) as a product).
 // CHECK-LABEL: shared in not_shared
 // CHECK-NEXT: // -- IR after share
 DPGEN_KERNEL void not_shared(DPGEN_IN const double* q, DPGEN_IN const double* u,
                              DPGEN_IN const double* mask, DPGEN_OUT double* a,
-                             DPGEN_OUT double* b, DPGEN_OUT double* c, int n, double dt,
-                             double dx) {
+                             DPGEN_OUT double* b, DPGEN_OUT double* c, DPGEN_OUT double* d,
+                             DPGEN_OUT double* e, int n, double dt, double dx) {
   for (int i = 1; i < n - 1; ++i) {
     const double w = u[i] * dt / dx;
-    a[i] = w * (q[i + 1] - q[i - 1]) + (q[i] > 0.0 ? q[i + 1] / dx : q[i - 1]);
+    a[i] = w * (q[i + 1] - q[i - 1]) +
+           (q[i] > 0.0 ? (q[i + 1] - q[i - 1]) / (1.0 + std::fabs(u[i])) : 0.0);
     if (mask[i] > 0.0)
       b[i] = std::sqrt(2.0 + std::fabs(q[i])) * (q[i + 1] - q[i - 1]);
     c[i] = std::exp(u[i]) * q[i];
+    d[i] = std::sqrt(1.0 + std::fabs(u[i] / static_cast<double>(n / 2))) * (q[i + 1] - q[i - 1]);
+    e[i] = std::pow(u[i], 2.0) * (q[i + 1] - q[i - 1]);
+  }
+}
+
+// Not shared either: shifts 18 apart (more than 16), a read at an index that
+// is not affine in the counter (through a map).
+// CHECK-LABEL: shared in far_apart
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void far_apart(DPGEN_IN const double* q, DPGEN_IN const double* u,
+                            DPGEN_OUT double* out, int n) {
+  for (int i = 9; i < n - 9; ++i)
+    out[i] = std::sqrt(1.0 + std::fabs(u[i])) * (q[i + 9] - q[i - 9]);
+}
+// CHECK-LABEL: shared in through_map
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void through_map(DPGEN_IN const double* q, const double* coef, const int* map,
+                              DPGEN_OUT double* out, int n) {
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = std::sqrt(1.0 + std::fabs(coef[map[i]])) * (q[i + 1] - q[i - 1]);
+}
+
+// At most 16 buffers per loop (each up to 272 values on the stack of the
+// thread that runs the strip), in order of first use: the 17th quotient is
+// computed in place.
+// CHECK-LABEL: shared in seventeen
+// CHECK: shared15 = u[i] / (16.0 + a)
+// CHECK-NOT: shared16
+// CHECK: // -- IR after share
+DPGEN_KERNEL void seventeen(DPGEN_IN const double* q, DPGEN_IN const double* u,
+                            DPGEN_OUT double* out, int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double a = std::fabs(u[i]);
+    const double s = u[i] / (1.0 + a) + u[i] / (2.0 + a) + u[i] / (3.0 + a) + u[i] / (4.0 + a) +
+                     u[i] / (5.0 + a) + u[i] / (6.0 + a) + u[i] / (7.0 + a) + u[i] / (8.0 + a) +
+                     u[i] / (9.0 + a) + u[i] / (10.0 + a) + u[i] / (11.0 + a) +
+                     u[i] / (12.0 + a) + u[i] / (13.0 + a) + u[i] / (14.0 + a) +
+                     u[i] / (15.0 + a) + u[i] / (16.0 + a) + u[i] / (17.0 + a);
+    out[i] = s * (q[i + 1] - q[i - 1]);
   }
 }
 
@@ -84,4 +136,16 @@ DPGEN_KERNEL void two_stage(DPGEN_IN const double* q, DPGEN_OUT double* out, int
 }
 // CODE-LABEL: void two_stage_nest2_adjoint(
 // CODE: double shared0_[258];
-// CODE: shared0_[i - shared0__lo] = std::sqrt(1.0 + std::abs(dpgen_buf_w[i]));
+// CODE: shared0_[i - shared0_lo] = std::sqrt(1.0 + std::abs(dpgen_buf_w[i]));
+
+// The style kernels (tests/styles/shifted_quotients.cpp): the 9-point kernel
+// shares its weight along each of the three rows a cell's terms read it in.
+// STYLE-LABEL: shared in sqrt_conductivity2d
+// STYLE-NEXT: cells of [phi]: shared0 = std::sqrt(1.0f + std::abs(phi[c])) at i = c_i - 1 ..= c_i + 1, j = c_j
+// STYLE-LABEL: shared in ninepoint_weights
+// STYLE-NEXT: cells of [a]: shared0 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j + 1
+// STYLE-NEXT: cells of [a]: shared1 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j
+// STYLE-NEXT: cells of [a]: shared2 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j - 1
+// STYLE-NEXT: // -- IR after share
+// STYLE-NEXT: shared in ratio_in_branch
+// STYLE-EMPTY:

@@ -492,16 +492,19 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
       }
       return;
     }
+    // (`step` cells at a time, `fn` called with `call_args`: a strip; else cell by cell)
     auto loop = [&](const std::string& from, const std::string& to, const std::string& fn,
-                    bool threads) {
+                    bool threads, int step = 1, const std::string& call_args = "") {
+      const std::string next = step == 1 ? "++" + cell(v) : fmt::format("{} += {}", cell(v), step);
       const std::string for_line =
-          fmt::format("for ({} {} = {}; {} < {}; ++{})", t, cell(v), from, cell(v), to, cell(v));
+          fmt::format("for ({} {} = {}; {} < {}; {})", t, cell(v), from, cell(v), to, next);
+      const std::string call = fmt::format("{}({});", fn, call_args.empty() ? args : call_args);
       if (threads) {
-        threaded_loop(code, parallel_ok, for_line, fmt::format("{}({});", fn, args));
+        threaded_loop(code, parallel_ok, for_line, call);
         return;
       }
       code.line("{}", for_line);
-      code.line("  {}({});", fn, args);
+      code.line("  {}", call);
     };
     bool top = level == 0;
     if (!any_bulk) {
@@ -529,16 +532,8 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
           fmt::format("std::min<{}>({} + {}, {})", t, cell(v), kShareStripCells, in_hi(v)));
       code.line("// the interior in strips of {} cells, which share values (above)",
                 kShareStripCells);
-      const std::string header =
-          fmt::format("for ({} {} = {}; {} < {}; {} += {})", t, cell(v), in_lo(v), cell(v),
-                      in_hi(v), cell(v), kShareStripCells);
-      const std::string call = fmt::format("{}({});", interior_fn, fmt::join(strip_args, ", "));
-      if (top) {
-        threaded_loop(code, parallel_ok, header, call);
-      } else {
-        code.line("{}", header);
-        code.line("  {}", call);
-      }
+      loop(in_lo(v), in_hi(v), interior_fn, top, kShareStripCells,
+           fmt::format("{}", fmt::join(strip_args, ", ")));
     } else {
       loop(in_lo(v), in_hi(v), interior_fn, top);
     }

@@ -24,7 +24,7 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
   std::vector<PendingFile> pending;
   std::set<std::string> stems;
   std::vector<std::string> deps;
-  const auto forms = output_forms(opts.torch, opts.tangent);
+  const auto forms = output_forms(opts.torch, opts.tangent, opts.share);
   for (const auto& input : inputs) {
     std::vector<Kernel> kernels;
     if (!llvm::sys::fs::exists(input)) {

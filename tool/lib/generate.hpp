@@ -19,6 +19,9 @@ struct GenerateOptions {
   /// a make-style dependency file listing every file the kernels include.
   std::string stamp;
   bool torch = false; // write <stem>_torch.{hpp,cpp} (PyTorch ops) instead of the adjoints
+  /// Run the pass `share` (share.hpp); --no-share: every cell computes the
+  /// values itself, for comparing results.
+  bool share = true;
   /// Passes (pass_names(), ir_text.hpp) after which the IR is printed to
   /// stdout in its text form.
   std::set<std::string> print_after;

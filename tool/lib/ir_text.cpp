@@ -375,6 +375,7 @@ std::string print_hoisted(const LoopPlan& plan) {
 std::string print_shared(const LoopPlan& plan) {
   std::string out = fmt::format("shared in {}\n", plan.adjoint->kernel->name);
   auto loops = [&](const LoopPlan& p, const std::string& label, auto&& self) -> void {
+    const Kernel& k = *p.adjoint->kernel;
     for (size_t s = 0; s < p.stages.size(); ++s)
       self(p.stages[s], fmt::format("stage {}: ", s + 1), self);
     for (const auto& in : p.inputs)
@@ -387,8 +388,8 @@ std::string print_shared(const LoopPlan& plan) {
                                      ? std::string()
                                      : loop.groups.front()->layout.back().first;
           for (const auto& sv : loop.shared) {
-            auto at = [](const std::string& u, long long shift) {
-              return (Poly::symbol("c_" + u) + Poly::constant(shift)).code();
+            auto at = [&](const std::string& u, long long shift) { // (emit's cell counter)
+              return (Poly::symbol(k.fresh("c_" + u)) + Poly::constant(shift)).code();
             };
             std::string outer;
             for (const auto& [u, shift] : sv.outer)

@@ -11,7 +11,9 @@
 // plan: it decides no box, bound, fusion or test, and rewrites no
 // expression. Each term's expressions are specialized here to the box the
 // plan puts it in (loop_plan.cpp's Specializer); the pass `hoist` (hoist.hpp)
-// then moves their loop-invariant subexpressions before the loops.
+// then moves their loop-invariant subexpressions before the loops, and the
+// pass `share` (share.hpp) has the interior compute values its terms read at
+// several shifts once per cell of a strip.
 #pragma once
 
 #include "affine.hpp"
@@ -64,7 +66,9 @@ struct EdgeReach {
 /// the index of the seed it multiplies and the store's run-time conditions
 /// (each as it must hold), with the conditional expressions the box decides
 /// folded (an interior loop reads a[i + 1], not a[(i == n - 1) ? 0 : i + 1]).
-/// (After the pass `hoist`, the expressions use the plan's hoisted locals.)
+/// (After the pass `hoist`, the expressions use the plan's hoisted locals;
+/// after the pass `share`, an interior term may read a shared value's buffer,
+/// `shared0[i - shared0_lo]`, which emit defines in the interior's function.)
 struct BoxTerm {
   Box box;
   ExprP partial;

@@ -29,6 +29,7 @@ std::string out_path(const FileIR& ir, const std::string& suffix) {
 // strips of cells (share_shifted_values).
 class AdjointFiles : public OutputForm {
 public:
+  explicit AdjointFiles(bool share) : share_(share) {}
   const char* name() const override { return "adjoint"; }
 
   bool add_files(const FileIR& ir, std::vector<PendingFile>& files) const override {
@@ -42,9 +43,11 @@ public:
       ir.enter("hoist", p.kernel);
       hoist_invariants(loops.back());
       ir.print_after("hoist", [&] { return print_hoisted(loops.back()); });
-      ir.enter("share", p.kernel);
-      share_shifted_values(loops.back());
-      ir.print_after("share", [&] { return print_shared(loops.back()); });
+      if (share_) {
+        ir.enter("share", p.kernel);
+        share_shifted_values(loops.back());
+        ir.print_after("share", [&] { return print_shared(loops.back()); });
+      }
     }
     ir.enter("emit", nullptr);
     EmittedFile f = emit_file(loops, ir.source_name, ir.stem);
@@ -53,6 +56,9 @@ public:
     files.push_back({out_path(ir, "_kernels.hpp"), f.kernels});
     return true;
   }
+
+private:
+  bool share_;
 };
 
 // <stem>_tangent.{hpp,cpp}: forward mode (Jacobian-vector products), the
@@ -86,13 +92,13 @@ public:
 
 } // namespace
 
-std::vector<std::unique_ptr<OutputForm>> output_forms(bool torch, bool tangent) {
+std::vector<std::unique_ptr<OutputForm>> output_forms(bool torch, bool tangent, bool share) {
   std::vector<std::unique_ptr<OutputForm>> forms;
   if (torch) {
     forms.push_back(std::make_unique<TorchFiles>());
     return forms;
   }
-  forms.push_back(std::make_unique<AdjointFiles>());
+  forms.push_back(std::make_unique<AdjointFiles>(share));
   if (tangent)
     forms.push_back(std::make_unique<TangentFiles>());
   return forms;

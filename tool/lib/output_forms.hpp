@@ -46,7 +46,8 @@ public:
 };
 
 /// The forms to write: the PyTorch ops (`torch`), else the adjoint files and,
-/// with `tangent`, the tangent files.
-std::vector<std::unique_ptr<OutputForm>> output_forms(bool torch, bool tangent);
+/// with `tangent`, the tangent files. `share`: the adjoint files' loops go
+/// through the pass `share` (share.hpp).
+std::vector<std::unique_ptr<OutputForm>> output_forms(bool torch, bool tangent, bool share = true);
 
 } // namespace dpgen

@@ -23,12 +23,16 @@ namespace {
 constexpr long long kMaxSpan = 16;
 // A value larger than this (its locals expanded) is not shared; its parts may be.
 constexpr int kMaxNodes = 200;
+// The most buffers one loop's strips hold (each at most 272 doubles on the stack of the
+// thread that runs the strip); values met later are computed in place, as before.
+constexpr size_t kMaxBuffers = 16;
 
 // A real division, or a math function that costs more than a multiplication.
+// (Not pow: GCC writes pow(x, 2.0) as x * x, a product that a sum next to it
+// may take into a fused multiply-add in place but not in a buffer.)
 bool costly(const ExprP& e) {
-  static const std::set<std::string> calls = {"sqrt",  "cbrt",  "exp", "expm1", "log",
-                                              "log1p", "pow",   "sin", "cos",   "tanh",
-                                              "atan2", "hypot", "erf"};
+  static const std::set<std::string> calls = {"sqrt", "cbrt", "exp",  "expm1", "log",   "log1p",
+                                              "sin",  "cos",  "tanh", "atan2", "hypot", "erf"};
   return is_real(e->type) && (e->op == Op::Div || (e->op == Op::Call && calls.count(e->name)));
 }
 
@@ -80,9 +84,12 @@ public:
       const Found& f = found_.at(key);
       if (f.inner.size() < 2 || *f.inner.rbegin() - *f.inner.begin() > kMaxSpan)
         continue;
+      if (loop_.shared.size() == kMaxBuffers)
+        break;
       SharedValue v;
-      v.name = k_.fresh(fmt::format("shared{}", loop_.shared.size()));
-      v.lo_name = k_.fresh(v.name + "_lo");
+      const std::string base = fmt::format("shared{}", loop_.shared.size());
+      v.name = k_.fresh(base);
+      v.lo_name = k_.fresh(base + "_lo");
       v.value = f.value;
       v.lo = *f.inner.begin();
       v.hi = *f.inner.rbegin();
@@ -125,7 +132,7 @@ private:
             off[v] = back.constant_term();
         }
         for (auto& t : loop_.interior_terms[gi][bi])
-          if (t.guards.empty())
+          if (t.guards.empty() && t.factor < 0) // (a factored term prints no partial)
             f(t, off);
       }
     }
@@ -162,6 +169,12 @@ private:
       case Op::Or:
         ok = false;
         return;
+      case Op::Call:
+        if (n->name == "pow") { // (may be a product: see costly)
+          ok = false;
+          return;
+        }
+        break;
       case Op::LoopVar:
         if (n->name == inner_)
           inner = true;
@@ -241,9 +254,9 @@ private:
       find(e->ops[i], cond || conditional(e, i), off, seen);
   }
 
-  // Operand i of `e` is evaluated only under a condition.
+  // Operand i of `e` is evaluated only under a condition (an arm, the right of && or ||).
   static bool conditional(const ExprP& e, size_t i) {
-    return (e->op == Op::Select && i > 0) || ((e->op == Op::And || e->op == Op::Or) && i > 0);
+    return i > 0 && (e->op == Op::Select || e->op == Op::And || e->op == Op::Or);
   }
 
   ExprP rewrite(const ExprP& e, bool cond, const Offsets& off,
@@ -251,12 +264,19 @@ private:
     if (!cond) {
       if (auto k = key(e, off)) {
         auto b = buffer_.find(k->first);
+        // (find met this occurrence, so its shift is in the buffer's range; checked all the
+        // same, as an index outside it would read past the buffer)
         if (b != buffer_.end()) {
           const SharedValue& v = loop_.shared[b->second];
+          if (k->second < v.lo || k->second > v.hi)
+            throw std::logic_error("internal error: share: a shift outside the buffer's range");
           return read(v.name, binary(Op::Sub, loop_var(inner_), param(v.lo_name, Type::Int)),
                       e->type, SourcePos{});
         }
-        return e; // (as find: a value is not looked into)
+        // As find, a value not shared is not looked into. (A local inside it that the term
+        // also uses elsewhere keeps its definition here and may be rewritten there: the same
+        // name for the same value, and the term defines it once.)
+        return e;
       }
     }
     if (e->op == Op::Local) {

@@ -26,16 +26,18 @@ constexpr int kShareStripCells = 256;
 /// a call of a costly math function (sqrt, cbrt, exp, expm1, log, log1p, pow,
 /// sin, cos, tanh, atan2, hypot, erf), depends on the iteration only through
 /// the layout's counters (not in a group that sums over counters inside the
-/// cell), and is met
-/// at two or more shifts of the innermost counter (at most 16 apart), with
-/// the same shifts of the other counters it mentions. It must be safe to
+/// cell), and is met at two or more shifts of the innermost counter (at most
+/// 16 apart), with the same shifts of the other counters it mentions; at
+/// most 16 buffers per loop, in order of first use. It must be safe to
 /// evaluate at the iterations between those (hoist.hpp: safe_anywhere; no
 /// conditional inside; every array read at an index affine in the innermost
 /// counter, not through an accessor class, so an index between two that the
 /// terms read is in bounds too). The buffer holds the very same expression
 /// tree; it may hold no real product (through its locals), so that no
 /// multiply-add can be contracted otherwise than in place, and every result
-/// stays bit-identical.
+/// stays bit-identical (under the compiler's IEEE rules: with -ffast-math
+/// it may evaluate a math function in a vectorized fill loop otherwise than
+/// one by one). `dpgen --no-share` leaves the pass out, to compare.
 void share_shifted_values(LoopPlan& plan);
 
 } // namespace dpgen
