@@ -52,6 +52,10 @@ bool safe_anywhere(const ExprP& e) {
   });
 }
 
+bool may_be_product(const ExprP& e) {
+  return is_real(e->type) && (e->op == Op::Mul || (e->op == Op::Call && e->name == "pow"));
+}
+
 namespace {
 
 // Costs an instruction worth saving (a lone cast or sum of parameters does not).
@@ -80,7 +84,7 @@ bool is_leaf(const ExprP& e) {
 bool Hoister::hoistable(const ExprP& e, bool summed) const {
   if (!is_real(e->type) || is_leaf(e) || e->op == Op::Neg)
     return false;
-  if (summed && e->op == Op::Mul) // a * b + c: may become one fused multiply-add
+  if (summed && may_be_product(e)) // a * b + c: may become one fused multiply-add
     return false;
   std::map<const LocalVar*, bool> memo;
   if (!invariant(e, memo) || !safe_anywhere(e) || !worth_hoisting(e))
@@ -156,9 +160,8 @@ ExprP Hoister::rewrite(const ExprP& e, bool summed) {
 bool Hoister::movable(const ExprP& e) const {
   const ExprP& def = e->local->def;
   std::map<const LocalVar*, bool> memo;
-  if (!is_real(def->type) || !invariant(def, memo) || !safe_anywhere(def) ||
-      !worth_hoisting(def) || def->op == Op::Mul ||
-      (def->op == Op::Neg && def->ops[0]->op == Op::Mul))
+  if (!is_real(def->type) || !invariant(def, memo) || !safe_anywhere(def) || !worth_hoisting(def) ||
+      may_be_product(def) || (def->op == Op::Neg && may_be_product(def->ops[0])))
     return false;
   auto it = moved_.find(e->local->name);
   if ((it != moved_.end() && it->second.first != print(def)) || kept_.count(e->local->name))

@@ -92,6 +92,13 @@ private:
 /// arithmetic and the math functions give a value for every argument.
 bool safe_anywhere(const ExprP& e);
 
+/// A real product as the compiler may see it: `a * b`, or `pow(a, 2.0)`, which
+/// GCC writes as `a * a` even without -ffast-math. A sum next to it may take it
+/// into one fused multiply-add where both are in place (-ffp-contract=fast, the
+/// default with FMA), so a pass that moves it away from the sum changes the
+/// result's rounding.
+bool may_be_product(const ExprP& e);
+
 /// The pass: for an adjoint, its gather and scatter loops (LoopPlan::hoisted),
 /// each stage's (a staged adjoint) and the kernel's forward loops
 /// (LoopPlan::forward); the expressions are visited in the order emit prints

@@ -28,8 +28,7 @@ constexpr int kMaxNodes = 200;
 constexpr size_t kMaxBuffers = 16;
 
 // A real division, or a math function that costs more than a multiplication.
-// (Not pow: GCC writes pow(x, 2.0) as x * x, a product that a sum next to it
-// may take into a fused multiply-add in place but not in a buffer.)
+// (Not pow: it may be a product, hoist.hpp's may_be_product.)
 bool costly(const ExprP& e) {
   static const std::set<std::string> calls = {"sqrt", "cbrt", "exp",  "expm1", "log",   "log1p",
                                               "sin",  "cos",  "tanh", "atan2", "hypot", "erf"};
@@ -158,19 +157,14 @@ private:
     bool ok = true, inner = false;
     std::function<void(const ExprP&)> check = [&](const ExprP& n) {
       switch (n->op) {
-      case Op::Mul: // (a real product could be contracted with a sum otherwise than in place)
-        if (is_real(n->type)) {
-          ok = false;
-          return;
-        }
-        break;
       case Op::Select:
       case Op::And:
       case Op::Or:
         ok = false;
         return;
+      case Op::Mul:
       case Op::Call:
-        if (n->name == "pow") { // (may be a product: see costly)
+        if (may_be_product(n)) { // (it could be contracted with a sum otherwise than in place)
           ok = false;
           return;
         }
