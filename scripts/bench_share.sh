@@ -7,7 +7,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dpgen=${1:-$root/build/tool/dpgen}
-[ -x "$dpgen" ] || { echo "error: $dpgen not built (cmake --build build --target dpgen)" >&2; exit 1; }
+[ -x "$dpgen" ] ||
+  { echo "error: $dpgen not built (cmake --build build --target dpgen)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 inc=$root/runtime/include

@@ -14,6 +14,10 @@ prologue and epilogue, whose cells move with the alignment of the arrays and
 with the threads' ranges, in the adjoints with the pass and without it alike;
 there the two must agree to rounding (relative 1e-5, float's few ulps).
 
+(scripts/compare_results.sh compares two dpgen builds on any kernel file, but
+at one size, N = 101: below one strip. This test runs the sizes around a strip
+of 256 cells and the threaded loop's threshold, on 1 and 2 threads.)
+
   share_same_bits.py --dpgen D --include I [--cxx g++] [--keep DIR]
 """
 import argparse
