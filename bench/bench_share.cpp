@@ -1,6 +1,8 @@
 // The pass `share` side by side with `dpgen --no-share` (scripts/bench_share.sh): the adjoint
-// of the upwind step (u[i] / dx at three shifts: one division per cell instead of three) and
-// of a tanh limiter (tanh(d / w) at three shifts: one tanh per cell instead of three), each
+// of the upwind step (u[i] / dx at three shifts: one division per cell instead of three), of a
+// tanh limiter (tanh(d / w) at three shifts: one tanh per cell instead of three) and of a flux
+// form that spells the speed per neighbour and branches on the face speeds (u[i - 1] / dx,
+// u[i] / dx, u[i + 1] / dx in guarded terms too: one division per cell instead of 15), each
 // generated both ways and linked into this one program under two names, called alternately
 // on the same arrays; nanoseconds per cell, the fastest and the median of 31 alternating
 // trials, on the threads OpenMP gives (OMP_NUM_THREADS).
@@ -19,6 +21,10 @@ void upwind_step_adjoint_noshare(const double*, double*, const double*, double*,
                                  double, double);
 void limit_rho_adjoint_share(const double*, double*, const double*, int, double);
 void limit_rho_adjoint_noshare(const double*, double*, const double*, int, double);
+void flux_form_upwind_adjoint_share(const double*, double*, const double*, double*, const double*,
+                                    int, double, double);
+void flux_form_upwind_adjoint_noshare(const double*, double*, const double*, double*, const double*,
+                                      int, double, double);
 
 namespace {
 
@@ -61,6 +67,10 @@ int main() {
     side_by_side("limit_rho (tanh)", n, [&](bool share) {
       (share ? limit_rho_adjoint_share : limit_rho_adjoint_noshare)(d.data(), d_adj.data(),
                                                                     seed.data(), n, 0.5);
+    });
+    side_by_side("flux_form_upwind", n, [&](bool share) {
+      (share ? flux_form_upwind_adjoint_share : flux_form_upwind_adjoint_noshare)(
+          d.data(), d_adj.data(), u.data(), u_adj.data(), seed.data(), n, 0.1, 0.3);
     });
   }
   return 0;

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The pass `share` against `dpgen --no-share` (bench/bench_share.cpp): generates the adjoints of
-# kernels/upwind_step.cpp and tests/styles/twin_limiter_kernels.cpp both ways, links both into
-# one program (the no-share functions renamed), and times them alternately, with the flags of a
-# CMake Release build (-O3) and with -O3 -march=native, on 1 and 2 threads. Prints markdown.
+# kernels/upwind_step.cpp, tests/styles/twin_limiter_kernels.cpp and
+# tests/styles/shifted_quotients.cpp both ways, links both into one program (each variant's
+# functions renamed), and times them alternately, with the flags of a CMake Release build (-O3)
+# and with -O3 -march=native, on 1 and 2 threads. Prints markdown.
 #   scripts/bench_share.sh [dpgen]        (default: build/tool/dpgen)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,7 +17,8 @@ for v in share noshare; do
   flag=()
   [ $v = noshare ] && flag=(--no-share)
   mkdir -p "$work/$v"
-  for k in kernels/upwind_step.cpp tests/styles/twin_limiter_kernels.cpp; do
+  for k in kernels/upwind_step.cpp tests/styles/twin_limiter_kernels.cpp \
+           tests/styles/shifted_quotients.cpp; do
     "$dpgen" "${flag[@]}" "$root/$k" --out-dir "$work/$v" -- -I"$inc" >/dev/null
   done
 done
@@ -26,9 +28,8 @@ for opt in "-O3" "-O3 -march=native"; do
   for v in share noshare; do
     # Every function of the generated files gets the variant's suffix (one program holds both).
     renames=()
-    for f in upwind_step_adjoint upwind_step_parallel_forward upwind_step_adjoint_checked \
-             limit_rho_adjoint limit_mom_adjoint limit_rho_parallel_forward \
-             limit_mom_parallel_forward limit_rho_adjoint_checked limit_mom_adjoint_checked; do
+    for f in $(grep -ohE '^void [A-Za-z0-9_]+\(' "$work/$v"/*_adjoint.hpp | sed 's/^void //; s/($//' |
+               sort -u); do
       renames+=("-D$f=${f}_$v")
     done
     for src in "$work/$v"/*_adjoint.cpp; do

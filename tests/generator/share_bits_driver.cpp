@@ -44,7 +44,18 @@ int main() {
                             active == 1 ? nullptr : s_adj.data(), seed.data(), n, 0.4);
       print("centred_speed q_adj", n, q_adj);
       print("centred_speed u_adj", n, s_adj);
+      std::vector<double> fq_adj(m, 0.0), fu_adj(m, 0.0); // (u's signs mixed: both upwind cells)
+      flux_form_upwind_adjoint(d.data(), active == 2 ? nullptr : fq_adj.data(), u.data(),
+                               active == 1 ? nullptr : fu_adj.data(), seed.data(), n, 0.1, 0.3);
+      print("flux_form_upwind q_adj", n, fq_adj);
+      print("flux_form_upwind u_adj", n, fu_adj);
     }
+    std::vector<double> w_adj(m, 0.0);
+    mirrored_weights_adjoint(d.data(), w_adj.data(), u.data(), seed.data(), n);
+    print("mirrored_weights", n, w_adj);
+    std::vector<double> g_adj(m, 0.0);
+    gaussian_neighbours_adjoint(d.data(), g_adj.data(), seed.data(), n, 0.7);
+    print("gaussian_neighbours", n, g_adj);
     std::vector<double> r_adj(m, 0.0), m_adj(m, 0.0);
     limit_rho_adjoint(d.data(), r_adj.data(), seed.data(), n, 0.5);
     limit_mom_adjoint(u.data(), m_adj.data(), seed.data(), n, 0.5);

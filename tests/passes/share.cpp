@@ -50,14 +50,81 @@ DPGEN_KERNEL void speed_switch(DPGEN_IN const double* q, DPGEN_IN const double* 
 // OFF-NOT: shared0
 // OFF-LABEL: void speed_switch_adjoint_checked(
 
-// Not shared: a real product (`u[i] * dt / dx`: a multiply-add could be
-// contracted otherwise), a quotient only in a conditional's arm (the source
+// A term under run-time guards (the upwind switch as an if/else) shares what
+// the source computed before branching: the guards' locals (c). Not a local
+// only the guarded branch computes (s, the sqrt).
+// CHECK-LABEL: shared in branch_switch
+// CHECK-NEXT: cells of [q, u]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: cells of [q]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void branch_switch(DPGEN_IN const double* q, DPGEN_IN const double* u,
+                                DPGEN_OUT double* out, int n, double dx) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double c = u[i] / dx;
+    if (c > 0.0) {
+      const double s = std::sqrt(1.0 + std::fabs(q[i]));
+      out[i] = c * s * (q[i] - q[i - 1]);
+    } else
+      out[i] = c * (q[i + 1] - q[i]);
+  }
+}
+// CODE-LABEL: void branch_switch_adjoint(
+// CODE: auto interior = [=](const std::ptrdiff_t strip_lo, const std::ptrdiff_t strip_hi) {
+// CODE: // out[i] reads q[i - 1] at i = c_i + 1: acc += ∂out[i]/∂q[i - 1] · out_adj[i]
+// CODE-NEXT: {
+// CODE-NEXT: const std::ptrdiff_t i = c_i + 1;
+// CODE-NEXT: const double c = shared0[i - shared0_lo];
+// CODE-NEXT: if (c > 0.0) {
+// CODE-NEXT: const double s = std::sqrt(1.0 + std::abs(q[i]));
+
+// Values whose reads differ by a shift of the counter are one value: the
+// quotient at i + 1 is the one at i one iteration later (one buffer; a term
+// reads it one element on). Not where the counter occurs outside an index
+// (1.0 + i, 2.0 + i): their texts would differ, and they stay two buffers.
+// CHECK-LABEL: shared in moved_reads
+// CHECK-NEXT: cells of [q]: shared0 = q[i] / (1.0 + std::abs(q[i])) at i = c_i - 1 ..= c_i + 2
+// CHECK-NEXT: cells of [q]: shared1 = u[i] / (1.0 + static_cast<double>(i)) at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: cells of [q]: shared2 = u[i + 1] / (2.0 + static_cast<double>(i)) at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void moved_reads(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                              int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double a = q[i] / (1.0 + std::fabs(q[i]));
+    const double b = q[i + 1] / (1.0 + std::fabs(q[i + 1]));
+    const double d = q[i + 1] - q[i - 1];
+    out[i] = (a + b) * d + (u[i] / (1.0 + i) + u[i + 1] / (2.0 + i)) * d;
+  }
+}
+// CODE-LABEL: void moved_reads_adjoint(
+// CODE: auto interior = [=](const std::ptrdiff_t strip_lo, const std::ptrdiff_t strip_hi) {
+// CODE: const double b = shared0[i + 1 - shared0_lo];
+
+// A product inside a value is shared where nothing but a sum inside the value
+// takes it (through negations): GCC contracts a product into a multiply-add
+// only where every use of it is a sum, so exp(-(u * u)) computes the same in
+// the buffer as in place. Not sqrt(u * u + 1.0) or 1.0 / (1.0 - u * u * 0.5),
+// whose products a sum takes.
+// CHECK-LABEL: shared in products
+// CHECK-NEXT: cells of [q]: shared0 = std::exp(-(u[i] * u[i])) at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void products(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                           int n) {
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = (std::exp(-(u[i] * u[i])) + std::sqrt(u[i] * u[i] + 1.0) +
+              1.0 / (1.0 - u[i] * u[i] * 0.5)) *
+             (q[i + 1] - q[i - 1]);
+}
+
+// Not shared: a quotient only in a conditional's arm (the source
 // computes it where the condition holds: q's partials at i = c_i - 1 and
 // c_i + 1 are 1.0 / (1.0 + |u[i]|) in that arm), one under the store's
 // run-time guard, one read at one shift only (exp(u[i])), one with an integer
 // division inside (it may trap where the source would not run it), a pow
-// (GCC writes pow(x, 2.0) as a product).
+// (GCC writes pow(x, 2.0) as a product). Shared: w, whose product only the
+// division takes.
 // CHECK-LABEL: shared in not_shared
+// CHECK-NEXT: cells of [q, u]: shared0 = u[i] * dt / dx at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: cells of [q]: shared0 = u[i] * dt / dx at i = c_i - 1 ..= c_i + 1
 // CHECK-NEXT: // -- IR after share
 DPGEN_KERNEL void not_shared(DPGEN_IN const double* q, DPGEN_IN const double* u,
                              DPGEN_IN const double* mask, DPGEN_OUT double* a,
@@ -138,14 +205,32 @@ DPGEN_KERNEL void two_stage(DPGEN_IN const double* q, DPGEN_OUT double* out, int
 // CODE: double shared0_[258];
 // CODE: shared0_[i - shared0_lo] = std::sqrt(1.0 + std::abs(dpgen_buf_w[i]));
 
-// The style kernels (tests/styles/shifted_quotients.cpp): the 9-point kernel
-// shares its weight along each of the three rows a cell's terms read it in.
+// The style kernels (tests/styles/shifted_quotients.cpp): the conductivity
+// at c, c + 1 and c - 1 is one buffer; the 9-point kernel shares its weight
+// along each of the three rows a cell's terms read it in; the flux form's
+// cm, c0, cp are one buffer, read in its guarded terms too (the upwind
+// switch); the weight read at n - 2 - i is the one at n - 1 - i an
+// iteration later; the Gaussian weights at q[i - 1], q[i], q[i + 1] are one
+// buffer, read from q[c_i - 2] to q[c_i + 2].
 // STYLE-LABEL: shared in sqrt_conductivity2d
 // STYLE-NEXT: cells of [phi]: shared0 = std::sqrt(1.0f + std::abs(phi[c])) at i = c_i - 1 ..= c_i + 1, j = c_j
+// STYLE-NEXT: where c = j * nx + i
+// STYLE-NEXT: // -- IR after share
 // STYLE-LABEL: shared in ninepoint_weights
 // STYLE-NEXT: cells of [a]: shared0 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j + 1
 // STYLE-NEXT: cells of [a]: shared1 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j
 // STYLE-NEXT: cells of [a]: shared2 = 1.0 / (2.0 + std::abs(a[j * nx + i])) at i = c_i - 1 ..= c_i + 1, j = c_j - 1
 // STYLE-NEXT: // -- IR after share
 // STYLE-NEXT: shared in ratio_in_branch
+// STYLE-NEXT: // -- IR after share
+// STYLE-NEXT: shared in flux_form_upwind
+// STYLE-NEXT: cells of [q, u]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// STYLE-NEXT: cells of [q]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// STYLE-NEXT: cells of [u]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// STYLE-NEXT: // -- IR after share
+// STYLE-NEXT: shared in mirrored_weights
+// STYLE-NEXT: cells of [q]: shared0 = 1.0 / (1.0 + std::abs(w[n - 1 - i])) at i = c_i ..= c_i + 1
+// STYLE-NEXT: // -- IR after share
+// STYLE-NEXT: shared in gaussian_neighbours
+// STYLE-NEXT: cells of [q]: shared0 = std::exp(-(q[i - 1] * q[i - 1] * inv_two_s2)) at i = c_i - 1 ..= c_i + 3
 // STYLE-EMPTY:

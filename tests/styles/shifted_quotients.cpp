@@ -6,7 +6,12 @@
 // row-major grid, shared along rows (i - 1, i, i + 1) but not across them; a
 // 9-point average weighted by a per-cell reciprocal, shared along each of the
 // rows j - 1, j, j + 1; a quotient in the arm of a conditional, which is not
-// shared (the source computes it only where the condition holds).
+// shared (the source computes it only where the condition holds). Codes that
+// spell one quotient per neighbour (`u[i - 1] / dx`, `u[i] / dx`,
+// `u[i + 1] / dx`, or weights read mirrored at n - 1 - i and n - 2 - i) get
+// one buffer for all of them: each is the others at another iteration. A
+// Gaussian weight exp(-q * q * c) at each neighbour is one buffer too (no sum
+// takes its products, so it is shared).
 #include "dpgen/annotate.hpp"
 
 #include <cmath>
@@ -48,5 +53,40 @@ DPGEN_KERNEL void ratio_in_branch(DPGEN_IN const double* q, DPGEN_OUT double* ou
   for (int i = 1; i < n - 1; ++i) {
     const double a = q[i] - q[i - 1];
     out[i] = a > 0.0 ? a / (1.0 + std::fabs(q[i + 1])) : 0.5 * a;
+  }
+}
+
+// A flux-form upwind step as finite-volume codes write it: the face speeds
+// from the cell speeds on each side, each cell speed spelled per neighbour.
+DPGEN_KERNEL void flux_form_upwind(DPGEN_IN const double* q, DPGEN_IN const double* u,
+                                   DPGEN_OUT double* qn, int n, double dt, double dx) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double cm = u[i - 1] / dx, c0 = u[i] / dx, cp = u[i + 1] / dx;
+    const double ul = 0.5 * (cm + c0), ur = 0.5 * (c0 + cp);
+    const double fl = ul > 0.0 ? ul * q[i - 1] : ul * q[i];
+    const double fr = ur > 0.0 ? ur * q[i] : ur * q[i + 1];
+    qn[i] = q[i] - dt * (fr - fl);
+  }
+}
+
+// Weights read from a coefficient array stored in reverse order.
+DPGEN_KERNEL void mirrored_weights(DPGEN_IN const double* q, const double* w, DPGEN_OUT double* out,
+                                   int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double a = 1.0 / (1.0 + std::fabs(w[n - 1 - i]));
+    const double b = 1.0 / (1.0 + std::fabs(w[n - 2 - i]));
+    out[i] = a * q[i - 1] + b * q[i + 1];
+  }
+}
+
+// A normalized Gaussian smoothing whose weights depend on the data, as kernel
+// smoothers and bilateral filters write them: one exp per neighbour.
+DPGEN_KERNEL void gaussian_neighbours(DPGEN_IN const double* q, DPGEN_OUT double* out, int n,
+                                      double inv_two_s2) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double gm = std::exp(-(q[i - 1] * q[i - 1]) * inv_two_s2);
+    const double g0 = std::exp(-(q[i] * q[i]) * inv_two_s2);
+    const double gp = std::exp(-(q[i + 1] * q[i + 1]) * inv_two_s2);
+    out[i] = (gm * q[i - 1] + g0 * q[i] + gp * q[i + 1]) / (gm + g0 + gp);
   }
 }

@@ -18,6 +18,12 @@ DPGEN_KERNEL void sqrt_conductivity2d(DPGEN_IN const float* phi, DPGEN_OUT float
                                       int ny, float dt);
 DPGEN_KERNEL void ninepoint_weights(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny);
 DPGEN_KERNEL void ratio_in_branch(DPGEN_IN const double* q, DPGEN_OUT double* out, int n);
+DPGEN_KERNEL void flux_form_upwind(DPGEN_IN const double* q, DPGEN_IN const double* u,
+                                   DPGEN_OUT double* qn, int n, double dt, double dx);
+DPGEN_KERNEL void mirrored_weights(DPGEN_IN const double* q, const double* w, DPGEN_OUT double* out,
+                                   int n);
+DPGEN_KERNEL void gaussian_neighbours(DPGEN_IN const double* q, DPGEN_OUT double* out, int n,
+                                      double inv_two_s2);
 
 namespace {
 
@@ -132,5 +138,85 @@ TEST_CASE("styles: shifted_quotients, ratio_in_branch") {
       ratio_in_branch_adjoint(in[0], adj[0], seed[0], n);
     };
     dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: shifted_quotients, flux_form_upwind") {
+  // The face speeds' signs decide the upwind cell: all faces one way, then the other (finite
+  // differences across a switch would fail). u's adjoint alone on exact arrays after that.
+  for (auto [lo, hi] : {std::pair{0.2, 1.0}, {-1.0, -0.2}})
+    for (int n : {1, 2, 3, 5, 13, 256, 257, 258, 600, 8300}) {
+      CAPTURE(n);
+      CAPTURE(lo);
+      dpgen_test::Problem<double> p;
+      p.in_sizes = {size_t(n), size_t(n)};
+      p.out_sizes = {size_t(n)};
+      p.in_ranges = {{-1.0, 1.0}, {lo, hi}};
+      p.forward = [&](auto in, auto out) { flux_form_upwind(in[0], in[1], out[0], n, 0.1, 0.4); };
+      p.adjoint = [&](auto in, auto adj, auto seed) {
+        flux_form_upwind_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.1, 0.4);
+      };
+      p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+        flux_form_upwind_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.1, 0.4);
+      };
+      dpgen_test::check_adjoint(p);
+    }
+  for (int n : {3, 257, 600}) {
+    CAPTURE(n);
+    const std::vector<double> q(size_t(n), 0.5);
+    dpgen_test::Problem<double> p;
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      flux_form_upwind_adjoint(q.data(), nullptr, in[0], adj[0], seed[0], n, 0.1, 0.4);
+    };
+    same_on_exact_arrays<double>(
+        size_t(n), p, [&](const double* u, double* u_adj, const double* seed) {
+          flux_form_upwind_adjoint(q.data(), nullptr, u, u_adj, seed, n, 0.1, 0.4);
+        });
+  }
+}
+
+TEST_CASE("styles: shifted_quotients, mirrored_weights") {
+  for (int n : {1, 2, 3, 5, 13, 256, 257, 258, 600, 8300}) {
+    CAPTURE(n);
+    std::vector<double> w(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i)
+      w[size_t(i)] = std::sin(0.9 * i + 0.3);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { mirrored_weights(in[0], w.data(), out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      mirrored_weights_adjoint(in[0], adj[0], w.data(), seed[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      mirrored_weights_tangent(in[0], dir[0], w.data(), out[0], outd[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+    // (the weights are read at n - 1 - i and n - 2 - i: exactly w's size)
+    same_on_exact_arrays<double>(size_t(n), p,
+                                 [&](const double* in, double* adj, const double* seed) {
+                                   mirrored_weights_adjoint(in, adj, w.data(), seed, n);
+                                 });
+  }
+}
+
+TEST_CASE("styles: shifted_quotients, gaussian_neighbours") {
+  for (int n : {1, 2, 3, 5, 13, 256, 257, 258, 600, 8300}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { gaussian_neighbours(in[0], out[0], n, 0.7); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      gaussian_neighbours_adjoint(in[0], adj[0], seed[0], n, 0.7);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      gaussian_neighbours_tangent(in[0], dir[0], out[0], outd[0], n, 0.7);
+    };
+    dpgen_test::check_adjoint(p);
+    same_on_exact_arrays<double>(size_t(n), p,
+                                 [&](const double* in, double* adj, const double* seed) {
+                                   gaussian_neighbours_adjoint(in, adj, seed, n, 0.7);
+                                 });
   }
 }

@@ -5,6 +5,7 @@
 
 #include "affine.hpp"
 #include "hoist.hpp"
+#include "ops.hpp"
 #include "print.hpp"
 
 #include <fmt/format.h>
@@ -52,12 +53,16 @@ ExprP inlined(const ExprP& e) {
   return map_operands(e, [](const ExprP& o) { return inlined(o); });
 }
 
-// A shareable value, as a function of the counters: its text with its
-// locals expanded, and the layout counters other than the innermost that it
-// mentions.
+// A shareable value, as a function of the counters: its key text, and the
+// layout counters other than the innermost that it mentions. The key is the
+// value with its locals expanded, every read's index written as a polynomial,
+// and the innermost counter moved by `move`: `u[i - 1] / dx` is `u[i] / dx`
+// with i moved by -1, so both get the key of `u[i] / dx` (move 1 and 0), and
+// the first at iteration c + s is the second at c + s - 1 (one buffer).
 struct ValueShape {
   std::string text;
   std::set<std::string> outer;
+  long long move = 0;
 };
 
 // A term's iteration relative to its cell: per layout counter, the constant
@@ -77,7 +82,10 @@ public:
   void run() {
     for_each_term([&](BoxTerm& t, const Offsets& off) {
       std::set<const LocalVar*> seen;
-      find(t.partial, false, off, seen);
+      // (a guarded term: see find(); the guards first, as emit defines their locals)
+      for (size_t g = 0; g < t.guards.size(); ++g)
+        find(t.guards[g], g > 0, off, seen, false);
+      find(t.partial, !t.guards.empty(), off, seen, !t.guards.empty());
     });
     for (const auto& key : order_) {
       const Found& f = found_.at(key);
@@ -100,20 +108,23 @@ public:
       return;
     for_each_term([&](BoxTerm& t, const Offsets& off) {
       std::map<const LocalVar*, ExprP> memo;
-      t.partial = rewrite(t.partial, false, off, memo);
+      for (size_t g = 0; g < t.guards.size(); ++g)
+        t.guards[g] = rewrite(t.guards[g], g > 0, off, memo, false);
+      t.partial = rewrite(t.partial, !t.guards.empty(), off, memo, !t.guards.empty());
     });
   }
 
 private:
   struct Found {
-    ExprP value;
-    std::set<long long> inner;
+    ExprP value;               // the first occurrence's expression, which the buffer holds
+    long long move = 0;        // its ValueShape::move
+    std::set<long long> inner; // the shifts its cells read it at (its iterations)
     std::map<std::string, long long> outer;
   };
 
-  // Each interior term that no run-time guard holds, with its offsets. (Not
-  // those of a group that sums over counters inside the cell: such a loop
-  // may run no iteration, and its terms compute nothing.)
+  // Each interior term, with its offsets. (Not those of a group that sums
+  // over counters inside the cell: such a loop may run no iteration, and its
+  // terms compute nothing. Not a factored term: it prints no partial.)
   template <typename F> void for_each_term(F&& f) {
     for (size_t gi = 0; gi < loop_.groups.size(); ++gi) {
       const GatherGroup& g = *loop_.groups[gi];
@@ -131,7 +142,7 @@ private:
             off[v] = back.constant_term();
         }
         for (auto& t : loop_.interior_terms[gi][bi])
-          if (t.guards.empty() && t.factor < 0) // (a factored term prints no partial)
+          if (t.factor < 0)
             f(t, off);
       }
     }
@@ -155,7 +166,8 @@ private:
       return std::nullopt;
     ValueShape s;
     bool ok = true, inner = false;
-    std::function<void(const ExprP&)> check = [&](const ExprP& n) {
+    // `summand`: n's value is (through negations) an operand of a real sum or difference.
+    std::function<void(const ExprP&, bool)> check = [&](const ExprP& n, bool summand) {
       switch (n->op) {
       case Op::Select:
       case Op::And:
@@ -164,7 +176,10 @@ private:
         return;
       case Op::Mul:
       case Op::Call:
-        if (may_be_product(n)) { // (it could be contracted with a sum otherwise than in place)
+        // A product may be contracted into a multiply-add with a sum that takes it, but only
+        // where every use of it is such a sum (GCC's rule): in the buffer that could differ
+        // from in place. One that no sum inside the value takes is contracted in neither.
+        if (summand && may_be_product(n)) {
           ok = false;
           return;
         }
@@ -187,15 +202,72 @@ private:
       default:
         break;
       }
+      const bool sum = is_real(n->type) && (n->op == Op::Add || n->op == Op::Sub);
       for (const auto& o : n->ops)
         if (ok)
-          check(o);
+          check(o, sum || (n->op == Op::Neg && summand));
     };
-    check(x);
+    check(x, false); // (a division or a call: no product)
     if (!ok || !inner)
       return std::nullopt;
-    s.text = print(x);
+    s.move = move(x);
+    s.text = key_text(x, s.move);
     return s;
+  }
+
+  // The move that puts the first read that moves with the innermost counter
+  // (coefficient +-1) at offset 0 of it (`u[i - 1]`: 1, `u[n - 1 - i]`: -1);
+  // 0 where no read moves so, or where the counter occurs outside an index
+  // (`i * dx` would be another expression).
+  long long move(const ExprP& x) const {
+    const Sym c = Sym::counter(inner_);
+    bool bare = false;
+    std::optional<long long> found;
+    std::function<void(const ExprP&)> walk = [&](const ExprP& n) {
+      if (n->op == Op::LoopVar && n->name == inner_)
+        bare = true;
+      if (n->op == Op::Read) {
+        const Poly p = *to_poly(n->ops[0]); // (make_shape checked it)
+        const Poly a = p.coefficient(c);
+        if (!found && p.mentions(c) && a.is_constant() &&
+            (a.constant_term() == 1 || a.constant_term() == -1))
+          found = -p.without(c).constant_term() * a.constant_term();
+        return; // (the counter in an index moves with the read)
+      }
+      for (const auto& o : n->ops)
+        walk(o);
+    };
+    walk(x);
+    return bare || !found ? 0 : *found;
+  }
+
+  // `x` as a key (ValueShape), the innermost counter moved by `move`: every
+  // node with what tells it apart, a read's index as the polynomial it is.
+  std::string key_text(const ExprP& n, long long move) const {
+    std::string s = fmt::format("({} {}", op_info(n->op).name, type_spelling(n->type));
+    switch (n->op) {
+    case Op::IntConst:
+      s += fmt::format(" {}", n->ival);
+      break;
+    case Op::RealConst:
+      s += fmt::format(" {:a}", n->rval);
+      break;
+    case Op::Read: {
+      const Poly p = *to_poly(n->ops[0]);
+      const Poly moved = p + Poly::constant(move) * p.coefficient(Sym::counter(inner_));
+      return s +
+             fmt::format(" {} {} {} [{}])", n->name, n->shape.levels, n->shape.view, moved.str());
+    }
+    case Op::Cast:
+      s += " " + n->cast_type;
+      break;
+    default: // (a parameter, counter, kernel-level local or function: its name)
+      s += n->name.empty() ? "" : " " + n->name;
+      break;
+    }
+    for (const auto& o : n->ops)
+      s += " " + key_text(o, move);
+    return s + ")";
   }
 
   bool affine_in_inner(const Poly& p) const {
@@ -206,9 +278,16 @@ private:
     return true;
   }
 
-  // The key of `e` at a term with offsets `off`, and its innermost shift;
-  // nullopt when it is not shared there.
-  std::optional<std::pair<std::string, long long>> key(const ExprP& e, const Offsets& off) {
+  // An occurrence of a shareable value at a term: its key, with the other
+  // counters' shifts; its innermost shift; and its shape's move.
+  struct Occurrence {
+    std::string key;
+    long long shift, move;
+  };
+
+  // `e`'s occurrence at a term with offsets `off`; nullopt when it is not
+  // shared there.
+  std::optional<Occurrence> occurrence(const ExprP& e, const Offsets& off) {
     const std::optional<ValueShape>& s = shape(e);
     if (!s || !off.count(inner_))
       return std::nullopt;
@@ -219,33 +298,46 @@ private:
         return std::nullopt;
       key += fmt::format(" | {} + {}", v, it->second);
     }
-    return std::make_pair(key, off.at(inner_));
+    return Occurrence{key, off.at(inner_), s->move};
+  }
+
+  // The iteration of the buffer's expression (Found::value) that computes
+  // occurrence `o`'s value, as a shift of the cell: o computes the key's
+  // expression at its iteration minus its move, which the buffer's computes
+  // at that plus the buffer's move.
+  static long long buffer_shift(const Occurrence& o, const Found& f) {
+    return o.shift - o.move + f.move;
   }
 
   // Records the unconditional occurrences of shareable values in `e`. A
-  // local's definition counts where the term defines it: before anything
-  // else, unconditionally (emit.cpp's define_locals).
-  void find(const ExprP& e, bool cond, const Offsets& off, std::set<const LocalVar*>& seen) {
+  // local's definition counts where the term defines it (emit_terms): before
+  // anything else, unconditionally; in a term under run-time guards, the
+  // guards' locals so, before the guards (the source computed them before
+  // branching), and the others inside the guards (`local_cond`). Of the
+  // guards, the first is evaluated unconditionally, the others after `&&`.
+  void find(const ExprP& e, bool cond, const Offsets& off, std::set<const LocalVar*>& seen,
+            bool local_cond) {
     if (!cond) {
-      if (auto k = key(e, off)) {
-        auto [it, fresh] = found_.try_emplace(k->first);
+      if (auto o = occurrence(e, off)) {
+        auto [it, fresh] = found_.try_emplace(o->key);
         if (fresh) {
-          order_.push_back(k->first);
+          order_.push_back(o->key);
           it->second.value = e;
+          it->second.move = o->move;
           for (const auto& v : shape(e)->outer)
             it->second.outer[v] = off.at(v);
         }
-        it->second.inner.insert(k->second);
+        it->second.inner.insert(buffer_shift(*o, it->second));
         return;
       }
     }
     if (e->op == Op::Local) {
       if (!e->local->kernel_level && seen.insert(e->local.get()).second)
-        find(e->local->def, false, off, seen);
+        find(e->local->def, local_cond, off, seen, local_cond);
       return;
     }
     for (size_t i = 0; i < e->ops.size(); ++i)
-      find(e->ops[i], cond || conditional(e, i), off, seen);
+      find(e->ops[i], cond || conditional(e, i), off, seen, local_cond);
   }
 
   // Operand i of `e` is evaluated only under a condition (an arm, the right of && or ||).
@@ -254,18 +346,24 @@ private:
   }
 
   ExprP rewrite(const ExprP& e, bool cond, const Offsets& off,
-                std::map<const LocalVar*, ExprP>& memo) {
+                std::map<const LocalVar*, ExprP>& memo, bool local_cond) {
     if (!cond) {
-      if (auto k = key(e, off)) {
-        auto b = buffer_.find(k->first);
+      if (auto o = occurrence(e, off)) {
+        auto b = buffer_.find(o->key);
         // (find met this occurrence, so its shift is in the buffer's range; checked all the
         // same, as an index outside it would read past the buffer)
         if (b != buffer_.end()) {
           const SharedValue& v = loop_.shared[b->second];
-          if (k->second < v.lo || k->second > v.hi)
+          const Found& f = found_.at(o->key);
+          const long long at = buffer_shift(*o, f);
+          if (at < v.lo || at > v.hi)
             throw std::logic_error("internal error: share: a shift outside the buffer's range");
-          return read(v.name, binary(Op::Sub, loop_var(inner_), param(v.lo_name, Type::Int)),
-                      e->type, SourcePos{});
+          // (the term's counter is at its own shift: the buffer's iteration is o->shift away)
+          const long long d = at - o->shift;
+          const ExprP it = d < 0 ? binary(Op::Sub, loop_var(inner_), int_const(-d))
+                                 : binary(Op::Add, loop_var(inner_), int_const(d));
+          return read(v.name, binary(Op::Sub, it, param(v.lo_name, Type::Int)), e->type,
+                      SourcePos{});
         }
         // As find, a value not shared is not looked into. (A local inside it that the term
         // also uses elsewhere keeps its definition here and may be rewritten there: the same
@@ -280,7 +378,7 @@ private:
       if (it != memo.end())
         return it->second;
       ExprP out = e;
-      ExprP def = rewrite(e->local->def, false, off, memo);
+      ExprP def = rewrite(e->local->def, local_cond, off, memo, local_cond);
       if (def != e->local->def) {
         auto l = std::make_shared<LocalVar>(*e->local); // (same id and name)
         l->def = def;
@@ -291,7 +389,7 @@ private:
     size_t i = 0;
     return map_operands(e, [&](const ExprP& o) {
       const bool c = cond || conditional(e, i++);
-      return rewrite(o, c, off, memo);
+      return rewrite(o, c, off, memo, local_cond);
     });
   }
 
