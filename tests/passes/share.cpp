@@ -77,6 +77,23 @@ DPGEN_KERNEL void branch_switch(DPGEN_IN const double* q, DPGEN_IN const double*
 // CODE-NEXT: if (c > 0.0) {
 // CODE-NEXT: const double s = std::sqrt(1.0 + std::abs(q[i]));
 
+// Two guards (nested ifs): a value in the first guard is shared (it runs
+// unconditionally), one in the second is not (it runs after &&, where the
+// first holds).
+// CHECK-LABEL: shared in nested_guards
+// CHECK-NEXT: cells of [q]: shared0 = u[i] / dx at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void nested_guards(DPGEN_IN const double* q, const double* u, const double* m,
+                                DPGEN_OUT double* out, int n, double dx) {
+  for (int i = 1; i < n - 1; ++i)
+    if (u[i] / dx > 0.5)
+      if (std::sqrt(std::fabs(m[i])) > 0.1)
+        out[i] = q[i + 1] - q[i - 1];
+}
+// CODE-LABEL: void nested_guards_adjoint(
+// CODE: auto interior = [=](const std::ptrdiff_t strip_lo, const std::ptrdiff_t strip_hi) {
+// CODE: if (shared0[i - shared0_lo] > 0.5 && std::sqrt(std::abs(m[i])) > 0.1) {
+
 // Values whose reads differ by a shift of the counter are one value: the
 // quotient at i + 1 is the one at i one iteration later (one buffer; a term
 // reads it one element on). Not where the counter occurs outside an index
@@ -99,20 +116,35 @@ DPGEN_KERNEL void moved_reads(DPGEN_IN const double* q, const double* u, DPGEN_O
 // CODE: auto interior = [=](const std::ptrdiff_t strip_lo, const std::ptrdiff_t strip_hi) {
 // CODE: const double b = shared0[i + 1 - shared0_lo];
 
-// A product inside a value is shared where nothing but a sum inside the value
-// takes it (through negations): GCC contracts a product into a multiply-add
-// only where every use of it is a sum, so exp(-(u * u)) computes the same in
-// the buffer as in place. Not sqrt(u * u + 1.0) or 1.0 / (1.0 - u * u * 0.5),
-// whose products a sum takes.
+// A product inside a value is shared where no sum inside the value takes it
+// (through negations): GCC contracts a product into a multiply-add only where
+// every use of it is a sum, so exp(-(u * u)) computes the same in the buffer
+// as in place. Not sqrt(u * u + 1.0) or 1.0 / (1.0 - u * u * 0.5), whose
+// products a sum takes, nor 1.0 / (1.0 + (u + u)) (GCC writes u + u as
+// u * 2.0), nor a division by 4.0 (a product by 0.25).
 // CHECK-LABEL: shared in products
 // CHECK-NEXT: cells of [q]: shared0 = std::exp(-(u[i] * u[i])) at i = c_i - 1 ..= c_i + 1
 // CHECK-NEXT: // -- IR after share
-DPGEN_KERNEL void products(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
-                           int n) {
+DPGEN_KERNEL void products(DPGEN_IN const double* q, const double* u, const double* v,
+                           DPGEN_OUT double* out, int n) {
   for (int i = 1; i < n - 1; ++i)
-    out[i] = (std::exp(-(u[i] * u[i])) + std::sqrt(u[i] * u[i] + 1.0) +
-              1.0 / (1.0 - u[i] * u[i] * 0.5)) *
+    out[i] = (std::exp(-(u[i] * u[i])) + std::sqrt(v[i] * v[i] + 1.0) +
+              1.0 / (1.0 - v[i] * v[i] * 0.5) + 1.0 / (1.0 + (v[i] + v[i])) + v[i] / 4.0) *
              (q[i + 1] - q[i - 1]);
+}
+
+// Nor a value whose product the term computes outside it too (here through a
+// local, r2 = u * u): in place that product has a use other than the sum, so it
+// is not contracted; with the value read from a buffer the sum would be its only
+// use, and the compiler could contract it there (another rounding of sqrt).
+// CHECK-LABEL: shared in product_outside
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void product_outside(DPGEN_IN const double* q, const double* u,
+                                  DPGEN_OUT double* out, int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double r2 = u[i] * u[i];
+    out[i] = (std::exp(-r2) + std::sqrt(r2 + 1.0)) * (q[i + 1] - q[i - 1]);
+  }
 }
 
 // Not shared: a quotient only in a conditional's arm (the source
@@ -120,8 +152,8 @@ DPGEN_KERNEL void products(DPGEN_IN const double* q, const double* u, DPGEN_OUT 
 // c_i + 1 are 1.0 / (1.0 + |u[i]|) in that arm), one under the store's
 // run-time guard, one read at one shift only (exp(u[i])), one with an integer
 // division inside (it may trap where the source would not run it), a pow
-// (GCC writes pow(x, 2.0) as a product). Shared: w, whose product only the
-// division takes.
+// (not a costly call: GCC writes pow(x, 2.0) as a product). Shared: w, whose
+// product only the division takes.
 // CHECK-LABEL: shared in not_shared
 // CHECK-NEXT: cells of [q, u]: shared0 = u[i] * dt / dx at i = c_i - 1 ..= c_i + 1
 // CHECK-NEXT: cells of [q]: shared0 = u[i] * dt / dx at i = c_i - 1 ..= c_i + 1
@@ -146,11 +178,28 @@ DPGEN_KERNEL void not_shared(DPGEN_IN const double* q, DPGEN_IN const double* u,
 // is not affine in the counter (through a map).
 // CHECK-LABEL: shared in far_apart
 // CHECK-NEXT: // -- IR after share
-DPGEN_KERNEL void far_apart(DPGEN_IN const double* q, DPGEN_IN const double* u,
-                            DPGEN_OUT double* out, int n) {
+DPGEN_KERNEL void far_apart(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                            int n) {
   for (int i = 9; i < n - 9; ++i)
     out[i] = std::sqrt(1.0 + std::fabs(u[i])) * (q[i + 9] - q[i - 9]);
 }
+// One value at shifts far apart gets a buffer for each run of shifts at most
+// 16 apart: the quotient at c_i - 1 and c_i + 1, and (spelled at i + 20) at
+// c_i + 19 and c_i + 21.
+// CHECK-LABEL: shared in two_runs
+// CHECK-NEXT: cells of [q]: shared0 = u[i] / (1.0 + std::abs(u[i])) at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: cells of [q]: shared1 = u[i] / (1.0 + std::abs(u[i])) at i = c_i + 19 ..= c_i + 21
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void two_runs(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                           int n) {
+  for (int i = 1; i < n - 21; ++i)
+    out[i] = (u[i] / (1.0 + std::fabs(u[i])) + u[i + 20] / (1.0 + std::fabs(u[i + 20]))) *
+             (q[i + 1] - q[i - 1]);
+}
+// CODE-LABEL: void two_runs_adjoint(
+// CODE: auto interior = [=](const std::ptrdiff_t strip_lo, const std::ptrdiff_t strip_hi) {
+// CODE: shared0[i - shared0_lo] + shared1[i + 20 - shared1_lo]
+
 // CHECK-LABEL: shared in through_map
 // CHECK-NEXT: // -- IR after share
 DPGEN_KERNEL void through_map(DPGEN_IN const double* q, const double* coef, const int* map,

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <set>
@@ -28,12 +29,29 @@ constexpr int kMaxNodes = 200;
 // thread that runs the strip); values met later are computed in place, as before.
 constexpr size_t kMaxBuffers = 16;
 
+// A real product as the compiler may see it: hoist.hpp's may_be_product (a * b,
+// pow), or what GCC writes as one without -ffast-math: a division by a power of
+// two (x / 2.0 is x * 0.5, exactly) and a sum of an operand with itself (x + x
+// is x * 2.0). Each may be contracted into a multiply-add with a sum.
+bool product_like(const ExprP& e) {
+  if (!is_real(e->type))
+    return false;
+  if (may_be_product(e))
+    return true;
+  if (e->op == Op::Div && e->ops[1]->op == Op::RealConst && e->ops[1]->rval != 0.0) {
+    int exp = 0;
+    return std::fabs(std::frexp(e->ops[1]->rval, &exp)) == 0.5;
+  }
+  return e->op == Op::Add && print(e->ops[0]) == print(e->ops[1]);
+}
+
 // A real division, or a math function that costs more than a multiplication.
-// (Not pow: it may be a product, hoist.hpp's may_be_product.)
+// (Not pow, nor a division by a power of two: products, product_like.)
 bool costly(const ExprP& e) {
   static const std::set<std::string> calls = {"sqrt", "cbrt", "exp",  "expm1", "log",   "log1p",
                                               "sin",  "cos",  "tanh", "atan2", "hypot", "erf"};
-  return is_real(e->type) && (e->op == Op::Div || (e->op == Op::Call && calls.count(e->name)));
+  return is_real(e->type) && !product_like(e) &&
+         (e->op == Op::Div || (e->op == Op::Call && calls.count(e->name)));
 }
 
 // At most `budget` nodes, the loop-level locals' definitions expanded.
@@ -89,20 +107,31 @@ public:
     });
     for (const auto& key : order_) {
       const Found& f = found_.at(key);
-      if (f.inner.size() < 2 || *f.inner.rbegin() - *f.inner.begin() > kMaxSpan)
-        continue;
-      if (loop_.shared.size() == kMaxBuffers)
-        break;
-      SharedValue v;
-      const std::string base = fmt::format("shared{}", loop_.shared.size());
-      v.name = k_.fresh(base);
-      v.lo_name = k_.fresh(base + "_lo");
-      v.value = f.value;
-      v.lo = *f.inner.begin();
-      v.hi = *f.inner.rbegin();
-      v.outer = f.outer;
-      buffer_[key] = loop_.shared.size();
-      loop_.shared.push_back(v);
+      if (std::any_of(f.products.begin(), f.products.end(),
+                      [&](const std::string& p) { return outside_.count(p); }))
+        continue; // (see Found::products)
+      // The iterations in runs at most kMaxSpan long, a buffer for each of two or more (one
+      // value spelled at shifts far apart, `u[i] / dx` and `u[i + 20] / dx`, gets one each).
+      std::vector<std::vector<long long>> runs;
+      for (long long at : f.inner)
+        if (runs.empty() || at - runs.back().front() > kMaxSpan)
+          runs.push_back({at});
+        else
+          runs.back().push_back(at);
+      for (const auto& run : runs) {
+        if (run.size() < 2 || loop_.shared.size() == kMaxBuffers)
+          continue;
+        SharedValue v;
+        const std::string base = fmt::format("shared{}", loop_.shared.size());
+        v.name = k_.fresh(base);
+        v.lo_name = k_.fresh(base + "_lo");
+        v.value = f.value;
+        v.lo = run.front();
+        v.hi = run.back();
+        v.outer = f.outer;
+        buffers_[key].push_back(loop_.shared.size());
+        loop_.shared.push_back(v);
+      }
     }
     if (loop_.shared.empty())
       return;
@@ -118,8 +147,14 @@ private:
   struct Found {
     ExprP value;               // the first occurrence's expression, which the buffer holds
     long long move = 0;        // its ValueShape::move
-    std::set<long long> inner; // the shifts its cells read it at (its iterations)
+    std::set<long long> inner; // its iterations that the cells' occurrences compute
     std::map<std::string, long long> outer;
+    /// The products inside it (product_sign). Where a term computes one of
+    /// them outside the occurrences (through a local, or as the same
+    /// subexpression, which the compiler merges), the buffer would take away
+    /// the uses inside the value, and a sum left as its only use could be
+    /// contracted with it into a multiply-add: another rounding. Not shared.
+    std::set<std::string> products;
   };
 
   // Each interior term, with its offsets. (Not those of a group that sums
@@ -168,22 +203,19 @@ private:
     bool ok = true, inner = false;
     // `summand`: n's value is (through negations) an operand of a real sum or difference.
     std::function<void(const ExprP&, bool)> check = [&](const ExprP& n, bool summand) {
+      // A product may be contracted into a multiply-add with a sum that takes it, but only
+      // where every use of it is such a sum (GCC's rule): in the buffer that could differ
+      // from in place. One that no sum inside the value takes is contracted in neither.
+      if (summand && product_like(n)) {
+        ok = false;
+        return;
+      }
       switch (n->op) {
       case Op::Select:
       case Op::And:
       case Op::Or:
         ok = false;
         return;
-      case Op::Mul:
-      case Op::Call:
-        // A product may be contracted into a multiply-add with a sum that takes it, but only
-        // where every use of it is such a sum (GCC's rule): in the buffer that could differ
-        // from in place. One that no sum inside the value takes is contracted in neither.
-        if (summand && may_be_product(n)) {
-          ok = false;
-          return;
-        }
-        break;
       case Op::LoopVar:
         if (n->name == inner_)
           inner = true;
@@ -312,9 +344,9 @@ private:
   // Records the unconditional occurrences of shareable values in `e`. A
   // local's definition counts where the term defines it (emit_terms): before
   // anything else, unconditionally; in a term under run-time guards, the
-  // guards' locals so, before the guards (the source computed them before
-  // branching), and the others inside the guards (`local_cond`). Of the
-  // guards, the first is evaluated unconditionally, the others after `&&`.
+  // guards' locals so, before the guards, and the others inside the guards
+  // (`local_cond`). Of the guards, the first is evaluated unconditionally, the
+  // others after `&&`. Products met outside the occurrences go to outside_.
   void find(const ExprP& e, bool cond, const Offsets& off, std::set<const LocalVar*>& seen,
             bool local_cond) {
     if (!cond) {
@@ -328,9 +360,12 @@ private:
             it->second.outer[v] = off.at(v);
         }
         it->second.inner.insert(buffer_shift(*o, it->second));
+        note_products(inlined(e), it->second.products);
         return;
       }
     }
+    if (product_like(e))
+      outside_.insert(product_sign(inlined(e)));
     if (e->op == Op::Local) {
       if (!e->local->kernel_level && seen.insert(e->local.get()).second)
         find(e->local->def, local_cond, off, seen, local_cond);
@@ -349,20 +384,21 @@ private:
                 std::map<const LocalVar*, ExprP>& memo, bool local_cond) {
     if (!cond) {
       if (auto o = occurrence(e, off)) {
-        auto b = buffer_.find(o->key);
-        // (find met this occurrence, so its shift is in the buffer's range; checked all the
-        // same, as an index outside it would read past the buffer)
-        if (b != buffer_.end()) {
-          const SharedValue& v = loop_.shared[b->second];
-          const Found& f = found_.at(o->key);
-          const long long at = buffer_shift(*o, f);
-          if (at < v.lo || at > v.hi)
-            throw std::logic_error("internal error: share: a shift outside the buffer's range");
+        // The buffer whose range holds this occurrence's iteration, if any.
+        const SharedValue* v = nullptr;
+        auto f = found_.find(o->key);
+        auto b = buffers_.find(o->key);
+        const long long at = f == found_.end() ? 0 : buffer_shift(*o, f->second);
+        if (f != found_.end() && b != buffers_.end())
+          for (size_t i : b->second)
+            if (at >= loop_.shared[i].lo && at <= loop_.shared[i].hi)
+              v = &loop_.shared[i];
+        if (v) {
           // (the term's counter is at its own shift: the buffer's iteration is o->shift away)
           const long long d = at - o->shift;
           const ExprP it = d < 0 ? binary(Op::Sub, loop_var(inner_), int_const(-d))
                                  : binary(Op::Add, loop_var(inner_), int_const(d));
-          return read(v.name, binary(Op::Sub, it, param(v.lo_name, Type::Int)), e->type,
+          return read(v->name, binary(Op::Sub, it, param(v->lo_name, Type::Int)), e->type,
                       SourcePos{});
         }
         // As find, a value not shared is not looked into. (A local inside it that the term
@@ -393,6 +429,31 @@ private:
     });
   }
 
+  // A product's text with every read's index left out (`q[*] * q[*]`): the
+  // same for each copy of it at any iteration (and for some others: the test
+  // that uses it errs towards not sharing).
+  static std::string product_sign(const ExprP& n) {
+    std::string s = fmt::format("({} {}", op_info(n->op).name, type_spelling(n->type));
+    if (n->op == Op::Read)
+      return s + fmt::format(" {} {} {})", n->name, n->shape.levels, n->shape.view);
+    if (n->op == Op::IntConst)
+      s += fmt::format(" {}", n->ival);
+    else if (n->op == Op::RealConst)
+      s += fmt::format(" {:a}", n->rval);
+    else if (!n->name.empty())
+      s += " " + n->name;
+    for (const auto& o : n->ops)
+      s += " " + product_sign(o);
+    return s + ")";
+  }
+
+  static void note_products(const ExprP& x, std::set<std::string>& out) {
+    if (product_like(x))
+      out.insert(product_sign(x));
+    for (const auto& o : x->ops)
+      note_products(o, out);
+  }
+
   const Kernel& k_;
   CellLoop& loop_;
   std::string inner_;
@@ -401,7 +462,8 @@ private:
   std::map<const Expr*, std::pair<ExprP, std::optional<ValueShape>>> shapes_;
   std::map<std::string, Found> found_;
   std::vector<std::string> order_;       // keys in order of first occurrence
-  std::map<std::string, size_t> buffer_; // key -> index in loop_.shared
+  std::map<std::string, std::vector<size_t>> buffers_; // key -> indices in loop_.shared
+  std::set<std::string> outside_; // product_sign of each product outside the occurrences
 };
 
 } // namespace
