@@ -133,6 +133,17 @@ DPGEN_KERNEL void products(DPGEN_IN const double* q, const double* u, const doub
              (q[i + 1] - q[i - 1]);
 }
 
+// A division GCC writes as a product is not a shared value: by -2.0 (x * -0.5),
+// by a constant local (h = 4.0: x * 0.25), by an integer 2 (x * 0.5).
+// CHECK-LABEL: shared in hidden_products
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void hidden_products(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                                  int n) {
+  const double h = 4.0;
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = (u[i] / -2.0 + u[i] / h + u[i] / 2) * (q[i + 1] - q[i - 1]);
+}
+
 // Nor a value whose product the term computes outside it too (here through a
 // local, r2 = u * u): in place that product has a use other than the sum, so it
 // is not contracted; with the value read from a buffer the sum would be its only

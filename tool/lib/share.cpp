@@ -31,18 +31,60 @@ constexpr size_t kMaxBuffers = 16;
 
 // A real product as the compiler may see it: hoist.hpp's may_be_product (a * b,
 // pow), or what GCC writes as one without -ffast-math: a division by a power of
-// two (x / 2.0 is x * 0.5, exactly) and a sum of an operand with itself (x + x
-// is x * 2.0). Each may be contracted into a multiply-add with a sum.
+// two (x / 2.0 is x * 0.5 exactly; x / -4.0, x / h for a constant h, x / 2 too)
+// and a sum of an operand with itself (x + x is x * 2.0). Each may be
+// contracted into a multiply-add with a sum.
+// The constant a divisor is, through locals (kernel-level ones too),
+// negations and an integer converted: the compiler sees through them.
+std::optional<double> real_constant(const ExprP& e) {
+  if (e->op == Op::Local)
+    return e->local->def ? real_constant(e->local->def) : std::nullopt;
+  if (e->op == Op::RealConst)
+    return e->rval;
+  if (e->op == Op::Cast && e->ops[0]->op == Op::IntConst)
+    return static_cast<double>(e->ops[0]->ival);
+  if (e->op == Op::Neg)
+    if (auto v = real_constant(e->ops[0]))
+      return -*v;
+  return std::nullopt;
+}
+
+// `a` and `b` are the same expression, through locals (two locals of the same
+// definition are one value to the compiler). Past `budget` nodes, every one
+// alike so far, they count as the same (so a sum is taken for a product: the
+// side that shares less).
+bool same_value(const ExprP& a, const ExprP& b, int& budget) {
+  if (a == b || (a->op == Op::Local && b->op == Op::Local && a->local == b->local))
+    return true;
+  if (--budget < 0)
+    return true;
+  if (a->op == Op::Local && a->local->def)
+    return same_value(a->local->def, b, budget);
+  if (b->op == Op::Local && b->local->def)
+    return same_value(a, b->local->def, budget);
+  if (a->op != b->op || a->type != b->type || a->ival != b->ival || a->name != b->name ||
+      a->cast_type != b->cast_type || a->shape.levels != b->shape.levels ||
+      a->shape.view != b->shape.view || a->ops.size() != b->ops.size() ||
+      (a->op == Op::RealConst && a->rval != b->rval))
+    return false;
+  for (size_t i = 0; i < a->ops.size(); ++i)
+    if (!same_value(a->ops[i], b->ops[i], budget))
+      return false;
+  return true;
+}
+
 bool product_like(const ExprP& e) {
   if (!is_real(e->type))
     return false;
   if (may_be_product(e))
     return true;
-  if (e->op == Op::Div && e->ops[1]->op == Op::RealConst && e->ops[1]->rval != 0.0) {
+  if (e->op == Op::Div) {
+    const std::optional<double> c = real_constant(e->ops[1]);
     int exp = 0;
-    return std::fabs(std::frexp(e->ops[1]->rval, &exp)) == 0.5;
+    return c && *c != 0.0 && std::fabs(std::frexp(*c, &exp)) == 0.5;
   }
-  return e->op == Op::Add && print(e->ops[0]) == print(e->ops[1]);
+  int budget = 256;
+  return e->op == Op::Add && same_value(e->ops[0], e->ops[1], budget);
 }
 
 // A real division, or a math function that costs more than a multiplication.

@@ -40,17 +40,18 @@ constexpr int kShareStripCells = 256;
 /// in the innermost counter, not through an accessor class, so an index
 /// between two that the terms read is in bounds too). The buffer holds the
 /// very same expression tree. No product in it (through its locals: a * b,
-/// pow, x / 2.0, x + x, which GCC writes as products) may be, through
-/// negations, an operand of a sum or difference in it (`exp(-q * q)` is
-/// shared, `sqrt(u * u + v * v)` is not), and none may be computed by a term
-/// outside the shared values too (through a local or as the same
-/// subexpression, compared with indices left out): GCC contracts a product
-/// into a multiply-add only where every use of it is a sum, so a product that
-/// something else in the value uses is contracted neither in place nor in the
-/// buffer, and no copy of it is left with a sum as its only use. Every result
-/// stays bit-identical (under the compiler's IEEE rules: with -ffast-math it
-/// may evaluate a math function in a vectorized fill loop otherwise than one
-/// by one).
+/// pow, x / 2.0, x / -4.0, x / h for a constant h, x + x, which GCC writes as
+/// products) may be, through negations, an operand of a sum or difference in
+/// it (`exp(-q * q)` is shared, `sqrt(u * u + v * v)` is not), and none may be
+/// computed in any term of the loop outside the unconditional occurrences of
+/// shareable values (through a local, or as the same subexpression; compared
+/// with indices left out, so it errs towards not sharing): GCC contracts a
+/// product into a multiply-add only where every use of it is a sum, so a
+/// product that something else in the value uses is contracted neither in
+/// place nor in the buffer, and no copy of it is left with a sum as its only
+/// use. Every result stays bit-identical (under the compiler's IEEE rules:
+/// with -ffast-math it may evaluate a math function in a vectorized fill loop
+/// otherwise than one by one).
 /// `dpgen --no-share` leaves the pass out, to compare.
 void share_shifted_values(LoopPlan& plan);
 
