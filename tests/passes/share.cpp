@@ -158,6 +158,52 @@ DPGEN_KERNEL void product_outside(DPGEN_IN const double* q, const double* u,
   }
 }
 
+// Locals that nest (each used twice by the next): expanded into a tree, p32
+// would have 2^32 nodes. The pass compares products through locals within a
+// node budget, so this takes as long as any kernel (it hung before).
+// CHECK-LABEL: shared in local_chain
+// CHECK-NEXT: cells of [q]: shared0 = std::sqrt(1.0 + std::abs(u[i])) at i = c_i - 1 ..= c_i + 1
+// CHECK-NEXT: // -- IR after share
+DPGEN_KERNEL void local_chain(DPGEN_IN const double* q, const double* u, DPGEN_OUT double* out,
+                              int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    const double p0 = u[i] * 0.5;
+    const double p1 = p0 * p0 + p0;
+    const double p2 = p1 * p1 + p1;
+    const double p3 = p2 * p2 + p2;
+    const double p4 = p3 * p3 + p3;
+    const double p5 = p4 * p4 + p4;
+    const double p6 = p5 * p5 + p5;
+    const double p7 = p6 * p6 + p6;
+    const double p8 = p7 * p7 + p7;
+    const double p9 = p8 * p8 + p8;
+    const double p10 = p9 * p9 + p9;
+    const double p11 = p10 * p10 + p10;
+    const double p12 = p11 * p11 + p11;
+    const double p13 = p12 * p12 + p12;
+    const double p14 = p13 * p13 + p13;
+    const double p15 = p14 * p14 + p14;
+    const double p16 = p15 * p15 + p15;
+    const double p17 = p16 * p16 + p16;
+    const double p18 = p17 * p17 + p17;
+    const double p19 = p18 * p18 + p18;
+    const double p20 = p19 * p19 + p19;
+    const double p21 = p20 * p20 + p20;
+    const double p22 = p21 * p21 + p21;
+    const double p23 = p22 * p22 + p22;
+    const double p24 = p23 * p23 + p23;
+    const double p25 = p24 * p24 + p24;
+    const double p26 = p25 * p25 + p25;
+    const double p27 = p26 * p26 + p26;
+    const double p28 = p27 * p27 + p27;
+    const double p29 = p28 * p28 + p28;
+    const double p30 = p29 * p29 + p29;
+    const double p31 = p30 * p30 + p30;
+    const double p32 = p31 * p31 + p31;
+    out[i] = (std::sqrt(1.0 + std::fabs(u[i])) + p32) * (q[i + 1] - q[i - 1]);
+  }
+}
+
 // Not shared: a quotient only in a conditional's arm (the source
 // computes it where the condition holds: q's partials at i = c_i - 1 and
 // c_i + 1 are 1.0 / (1.0 + |u[i]|) in that arm), one under the store's

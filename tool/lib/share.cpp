@@ -402,12 +402,13 @@ private:
             it->second.outer[v] = off.at(v);
         }
         it->second.inner.insert(buffer_shift(*o, it->second));
-        note_products(inlined(e), it->second.products);
+        std::set<const LocalVar*> inside;
+        note_products(e, it->second.products, inside);
         return;
       }
     }
     if (product_like(e))
-      outside_.insert(product_sign(inlined(e)));
+      outside_.insert(product_sign(e));
     if (e->op == Op::Local) {
       if (!e->local->kernel_level && seen.insert(e->local.get()).second)
         find(e->local->def, local_cond, off, seen, local_cond);
@@ -471,10 +472,16 @@ private:
     });
   }
 
-  // A product's text with every read's index left out (`q[*] * q[*]`): the
-  // same for each copy of it at any iteration (and for some others: the test
-  // that uses it errs towards not sharing).
-  static std::string product_sign(const ExprP& n) {
+  // A product's text with every read's index left out (`q[*] * q[*]`) and
+  // locals seen through: the same for each copy of it at any iteration, however
+  // spelled (and for some others: the test that uses it errs towards not
+  // sharing). Past `budget` nodes the rest is "...": the size stays bounded
+  // where locals nest (x2 = x * x; x4 = x2 * x2; ...).
+  static std::string product_sign(const ExprP& n, int& budget) {
+    if (--budget < 0)
+      return "...";
+    if (n->op == Op::Local && n->local->def)
+      return product_sign(n->local->def, budget);
     std::string s = fmt::format("({} {}", op_info(n->op).name, type_spelling(n->type));
     if (n->op == Op::Read)
       return s + fmt::format(" {} {} {})", n->name, n->shape.levels, n->shape.view);
@@ -485,15 +492,27 @@ private:
     else if (!n->name.empty())
       s += " " + n->name;
     for (const auto& o : n->ops)
-      s += " " + product_sign(o);
+      s += " " + product_sign(o, budget);
     return s + ")";
   }
 
-  static void note_products(const ExprP& x, std::set<std::string>& out) {
+  static std::string product_sign(const ExprP& n) {
+    int budget = 64;
+    return product_sign(n, budget);
+  }
+
+  // The product_sign of every product in `x`, through its locals (each once).
+  static void note_products(const ExprP& x, std::set<std::string>& out,
+                            std::set<const LocalVar*>& seen) {
     if (product_like(x))
       out.insert(product_sign(x));
+    if (x->op == Op::Local) {
+      if (x->local->def && seen.insert(x->local.get()).second)
+        note_products(x->local->def, out, seen);
+      return;
+    }
     for (const auto& o : x->ops)
-      note_products(o, out);
+      note_products(o, out, seen);
   }
 
   const Kernel& k_;
