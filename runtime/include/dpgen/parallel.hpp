@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #ifdef _OPENMP
@@ -50,96 +51,90 @@ struct RowStripShape {
 
 /// Runs `kernel(inputs, out, strip_rows)` (inputs: std::array<const double*, N> of the strip's
 /// input rows, out: its output rows, strip_rows: how many input rows it has) on horizontal
-/// strips of the grid so that the output equals kernel(inputs, out, shape.rows) on the whole
-/// grid, for any kernel of the shape described above (`out` must not overlap an input). A strip
-/// gets one extra input row on each side (its neighbours' rows, or the wrapped row on a
-/// periodic grid), whose output rows are not kept: the kernel treats them as boundary rows. Strips
-/// run on every thread in two passes (even strips, then odd ones: a strip's call overwrites the
-/// edge output rows of its neighbours, which an odd strip saves and puts back); periodic end strips
-/// work on copies. `force_strips`: split even where one call would do (one thread, a small grid),
-/// to check that a kernel has the shape, bit for bit. Returns false (and does nothing) when the
-/// grid is too small to split: call the kernel once.
-template <std::size_t N, typename Kernel>
-bool run_by_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
-                       double* out, Kernel&& kernel, bool force_strips = false) {
+/// strips of the grid, on every thread, and hands each strip's output rows to
+/// `store(first, count, values)`: the values [first, first + count) of the output the kernel
+/// gives on the whole grid (kernel(inputs, out, shape.rows); row-major, out_per_in * out_width
+/// values per input row), in a buffer of the thread's. This holds for any kernel of the shape
+/// described above. A strip gets one extra input row on each side (its neighbours' rows, or
+/// the wrapped row on a periodic grid); the kernel treats them as boundary rows and their
+/// output is not stored. Each strip's output is written to a buffer that stays in the core's
+/// cache (about kStripValues values) and stored from there: a store that combines it with
+/// other fields (a Jacobi update, a residual) reads it from the cache, not from memory. Only
+/// the periodic end strips copy their inputs (their wrapped row is not adjacent). Strips are
+/// at least 8 rows high, and two or more per thread where the grid has the rows; a thread
+/// runs neighbouring strips, so their shared halo rows are read from its cache. `force_strips`:
+/// split even where one call would do (one thread, a small grid), to check that a kernel has the
+/// shape, bit for bit. Returns false (and does nothing) when the grid is too small to split: call
+/// the kernel once.
+template <std::size_t N, typename Kernel, typename Store>
+bool for_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
+                    Kernel&& kernel, Store&& store, bool force_strips = false) {
+  // Output values per strip (512 KiB): the strip's output stays in L2 until it is stored, and
+  // the halo rows, computed and dropped, are 2 of at least 32 rows of a 2048-wide grid.
+  constexpr Eigen::Index kStripValues = 65536;
   const int threads = detail::max_threads();
   const int rows = shape.rows;
-  const Eigen::Index in_w = shape.in_width, out_w = shape.out_width;
-  const int opi = shape.out_per_in;
-  // Even and odd strips of at least 8 rows, 2 per thread and pass.
-  const int wanted = 4 * threads;
-  const int strips = std::min(wanted, rows / 8) / 2 * 2;
-  const Eigen::Index values = Eigen::Index(rows) * std::max(in_w, opi * out_w);
-  if (strips < 4 || (!force_strips && (threads < 2 || values < detail::kParallelValues)))
+  const Eigen::Index in_w = shape.in_width;
+  const Eigen::Index out_row = shape.out_per_in * shape.out_width; // output values per input row
+  const Eigen::Index values = Eigen::Index(rows) * std::max(in_w, out_row);
+  if (rows < 16 || (!force_strips && (threads < 2 || values < detail::kParallelValues)))
     return false;
+  const Eigen::Index by_cache = kStripValues / std::max<Eigen::Index>(out_row, 1);
+  const int height = static_cast<int>(
+      std::max<Eigen::Index>(8, std::min<Eigen::Index>(by_cache, rows / (2 * threads))));
+  const int strips = std::max(2, rows / height); // each at least `height` rows
   const auto strip_begin = [&](int s) { return static_cast<int>(Eigen::Index(rows) * s / strips); };
-  const Eigen::Index out_row = opi * out_w; // output values per input row
 
-  // A strip [a, b) whose halo rows lie inside the grid: the kernel reads and writes in place.
-  // Returns the output rows it overwrote outside the strip (none at a closed end).
-  const auto run_in_place = [&](int a, int b, double* saved) {
-    const int below = a > 0 ? 1 : 0, above = b < rows ? 1 : 0;
-    if (saved != nullptr) { // keep the neighbours' rows it will overwrite
-      if (below)
-        std::memcpy(saved, out + (a - 1) * out_row, sizeof(double) * out_row);
-      if (above)
-        std::memcpy(saved + out_row, out + b * out_row, sizeof(double) * out_row);
-    }
-    std::array<const double*, N> in;
-    for (std::size_t i = 0; i < N; ++i)
-      in[i] = inputs[i] + (a - below) * in_w;
-    kernel(in, out + (a - below) * out_row, b - a + below + above);
-    if (saved != nullptr) {
-      if (below)
-        std::memcpy(out + (a - 1) * out_row, saved, sizeof(double) * out_row);
-      if (above)
-        std::memcpy(out + b * out_row, saved + out_row, sizeof(double) * out_row);
-    }
-  };
-  // A periodic end strip: its wrapped halo row is copied next to it, and so is its output.
-  const auto run_on_copies = [&](int a, int b, std::vector<double>& buffer) {
-    const int n = b - a + 2;
-    buffer.resize(static_cast<std::size_t>(N * n * in_w + n * out_row));
-    std::array<const double*, N> in;
-    for (std::size_t i = 0; i < N; ++i) {
-      double* copy = buffer.data() + i * n * in_w;
-      const int below = a > 0 ? a - 1 : rows - 1, above = b < rows ? b : 0;
-      std::memcpy(copy, inputs[i] + below * in_w, sizeof(double) * in_w);
-      std::memcpy(copy + in_w, inputs[i] + a * in_w, sizeof(double) * (b - a) * in_w);
-      std::memcpy(copy + (n - 1) * in_w, inputs[i] + above * in_w, sizeof(double) * in_w);
-      in[i] = copy;
-    }
-    double* result = buffer.data() + N * n * in_w;
-    kernel(in, result, n);
-    std::memcpy(out + a * out_row, result + out_row, sizeof(double) * (b - a) * out_row);
-  };
-  const auto run_strip = [&](int s, std::vector<double>& buffer) {
+  const auto run_strip = [&](int s, std::vector<double>& copies, std::vector<double>& result) {
     const int a = strip_begin(s), b = strip_begin(s + 1);
-    if (shape.periodic && (s == 0 || s == strips - 1))
-      run_on_copies(a, b, buffer);
-    else if (s % 2 == 0)
-      run_in_place(a, b, nullptr); // the odd strips' rows it overwrites are computed later
-    else {
-      buffer.resize(static_cast<std::size_t>(2 * out_row));
-      run_in_place(a, b, buffer.data());
+    const int below = a > 0 || shape.periodic ? 1 : 0, above = b < rows || shape.periodic ? 1 : 0;
+    const int n = b - a + below + above; // input rows the kernel sees
+    std::array<const double*, N> in;
+    if (shape.periodic && (a == 0 || b == rows)) { // a wrapped halo row: copy the strip's rows
+      copies.resize(static_cast<std::size_t>(N * n * in_w));
+      const int first = a > 0 ? a - 1 : rows - 1, last = b < rows ? b : 0;
+      for (std::size_t i = 0; i < N; ++i) {
+        double* copy = copies.data() + i * n * in_w;
+        std::memcpy(copy, inputs[i] + first * in_w, sizeof(double) * in_w);
+        std::memcpy(copy + in_w, inputs[i] + a * in_w, sizeof(double) * (b - a) * in_w);
+        std::memcpy(copy + (n - 1) * in_w, inputs[i] + last * in_w, sizeof(double) * in_w);
+        in[i] = copy;
+      }
+    } else { // the strip's rows and its halo lie in place
+      for (std::size_t i = 0; i < N; ++i)
+        in[i] = inputs[i] + (a - below) * in_w;
     }
+    result.resize(static_cast<std::size_t>(n * out_row));
+    kernel(in, result.data(), n);
+    store(a * out_row, (b - a) * out_row, result.data() + below * out_row);
   };
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
   {
-    // per thread: one strip's copies, or two saved rows; kept by the thread (OpenMP's threads
-    // live on), so that a call allocates nothing once the sizes have been seen
-    thread_local std::vector<double> buffer;
-    for (int parity = 0; parity < 2; ++parity) {
+    // per thread: a periodic end strip's input copies and a strip's output; kept by the thread
+    // (OpenMP's threads live on), so that a call allocates nothing once the sizes have been seen
+    thread_local std::vector<double> copies, result;
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
-      for (int half = 0; half < strips / 2; ++half)
-        run_strip(2 * half + parity, buffer);
-    }
+    for (int s = 0; s < strips; ++s)
+      run_strip(s, copies, result);
   }
   return true;
+}
+
+/// for_row_strips storing every strip's output rows into `out`, which then holds what
+/// kernel(inputs, out, shape.rows) writes on the whole grid (`out` must not overlap an input).
+template <std::size_t N, typename Kernel>
+bool run_by_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
+                       double* out, Kernel&& kernel, bool force_strips = false) {
+  return for_row_strips<N>(
+      shape, inputs, std::forward<Kernel>(kernel),
+      [out](Eigen::Index first, Eigen::Index count, const double* values) {
+        std::memcpy(out + first, values, sizeof(double) * count);
+      },
+      force_strips);
 }
 
 // Vector loops on both cores. Each is one pass over its operands; reductions add per-thread

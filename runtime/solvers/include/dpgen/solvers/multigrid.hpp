@@ -90,25 +90,57 @@ inline std::vector<std::vector<int>> probe_classes(int n, bool periodic) {
 /// along x and along y agree, no two of them neighbours) returns A_cc at every cell c of the
 /// class. At most 9 operator applications. Also the diagonal a Jacobi-preconditioned CG needs.
 inline Eigen::VectorXd operator_diagonal(const LevelOperator& op, const Eigen::VectorXd& k, int nx,
+                                         int ny, double h, const Boundaries& boundaries);
+
+namespace detail {
+
+// operator_diagonal into `diagonal`, with `probe` and `column` as work space (nx * ny values
+// each, all three distinct; a Multigrid passes its level's scratch vectors, so that its setup
+// allocates nothing per level).
+inline void probe_diagonal(const LevelOperator& op, const double* k, int nx, int ny, double h,
+                           const Boundaries& boundaries, double* probe, double* column,
+                           double* diagonal) {
+  const Eigen::Index n = static_cast<Eigen::Index>(nx) * ny;
+  const auto columns = probe_classes(nx, boundaries.west == Boundary::periodic);
+  const auto rows = probe_classes(ny, boundaries.south == Boundary::periodic);
+  parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+    std::fill(probe + lo, probe + hi, 0.0);
+    return 0.0;
+  });
+  // f(c) for every cell c of a colour class, on every thread for a large grid (by rows)
+  const auto for_class = [&](const std::vector<int>& row_class,
+                             const std::vector<int>& column_class, auto&& f) {
+    const Eigen::Index cells = Eigen::Index(row_class.size()) * Eigen::Index(column_class.size());
+    const int row_count = static_cast<int>(row_class.size());
+    const int threads = cells * 9 >= kParallelValues ? max_threads() : 1;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static)
+#endif
+    for (int r = 0; r < row_count; ++r)
+      for (int i : column_class)
+        f(static_cast<Eigen::Index>(row_class[r]) * nx + i);
+    (void)threads;
+  };
+  for (const auto& row_class : rows)
+    for (const auto& column_class : columns) {
+      for_class(row_class, column_class, [&](Eigen::Index c) { probe[c] = 1.0; });
+      op(probe, k, column, nx, ny, h);
+      for_class(row_class, column_class, [&](Eigen::Index c) {
+        diagonal[c] = column[c];
+        probe[c] = 0.0;
+      });
+    }
+}
+
+} // namespace detail
+
+inline Eigen::VectorXd operator_diagonal(const LevelOperator& op, const Eigen::VectorXd& k, int nx,
                                          int ny, double h, const Boundaries& boundaries) {
   const Eigen::Index n = static_cast<Eigen::Index>(nx) * ny;
   detail::require_size(k.size(), n, "operator_diagonal", "coefficient k");
-  const auto columns = detail::probe_classes(nx, boundaries.west == Boundary::periodic);
-  const auto rows = detail::probe_classes(ny, boundaries.south == Boundary::periodic);
-  Eigen::VectorXd probe = Eigen::VectorXd::Zero(n), column(n), diagonal(n);
-  for (const auto& row_class : rows)
-    for (const auto& column_class : columns) {
-      for (int j : row_class)
-        for (int i : column_class)
-          probe[static_cast<Eigen::Index>(j) * nx + i] = 1.0;
-      op(probe.data(), k.data(), column.data(), nx, ny, h);
-      for (int j : row_class)
-        for (int i : column_class) {
-          const Eigen::Index c = static_cast<Eigen::Index>(j) * nx + i;
-          diagonal[c] = column[c];
-          probe[c] = 0.0;
-        }
-    }
+  Eigen::VectorXd probe(n), column(n), diagonal(n);
+  detail::probe_diagonal(op, k.data(), nx, ny, h, boundaries, probe.data(), column.data(),
+                         diagonal.data());
   return diagonal;
 }
 
@@ -173,7 +205,12 @@ public:
     Level& fine = levels_.front();
     detail::require_size(k.size(), fine.cells(), options_.name, "coefficient k");
     detail::require_finite(k, options_.name, "coefficient k");
-    fine.k = k;
+    const double* kin = k.data();
+    double* kf = fine.k.data(); // sized by build_levels; copied on every thread
+    parallel_chunks(fine.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      std::copy(kin + lo, kin + hi, kf + lo);
+      return 0.0;
+    });
     for (std::size_t l = 1; l < levels_.size(); ++l)
       average_2x2(levels_[l - 1], levels_[l]);
     for (Level& level : levels_) // checked when first needed (on more than one thread)
@@ -236,6 +273,7 @@ private:
     Eigen::VectorXd smoother; // w / diag(A): one Jacobi sweep is x += smoother .* (b - A x)
     Eigen::VectorXd b, x;     // right-hand side and correction (coarse levels)
     Eigen::VectorXd scratch;  // A x, residuals, prolonged corrections
+    Eigen::VectorXd next;     // the other iterate of the smoothing sweeps (they alternate)
     Eigen::VectorXd transfer; // 2nx-by-ny: between the x and y passes of P and R = P^T / 4
     mutable Strips strips = Strips::unchecked; // does the operator give its bits by row strips
     Eigen::Index cells() const { return static_cast<Eigen::Index>(nx) * ny; }
@@ -320,6 +358,8 @@ private:
       Level& level = levels_[l];
       level.k.resize(level.cells());
       level.scratch.resize(level.cells());
+      if (l + 1 < levels_.size())
+        level.next.resize(level.cells());
       if (l > 0) {
         level.b.resize(level.cells());
         level.x.resize(level.cells());
@@ -338,8 +378,11 @@ private:
   // Whether the operator gives the whole grid's bits by row strips on this level, checked once
   // per coefficient (false for a level too small to be split).
   bool strips_right(const Level& level) const {
-    if (level.strips == Strips::unchecked)
-      level.strips = strips_match(level) ? Strips::yes : Strips::no;
+    if (level.strips == Strips::unchecked) {
+      Eigen::VectorXd x(level.cells()), whole(level.cells()), strips(level.cells());
+      level.strips =
+          strips_match(level, x.data(), whole.data(), strips.data()) ? Strips::yes : Strips::no;
+    }
     return level.strips == Strips::yes;
   }
   void apply_level(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
@@ -347,31 +390,62 @@ private:
   }
 
   bool apply_by_strips(const Level& level, const double* x, double* y, bool force) const {
-    const RowStripShape shape{level.ny, level.nx, level.nx, 1,
-                              boundaries_.south == Boundary::periodic};
-    return run_by_row_strips<2>(
-        shape, {x, level.k.data()}, y,
-        [&](const std::array<const double*, 2>& in, double* out, int rows) {
-          op_(in[0], in[1], out, level.nx, rows, level.h);
+    return apply_by_strips_then(
+        level, x,
+        [y](Eigen::Index first, Eigen::Index count, const double* ax) {
+          std::memcpy(y + first, ax, sizeof(double) * count);
         },
         force);
   }
 
-  // One whole-grid application against one by strips, on a pseudo-random x.
-  bool strips_match(const Level& level) const {
+  // The operator on row strips (dpgen/parallel.hpp), each strip's A x handed to store(first,
+  // count, ax) while it is in the core's cache.
+  template <typename Store>
+  bool apply_by_strips_then(const Level& level, const double* x, Store&& store, bool force) const {
+    const RowStripShape shape{level.ny, level.nx, level.nx, 1,
+                              boundaries_.south == Boundary::periodic};
+    return for_row_strips<2>(
+        shape, {x, level.k.data()},
+        [&](const std::array<const double*, 2>& in, double* out, int rows) {
+          op_(in[0], in[1], out, level.nx, rows, level.h);
+        },
+        store, force);
+  }
+
+  // store(first, count, ax) over every cell, ax = (A_l x)[first, first + count): by row strips
+  // where apply_level would use them (each strip's A x from the cache), else after one
+  // application into level.scratch, in chunks on every thread. store may write level.scratch
+  // at the cells it is given (the residual does), nothing else it reads.
+  template <typename Store> void apply_level_then(Level& level, const double* x, Store&& store) {
+    const bool strips = level.strips != Strips::no && detail::max_threads() > 1;
+    if (strips && strips_right(level) && apply_by_strips_then(level, x, store, /*force=*/false))
+      return;
+    op_(x, level.k.data(), level.scratch.data(), level.nx, level.ny, level.h);
+    const double* ax = level.scratch.data();
+    parallel_chunks(level.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      store(lo, hi - lo, ax + lo);
+      return 0.0;
+    });
+  }
+
+  // One whole-grid application against one by strips, on a pseudo-random x (x, whole and
+  // strips: work space of level.cells() values each).
+  bool strips_match(const Level& level, double* xs, double* whole, double* ss) const {
     const Eigen::Index n = level.cells();
-    Eigen::VectorXd x(n), whole(n), strips(n);
-    std::uint64_t state = 0x9e3779b97f4a7c15ULL; // a fixed pseudo-random x (splitmix64)
-    for (Eigen::Index c = 0; c < n; ++c) {
-      std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-      x[c] = static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.5;
-    }
-    op_(x.data(), level.k.data(), whole.data(), level.nx, level.ny, level.h);
-    strips.setConstant(std::numeric_limits<double>::quiet_NaN()); // a row never written shows
-    return apply_by_strips(level, x.data(), strips.data(), /*force=*/true) &&
-           std::memcmp(whole.data(), strips.data(), sizeof(double) * n) == 0;
+    parallel_chunks(n, [&](Eigen::Index lo, Eigen::Index hi) {
+      for (Eigen::Index c = lo; c < hi; ++c) {
+        // a fixed pseudo-random x: splitmix64, its state after c + 1 steps from the seed
+        std::uint64_t z = 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(c + 2);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        xs[c] = static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.5;
+        ss[c] = std::numeric_limits<double>::quiet_NaN(); // a row never written shows
+      }
+      return 0.0;
+    });
+    op_(xs, level.k.data(), whole, level.nx, level.ny, level.h);
+    return apply_by_strips(level, xs, ss, /*force=*/true) &&
+           std::memcmp(whole, ss, sizeof(double) * n) == 0;
   }
 
   // The coarse coefficient: mg_average_2x2 by row strips (coarse row jc reads fine rows 2 jc and
@@ -392,18 +466,40 @@ private:
     const LevelOperator apply = [&](const double* x, const double*, double* y, int, int, double) {
       apply_level(level, x, y);
     };
-    const Eigen::VectorXd diagonal =
-        operator_diagonal(apply, level.k, level.nx, level.ny, level.h, boundaries_);
-    for (int j = 0; j < level.ny; ++j)
-      for (int i = 0; i < level.nx; ++i) {
-        const double d = diagonal[j * level.nx + i];
-        if (!(d > 0.0) || !std::isfinite(d))
-          throw std::invalid_argument(detail::message(
-              options_.name, ": the operator's diagonal is ", d, " at cell (", i, ", ", j,
-              ") of level ", l, " (", level.nx, "x", level.ny,
-              "); Jacobi smoothing needs a positive diagonal (negate a Laplacian; k must be > 0)"));
-      }
-    level.smoother = options_.jacobi_weight * diagonal.cwiseInverse();
+    level.smoother.resize(level.cells());
+    double* smoother = level.smoother.data();
+    // the row strips' check (on several threads) with the level's vectors, free during setup
+    if (level.strips == Strips::unchecked && detail::max_threads() > 1)
+      level.strips = strips_match(level, level.next.data(), level.scratch.data(), smoother)
+                         ? Strips::yes
+                         : Strips::no;
+    // the diagonal into level.smoother (probes in next, A probe in scratch)
+    detail::probe_diagonal(apply, level.k.data(), level.nx, level.ny, level.h, boundaries_,
+                           level.next.data(), level.scratch.data(), smoother);
+    const auto bad = [](double d) { return !(d > 0.0) || !std::isfinite(d); };
+    const double bad_cells = parallel_chunks(level.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      double count = 0.0;
+      for (Eigen::Index c = lo; c < hi; ++c)
+        count += bad(smoother[c]) ? 1.0 : 0.0;
+      return count;
+    });
+    if (bad_cells > 0.0) // the first such cell, for the message
+      for (int j = 0; j < level.ny; ++j)
+        for (int i = 0; i < level.nx; ++i) {
+          const double d = smoother[j * level.nx + i];
+          if (bad(d))
+            throw std::invalid_argument(detail::message(
+                options_.name, ": the operator's diagonal is ", d, " at cell (", i, ", ", j,
+                ") of level ", l, " (", level.nx, "x", level.ny,
+                "); Jacobi smoothing needs a positive diagonal (negate a Laplacian; k must be > "
+                "0)"));
+        }
+    const double weight = options_.jacobi_weight; // smoother = w / diag(A)
+    parallel_chunks(level.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      for (Eigen::Index c = lo; c < hi; ++c)
+        smoother[c] = weight * (1.0 / smoother[c]);
+      return 0.0;
+    });
   }
 
   // The coarsest operator as a dense matrix (one probe per cell), checked for symmetry, then
@@ -443,17 +539,18 @@ private:
           "); a Laplacian must be negated"));
   }
 
-  // One damped Jacobi sweep: x <- x + w D^-1 (b - A x).
-  void smooth(Level& level, const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-    apply_level(level, x, level.scratch);
+  // One damped Jacobi sweep out of place: to = from + w D^-1 (b - A from), each strip's update
+  // made from its A x while that is in the cache. to must not be from: a strip reads its
+  // neighbours' rows of from while they are being updated.
+  void smooth(Level& level, const Eigen::VectorXd& b, const Eigen::VectorXd& from,
+              Eigen::VectorXd& to) {
     const double* w = level.smoother.data();
     const double* rhs = b.data();
-    const double* ax = level.scratch.data();
-    double* xs = x.data();
-    parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
-      for (Eigen::Index c = lo; c < hi; ++c)
-        xs[c] += w[c] * (rhs[c] - ax[c]);
-      return 0.0;
+    const double* xs = from.data();
+    double* out = to.data();
+    apply_level_then(level, xs, [=](Eigen::Index first, Eigen::Index count, const double* ax) {
+      for (Eigen::Index c = 0; c < count; ++c)
+        out[first + c] = xs[first + c] + w[first + c] * (rhs[first + c] - ax[c]);
     });
   }
 
@@ -470,7 +567,12 @@ private:
     fill_zero(coarse.b);
     mg_prolong_x_adjoint(coarse.b.data(), coarse.b.data(), coarse.transfer.data(), coarse.nx,
                          coarse.ny, w.self, w.wrap, e.self, e.wrap);
-    coarse.b *= 0.25; // a coarse level: a quarter of the cells
+    double* cb = coarse.b.data(); // a coarse level: a quarter of the cells
+    parallel_chunks(coarse.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      for (Eigen::Index c = lo; c < hi; ++c)
+        cb[c] *= 0.25;
+      return 0.0;
+    });
   }
 
   static void fill_zero(Eigen::VectorXd& v) {
@@ -481,10 +583,12 @@ private:
     });
   }
 
-  // x += P x_coarse (bilinear, ghosts from the boundary conditions). The two kernels run by
-  // row strips (dpgen/parallel.hpp): mg_prolong_x acts on each row alone, mg_prolong_y writes
-  // fine rows 2 jc, 2 jc + 1 from coarse rows jc - 1 .. jc + 1, as that needs.
-  void add_prolonged(Level& coarse, Level& fine, Eigen::VectorXd& x) const {
+  // to = from + P x_coarse (bilinear, ghosts from the boundary conditions; to may be from). The
+  // two kernels run by row strips (dpgen/parallel.hpp): mg_prolong_x acts on each row alone,
+  // mg_prolong_y writes fine rows 2 jc, 2 jc + 1 from coarse rows jc - 1 .. jc + 1, as that
+  // needs; each strip of P x_coarse is added from the cache.
+  void add_prolonged(Level& coarse, Level& fine, const Eigen::VectorXd& from,
+                     Eigen::VectorXd& to) const {
     const Ghost s = ghost(boundaries_.south), n = ghost(boundaries_.north);
     const Ghost w = ghost(boundaries_.west), e = ghost(boundaries_.east);
     const int nxc = coarse.nx, nyc = coarse.ny;
@@ -497,14 +601,19 @@ private:
     const auto prolong_y = [&](const std::array<const double*, 1>& in, double* out, int rows) {
       mg_prolong_y(in[0], out, nxc, rows, s.self, s.wrap, n.self, n.wrap);
     };
-    if (!run_by_row_strips<1>({nyc, 2 * nxc, 2 * nxc, 2, boundaries_.south == Boundary::periodic},
-                              {coarse.transfer.data()}, fine.scratch.data(), prolong_y))
-      prolong_y({coarse.transfer.data()}, fine.scratch.data(), nyc);
+    const double* xs = from.data();
+    double* out = to.data();
+    const auto add = [=](Eigen::Index first, Eigen::Index count, const double* p) {
+      for (Eigen::Index c = 0; c < count; ++c)
+        out[first + c] = xs[first + c] + p[c];
+    };
+    if (for_row_strips<1>({nyc, 2 * nxc, 2 * nxc, 2, boundaries_.south == Boundary::periodic},
+                          {coarse.transfer.data()}, prolong_y, add))
+      return;
+    prolong_y({coarse.transfer.data()}, fine.scratch.data(), nyc);
     const double* p = fine.scratch.data();
-    double* xs = x.data();
-    parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
-      for (Eigen::Index c = lo; c < hi; ++c)
-        xs[c] += p[c];
+    parallel_chunks(fine.cells(), [&](Eigen::Index lo, Eigen::Index hi) {
+      add(lo, hi - lo, p + lo);
       return 0.0;
     });
   }
@@ -515,6 +624,9 @@ private:
   //   x <- S^m x                      the same sweeps again
   // and a direct solve on the coarsest level. With S self-adjoint (Jacobi), R = P^T / 4 and
   // B_{l+1} symmetric, the map b -> x from x = 0 is symmetric: a valid CG preconditioner.
+  //
+  // The sweeps alternate between x and level.next (each is out of place, so that a strip's
+  // update can be made from its A x in the cache), arranged so that the last one writes x.
   void v_cycle(int l, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool zero_guess) {
     Level& level = levels_[l];
     if (l == levels() - 1) {
@@ -526,36 +638,46 @@ private:
       }
       return;
     }
-    for (int s = 0; s < options_.smoothing_sweeps; ++s) {
+    const int m = options_.smoothing_sweeps;
+    Eigen::VectorXd* from = &x;
+    Eigen::VectorXd* to = &level.next;
+    const auto sweep = [&] {
+      smooth(level, b, *from, *to);
+      std::swap(from, to);
+    };
+    for (int s = 0; s < m; ++s) {
       if (s == 0 && zero_guess) {
         const double* w = level.smoother.data();
         const double* rhs = b.data();
-        double* xs = x.data();
+        double* xs = from->data();
         parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
           for (Eigen::Index c = lo; c < hi; ++c)
             xs[c] = w[c] * rhs[c];
           return 0.0;
         });
       } else {
-        smooth(level, b, x);
+        sweep();
       }
     }
     Level& coarse = levels_[l + 1];
-    apply_level(level, x, level.scratch);
     {
       const double* rhs = b.data();
       double* r = level.scratch.data();
-      parallel_chunks(x.size(), [&](Eigen::Index lo, Eigen::Index hi) {
-        for (Eigen::Index c = lo; c < hi; ++c)
-          r[c] = rhs[c] - r[c]; // r = b - A x
-        return 0.0;
-      });
+      apply_level_then(level, from->data(),
+                       [=](Eigen::Index first, Eigen::Index count, const double* ax) {
+                         for (Eigen::Index c = first; c < first + count; ++c)
+                           r[c] = rhs[c] - ax[c - first]; // r = b - A x
+                       });
     }
     restrict_residual(level.scratch, coarse);
     v_cycle(l + 1, coarse.b, coarse.x, /*zero_guess=*/true);
-    add_prolonged(coarse, level, x);
-    for (int s = 0; s < options_.smoothing_sweeps; ++s)
-      smooth(level, b, x);
+    // the corrected iterate where the m sweeps after it end in x
+    Eigen::VectorXd* corrected = m % 2 == 0 ? &x : &level.next;
+    add_prolonged(coarse, level, *from, *corrected);
+    from = corrected;
+    to = corrected == &x ? &level.next : &x;
+    for (int s = 0; s < m; ++s)
+      sweep();
   }
 
   Boundaries boundaries_;
