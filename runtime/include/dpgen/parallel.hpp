@@ -1,8 +1,8 @@
 // Both cores for code that was written serial: a 2D row-major stencil kernel run on horizontal
-// strips of its grid in parallel (run_by_row_strips), and the vector loops of the solvers
-// (fused updates, reductions in a fixed order) with OpenMP. Without OpenMP, or on one thread,
-// everything runs serially; results depend on the number of threads only through the order of
-// the sums in reductions, never from run to run.
+// strips of its grid in parallel (for_row_strips, run_by_row_strips), and the vector loops of the
+// solvers (fused updates, reductions in a fixed order) with OpenMP. Without OpenMP, or on one
+// thread, everything runs serially; results depend on the number of threads only through the order
+// of the sums in reductions, never from run to run.
 #pragma once
 
 #include <Eigen/Core>
@@ -34,10 +34,21 @@ inline int max_threads() {
 // a parallel region a few (and far more on a machine whose cores are busy with other work).
 constexpr Eigen::Index kParallelValues = 65536;
 
+// One strip's buffers per thread, shared by every kernel and store (kept by the thread:
+// OpenMP's threads live on, so a call allocates nothing once the sizes have been seen).
+struct StripBuffers {
+  std::vector<double> copies; // a periodic end strip's input rows
+  std::vector<double> result; // the strip's output rows
+};
+inline StripBuffers& strip_buffers() {
+  thread_local StripBuffers buffers;
+  return buffers;
+}
+
 } // namespace detail
 
-/// The shape of a kernel for run_by_row_strips: `rows` input rows of `in_width` values (every
-/// input array), `out_per_in * rows` output rows of `out_width` values; output rows
+/// The shape of a kernel for for_row_strips and run_by_row_strips: `rows` input rows of `in_width`
+/// values (every input array), `out_per_in * rows` output rows of `out_width` values; output rows
 /// out_per_in * j .. out_per_in * (j + 1) - 1 depend only on input rows j - 1, j, j + 1 (a
 /// stencil of radius 1 along y; anything along x) and on whether j is the first or last row.
 /// `periodic`: the first and last input rows are neighbours.
@@ -69,8 +80,9 @@ struct RowStripShape {
 template <std::size_t N, typename Kernel, typename Store>
 bool for_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
                     Kernel&& kernel, Store&& store, bool force_strips = false) {
-  // Output values per strip (512 KiB): the strip's output stays in L2 until it is stored, and
-  // the halo rows, computed and dropped, are 2 of at least 32 rows of a 2048-wide grid.
+  // Output values per strip (512 KiB): the strip's output stays in L2 until it is stored. At
+  // least 16 rows, so that the two halo rows, computed and dropped, add at most 1/8 (1/16 up
+  // to 4096 output values per row).
   constexpr Eigen::Index kStripValues = 65536;
   const int threads = detail::max_threads();
   const int rows = shape.rows;
@@ -79,13 +91,16 @@ bool for_row_strips(const RowStripShape& shape, const std::array<const double*, 
   const Eigen::Index values = Eigen::Index(rows) * std::max(in_w, out_row);
   if (rows < 16 || (!force_strips && (threads < 2 || values < detail::kParallelValues)))
     return false;
-  const Eigen::Index by_cache = kStripValues / std::max<Eigen::Index>(out_row, 1);
+  const Eigen::Index by_cache =
+      std::max<Eigen::Index>(16, kStripValues / std::max<Eigen::Index>(out_row, 1));
   const int height = static_cast<int>(
       std::max<Eigen::Index>(8, std::min<Eigen::Index>(by_cache, rows / (2 * threads))));
   const int strips = std::max(2, rows / height); // each at least `height` rows
   const auto strip_begin = [&](int s) { return static_cast<int>(Eigen::Index(rows) * s / strips); };
 
-  const auto run_strip = [&](int s, std::vector<double>& copies, std::vector<double>& result) {
+  const auto run_strip = [&](int s, detail::StripBuffers& buffers) {
+    std::vector<double>& copies = buffers.copies;
+    std::vector<double>& result = buffers.result;
     const int a = strip_begin(s), b = strip_begin(s + 1);
     const int below = a > 0 || shape.periodic ? 1 : 0, above = b < rows || shape.periodic ? 1 : 0;
     const int n = b - a + below + above; // input rows the kernel sees
@@ -112,14 +127,12 @@ bool for_row_strips(const RowStripShape& shape, const std::array<const double*, 
 #pragma omp parallel num_threads(threads)
 #endif
   {
-    // per thread: a periodic end strip's input copies and a strip's output; kept by the thread
-    // (OpenMP's threads live on), so that a call allocates nothing once the sizes have been seen
-    thread_local std::vector<double> copies, result;
+    detail::StripBuffers& buffers = detail::strip_buffers();
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
     for (int s = 0; s < strips; ++s)
-      run_strip(s, copies, result);
+      run_strip(s, buffers);
   }
   return true;
 }

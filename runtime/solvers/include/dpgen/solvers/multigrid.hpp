@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -89,9 +90,6 @@ inline std::vector<std::vector<int>> probe_classes(int n, bool periodic) {
 /// radius 1 (5 or 9 points), A applied to the indicator of one colour class (cells whose colours
 /// along x and along y agree, no two of them neighbours) returns A_cc at every cell c of the
 /// class. At most 9 operator applications. Also the diagonal a Jacobi-preconditioned CG needs.
-inline Eigen::VectorXd operator_diagonal(const LevelOperator& op, const Eigen::VectorXd& k, int nx,
-                                         int ny, double h, const Boundaries& boundaries);
-
 namespace detail {
 
 // operator_diagonal into `diagonal`, with `probe` and `column` as work space (nx * ny values
@@ -114,7 +112,7 @@ inline void probe_diagonal(const LevelOperator& op, const double* k, int nx, int
     const int row_count = static_cast<int>(row_class.size());
     const int threads = cells * 9 >= kParallelValues ? max_threads() : 1;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static)
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
 #endif
     for (int r = 0; r < row_count; ++r)
       for (int i : column_class)
@@ -220,8 +218,9 @@ public:
     factor_coarsest();
   }
 
-  /// True when level l applies the operator by row strips in parallel (see
-  /// MultigridOptions::parallel_rows; false also for levels too small to be split).
+  /// True when level l may apply the operator by row strips in parallel: the check found that
+  /// they give the whole grid's bits (see MultigridOptions::parallel_rows; false for levels
+  /// too small to be split). A level below 64K values runs whole all the same.
   bool parallel_rows(int l) const { return strips_right(levels_.at(l)); }
 
   /// z = B r: one V-cycle for A z = r from z = 0.
@@ -370,9 +369,13 @@ private:
 
   // y = A_l x: by row strips on every thread where they were found right, else in one call.
   void apply_level(const Level& level, const double* x, double* y) const {
-    const bool strips = level.strips != Strips::no && detail::max_threads() > 1;
-    if (!strips || !strips_right(level) || !apply_by_strips(level, x, y, /*force=*/false))
+    if (!use_strips(level) || !apply_by_strips(level, x, y, /*force=*/false))
       op_(x, level.k.data(), y, level.nx, level.ny, level.h);
+  }
+
+  // On several threads, where the level's strips were found right (checked on first use).
+  bool use_strips(const Level& level) const {
+    return level.strips != Strips::no && detail::max_threads() > 1 && strips_right(level);
   }
 
   // Whether the operator gives the whole grid's bits by row strips on this level, checked once
@@ -417,8 +420,7 @@ private:
   // application into level.scratch, in chunks on every thread. store may write level.scratch
   // at the cells it is given (the residual does), nothing else it reads.
   template <typename Store> void apply_level_then(Level& level, const double* x, Store&& store) {
-    const bool strips = level.strips != Strips::no && detail::max_threads() > 1;
-    if (strips && strips_right(level) && apply_by_strips_then(level, x, store, /*force=*/false))
+    if (use_strips(level) && apply_by_strips_then(level, x, store, /*force=*/false))
       return;
     op_(x, level.k.data(), level.scratch.data(), level.nx, level.ny, level.h);
     const double* ax = level.scratch.data();
@@ -544,6 +546,7 @@ private:
   // neighbours' rows of from while they are being updated.
   void smooth(Level& level, const Eigen::VectorXd& b, const Eigen::VectorXd& from,
               Eigen::VectorXd& to) {
+    assert(&from != &to);
     const double* w = level.smoother.data();
     const double* rhs = b.data();
     const double* xs = from.data();
