@@ -66,11 +66,13 @@ void check_shape(int rows, long in_w, long out_w, int opi, bool periodic, int th
   const bool split =
       dpgen::run_by_row_strips<2>(shape, {a.data(), b.data()}, strips.data(), kernel, force);
   std::vector<int> stored(whole.size(), 0);
+  std::vector<int> stores(static_cast<std::size_t>(rows) + 1, 0); // calls, by first row
   const bool split_again = dpgen::for_row_strips<2>(
       shape, {a.data(), b.data()}, kernel,
       [&](Eigen::Index first, Eigen::Index count, const double*) {
         for (Eigen::Index c = first; c < first + count; ++c)
           ++stored[static_cast<std::size_t>(c)]; // each strip its own values: no race
+        ++stores[static_cast<std::size_t>(first / (opi * out_w))];
       },
       force);
   omp_set_num_threads(before);
@@ -81,6 +83,10 @@ void check_shape(int rows, long in_w, long out_w, int opi, bool periodic, int th
   for (int count : stored)
     wrong += count != 1;
   CHECK(wrong == 0);
+  int calls = 0; // the grid was split: a store per strip, at least two
+  for (int count : stores)
+    calls += count;
+  CHECK(calls >= 2);
 }
 
 } // namespace
@@ -99,6 +105,26 @@ TEST_CASE("row strips without forcing: wide grids on two threads, a long 1D grid
   check_shape(600, 512, 512, 1, true, 2, /*force=*/false);   // 300K values: 2 threads split
   check_shape(300, 512, 1024, 2, false, 2, /*force=*/false); // prolongation-like, 2 rows out
   check_shape(100000, 1, 1, 1, true, 2, /*force=*/false);    // a 1D periodic rollout
+}
+
+TEST_CASE("a kernel that runs strips itself: the inner call runs whole, the bits stay") {
+  // The strips' buffers are one per thread: a nested call must not use them while its caller's
+  // strip is in them. It returns false, and the kernel calls its inner kernel once instead.
+  const TestKernel inner{64, 64, 1, false};
+  int inner_split = 0;
+  const auto outer = [&](const std::array<const double*, 2>& in, double* out, int rows) {
+    if (dpgen::run_by_row_strips<2>({rows, 64, 64, 1, false}, in, out, inner, /*force=*/true))
+      ++inner_split;
+    else
+      inner(in, out, rows);
+  };
+  const std::vector<double> a = pseudo_random(200 * 64, 5), b = pseudo_random(200 * 64, 6);
+  std::vector<double> whole(200 * 64), strips(200 * 64, NAN);
+  inner({a.data(), b.data()}, whole.data(), 200);
+  REQUIRE(dpgen::run_by_row_strips<2>({200, 64, 64, 1, false}, {a.data(), b.data()}, strips.data(),
+                                      outer, /*force=*/true));
+  CHECK(inner_split == 0);
+  CHECK(std::memcmp(whole.data(), strips.data(), sizeof(double) * whole.size()) == 0);
 }
 
 TEST_CASE("grids too small or on one thread unforced run whole: nothing is done") {

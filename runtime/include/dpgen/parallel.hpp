@@ -39,6 +39,7 @@ constexpr Eigen::Index kParallelValues = 65536;
 struct StripBuffers {
   std::vector<double> copies; // a periodic end strip's input rows
   std::vector<double> result; // the strip's output rows
+  int depth = 0;              // > 0 while this thread runs a strip
 };
 inline StripBuffers& strip_buffers() {
   thread_local StripBuffers buffers;
@@ -75,15 +76,21 @@ struct RowStripShape {
 /// at least 8 rows high, and two or more per thread where the grid has the rows; a thread
 /// runs neighbouring strips, so their shared halo rows are read from its cache. `force_strips`:
 /// split even where one call would do (one thread, a small grid), to check that a kernel has the
-/// shape, bit for bit. Returns false (and does nothing) when the grid is too small to split: call
-/// the kernel once.
+/// shape, bit for bit. Returns false (and does nothing) when the grid is too small to split, or
+/// when called from a kernel or store of another strip run on the same thread: call the kernel
+/// once.
 template <std::size_t N, typename Kernel, typename Store>
 bool for_row_strips(const RowStripShape& shape, const std::array<const double*, N>& inputs,
                     Kernel&& kernel, Store&& store, bool force_strips = false) {
-  // Output values per strip (512 KiB): the strip's output stays in L2 until it is stored. At
-  // least 16 rows, so that the two halo rows, computed and dropped, add at most 1/8 (1/16 up
-  // to 4096 output values per row).
+  // Output values per strip (512 KiB): the strip's output stays in L2 until it is stored. The
+  // budget gives at least 16 rows (so the two halo rows, computed and dropped, add at most 1/8;
+  // 1/16 up to 2048 output values per row); a grid with fewer than 32 rows per thread gets
+  // strips of at least 8.
   constexpr Eigen::Index kStripValues = 65536;
+  // Inside a kernel or store of another for_row_strips call on this thread: its strip is in
+  // this thread's buffers, so this one runs whole (the caller calls the kernel once).
+  if (detail::strip_buffers().depth > 0)
+    return false;
   const int threads = detail::max_threads();
   const int rows = shape.rows;
   const Eigen::Index in_w = shape.in_width;
@@ -128,11 +135,13 @@ bool for_row_strips(const RowStripShape& shape, const std::array<const double*, 
 #endif
   {
     detail::StripBuffers& buffers = detail::strip_buffers();
+    ++buffers.depth;
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
     for (int s = 0; s < strips; ++s)
       run_strip(s, buffers);
+    --buffers.depth;
   }
   return true;
 }
