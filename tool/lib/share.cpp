@@ -285,7 +285,8 @@ private:
     if (!ok || !inner)
       return std::nullopt;
     s.move = move(x);
-    s.text = key_text(x, s.move);
+    int unbounded = 0; // (a key is not cut: small() bounded the value)
+    s.text = spelling(x, s.move, unbounded);
     return s;
   }
 
@@ -315,9 +316,20 @@ private:
     return bare || !found ? 0 : *found;
   }
 
-  // `x` as a key (ValueShape), the innermost counter moved by `move`: every
-  // node with what tells it apart, a read's index as the polynomial it is.
-  std::string key_text(const ExprP& n, long long move) const {
+  // `n` as text: every node with what tells it apart. As a key (ValueShape,
+  // `move` given), a read's index is the polynomial it is, the innermost counter
+  // moved by `move`. As a product's sign (no `move`), a read's index is left out
+  // (`q[*] * q[*]`: the same for each copy of it at any iteration, however
+  // spelled, and for some others: the test that uses it errs towards not
+  // sharing) and locals are seen through; past `budget` nodes the rest is "...",
+  // so the size stays bounded where locals nest (x2 = x * x; x4 = x2 * x2; ...).
+  std::string spelling(const ExprP& n, std::optional<long long> move, int& budget) const {
+    if (!move) {
+      if (--budget < 0)
+        return "...";
+      if (n->op == Op::Local && n->local->def)
+        return spelling(n->local->def, move, budget);
+    }
     std::string s = fmt::format("({} {}", op_info(n->op).name, type_spelling(n->type));
     switch (n->op) {
     case Op::IntConst:
@@ -327,20 +339,22 @@ private:
       s += fmt::format(" {:a}", n->rval);
       break;
     case Op::Read: {
+      s += fmt::format(" {} {} {}", n->name, n->shape.levels, n->shape.view);
+      if (!move)
+        return s + ")";
       const Poly p = *to_poly(n->ops[0]);
-      const Poly moved = p + Poly::constant(move) * p.coefficient(Sym::counter(inner_));
-      return s +
-             fmt::format(" {} {} {} [{}])", n->name, n->shape.levels, n->shape.view, moved.str());
+      const Poly moved = p + Poly::constant(*move) * p.coefficient(Sym::counter(inner_));
+      return s + fmt::format(" [{}])", moved.str());
     }
     case Op::Cast:
       s += " " + n->cast_type;
       break;
-    default: // (a parameter, counter, kernel-level local or function: its name)
+    default: // (a parameter, counter, local or function: its name)
       s += n->name.empty() ? "" : " " + n->name;
       break;
     }
     for (const auto& o : n->ops)
-      s += " " + key_text(o, move);
+      s += " " + spelling(o, move, budget);
     return s + ")";
   }
 
@@ -472,38 +486,15 @@ private:
     });
   }
 
-  // A product's text with every read's index left out (`q[*] * q[*]`) and
-  // locals seen through: the same for each copy of it at any iteration, however
-  // spelled (and for some others: the test that uses it errs towards not
-  // sharing). Past `budget` nodes the rest is "...": the size stays bounded
-  // where locals nest (x2 = x * x; x4 = x2 * x2; ...).
-  static std::string product_sign(const ExprP& n, int& budget) {
-    if (--budget < 0)
-      return "...";
-    if (n->op == Op::Local && n->local->def)
-      return product_sign(n->local->def, budget);
-    std::string s = fmt::format("({} {}", op_info(n->op).name, type_spelling(n->type));
-    if (n->op == Op::Read)
-      return s + fmt::format(" {} {} {})", n->name, n->shape.levels, n->shape.view);
-    if (n->op == Op::IntConst)
-      s += fmt::format(" {}", n->ival);
-    else if (n->op == Op::RealConst)
-      s += fmt::format(" {:a}", n->rval);
-    else if (!n->name.empty())
-      s += " " + n->name;
-    for (const auto& o : n->ops)
-      s += " " + product_sign(o, budget);
-    return s + ")";
-  }
-
-  static std::string product_sign(const ExprP& n) {
+  // A product's spelling with indices left out, at most 64 nodes (spelling).
+  std::string product_sign(const ExprP& n) const {
     int budget = 64;
-    return product_sign(n, budget);
+    return spelling(n, std::nullopt, budget);
   }
 
   // The product_sign of every product in `x`, through its locals (each once).
-  static void note_products(const ExprP& x, std::set<std::string>& out,
-                            std::set<const LocalVar*>& seen) {
+  void note_products(const ExprP& x, std::set<std::string>& out,
+                     std::set<const LocalVar*>& seen) const {
     if (product_like(x))
       out.insert(product_sign(x));
     if (x->op == Op::Local) {
