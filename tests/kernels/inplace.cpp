@@ -44,3 +44,26 @@ DPGEN_KERNEL void normalize_inplace(DPGEN_INOUT double* v, DPGEN_IN const double
   for (int i = 0; i < n; ++i)
     v[i] *= inv;
 }
+
+// Both arms of an if/else write the element they test: the else arm tests the
+// old value, not the one the first arm may have just written (a tangent that
+// updated u in place before the second test ran both arms where the first
+// moved u across 0.5).
+DPGEN_KERNEL void branch_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* f, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (u[i] > 0.5)
+      u[i] = u[i] * 0.5 * f[i];
+    else
+      u[i] = u[i] + 0.2 * f[i];
+  }
+}
+
+// Two arrays updated in place in one iteration, the second from the first's
+// new value and from neighbours of an input (a coupled explicit update).
+DPGEN_KERNEL void coupled_inplace(DPGEN_INOUT double* u, DPGEN_INOUT double* v,
+                                  DPGEN_IN const double* f, int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    u[i] = 2.0 * u[i] * f[i];
+    v[i] = v[i] + u[i] * (f[i - 1] + f[i + 1]);
+  }
+}

@@ -149,3 +149,62 @@ TEST_CASE("normalize_inplace: an accumulator of the old values, then a rescale i
         });
   }
 }
+
+TEST_CASE("branch_inplace: the else arm tests the old value") {
+  for (size_t n : {1u, 2u, 7u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    check_inplace(
+        n, [&](Vec& u, const Vec& f) { branch_inplace(u.data(), f.data(), ni); },
+        [&](const Vec& u, Vec& ua, const Vec& f, Vec& fa) {
+          branch_inplace_adjoint(u.data(), ua.data(), f.data(), fa.data(), ni);
+        },
+        [&](Vec& u, Vec& ud, const Vec& f, const Vec& fd) {
+          branch_inplace_tangent(u.data(), ud.data(), f.data(), fd.data(), ni);
+        });
+  }
+  // u = 0.8 takes the first arm only: 0.8 * 0.5 * 1 = 0.4 (both arms: 0.6).
+  Vec u = {0.8}, ud = {1.0}, f = {1.0}, fd = {0.0};
+  branch_inplace_tangent(u.data(), ud.data(), f.data(), fd.data(), 1);
+  CHECK(u[0] == 0.4);
+  CHECK(ud[0] == 0.5);
+}
+
+TEST_CASE("coupled_inplace: two arrays in place, the second from the first's new value") {
+  for (size_t n : {1u, 3u, 8u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    std::mt19937_64 rng(20261130);
+    Vec u = random(n, rng), v = random(n, rng), f = random(n, rng), du = random(n, rng, -1, 1),
+        dv = random(n, rng, -1, 1), df = random(n, rng, -1, 1), wu = random(n, rng, -1, 1),
+        wv = random(n, rng, -1, 1);
+    // J (du, dv, df) by central differences of the in-place forward on copies.
+    const double h = 1e-6;
+    Vec up = u, um = u, vp = v, vm = v, fp = f, fm = f;
+    for (size_t i = 0; i < n; ++i) {
+      up[i] += h * du[i], um[i] -= h * du[i];
+      vp[i] += h * dv[i], vm[i] -= h * dv[i];
+      fp[i] += h * df[i], fm[i] -= h * df[i];
+    }
+    coupled_inplace(up.data(), vp.data(), fp.data(), ni);
+    coupled_inplace(um.data(), vm.data(), fm.data(), ni);
+    // Tangent: the new values as the forward leaves them, their tangents as the differences.
+    Vec ut = u, vt = v, ut_dot = du, vt_dot = dv, uf = u, vf = v;
+    coupled_inplace_tangent(ut.data(), ut_dot.data(), vt.data(), vt_dot.data(), f.data(), df.data(),
+                            ni);
+    coupled_inplace(uf.data(), vf.data(), f.data(), ni);
+    for (size_t i = 0; i < n; ++i) {
+      CAPTURE(i);
+      CHECK(ut[i] == doctest::Approx(uf[i]).epsilon(1e-14));
+      CHECK(vt[i] == doctest::Approx(vf[i]).epsilon(1e-14));
+      CHECK(ut_dot[i] == doctest::Approx((up[i] - um[i]) / (2 * h)).epsilon(1e-6));
+      CHECK(vt_dot[i] == doctest::Approx((vp[i] - vm[i]) / (2 * h)).epsilon(1e-6));
+    }
+    // The adjoint (seeds wu, wv of the new values) against the tangent: the dot-product test.
+    Vec ua = wu, va = wv, fa(n, 0.0);
+    coupled_inplace_adjoint(u.data(), ua.data(), v.data(), va.data(), f.data(), fa.data(), ni);
+    const double lhs = dot(wu, ut_dot) + dot(wv, vt_dot),
+                 rhs = dot(du, ua) + dot(dv, va) + dot(df, fa);
+    CHECK(std::fabs(lhs - rhs) <= 1e-12 * std::max(1.0, std::fabs(rhs)));
+  }
+}

@@ -25,8 +25,8 @@ namespace {
 
 // The stores of one iteration, in order (each with its guard and the locals
 // it reads).
-void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& stores, bool tangent,
-                 const ForwardOptions& options) {
+void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& stores,
+                 bool tangent) {
   std::set<int> done;
   std::set<std::string> vars;
   for (const ForwardStore& fs : stores) {
@@ -46,23 +46,7 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
     std::string dot_text = !is_zero(dot)                             ? print(dot)
                            : type_spelling(s.value->type) == "float" ? "0.0f"
                                                                      : "0.0";
-    const Param* twin = k.find_param(s.array);
-    if (twin && !twin->twin_of.empty() && options.in_place) {
-      // In place: both values from the old element first, then the stores.
-      // (in a block of its own: a later in-place store under a condition in
-      // the same iteration declares the same names without shadowing these)
-      const std::string& u = twin->twin_of;
-      const std::string new_value = k.fresh(u + "_new_value");
-      const std::string value_dot = k.fresh(u + "_new_dot");
-      code.open("");
-      code.line("const {} {} = {};", type_spelling(s.value->type), new_value, print(value));
-      if (tangent)
-        code.line("const {} {} = {};", type_spelling(s.value->type), value_dot, dot_text);
-      code.line("{}{} = {};", u, idx, new_value);
-      if (tangent)
-        code.line("{}_dot{} = {};", u, idx, value_dot);
-      code.close();
-    } else if (s.extremum != 0 || !tangent) {
+    if (s.extremum != 0 || !tangent) {
       // (a min/max scan is a constant to derivatives: its tangent stays what
       // its first store set, 0)
       code.line("{}", store_statement(s, s.array + idx, print(value)));
@@ -97,19 +81,18 @@ void emit_interior_bounds(Code& code, const Loop& l, const Interval& iv, const s
 // every thread where `threads` is a condition), then the rest, in the loop's
 // order.
 void emit_peeled(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
-                 const ForwardOptions& options, const std::string& threads,
-                 const std::string& edge_flag) {
+                 const std::string& threads, const std::string& edge_flag) {
   const Loop& l = plan.nest->loops.back();
   const std::string t = kCellType;
   const std::string edge = k.fresh("edge"), interior = k.fresh("interior");
   const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
   code.line("// iterations near the ends of the loops: as the kernel writes them");
   code.open(fmt::format("auto {} = [&](const {} {})", edge, t, l.var));
-  emit_stores(code, k, plan.stores, tangent, options);
+  emit_stores(code, k, plan.stores, tangent);
   code.close(";");
   code.line("// inside: the index conditions decided there folded (the same results)");
   code.open(fmt::format("auto {} = [&](const {} {})", interior, t, l.var));
-  emit_stores(code, k, plan.interior_stores, tangent, options);
+  emit_stores(code, k, plan.interior_stores, tangent);
   code.close(";");
   emit_interior_bounds(code, l, plan.interior.back(), in_lo, in_hi, edge_flag);
   auto loop = [&](const std::string& from, const std::string& to) {
@@ -187,10 +170,9 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
     }
   }
   if (plan.peeled())
-    emit_peeled(code, k, plan, tangent, options, opened_loops == 0 ? threads : std::string(),
-                edge_flag);
+    emit_peeled(code, k, plan, tangent, opened_loops == 0 ? threads : std::string(), edge_flag);
   else
-    emit_stores(code, k, plan.stores, tangent, options);
+    emit_stores(code, k, plan.stores, tangent);
   for (int i = 0; i < opened; ++i) {
     if (i == opened - 2 && !iteration.empty()) { // the outermost loop's body
       code.close(";");
@@ -252,7 +234,6 @@ void emit_recompute(Code& code, const ForwardPlan& plan, const std::string& name
   // serial, the in-place arrays' new values to their buffers
   ForwardOptions serial;
   serial.threads = false;
-  serial.in_place = false;
   emit_forward_nests(code, plan, serial, false);
   code.close();
 }

@@ -24,9 +24,6 @@ namespace dpgen {
 struct ForwardOptions {
   /// The plan's parallel nests on every thread (threaded_loop); else all serial.
   bool threads = true;
-  /// An in-place array's new values (Param::twin_of) to the array itself, from
-  /// its old element (the tangent); else to the twin's buffer (the recompute).
-  bool in_place = true;
 };
 
 /// Nest `plan` of `k`: its loops (a descending one counted down, as the

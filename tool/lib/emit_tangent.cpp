@@ -162,10 +162,38 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
     }
   emit_size_checks(code, k, k.name + "_tangent");
+  // In-place arrays (DPGEN_INOUT): the IR reads their old values everywhere, also after the
+  // iteration's own store to the element (`u[i] = 2 * u[i]; v[i] += u[i];` reads the old u[i]
+  // times 2, and an else-branch tests the old u[i]). So the stores go to buffers that start as
+  // copies of the old values (an element no store reaches stays as it is), and to the array
+  // once every nest has run.
+  struct InPlace {
+    const Param* array;
+    std::string twin, values, dots;
+  };
+  std::vector<InPlace> in_place;
+  for (const auto& twin : k.params) {
+    if (twin.twin_of.empty())
+      continue;
+    const Param* u = k.find_param(twin.twin_of);
+    InPlace b{u, twin.name, k.fresh(twin.name + "_buf"), k.fresh(twin.name + "_dot_buf")};
+    const std::string n = k.fresh(u->name + "_n");
+    code.line("// '{}' is updated in place: its new values and tangents to buffers first", u->name);
+    code.line("const std::ptrdiff_t {} = {};", n, k.extent.at(twin.name).code());
+    code.line("std::vector<{}> {}({}, {} + {}), {}({}_dot, {}_dot + {});", u->elem_name, b.values,
+              u->name, u->name, n, b.dots, u->name, u->name, n);
+    code.line("{}* const {} = {}.data();", u->elem_name, b.twin, b.values);
+    code.line("{}* const {}_dot = {}.data();", u->elem_name, b.twin, b.dots);
+    in_place.push_back(b);
+  }
   emit_hoisted(code, tp.loops.hoisted);
   for (size_t n = 0; n < tp.loops.nests.size(); ++n) {
     code.line("// loop nest {}: each store, then its tangent", n + 1);
     emit_forward_nest(code, k, tp.loops.nests[n], true, ForwardOptions{});
+  }
+  for (const auto& b : in_place) {
+    code.line("std::copy({}.begin(), {}.end(), {});", b.values, b.values, b.array->name);
+    code.line("std::copy({}.begin(), {}.end(), {}_dot);", b.dots, b.dots, b.array->name);
   }
   code.close();
   if (shaped) {
@@ -257,9 +285,9 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
           "see)\n");
   c.raw(fmt::format("#include \"{}_tangent.hpp\"\n\n", stem));
   c.raw("#include <algorithm>\n#include <cmath>\n#include <cstddef>\n");
-  bool hidden = false;
+  bool hidden = false; // (or in-place arrays: buffers)
   for (const auto* k : kernels)
-    hidden = hidden || !k->hidden.empty();
+    hidden = hidden || !k->hidden.empty() || has_inout(*k);
   if (hidden)
     c.raw("#include <vector>\n");
   if (checks)
