@@ -500,6 +500,15 @@ ExprP Expressions::call_expr(const CallExpr* c) {
       }
     }
   }
+  if (!math && f->isInStdNamespace() && f->getName() == "clamp" && c->getNumArgs() == 3) {
+    // std::clamp(v, lo, hi) is v < lo ? lo : hi < v ? hi : v, which for lo <= hi (its
+    // precondition) is min(max(v, lo), hi) with std::max's and std::min's ties: the same
+    // value, the same derivatives.
+    Type t = L.type_of(c);
+    auto arg = [&](unsigned i) { return cast(expr(c->getArg(i)), t); };
+    ExprP v = arg(0), lo = arg(1), hi = arg(2);
+    return call("min", {call("max", {v, lo}, t), hi}, t);
+  }
   if (!math)
     L.fail(c->getBeginLoc(),
            fmt::format("call to '{}', which dpgen cannot differentiate; the "

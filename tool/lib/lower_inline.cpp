@@ -6,6 +6,17 @@
 
 namespace dpgen::lowering {
 
+// `U(i, j)` where U is a local the kernel made over its arrays (`const Grid2 U{u, nx};`): a
+// view class's object bound as a functor's is (lower_stmt.cpp), its members known.
+bool Inliner::made_accessor(const CallExpr* c) const {
+  const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
+  const auto* ref = oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
+  const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+  auto it = lv ? L.env_.find(lv) : L.env_.end();
+  return it != L.env_.end() && it->second.kind == Binding::Lambda && it->second.functor &&
+         it->second.fields;
+}
+
 ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   const FunctionDecl* def = nullptr;
   f->hasBody(def);
@@ -19,7 +30,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   unsigned first = 0;
   std::shared_ptr<std::map<const FieldDecl*, Binding>> functor_fields; // (a functor's members)
   if (const auto* m = dyn_cast<CXXMethodDecl>(def);
-      m && (m->getParent()->isLambda() || L.objects_.is_functor_class(m->getParent()))) {
+      m && (m->getParent()->isLambda() || L.objects_.is_functor_class(m->getParent()) ||
+            made_accessor(c))) {
     const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
     const auto* ref =
         oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;

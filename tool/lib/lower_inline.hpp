@@ -31,6 +31,8 @@ public:
   // The value of call `c` of helper `f` (void helpers: their stores and
   // out-parameters, and a null value).
   ExprP inline_call(const clang::CallExpr* c, const clang::FunctionDecl* f);
+  // `c` calls the operator() of an accessor the kernel made over its arrays.
+  bool made_accessor(const clang::CallExpr* c) const;
   // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
   // variable captured by copy must still have the value it had here when the
   // lambda is called; init-captures and `this` are outside the subset.

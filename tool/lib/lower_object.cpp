@@ -358,6 +358,31 @@ bool Objects::is_functor_class(const CXXRecordDecl* rd) const {
   return false;
 }
 
+namespace {
+// A constructor whose body is empty and which sets every member, in declaration order, to one
+// of its parameters (`: p(p), nx(nx) {}`), with no base class.
+bool copying_constructor(const CXXConstructExpr* cc) {
+  const CXXConstructorDecl* ctor = cc->getConstructor();
+  const FunctionDecl* def = nullptr;
+  if (!ctor || !ctor->hasBody(def) || ctor->isCopyOrMoveConstructor())
+    return false;
+  const auto* body = dyn_cast<CompoundStmt>(def->getBody());
+  const auto* d = llvm::cast<CXXConstructorDecl>(def);
+  if (!body || !body->body_empty() || d->getParent()->getNumBases() != 0)
+    return false;
+  auto field = d->getParent()->field_begin();
+  for (const CXXCtorInitializer* ci : d->inits()) {
+    if (!ci->isMemberInitializer() || field == d->getParent()->field_end() ||
+        ci->getMember() != *field++)
+      return false;
+    const auto* r = dyn_cast<DeclRefExpr>(ci->getInit()->IgnoreImplicit()->IgnoreParenImpCasts());
+    if (!r || !isa<ParmVarDecl>(r->getDecl()))
+      return false;
+  }
+  return field == d->getParent()->field_end();
+}
+} // namespace
+
 Binding Objects::functor_binding(const clang::Expr* init, const CXXRecordDecl* rd) {
   const clang::Expr* e = made_object(init);
   Binding b;
@@ -370,21 +395,36 @@ Binding Objects::functor_binding(const clang::Expr* init, const CXXRecordDecl* r
       L.fail(init->getBeginLoc(), "'*this' of a class other than the member kernel's");
     return b; // the member kernel's own object: its members are L.fields_
   }
-  const auto* il = dyn_cast<InitListExpr>(e);
-  if (!il)
-    L.fail(init->getBeginLoc(), fmt::format("functor '{}' must be made here from the kernel's "
-                                          "views, arrays and values ({}{{...}}, members in "
-                                          "order), or be '*this' of a member kernel",
-                                          rd->getNameAsString(), rd->getNameAsString()),
-         "dpgen-lambda");
+  // Each member's value: the aggregate's initializer in order, or the argument that a
+  // constructor which only copies its parameters into the members (`Grid2(const double* p,
+  // int nx) : p(p), nx(nx) {}`) gives it.
+  std::vector<const clang::Expr*> values;
+  if (const auto* il = dyn_cast<InitListExpr>(e)) {
+    for (unsigned i = 0; i < il->getNumInits(); ++i)
+      values.push_back(il->getInit(i));
+  } else if (const auto* cc = dyn_cast<CXXConstructExpr>(e); cc && copying_constructor(cc)) {
+    for (const CXXCtorInitializer* ci : cc->getConstructor()->inits()) {
+      const auto* r = dyn_cast<DeclRefExpr>(ci->getInit()->IgnoreImplicit()->IgnoreParenImpCasts());
+      values.push_back(cc->getArg(llvm::cast<ParmVarDecl>(r->getDecl())->getFunctionScopeIndex()));
+    }
+  } else {
+    L.fail(init->getBeginLoc(),
+           fmt::format("functor '{}' must be made here from the kernel's "
+                       "views, arrays and values ({}{{...}}, members in "
+                       "order, or a constructor that copies its parameters "
+                       "into the members), or be '*this' of a member kernel",
+                       rd->getNameAsString(), rd->getNameAsString()),
+           "dpgen-lambda");
+  }
   b.fields = std::make_shared<std::map<const FieldDecl*, Binding>>();
   unsigned i = 0;
   for (const FieldDecl* f : rd->fields()) {
-    if (i >= il->getNumInits())
-      L.fail(il->getBeginLoc(), fmt::format("functor '{}': member '{}' has no value here",
-                                          rd->getNameAsString(), f->getNameAsString()),
-           "dpgen-lambda");
-    const clang::Expr* v = il->getInit(i++);
+    if (i >= values.size())
+      L.fail(init->getBeginLoc(),
+             fmt::format("functor '{}': member '{}' has no value here", rd->getNameAsString(),
+                         f->getNameAsString()),
+             "dpgen-lambda");
+    const clang::Expr* v = values[i++];
     QualType t = f->getType();
     const CXXRecordDecl* frd = t->getAsCXXRecordDecl();
     if (t->isPointerType() || (frd && L.views_.is_view_class(frd))) {

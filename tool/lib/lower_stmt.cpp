@@ -251,10 +251,16 @@ void Statements::declare(const Decl* d) {
   const auto* v = dyn_cast<VarDecl>(d);
   if (!v)
     L.fail(d->getLocation(), "only variable declarations are allowed in a kernel");
-  if (v->isStaticLocal() || v->hasGlobalStorage())
-    L.fail(v->getLocation(), fmt::format("static variable '{}' is global state, outside the "
-                                         "kernel subset",
-                                         v->getNameAsString()));
+  // `static const double w[3] = {...}` or `static constexpr double c = 0.5`: a constant with a
+  // constant initializer holds the same values on every call, as it would without `static`.
+  const bool constant =
+      v->getType().isConstant(L.ctx_) && v->getInit() && v->hasConstantInitialization();
+  if ((v->isStaticLocal() || v->hasGlobalStorage()) && !constant)
+    L.fail(v->getLocation(),
+           fmt::format("static variable '{}' is global state (it keeps its value from call to "
+                       "call), outside the kernel subset; a constant table is 'static const' "
+                       "or 'static constexpr' with a constant initializer",
+                       v->getNameAsString()));
   if (const auto* at = L.ctx_.getAsConstantArrayType(v->getType())) {
     if (at->getSize().getZExtValue() > 64) { // a line buffer (lower_buffer.cpp)
       L.bufs_.declare_buffer(v, at->getElementType(),
@@ -278,8 +284,10 @@ void Statements::declare(const Decl* d) {
   if (L.objects_.declare_object(v)) // const auto lo = amrex::lbound(bx);
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
-      rd && L.objects_.is_functor_class(rd) &&
-      v->getInit()) { // const GradientFluxes f{phi, fx, ...};
+      rd && (L.objects_.is_functor_class(rd) || L.views_.is_view_class(rd)) &&
+      v->getInit()) { // const GradientFluxes f{phi, fx, ...}; const Grid2 U{u, nx};
+    // (an accessor made here over the kernel's arrays: its operator() is inlined with its
+    // members bound, as a functor's is)
     L.env_[v] = L.objects_.functor_binding(v->getInit(), rd);
     return;
   }

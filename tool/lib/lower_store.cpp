@@ -102,10 +102,17 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
       ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
       value = op == BO_AddAssign ? r : unary(Op::Neg, r);
       accumulate = true;
+    } else if ((op == BO_MulAssign || op == BO_DivAssign) &&
+               visible_store(current_nest(), p->name, acc->index)) {
+      // b[i] = t; ... b[i] *= s;: the element's value is this iteration's store (a read back),
+      // so this is b[i] = b[i] * s.
+      ExprP r = L.exprs_.expr(rhs);
+      value = binary(op == BO_MulAssign ? Op::Mul : Op::Div, L.exprs_.expr(lhs), r);
     } else {
       L.fail(loc, fmt::format("compound assignment '{}' to output '{}' needs the element's "
-                              "previous value, which the adjoint does not have; only '=', '+=' "
-                              "and '-=' write outputs",
+                              "previous value, which the adjoint does not have; '=', '+=' and "
+                              "'-=' write outputs ('*=' and '/=' an element this iteration has "
+                              "stored)",
                               BinaryOperator::getOpcodeStr(op).str(), p->name));
     }
     if (L.bufs_.is_buffer(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)

@@ -221,7 +221,7 @@ std::string supported_calls() {
     for (const auto& a : f.aliases)
       s += "/" + a;
   }
-  return s;
+  return s + ", std::clamp"; // (lowered to std::min of std::max: lower_expr.cpp)
 }
 
 } // namespace dpgen

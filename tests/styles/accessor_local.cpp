@@ -1,0 +1,41 @@
+// Accessor objects the kernel makes over its raw arrays, as C++ codes wrap a
+// pointer and a row length to write U(i, j) (operator() returns the element
+// by value): an aggregate (`Grid2 U{u, nx}`) and a class whose constructor
+// copies its parameters into private members (`Field2 U(u, nx)`); a
+// variable-coefficient Laplacian with face averages, and a nonlinear update.
+#include "dpgen/annotate.hpp"
+
+struct Grid2 {
+  const double* p;
+  int nx;
+  double operator()(int i, int j) const { return p[j * nx + i]; }
+};
+
+DPGEN_KERNEL void accessor_local(DPGEN_IN const double* u, DPGEN_IN const double* k,
+                                 DPGEN_OUT double* out, int nx, int ny) {
+  const Grid2 U{u, nx}, K{k, nx};
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i) {
+      const double ke = 0.5 * (K(i, j) + K(i + 1, j)), kw = 0.5 * (K(i, j) + K(i - 1, j));
+      const double kn = 0.5 * (K(i, j) + K(i, j + 1)), ks = 0.5 * (K(i, j) + K(i, j - 1));
+      out[j * nx + i] = ke * (U(i + 1, j) - U(i, j)) - kw * (U(i, j) - U(i - 1, j)) +
+                        kn * (U(i, j + 1) - U(i, j)) - ks * (U(i, j) - U(i, j - 1));
+    }
+}
+
+class Field2 {
+public:
+  Field2(const double* data, int stride) : data_(data), stride_(stride) {}
+  double operator()(int i, int j) const { return data_[j * stride_ + i]; }
+
+private:
+  const double* data_;
+  int stride_;
+};
+
+DPGEN_KERNEL void accessor_ctor(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+  const Field2 U(u, nx);
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i)
+      out[j * nx + i] = U(i, j) * (U(i + 1, j) + U(i - 1, j) + U(i, j + 1) + U(i, j - 1));
+}
