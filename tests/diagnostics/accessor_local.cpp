@@ -39,3 +39,17 @@ DPGEN_KERNEL void computing_constructor(DPGEN_IN const double* u, DPGEN_OUT doub
     for (int i = 0; i < nx; ++i)
       out[j * nx + i] = U(i, j);
 }
+
+struct Counting {
+  const double* p;
+  int nx;
+  double operator()(int i, int j) { return p[j * nx + i]; } // (not const)
+};
+
+DPGEN_KERNEL void non_const_call(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+  Counting U{u, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:25: error: 'U' is called through a non-const operator() of 'Counting': an object that may change itself from call to call is outside the kernel subset; declare the operator() const
+      out[j * nx + i] = U(i, j);
+}

@@ -44,6 +44,12 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
                              "(auto f = [&](...) {...}; f(...))");
     if (it->second.functor && it->second.fields) // its members, while its body runs
       functor_fields = it->second.fields;
+    if (!m->isConst() && it->second.functor)
+      L.fail(c->getBeginLoc(),
+             fmt::format("'{}' is called through a non-const operator() of '{}': an object "
+                         "that may change itself from call to call is outside the kernel "
+                         "subset; declare the operator() const",
+                         lv->getNameAsString(), m->getParent()->getNameAsString()));
     if (!m->isConst())
       L.fail(c->getBeginLoc(), fmt::format("lambda '{}' is mutable: its copies keep their "
                                          "changes from one call to the next, which inlining "
