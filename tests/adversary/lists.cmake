@@ -2,7 +2,8 @@
 # the fuzz target runs as seeds (tests/fuzz/CMakeLists.txt): the regressions,
 # accepted with right adjoints, and the ones rejected with a diagnostic.
 set(DPGEN_ADVERSARY_REGRESSIONS
-    cond_idx_gt0 cond_readback cond_index_overwrite cond_readback_else cond_plus_readback
+    guard_continue_times cond_idx_gt0 cond_readback cond_index_overwrite cond_readback_else
+    cond_plus_readback
     cond_nested readback_square a33_cond_store_index a36_cond_store_idx_min
     a42_null_adj a43_helper_sq_nested_crash_min a08_straight_k_before reduce_into_other
     split_pre_reader split_reduce_plus split_norm_other

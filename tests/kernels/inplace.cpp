@@ -67,3 +67,28 @@ DPGEN_KERNEL void coupled_inplace(DPGEN_INOUT double* u, DPGEN_INOUT double* v,
     v[i] = v[i] + u[i] * (f[i - 1] + f[i + 1]);
   }
 }
+
+// A density floor in place, then the pressure from the floored density: the
+// read after the if is the new value where the floor applied (an in-place
+// element stored under a condition and read after it; the generator once
+// read the old value there, in the adjoint and the tangent).
+DPGEN_KERNEL void floor_then_pressure(DPGEN_INOUT double* rho, DPGEN_IN const double* e,
+                                      DPGEN_OUT double* p, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (rho[i] < 0.5)
+      rho[i] = 0.5 + 0.1 * e[i];
+    p[i] = 0.4 * rho[i] * e[i];
+  }
+}
+
+// Each arm of an if/else updates v in place; u then reads the new v.
+DPGEN_KERNEL void arms_then_update(DPGEN_INOUT double* u, DPGEN_INOUT double* v,
+                                   DPGEN_IN const double* f, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (u[i] > 0.5)
+      v[i] = v[i] - 0.5 * u[i];
+    else
+      v[i] = v[i] + u[i] * f[i];
+    u[i] = u[i] + v[i];
+  }
+}

@@ -69,6 +69,73 @@ void check_inplace(size_t n, const Forward& f, const Adjoint& adj, const Tangent
   // <w, J v> from the tangent equals the adjoint's <v, J^T w> to rounding.
   CHECK(std::fabs(dot(w, ut_dot) - rhs) <= 1e-12 * std::max(1.0, std::fabs(rhs)));
 }
+
+// A kernel with `io` arrays updated in place, `in` inputs and `out` outputs (each of n
+// elements), given as its forward, tangent and adjoint on lists of arrays.
+using Arrays = std::vector<Vec>;
+struct Kernel {
+  size_t io = 0, in = 0, out = 0;
+  std::function<void(Arrays& io, const Arrays& in, Arrays& out)> forward;
+  std::function<void(Arrays& io, Arrays& io_dot, const Arrays& in, const Arrays& in_dot,
+                     Arrays& out, Arrays& out_dot)>
+      tangent;
+  std::function<void(const Arrays& io, Arrays& io_adj, const Arrays& in, Arrays& in_adj,
+                     const Arrays& out_adj)>
+      adjoint;
+};
+
+double dots(const Arrays& a, const Arrays& b) {
+  double s = 0;
+  for (size_t k = 0; k < a.size(); ++k)
+    s += dot(a[k], b[k]);
+  return s;
+}
+
+// The tangent's new values and outputs against the forward's, its derivatives against
+// central differences of the forward (on copies), and the adjoint against the tangent (the
+// dot-product test; the adjoint takes the seeds of the new values in io_adj).
+void check_kernel(size_t n, const Kernel& k) {
+  std::mt19937_64 rng(20261130 + n);
+  auto arrays = [&](size_t m, double lo, double hi) {
+    Arrays a;
+    for (size_t i = 0; i < m; ++i)
+      a.push_back(random(n, rng, lo, hi));
+    return a;
+  };
+  const Arrays io = arrays(k.io, 0.1, 0.9), in = arrays(k.in, 0.1, 0.9), dio = arrays(k.io, -1, 1),
+               din = arrays(k.in, -1, 1), wio = arrays(k.io, -1, 1), wout = arrays(k.out, -1, 1);
+  const double h = 1e-6;
+  Arrays iop = io, iom = io, inp = in, inm = in, outp(k.out, Vec(n, 0.0)), outm = outp;
+  for (size_t a = 0; a < k.io; ++a)
+    for (size_t i = 0; i < n; ++i)
+      iop[a][i] += h * dio[a][i], iom[a][i] -= h * dio[a][i];
+  for (size_t a = 0; a < k.in; ++a)
+    for (size_t i = 0; i < n; ++i)
+      inp[a][i] += h * din[a][i], inm[a][i] -= h * din[a][i];
+  k.forward(iop, inp, outp);
+  k.forward(iom, inm, outm);
+  Arrays io_t = io, io_dot = dio, out_t(k.out, Vec(n, 0.0)), out_dot = out_t, io_f = io,
+         out_f = out_t;
+  k.tangent(io_t, io_dot, in, din, out_t, out_dot);
+  k.forward(io_f, in, out_f);
+  auto same = [&](const Arrays& t, const Arrays& f, const Arrays& dot_t, const Arrays& p,
+                  const Arrays& m) {
+    for (size_t a = 0; a < t.size(); ++a)
+      for (size_t i = 0; i < n; ++i) {
+        CAPTURE(a);
+        CAPTURE(i);
+        CHECK(t[a][i] == doctest::Approx(f[a][i]).epsilon(1e-14));
+        CHECK(dot_t[a][i] == doctest::Approx((p[a][i] - m[a][i]) / (2 * h)).epsilon(1e-6));
+      }
+  };
+  same(io_t, io_f, io_dot, iop, iom);
+  same(out_t, out_f, out_dot, outp, outm);
+  Arrays io_adj = wio, in_adj(k.in, Vec(n, 0.0));
+  k.adjoint(io, io_adj, in, in_adj, wout);
+  const double lhs = dots(wio, io_dot) + dots(wout, out_dot),
+               rhs = dots(dio, io_adj) + dots(din, in_adj);
+  CHECK(std::fabs(lhs - rhs) <= 1e-12 * std::max(1.0, std::fabs(rhs)));
+}
 } // namespace
 
 TEST_CASE("react_inplace: adjoint and tangent of an in-place interior update") {
@@ -174,37 +241,74 @@ TEST_CASE("coupled_inplace: two arrays in place, the second from the first's new
   for (size_t n : {1u, 3u, 8u}) {
     CAPTURE(n);
     const int ni = int(n);
-    std::mt19937_64 rng(20261130);
-    Vec u = random(n, rng), v = random(n, rng), f = random(n, rng), du = random(n, rng, -1, 1),
-        dv = random(n, rng, -1, 1), df = random(n, rng, -1, 1), wu = random(n, rng, -1, 1),
-        wv = random(n, rng, -1, 1);
-    // J (du, dv, df) by central differences of the in-place forward on copies.
-    const double h = 1e-6;
-    Vec up = u, um = u, vp = v, vm = v, fp = f, fm = f;
-    for (size_t i = 0; i < n; ++i) {
-      up[i] += h * du[i], um[i] -= h * du[i];
-      vp[i] += h * dv[i], vm[i] -= h * dv[i];
-      fp[i] += h * df[i], fm[i] -= h * df[i];
-    }
-    coupled_inplace(up.data(), vp.data(), fp.data(), ni);
-    coupled_inplace(um.data(), vm.data(), fm.data(), ni);
-    // Tangent: the new values as the forward leaves them, their tangents as the differences.
-    Vec ut = u, vt = v, ut_dot = du, vt_dot = dv, uf = u, vf = v;
-    coupled_inplace_tangent(ut.data(), ut_dot.data(), vt.data(), vt_dot.data(), f.data(), df.data(),
-                            ni);
-    coupled_inplace(uf.data(), vf.data(), f.data(), ni);
-    for (size_t i = 0; i < n; ++i) {
-      CAPTURE(i);
-      CHECK(ut[i] == doctest::Approx(uf[i]).epsilon(1e-14));
-      CHECK(vt[i] == doctest::Approx(vf[i]).epsilon(1e-14));
-      CHECK(ut_dot[i] == doctest::Approx((up[i] - um[i]) / (2 * h)).epsilon(1e-6));
-      CHECK(vt_dot[i] == doctest::Approx((vp[i] - vm[i]) / (2 * h)).epsilon(1e-6));
-    }
-    // The adjoint (seeds wu, wv of the new values) against the tangent: the dot-product test.
-    Vec ua = wu, va = wv, fa(n, 0.0);
-    coupled_inplace_adjoint(u.data(), ua.data(), v.data(), va.data(), f.data(), fa.data(), ni);
-    const double lhs = dot(wu, ut_dot) + dot(wv, vt_dot),
-                 rhs = dot(du, ua) + dot(dv, va) + dot(df, fa);
-    CHECK(std::fabs(lhs - rhs) <= 1e-12 * std::max(1.0, std::fabs(rhs)));
+    Kernel k;
+    k.io = 2, k.in = 1;
+    k.forward = [&](Arrays& io, const Arrays& in, Arrays&) {
+      coupled_inplace(io[0].data(), io[1].data(), in[0].data(), ni);
+    };
+    k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays&,
+                    Arrays&) {
+      coupled_inplace_tangent(io[0].data(), iod[0].data(), io[1].data(), iod[1].data(),
+                              in[0].data(), ind[0].data(), ni);
+    };
+    k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina, const Arrays&) {
+      coupled_inplace_adjoint(io[0].data(), ioa[0].data(), io[1].data(), ioa[1].data(),
+                              in[0].data(), ina[0].data(), ni);
+    };
+    check_kernel(n, k);
+  }
+}
+
+TEST_CASE("floor_then_pressure: a conditional in-place store, then a read of the element") {
+  for (size_t n : {1u, 2u, 9u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    Kernel k;
+    k.io = 1, k.in = 1, k.out = 1;
+    k.forward = [&](Arrays& io, const Arrays& in, Arrays& out) {
+      floor_then_pressure(io[0].data(), in[0].data(), out[0].data(), ni);
+    };
+    k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays& out,
+                    Arrays& outd) {
+      floor_then_pressure_tangent(io[0].data(), iod[0].data(), in[0].data(), ind[0].data(),
+                                  out[0].data(), outd[0].data(), ni);
+    };
+    k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina,
+                    const Arrays& outa) {
+      floor_then_pressure_adjoint(io[0].data(), ioa[0].data(), in[0].data(), ina[0].data(),
+                                  outa[0].data(), ni);
+    };
+    check_kernel(n, k);
+  }
+  // rho = 0.2 is floored to 0.5 + 0.1 e: p = 0.4 (0.5 + 0.1 e) e, dp/drho = 0 (the old
+  // generator read the old rho after the if: p = 0.4 * 0.2 * e, dp/drho = 0.4 e).
+  const double e[1] = {2.0}, p_adj[1] = {1.0};
+  double rho[1] = {0.2}, p[1] = {0.0}, rho_adj[1] = {0.0}, e_adj[1] = {0.0};
+  floor_then_pressure_adjoint(rho, rho_adj, e, e_adj, p_adj, 1);
+  floor_then_pressure(rho, e, p, 1);
+  CHECK(p[0] == doctest::Approx(0.4 * 0.7 * 2.0));
+  CHECK(rho_adj[0] == 0.0);
+  CHECK(e_adj[0] == doctest::Approx(0.4 * 0.1 * 2.0 + 0.4 * 0.7));
+}
+
+TEST_CASE("arms_then_update: both arms update v in place, then u reads the new v") {
+  for (size_t n : {1u, 4u, 11u}) {
+    CAPTURE(n);
+    const int ni = int(n);
+    Kernel k;
+    k.io = 2, k.in = 1;
+    k.forward = [&](Arrays& io, const Arrays& in, Arrays&) {
+      arms_then_update(io[0].data(), io[1].data(), in[0].data(), ni);
+    };
+    k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays&,
+                    Arrays&) {
+      arms_then_update_tangent(io[0].data(), iod[0].data(), io[1].data(), iod[1].data(),
+                               in[0].data(), ind[0].data(), ni);
+    };
+    k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina, const Arrays&) {
+      arms_then_update_adjoint(io[0].data(), ioa[0].data(), io[1].data(), ioa[1].data(),
+                               in[0].data(), ina[0].data(), ni);
+    };
+    check_kernel(n, k);
   }
 }

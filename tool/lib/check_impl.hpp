@@ -64,15 +64,26 @@ public:
   }
 
   // A message as the user reads it: a line buffer's hidden array named as
-  // the kernel names the buffer.
+  // the kernel names the buffer, an in-place array's new values (its twin
+  // `u_new`) as the array.
   std::string user_names(std::string msg) const {
+    auto rename = [&](const std::string& from, const std::string& to) {
+      for (size_t at = msg.find(from); at != std::string::npos; at = msg.find(from, at)) {
+        msg.replace(at, from.size(), to);
+        at += to.size();
+      }
+    };
     for (const auto& [array, b] : a_.buffers)
       for (const auto& [from, to] :
            {std::pair{"output '" + array + "'", "line buffer '" + b.name + "'"},
             std::pair{"work array '" + array + "'", "line buffer '" + b.name + "'"},
             std::pair{"'" + array + "'", "'" + b.name + "'"}})
-        for (size_t at = msg.find(from); at != std::string::npos; at = msg.find(from, at))
-          msg.replace(at, from.size(), to);
+        rename(from, to);
+    for (const auto& p : k_.params)
+      if (!p.twin_of.empty()) {
+        rename("output '" + p.name + "'", "in-place array '" + p.twin_of + "'");
+        rename("'" + p.name + "'", "'" + p.twin_of + "'");
+      }
     return msg;
   }
 

@@ -310,16 +310,38 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
 }
 
 // The value u[k] of an in-place array has here: what this iteration stored
-// at k, or the value before the call (a read of the input).
+// at k, or the value before the call (a read of the input). A store under
+// conditions that hold no longer here (`if (f[i] > 0.5) u[i] = 2 * u[i];`,
+// then a read after the if) is that store's value where its conditions held
+// and the earlier value elsewhere; one in an arm that excludes this point
+// (the other arm of the if) did not happen.
 ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
                           const clang::Expr* e) {
+  const std::string twin = p->name + "_new";
   auto nit = L.nest_index_.find(L.cur_key());
   if (nit != L.nest_index_.end())
-    if (Store* st = visible_store(L.k_.nests[nit->second], p->name + "_new", idx))
+    if (Store* st = visible_store(L.k_.nests[nit->second], twin, idx))
       return st->value;
   L.acc_.inout_reads.push_back({p->name, L.cur_key(), L.next_store_seq_, idx, {}, L.pos(loc)});
   ExprP r = read(p->name, idx, p->elem, L.pos(loc), shape_of(*p));
   std::const_pointer_cast<Expr>(r)->source = L.text(e);
+  if (nit == L.nest_index_.end())
+    return r;
+  for (const Store& s : L.k_.nests[nit->second].stores) {
+    if (s.array != twin || !same_index(s.index, idx) || L.paths_disjoint(s.path, L.path_))
+      continue;
+    size_t common = 0; // the conditions this point shares with the store
+    while (common < s.path.size() && common < L.path_.size() &&
+           s.path[common].cond == L.path_[common].cond &&
+           s.path[common].positive == L.path_[common].positive)
+      ++common;
+    ExprP cond;
+    for (size_t i = common; i < s.path.size(); ++i) {
+      ExprP c = s.path[i].positive ? s.path[i].cond : unary(Op::Not, s.path[i].cond);
+      cond = cond ? binary(Op::And, cond, c) : c;
+    }
+    r = cond ? select(cond, s.value, r) : s.value;
+  }
   return r;
 }
 
