@@ -31,8 +31,10 @@ TEST_CASE("styles: clamp_limiter") {
     };
     dpgen_test::check_adjoint(p);
   }
-  // The three arms, by hand: a = (0, v, 1), b = (., t, .): clamp(v + 2t, 0, 1) * t.
-  for (double v : {-0.9, 0.2, 0.9}) {
+  // The three arms and the two ties, by hand: a = (0, v, 1), b = (., 0.1, .):
+  // clamp(v + 0.2, 0, 1) * 0.1; v = -0.2 and 0.8 put v + 0.2 exactly on lo and on hi, where
+  // std::clamp returns v itself: the derivative goes to a[1], not to the bound.
+  for (double v : {-0.9, -0.2, 0.2, 0.8, 0.9}) {
     CAPTURE(v);
     const double a[3] = {0.0, v, 1.0}, b[3] = {0.0, 0.1, 0.0}, seed[3] = {0.0, 1.0, 0.0};
     double out[3] = {0, 0, 0}, a_adj[3] = {0, 0, 0}, b_adj[3] = {0, 0, 0};

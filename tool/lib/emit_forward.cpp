@@ -25,8 +25,8 @@ namespace {
 
 // The stores of one iteration, in order (each with its guard and the locals
 // it reads).
-void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& stores,
-                 bool tangent) {
+void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& stores, bool tangent,
+                 const ForwardOptions& options) {
   std::set<int> done;
   std::set<std::string> vars;
   for (const ForwardStore& fs : stores) {
@@ -54,6 +54,9 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
       code.line("{}{} {} {};", s.array, idx, op, print(value));
       code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
     }
+    if (auto w = options.written.find(s.array); w != options.written.end())
+      code.line("{}{} = 1; // (copied back to '{}')", w->second, idx,
+                k.find_param(s.array)->twin_of);
     if (guarded)
       code.close();
   }
@@ -81,18 +84,19 @@ void emit_interior_bounds(Code& code, const Loop& l, const Interval& iv, const s
 // every thread where `threads` is a condition), then the rest, in the loop's
 // order.
 void emit_peeled(Code& code, const Kernel& k, const ForwardNest& plan, bool tangent,
-                 const std::string& threads, const std::string& edge_flag) {
+                 const ForwardOptions& options, const std::string& threads,
+                 const std::string& edge_flag) {
   const Loop& l = plan.nest->loops.back();
   const std::string t = kCellType;
   const std::string edge = k.fresh("edge"), interior = k.fresh("interior");
   const std::string in_lo = k.fresh("in_lo_" + l.var), in_hi = k.fresh("in_hi_" + l.var);
   code.line("// iterations near the ends of the loops: as the kernel writes them");
   code.open(fmt::format("auto {} = [&](const {} {})", edge, t, l.var));
-  emit_stores(code, k, plan.stores, tangent);
+  emit_stores(code, k, plan.stores, tangent, options);
   code.close(";");
   code.line("// inside: the index conditions decided there folded (the same results)");
   code.open(fmt::format("auto {} = [&](const {} {})", interior, t, l.var));
-  emit_stores(code, k, plan.interior_stores, tangent);
+  emit_stores(code, k, plan.interior_stores, tangent, options);
   code.close(";");
   emit_interior_bounds(code, l, plan.interior.back(), in_lo, in_hi, edge_flag);
   auto loop = [&](const std::string& from, const std::string& to) {
@@ -170,9 +174,10 @@ void emit_forward_nest(Code& code, const Kernel& k, const ForwardNest& plan, boo
     }
   }
   if (plan.peeled())
-    emit_peeled(code, k, plan, tangent, opened_loops == 0 ? threads : std::string(), edge_flag);
+    emit_peeled(code, k, plan, tangent, options, opened_loops == 0 ? threads : std::string(),
+                edge_flag);
   else
-    emit_stores(code, k, plan.stores, tangent);
+    emit_stores(code, k, plan.stores, tangent, options);
   for (int i = 0; i < opened; ++i) {
     if (i == opened - 2 && !iteration.empty()) { // the outermost loop's body
       code.close(";");

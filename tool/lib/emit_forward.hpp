@@ -15,6 +15,7 @@
 #include "ir.hpp"
 #include "loop_plan.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ namespace dpgen {
 struct ForwardOptions {
   /// The plan's parallel nests on every thread (threaded_loop); else all serial.
   bool threads = true;
+  /// An in-place array's new values (the twin `u_new`, Param::twin_of) to a buffer, each
+  /// store also setting the element's flag in the array this map names for the twin (the
+  /// tangent copies back the flagged elements only); empty: no flags (the recompute).
+  std::map<std::string, std::string> written;
 };
 
 /// Nest `plan` of `k`: its loops (a descending one counted down, as the

@@ -331,15 +331,20 @@ void emit_inout_prologue(Code& code, const Kernel& k) {
     code.line("// '{}' is updated in place: {}_adj holds the seed of its new values on entry",
               p.name, p.name);
     code.line("// and the adjoint of its old values on return.");
+    // (the seed is taken at the elements the kernel stores, under the stores' conditions:
+    // nothing is read that the kernel does not write, and each element once, as the
+    // kernel stores it once)
     const std::string n = k.fresh(p.name + "_n");
     code.line("const std::ptrdiff_t {} = {};", n, k.extent.at(twin).code());
-    code.line("std::vector<{}> {}({}_adj, {}_adj + {});", p.elem_name, seed_buffer(k, p.name),
-              p.name, p.name, n);
+    code.line("std::vector<{}> {}(static_cast<std::size_t>({}));", p.elem_name,
+              seed_buffer(k, p.name), n);
     over_stores(code, k, [&](const Store& s, std::vector<ExprP>& uses) -> std::vector<std::string> {
       if (s.array != twin)
         return {};
       uses.push_back(s.index);
-      return {fmt::format("{}_adj{} = 0;", p.name, subscript(s.index, shape_of(p)))};
+      const std::string at = subscript(s.index, shape_of(p));
+      return {fmt::format("{}{} = {}_adj{};", seed_buffer(k, p.name), at, p.name, at),
+              fmt::format("{}_adj{} = 0;", p.name, at)};
     });
   }
 }

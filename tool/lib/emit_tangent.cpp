@@ -164,36 +164,45 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
   emit_size_checks(code, k, k.name + "_tangent");
   // In-place arrays (DPGEN_INOUT): the IR reads their old values everywhere, also after the
   // iteration's own store to the element (`u[i] = 2 * u[i]; v[i] += u[i];` reads the old u[i]
-  // times 2, and an else-branch tests the old u[i]). So the stores go to buffers that start as
-  // copies of the old values (an element no store reaches stays as it is), and to the array
-  // once every nest has run.
+  // times 2, and an else-branch tests the old u[i]). So the stores go to buffers, each
+  // flagging its element, and the flagged elements to the array once every nest has run:
+  // nothing is read or written that the kernel does not read or write.
   struct InPlace {
     const Param* array;
-    std::string twin, values, dots;
+    std::string n, values, dots, flags;
   };
   std::vector<InPlace> in_place;
+  ForwardOptions options;
   for (const auto& twin : k.params) {
     if (twin.twin_of.empty())
       continue;
     const Param* u = k.find_param(twin.twin_of);
-    InPlace b{u, twin.name, k.fresh(twin.name + "_buf"), k.fresh(twin.name + "_dot_buf")};
-    const std::string n = k.fresh(u->name + "_n");
+    InPlace b{u, k.fresh(u->name + "_n"), k.fresh(twin.name + "_buf"),
+              k.fresh(twin.name + "_dot_buf"), k.fresh(twin.name + "_written")};
     code.line("// '{}' is updated in place: its new values and tangents to buffers first", u->name);
-    code.line("const std::ptrdiff_t {} = {};", n, k.extent.at(twin.name).code());
-    code.line("std::vector<{}> {}({}, {} + {}), {}({}_dot, {}_dot + {});", u->elem_name, b.values,
-              u->name, u->name, n, b.dots, u->name, u->name, n);
-    code.line("{}* const {} = {}.data();", u->elem_name, b.twin, b.values);
-    code.line("{}* const {}_dot = {}.data();", u->elem_name, b.twin, b.dots);
+    code.line("const std::ptrdiff_t {} = {};", b.n, k.extent.at(twin.name).code());
+    code.line("std::vector<{}> {}(static_cast<std::size_t>({})), {}({}.size());", u->elem_name,
+              b.values, b.n, b.dots, b.values);
+    code.line("std::vector<unsigned char> {}({}.size()); // the elements stored", b.flags,
+              b.values);
+    code.line("{}* const {} = {}.data();", u->elem_name, twin.name, b.values);
+    code.line("{}* const {}_dot = {}.data();", u->elem_name, twin.name, b.dots);
+    options.written[twin.name] = b.flags;
     in_place.push_back(b);
   }
   emit_hoisted(code, tp.loops.hoisted);
   for (size_t n = 0; n < tp.loops.nests.size(); ++n) {
     code.line("// loop nest {}: each store, then its tangent", n + 1);
-    emit_forward_nest(code, k, tp.loops.nests[n], true, ForwardOptions{});
+    emit_forward_nest(code, k, tp.loops.nests[n], true, options);
   }
   for (const auto& b : in_place) {
-    code.line("std::copy({}.begin(), {}.end(), {});", b.values, b.values, b.array->name);
-    code.line("std::copy({}.begin(), {}.end(), {}_dot);", b.dots, b.dots, b.array->name);
+    const std::string e = k.fresh("element");
+    code.open(fmt::format("for (std::size_t {} = 0; {} < {}.size(); ++{})", e, e, b.values, e));
+    code.open(fmt::format("if ({}[{}])", b.flags, e));
+    code.line("{}[{}] = {}[{}];", b.array->name, e, b.values, e);
+    code.line("{}_dot[{}] = {}[{}];", b.array->name, e, b.dots, e);
+    code.close();
+    code.close();
   }
   code.close();
   if (shaped) {

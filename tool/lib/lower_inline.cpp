@@ -10,7 +10,9 @@ namespace dpgen::lowering {
 // view class's object bound as a functor's is (lower_stmt.cpp), its members known.
 bool Inliner::made_accessor(const CallExpr* c) const {
   const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
-  const auto* ref = oc ? dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts()) : nullptr;
+  if (!oc || oc->getOperator() != OO_Call)
+    return false;
+  const auto* ref = dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts());
   const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
   auto it = lv ? L.env_.find(lv) : L.env_.end();
   return it != L.env_.end() && it->second.kind == Binding::Lambda && it->second.functor &&

@@ -399,11 +399,19 @@ Binding Objects::functor_binding(const clang::Expr* init, const CXXRecordDecl* r
   // constructor which only copies its parameters into the members (`Grid2(const double* p,
   // int nx) : p(p), nx(nx) {}`) gives it.
   std::vector<const clang::Expr*> values;
+  if (rd->getNumBases() != 0)
+    L.fail(init->getBeginLoc(),
+           fmt::format("'{}' has a base class: an object the kernel makes must hold its "
+                       "members itself",
+                       rd->getNameAsString()),
+           "dpgen-lambda");
   if (const auto* il = dyn_cast<InitListExpr>(e)) {
     for (unsigned i = 0; i < il->getNumInits(); ++i)
       values.push_back(il->getInit(i));
   } else if (const auto* cc = dyn_cast<CXXConstructExpr>(e); cc && copying_constructor(cc)) {
-    for (const CXXCtorInitializer* ci : cc->getConstructor()->inits()) {
+    const FunctionDecl* def = nullptr; // (the definition: a declaration has no initializers)
+    cc->getConstructor()->hasBody(def);
+    for (const CXXCtorInitializer* ci : llvm::cast<CXXConstructorDecl>(def)->inits()) {
       const auto* r = dyn_cast<DeclRefExpr>(ci->getInit()->IgnoreImplicit()->IgnoreParenImpCasts());
       values.push_back(cc->getArg(llvm::cast<ParmVarDecl>(r->getDecl())->getFunctionScopeIndex()));
     }
