@@ -136,6 +136,31 @@ void check_kernel(size_t n, const Kernel& k) {
                rhs = dots(dio, io_adj) + dots(din, in_adj);
   CHECK(std::fabs(lhs - rhs) <= 1e-12 * std::max(1.0, std::fabs(rhs)));
 }
+
+// check_kernel for a kernel f(u, v, a, n) with u and v updated in place and one input a.
+using TwoInPlace = void (*)(double*, double*, const double*, int);
+using TwoInPlaceTangent = void (*)(double*, double*, double*, double*, const double*, const double*,
+                                   int);
+using TwoInPlaceAdjoint = void (*)(const double*, double*, const double*, double*, const double*,
+                                   double*, int);
+void check_two_in_place(size_t n, TwoInPlace f, TwoInPlaceTangent tangent,
+                        TwoInPlaceAdjoint adjoint) {
+  const int ni = int(n);
+  Kernel k;
+  k.io = 2, k.in = 1;
+  k.forward = [&](Arrays& io, const Arrays& in, Arrays&) {
+    f(io[0].data(), io[1].data(), in[0].data(), ni);
+  };
+  k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays&, Arrays&) {
+    tangent(io[0].data(), iod[0].data(), io[1].data(), iod[1].data(), in[0].data(), ind[0].data(),
+            ni);
+  };
+  k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina, const Arrays&) {
+    adjoint(io[0].data(), ioa[0].data(), io[1].data(), ioa[1].data(), in[0].data(), ina[0].data(),
+            ni);
+  };
+  check_kernel(n, k);
+}
 } // namespace
 
 TEST_CASE("react_inplace: adjoint and tangent of an in-place interior update") {
@@ -240,22 +265,7 @@ TEST_CASE("branch_inplace: the else arm tests the old value") {
 TEST_CASE("coupled_inplace: two arrays in place, the second from the first's new value") {
   for (size_t n : {1u, 3u, 8u}) {
     CAPTURE(n);
-    const int ni = int(n);
-    Kernel k;
-    k.io = 2, k.in = 1;
-    k.forward = [&](Arrays& io, const Arrays& in, Arrays&) {
-      coupled_inplace(io[0].data(), io[1].data(), in[0].data(), ni);
-    };
-    k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays&,
-                    Arrays&) {
-      coupled_inplace_tangent(io[0].data(), iod[0].data(), io[1].data(), iod[1].data(),
-                              in[0].data(), ind[0].data(), ni);
-    };
-    k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina, const Arrays&) {
-      coupled_inplace_adjoint(io[0].data(), ioa[0].data(), io[1].data(), ioa[1].data(),
-                              in[0].data(), ina[0].data(), ni);
-    };
-    check_kernel(n, k);
+    check_two_in_place(n, coupled_inplace, coupled_inplace_tangent, coupled_inplace_adjoint);
   }
 }
 
@@ -301,22 +311,7 @@ TEST_CASE("floor_then_pressure: a conditional in-place store, then a read of the
 TEST_CASE("arms_then_update: both arms update v in place, then u reads the new v") {
   for (size_t n : {1u, 4u, 11u}) {
     CAPTURE(n);
-    const int ni = int(n);
-    Kernel k;
-    k.io = 2, k.in = 1;
-    k.forward = [&](Arrays& io, const Arrays& in, Arrays&) {
-      arms_then_update(io[0].data(), io[1].data(), in[0].data(), ni);
-    };
-    k.tangent = [&](Arrays& io, Arrays& iod, const Arrays& in, const Arrays& ind, Arrays&,
-                    Arrays&) {
-      arms_then_update_tangent(io[0].data(), iod[0].data(), io[1].data(), iod[1].data(),
-                               in[0].data(), ind[0].data(), ni);
-    };
-    k.adjoint = [&](const Arrays& io, Arrays& ioa, const Arrays& in, Arrays& ina, const Arrays&) {
-      arms_then_update_adjoint(io[0].data(), ioa[0].data(), io[1].data(), ioa[1].data(),
-                               in[0].data(), ina[0].data(), ni);
-    };
-    check_kernel(n, k);
+    check_two_in_place(n, arms_then_update, arms_then_update_tangent, arms_then_update_adjoint);
   }
 }
 
