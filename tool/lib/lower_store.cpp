@@ -215,6 +215,18 @@ bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<Pa
   return true;
 }
 
+namespace {
+// The conjunction of path[from..] as one condition (null where there is none).
+ExprP all_of(const std::vector<PathCond>& path, size_t from) {
+  ExprP cond;
+  for (size_t i = from; i < path.size(); ++i) {
+    ExprP c = path[i].positive ? path[i].cond : unary(Op::Not, path[i].cond);
+    cond = cond ? binary(Op::And, cond, c) : c;
+  }
+  return cond;
+}
+} // namespace
+
 void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
                        SourcePos p, SourceLocation loc, int extremum) {
   // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
@@ -259,11 +271,7 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
                             value->type)
         : accumulate ? binary(Op::Add, prev->value, value)
                      : value;
-    ExprP cond;
-    for (size_t i = prev->path.size(); i < L.path_.size(); ++i) {
-      ExprP c = L.path_[i].positive ? L.path_[i].cond : unary(Op::Not, L.path_[i].cond);
-      cond = cond ? binary(Op::And, cond, c) : c;
-    }
+    const ExprP cond = all_of(L.path_, prev->path.size());
     prev->value = cond ? select(cond, updated, prev->value) : updated;
     prev->pos = p;
     return;
@@ -335,11 +343,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
            s.path[common].cond == L.path_[common].cond &&
            s.path[common].positive == L.path_[common].positive)
       ++common;
-    ExprP cond;
-    for (size_t i = common; i < s.path.size(); ++i) {
-      ExprP c = s.path[i].positive ? s.path[i].cond : unary(Op::Not, s.path[i].cond);
-      cond = cond ? binary(Op::And, cond, c) : c;
-    }
+    const ExprP cond = all_of(s.path, common);
     r = cond ? select(cond, s.value, r) : s.value;
   }
   return r;
