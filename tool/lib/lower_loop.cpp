@@ -72,17 +72,24 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
     if (plo->is_constant() && phi->is_constant() && h.triangle.empty() && !h.parity_start &&
         should_unroll(f, plo->constant_term(), phi->constant_term())) {
       check_not_assigned(f->getBody(), var);
-      auto saved = L.env_.count(var) ? std::optional<Binding>(L.env_[var]) : std::nullopt;
+      for (const auto& c : h.companions)
+        check_not_assigned(f->getBody(), c.var);
+      const auto env_before = L.env_;
       size_t depth = L.path_.size();
       ++L.unrolling_;
-      // every step-th value from lo up (i += s), or each from hi - 1 down
-      const long long stride = step > 0 ? step : 1;
-      for (long long k = plo->constant_term(); k < phi->constant_term(); k += stride) {
+      // every step-th value from lo up (i += s), or from hi - 1 down (i -= s)
+      const long long stride = step > 0 ? step : -step;
+      long long n = 0; // (the iteration's number, for the companions)
+      for (long long k = plo->constant_term(); k < phi->constant_term(); k += stride, ++n) {
         long long v = step > 0 ? k : plo->constant_term() + phi->constant_term() - 1 - k;
         Binding b;
         b.kind = Binding::Value;
         b.value = int_const(v);
         L.env_[var] = b;
+        for (const auto& c : h.companions) {
+          b.value = binary(Op::Add, c.init, int_const(c.step * n));
+          L.env_[c.var] = b;
+        }
         try {
           L.stmts_.lower(f->getBody());
         } catch (const Rejected&) {
@@ -93,19 +100,76 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
         L.path_.resize(depth);
       }
       --L.unrolling_;
-      if (saved) {
-        L.env_[var] = *saved;
-        L.env_[var].value = std::nullopt;
-        L.why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
-                                        "bound instead",
-                                        var->getNameAsString());
-      } else {
-        L.env_.erase(var);
-      }
+      counters_after(h, env_before);
       return true;
     }
   }
   return false;
+}
+
+// `for (double w : weights)` over a local array (a C array or std::array,
+// whose elements dpgen keeps as values): unrolled, the variable bound to
+// each element in turn; over anything else, refused.
+void ForLoops::range_for(const CXXForRangeStmt* f) {
+  const clang::Expr* range = f->getRangeInit()->IgnoreParenImpCasts();
+  const auto* r = dyn_cast<DeclRefExpr>(range);
+  auto it = r ? L.env_.find(dyn_cast<VarDecl>(r->getDecl())) : L.env_.end();
+  if (it == L.env_.end() || it->second.kind != Binding::LocalArray || it->second.elems.empty())
+    L.fail(f->getBeginLoc(),
+           "a range-based for runs over a local array of constant length (a table: 'for "
+           "(double w : weights)'); over anything else, use an integer counter",
+           "dpgen-loop");
+  const VarDecl* var = f->getLoopVariable();
+  const std::string array = r->getDecl()->getNameAsString();
+  QualType vt = var->getType();
+  if (vt->isReferenceType() && !vt.getNonReferenceType().isConstQualified())
+    L.fail(var->getLocation(),
+           fmt::format("'{}' is a non-const reference into local array '{}'; a range-based "
+                       "for reads its elements ('const double& {}' or 'double {}'): assign "
+                       "them through an integer counter",
+                       var->getNameAsString(), array, var->getNameAsString(),
+                       var->getNameAsString()),
+           "dpgen-loop");
+  auto t = L.scalar_type(vt.getNonReferenceType());
+  if (!t)
+    L.fail(var->getLocation(),
+           fmt::format("'{}' of type '{}' is outside the kernel subset (int, float or double)",
+                       var->getNameAsString(), vt.getAsString()),
+           "dpgen-loop");
+  const std::vector<std::optional<ExprP>> elems = it->second.elems; // (the body may not change
+  std::set<const VarDecl*> assigned; //              them: checked below)
+  assigned_vars(f->getBody(), assigned);
+  if (assigned.count(dyn_cast<VarDecl>(r->getDecl())))
+    L.fail(f->getBeginLoc(),
+           fmt::format("the body of a range-based for over '{}' assigns '{}'; fill the array "
+                       "in a loop of its own",
+                       array, array),
+           "dpgen-loop");
+  const size_t depth = L.path_.size();
+  ++L.unrolling_;
+  for (size_t k = 0; k < elems.size(); ++k) {
+    if (!elems[k]) {
+      --L.unrolling_;
+      L.fail(range->getBeginLoc(),
+             fmt::format("element {} of local array '{}' is read before it is assigned", k,
+                         array),
+             "dpgen-loop");
+    }
+    Binding b;
+    b.kind = Binding::Value;
+    b.value = cast(*elems[k], *t);
+    L.env_[var] = b;
+    try {
+      L.stmts_.lower(f->getBody());
+    } catch (const Rejected&) {
+      --L.unrolling_;
+      L.path_.resize(depth);
+      throw;
+    }
+    L.path_.resize(depth);
+  }
+  --L.unrolling_;
+  L.env_.erase(var);
 }
 
 void ForLoops::for_loop(const ForStmt* f) {
@@ -124,7 +188,8 @@ void ForLoops::for_loop(const ForStmt* f) {
   auto loop = std::make_shared<Loop>();
   // The counter keeps its name unless that would collide with a parameter,
   // a local or an enclosing counter in the generated code.
-  std::string base = var->getNameAsString() + (step > 1 ? "_step" : "");
+  const bool strided = step > 1 || step < -1;
+  std::string base = var->getNameAsString() + (strided ? "_step" : "");
   loop->var = base;
   for (int n = 1; L.is_reserved(loop->var) || L.local_names_.count(loop->var); ++n)
     loop->var = fmt::format("{}_{}", L.unprefixed(base), n);
@@ -132,28 +197,34 @@ void ForLoops::for_loop(const ForStmt* f) {
   loop->type_name = L.spelled(var->getType());
   loop->lo = lo;
   loop->hi = hi;
-  loop->descending = step < 0;
+  loop->descending = step == -1;
   ExprP counter = loop_var(loop->var);
-  if (step > 1) {
+  if (strided) {
     // for (i = lo; i < hi; i += s): the loop runs over the steps t in
-    // [0, (hi - lo + s - 1) / s) and i = lo + s * t.
+    // [0, (hi - lo + s - 1) / s) and i = lo + s * t; counting down from
+    // hi - 1 (i -= s), i = hi - 1 - s * t, in the kernel's order.
+    const int s_abs = step > 0 ? step : -step;
     auto trips = std::make_shared<LocalVar>();
     trips->name = loop->var + "_count";
     for (int n = 1; L.local_names_.count(trips->name) || L.is_reserved(trips->name); ++n)
       trips->name = fmt::format("{}_count_{}", L.unprefixed(loop->var), n);
     L.local_names_.insert(trips->name);
     trips->type_name = "std::ptrdiff_t";
-    trips->def = binary(Op::Div, binary(Op::Add, binary(Op::Sub, hi, lo), int_const(step - 1)),
-                        int_const(step));
+    trips->def = binary(Op::Div, binary(Op::Add, binary(Op::Sub, hi, lo), int_const(s_abs - 1)),
+                        int_const(s_abs));
     trips->id = L.next_local_id_++;
     trips->kernel_level = true;
     L.k_.kernel_locals.push_back(trips);
     loop->lo = int_const(0);
     loop->hi = local_ref(trips);
-    counter = binary(Op::Add, lo, binary(Op::Mul, int_const(step), counter));
+    counter = step > 0 ? binary(Op::Add, lo, binary(Op::Mul, int_const(step), counter))
+                       : binary(Op::Sub, binary(Op::Sub, hi, int_const(1)),
+                                binary(Op::Mul, int_const(s_abs), counter));
   }
 
   check_not_assigned(f->getBody(), var);
+  for (const auto& c : h.companions)
+    check_not_assigned(f->getBody(), c.var);
   size_t depth = L.path_.size();
   auto env_before = L.env_;
   auto why_before = L.why_unset_;
@@ -161,6 +232,14 @@ void ForLoops::for_loop(const ForStmt* f) {
   b.kind = Binding::LoopVar;
   b.value = counter;
   L.env_[var] = b;
+  // Companion counters: init + step * the iteration's number.
+  const ExprP trip = strided     ? loop_var(loop->var)
+                     : step > 0 ? binary(Op::Sub, counter, h.first)
+                                : binary(Op::Sub, h.first, counter);
+  for (const auto& c : h.companions) {
+    b.value = binary(Op::Add, c.init, binary(Op::Mul, int_const(c.step), trip));
+    L.env_[c.var] = b;
+  }
   // Variables declared outside the loop and assigned in it (OpenMP
   // `private` temporaries) start each iteration without a value: a read
   // before the iteration's own assignment would be a value carried over
@@ -190,10 +269,14 @@ void ForLoops::for_loop(const ForStmt* f) {
   for (const auto& [bound_at, upper] : triangle) // the triangle's side(s)
     L.path_.push_back({binary(upper ? Op::Lt : Op::Ge, counter, bound_at), true});
   if (parity_start) { // the strided loop's own iterations
-    L.path_.push_back({binary(Op::Ge, counter, parity_start), true});
+    const bool up = parity_step > 0;
+    L.path_.push_back({binary(up ? Op::Ge : Op::Le, counter, parity_start), true});
     L.path_.push_back(
         {binary(Op::Eq,
-                binary(Op::Rem, binary(Op::Sub, counter, parity_start), int_const(parity_step)),
+                binary(Op::Rem,
+                       up ? binary(Op::Sub, counter, parity_start)
+                          : binary(Op::Sub, parity_start, counter),
+                       int_const(up ? parity_step : -parity_step)),
                 int_const(0)),
          true});
   }
@@ -223,12 +306,26 @@ void ForLoops::for_loop(const ForStmt* f) {
                                   "is the last iteration's, outside the kernel subset",
                                   v->getNameAsString());
   }
-  if (const auto* d = dyn_cast_or_null<DeclStmt>(f->getInit()); !d) {
-    // A C89 counter is not a value after its loop either.
-    L.env_[var].value = std::nullopt;
-    L.why_unset_[var] = fmt::format("loop counter '{}' is read after its loop; use the loop "
-                                    "bound instead",
-                                    var->getNameAsString());
+  counters_after(h, env_before);
+}
+
+// After loop `h`: its counters declared in its header are gone; one declared
+// before it (C89) is not a value (it would hold the value past the last).
+void ForLoops::counters_after(const ForHeader& h, const std::map<const VarDecl*, Binding>& before) {
+  std::vector<const VarDecl*> counters{h.var};
+  for (const auto& c : h.companions)
+    counters.push_back(c.var);
+  for (const VarDecl* v : counters) {
+    auto it = before.find(v);
+    if (it == before.end()) {
+      L.env_.erase(v);
+      continue;
+    }
+    L.env_[v] = it->second;
+    L.env_[v].value = std::nullopt;
+    L.why_unset_[v] = fmt::format("loop counter '{}' is read after its loop; use the loop "
+                                  "bound instead",
+                                  v->getNameAsString());
   }
 }
 

@@ -41,8 +41,19 @@ struct ForHeader {
   ExprP lo, hi;
   int step = 1;
   std::vector<std::pair<ExprP, bool>> triangle;
+  // A strided loop whose start moves with outer counters, run as a unit-step
+  // loop over the starts' hull: its start, its step (negative counting down)
   ExprP parity_start;
   int parity_step = 0;
+  // Companion counters (`for (i = 0, j = n - 1; i < n; ++i, --j)`): in the
+  // body, init + step * (the iteration's number, from 0)
+  struct Companion {
+    const clang::VarDecl* var = nullptr;
+    ExprP init;
+    int step = 0;
+  };
+  std::vector<Companion> companions;
+  ExprP first; // the counter's first value, as the body may name it
 };
 
 class LoopHeaders {
@@ -62,14 +73,17 @@ public:
   // where a coefficient is not a constant.
   std::optional<ExprP> hull(const ExprP& e, const Poly& p, bool upper) const;
 
-  // A lower bound of integer `e` over the enclosing loops that depends on the
-  // sizes only: `e` itself where it mentions no counter, the hull of an
-  // affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
-  // remainder of a non-negative value), sums of those. Null otherwise.
-  std::optional<ExprP> smallest(const ExprP& e) const;
+  // A lower (`upper`: an upper) bound of integer `e` over the enclosing
+  // loops that depends on the sizes only: `e` itself where it mentions no
+  // counter, the hull of an affine part, 0 (m - 1) for `x % m` with a
+  // constant m > 0 and x >= 0 (C's remainder of a non-negative value), sums
+  // and differences of those. Null otherwise.
+  std::optional<ExprP> extreme(const ExprP& e, bool upper) const;
 
-  // The `i = lo` of a C89-style loop, if that is its init statement.
-  static const clang::BinaryOperator* init_assignment(const clang::ForStmt* f);
+  // The operands of comma expression `e` (`++i, --j`), or `e` itself.
+  static std::vector<const clang::Expr*> comma_parts(const clang::Expr* e);
+  // Whether `s` names variable `v`.
+  static bool mentions(const clang::Stmt* s, const clang::VarDecl* v);
 
 private:
   Lowerer& L;
@@ -88,6 +102,10 @@ public:
   explicit ForLoops(Lowerer& lowerer) : L(lowerer) {}
 
   void for_loop(const clang::ForStmt* f);
+  // `for (double w : weights)` over a local array (a C array or std::array,
+  // whose elements dpgen keeps as values): unrolled, the variable bound to
+  // each element in turn.
+  void range_for(const clang::CXXForRangeStmt* f);
 
   // Every local variable assigned (=, op=, ++, --) somewhere in `s`.
   void assigned_vars(const clang::Stmt* s, std::set<const clang::VarDecl*>& out);
@@ -103,6 +121,9 @@ private:
   // a[i + m]`) is unrolled: its counter is a constant in each copy.
   bool should_unroll(const clang::ForStmt* f, long long lo, long long hi);
   bool unroll(const clang::ForStmt* f, const ForHeader& h);
+  // After loop `h` (`before`: the bindings before it): its counters declared
+  // in its header are gone; one declared before it (C89) is no value.
+  void counters_after(const ForHeader& h, const std::map<const clang::VarDecl*, Binding>& before);
 
   // A local (or local array) assigned in a loop has no single value after
   // it: forgets it. False if `v` is no such variable.

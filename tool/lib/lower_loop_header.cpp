@@ -5,10 +5,28 @@
 
 namespace dpgen::lowering {
 
-const BinaryOperator* LoopHeaders::init_assignment(const ForStmt* f) {
-  const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit());
-  const auto* a = e ? dyn_cast<BinaryOperator>(e->IgnoreParens()) : nullptr;
-  return a && a->getOpcode() == BO_Assign ? a : nullptr;
+// The operands of comma expression `e` (`++i, --j`), or `e` itself.
+std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
+  e = e->IgnoreParens();
+  if (const auto* b = dyn_cast<BinaryOperator>(e); b && b->getOpcode() == BO_Comma) {
+    auto out = comma_parts(b->getLHS());
+    for (const clang::Expr* r : comma_parts(b->getRHS()))
+      out.push_back(r);
+    return out;
+  }
+  return {e};
+}
+
+// Whether `s` names variable `v`.
+bool LoopHeaders::mentions(const Stmt* s, const VarDecl* v) {
+  if (!s)
+    return false;
+  if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v)
+    return true;
+  for (const Stmt* c : s->children())
+    if (mentions(c, v))
+      return true;
+  return false;
 }
 
 // The header of `for` statement `f`: its counter, its range [lo, hi) with
@@ -24,34 +42,69 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "loop in the kernel",
                        L.frames_.back().fn->getNameAsString()),
            "dpgen-loop");
-  // init: `int i = lo` or, C89 style, `i = lo` for a counter declared earlier.
-  const VarDecl* var = nullptr;
-  const clang::Expr* init = nullptr;
+  // init: `int i = lo` or, C89 style, `i = lo` for a counter declared
+  // earlier; with companion counters, `int i = 0, j = n - 1` or `i = 0, j =
+  // n - 1` (the condition tests one of them, the increment steps each).
+  std::vector<std::pair<const VarDecl*, const clang::Expr*>> inits;
   if (const auto* ds = dyn_cast_or_null<DeclStmt>(f->getInit())) {
-    if (!ds->isSingleDecl())
-      L.fail(f->getBeginLoc(),
-             "a kernel loop declares one counter: 'for (int i = lo; i < hi; "
-             "++i)'",
-             "dpgen-loop");
-    var = dyn_cast<VarDecl>(ds->getSingleDecl());
-    if (!var || !var->getInit())
-      L.fail(f->getBeginLoc(), "loop counter needs an initial value", "dpgen-loop");
-    init = var->getInit();
-  } else if (const auto* a = init_assignment(f); a) {
-    const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
-    var = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = var ? L.env_.find(var) : L.env_.end();
-    if (!var || it == L.env_.end() || it->second.kind != Binding::Value)
-      L.fail(a->getLHS()->getBeginLoc(),
-             "the loop counter must be a local variable of the "
-             "kernel: 'for (i = lo; i < hi; ++i)'",
-             "dpgen-loop");
-    init = a->getRHS();
+    for (const Decl* d : ds->decls()) {
+      const auto* v = dyn_cast<VarDecl>(d);
+      if (!v || !v->getInit())
+        L.fail(f->getBeginLoc(), "loop counter needs an initial value", "dpgen-loop");
+      inits.push_back({v, v->getInit()});
+    }
+  } else if (const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit())) {
+    for (const clang::Expr* part : comma_parts(e)) {
+      const auto* a = dyn_cast<BinaryOperator>(part);
+      if (!a || a->getOpcode() != BO_Assign)
+        L.fail(part->getBeginLoc(),
+               "a kernel loop must set its counter: 'for (int i = lo; i < hi; ++i)' "
+               "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'",
+               "dpgen-loop");
+      const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
+      const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+      auto it = v ? L.env_.find(v) : L.env_.end();
+      if (!v || it == L.env_.end() || it->second.kind != Binding::Value)
+        L.fail(a->getLHS()->getBeginLoc(),
+               "the loop counter must be a local variable of the "
+               "kernel: 'for (i = lo; i < hi; ++i)'",
+               "dpgen-loop");
+      inits.push_back({v, a->getRHS()});
+    }
   } else {
     L.fail(f->getBeginLoc(),
            "a kernel loop must set its counter: 'for (int i = lo; i < hi; ++i)' "
            "or, with 'int i;' declared earlier, 'for (i = lo; i < hi; ++i)'",
            "dpgen-loop");
+  }
+  // The counter is the one the condition tests; the others are companions,
+  // each the same affine function of the iteration in the body.
+  const VarDecl* var = inits[0].first;
+  const clang::Expr* init = inits[0].second;
+  if (inits.size() > 1) {
+    std::vector<size_t> tested;
+    for (size_t k = 0; k < inits.size(); ++k)
+      if (f->getCond() && mentions(f->getCond(), inits[k].first))
+        tested.push_back(k);
+    std::string names;
+    for (const auto& [v, e] : inits)
+      names += (names.empty() ? "'" : ", '") + v->getNameAsString() + "'";
+    if (tested.size() != 1)
+      L.fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
+             fmt::format("a loop with counters {} tests exactly one of them in its condition "
+                         "('i < n'); the others follow it",
+                         names),
+             "dpgen-loop");
+    var = inits[tested[0]].first;
+    init = inits[tested[0]].second;
+    for (const auto& [v, e] : inits)
+      for (const auto& [w, other] : inits)
+        if (mentions(e, w))
+          L.fail(e->getBeginLoc(),
+                 fmt::format("the initial value of loop counter '{}' reads counter '{}' of the "
+                             "same loop; give each counter a value of its own",
+                             v->getNameAsString(), w->getNameAsString()),
+                 "dpgen-loop");
   }
   QualType vt = var->getType().getCanonicalType();
   if (!vt->isIntegerType() || vt->isBooleanType())
@@ -76,7 +129,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   // `for (unsigned i = n; i-- > lo;)`, the way to count an unsigned counter
   // down: the body sees i = n - 1, ..., lo.
   bool post_decrement = false;
-  if (c && cond_op == BO_GT && !f->getInc())
+  if (c && cond_op == BO_GT && (!f->getInc() || inits.size() > 1))
     if (const auto* u = dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts());
         u && u->getOpcode() == UO_PostDec)
       if (const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
@@ -92,15 +145,58 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "'{} < hi'",
                        var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
-  // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down)
-  int step = post_decrement ? -1 : loop_step(f->getInc(), var);
+  // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down);
+  // with companions, one of these for each counter (`++i, --j`)
+  std::vector<ForHeader::Companion> companions;
+  const clang::Expr* inc = f->getInc();
+  if (inits.size() > 1) {
+    inc = nullptr;
+    // each part of the increment steps one counter, each counter once
+    std::map<const VarDecl*, const clang::Expr*> own;
+    if (f->getInc())
+      for (const clang::Expr* part : comma_parts(f->getInc())) {
+        const VarDecl* stepped = nullptr;
+        int n = 0;
+        for (const auto& [v, e] : inits)
+          if (mentions(part, v))
+            stepped = v, ++n;
+        if (n != 1 || own.count(stepped) || (post_decrement && stepped == var))
+          L.fail(part->getBeginLoc(),
+                 "the increment of a loop with several counters steps each of them once: "
+                 "'++i, --j'",
+                 "dpgen-loop");
+        own[stepped] = part;
+      }
+    inc = own.count(var) ? own[var] : nullptr;
+    for (const auto& [v, e] : inits) {
+      if (v == var)
+        continue;
+      const clang::Expr* its = own.count(v) ? own[v] : nullptr;
+      int k = its ? loop_step(its, v) : 0;
+      QualType t = v->getType().getCanonicalType();
+      if (k == 0 || !t->isIntegerType() || t->isBooleanType())
+        L.fail(its ? its->getBeginLoc() : f->getBeginLoc(),
+               fmt::format("loop counter '{}' must have an integer type and step by a constant "
+                           "once per iteration in the loop's increment ('++i, --{}')",
+                           v->getNameAsString(), v->getNameAsString()),
+               "dpgen-loop");
+      if (t->isUnsignedIntegerType() && k < 0)
+        L.fail(its->getBeginLoc(),
+               fmt::format("unsigned counter '{}' counts down beside loop counter '{}': it "
+                           "wraps around at 0; use a signed counter",
+                           v->getNameAsString(), var->getNameAsString()),
+               "dpgen-loop");
+      L.in_loop_bounds_ = true;
+      ExprP value = L.exprs_.expr(e);
+      L.in_loop_bounds_ = false;
+      companions.push_back({v, value, k});
+    }
+  }
+  int step = post_decrement ? -1 : loop_step(inc, var);
   if (step == 0)
     L.fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
            "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
            "counting down)",
-           "dpgen-loop");
-  if (step < -1)
-    L.fail(f->getInc()->getBeginLoc(), "a loop counting down steps by 1; count a strided loop up",
            "dpgen-loop");
   ExprP lo, hi;
   ExprP one = int_const(1);
@@ -123,13 +219,22 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   default:
     L.fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=", "dpgen-loop");
   }
+  const ExprP hi_before_hull = hi; // (a count down's start + 1)
   if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
     L.fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition", "dpgen-loop");
   // Counting an unsigned counter down is safe when the counter stays above
   // zero: `i > b` (b >= 0), or `i >= b` with b >= 1; `i >= 0` wraps.
+  // (a strided count down `i -= s` stays at or above zero where lo - s does)
   bool stays_positive =
-      cond_op == BO_GT ||
-      (cond_op == BO_GE && L.provably_nonneg(binary(Op::Sub, bound, int_const(1))));
+      step < -1 ? L.provably_nonneg(binary(Op::Sub, lo, int_const(-step)))
+                : cond_op == BO_GT ||
+                      (cond_op == BO_GE && L.provably_nonneg(binary(Op::Sub, bound, int_const(1))));
+  if (vt->isUnsignedIntegerType() && step < -1 && !stays_positive)
+    L.fail(f->getInc()->getBeginLoc(),
+           fmt::format("unsigned counter '{}' counts down by {}: it wraps around at 0 unless the "
+                       "loop stops at or above {} ('{} >= {}'); use a signed counter",
+                       var->getNameAsString(), -step, -step, var->getNameAsString(), -step),
+           "dpgen-loop");
   if (vt->isUnsignedIntegerType() && step < 0 && !post_decrement && !stays_positive)
     L.fail(f->getInc()->getBeginLoc(),
            fmt::format("unsigned counter '{}' counts down: its bound check wraps around at 0; "
@@ -137,18 +242,23 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
   // A strided loop whose start moves with outer counters (red-black:
-  // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`)
-  // runs as a unit-step loop from the smallest start over the outer ranges,
-  // its body under `i >= start && (i - start) % step == 0`: the same
-  // iterations, with a box the rules and the gather can range over.
+  // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`;
+  // counting down, `for (i = n - 1 - j % 2; i >= 0; i -= 2)`) runs as a
+  // unit-step loop from the extreme start over the outer ranges, its body
+  // under `i >= start && (i - start) % step == 0` (counting down, `i <=
+  // start && (start - i) % step == 0`): the same iterations, in the same
+  // order, with a box the rules and the gather can range over.
   ExprP parity_start; // the moving start, and the original step
   int parity_step = 0;
-  if (step > 1 && any_node(lo, [](const ExprP& x) { return x->op == Op::LoopVar; }))
-    if (auto least = smallest(lo)) {
-      parity_start = lo;
+  ExprP& start = step > 0 ? lo : hi; // (hi is the start + 1 counting down)
+  const ExprP start_value = step > 0 ? lo : init_value;
+  if ((step > 1 || step < -1) &&
+      any_node(start, [](const ExprP& x) { return x->op == Op::LoopVar; }))
+    if (auto bound_start = extreme(start_value, step < 0)) {
+      parity_start = start_value;
       parity_step = step;
-      lo = *least;
-      step = 1;
+      start = step > 0 ? *bound_start : binary(Op::Add, *bound_start, one);
+      step = step > 0 ? 1 : -1;
     }
   // Triangular nests (`for (j = 0; j <= i; ++j)`, `for (j = i + 1; j < n;
   // ++j)`, `j < std::min(n, i + 3)`): a bound affine in outer counters, with
@@ -162,7 +272,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
     const bool upper = b == &hi;
     if (!any_node(*b, [](const ExprP& x) { return x->op == Op::LoopVar; }))
       continue;
-    if (!upper && step != 1 && step != -1)
+    if (step != 1 && step != -1 && upper == (step < 0))
       continue; // (a strided loop's start fixes its parity: not moved)
     std::vector<ExprP> terms;
     std::function<void(const ExprP&)> flatten = [&](const ExprP& x) {
@@ -242,7 +352,18 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                              what, var->getNameAsString(), s.name),
                  "dpgen-loop");
   }
-  return {var, lo, hi, step, triangle, parity_start, parity_step};
+  if (!companions.empty() && parity_start)
+    L.fail(f->getBeginLoc(),
+           fmt::format("a strided loop whose start moves with the outer counters has one "
+                       "counter; compute '{}' from '{}' in the body",
+                       companions[0].var->getNameAsString(), var->getNameAsString()),
+           "dpgen-loop");
+  // The first value: the start side as it stands, unless a triangle moved it.
+  const bool start_moved = std::any_of(triangle.begin(), triangle.end(),
+                                       [&](const auto& t) { return t.second == (step < 0); });
+  ExprP first = step > 0 ? (start_moved ? init_value : lo)
+                         : binary(Op::Sub, start_moved ? hi_before_hull : hi, one);
+  return {var, lo, hi, step, triangle, parity_start, parity_step, companions, first};
 }
 
 // The bound of a loop condition as `counter op bound` (op returned in `op`):
@@ -359,26 +480,27 @@ std::optional<ExprP> LoopHeaders::hull(const ExprP& e, const Poly& p, bool upper
   return out;
 }
 
-// A lower bound of integer `e` over the enclosing loops that depends on the
-// sizes only: `e` itself where it mentions no counter, the hull of an
-// affine part, 0 for `x % m` with a constant m > 0 and x >= 0 (C's
-// remainder of a non-negative value), sums of those. Null otherwise.
-std::optional<ExprP> LoopHeaders::smallest(const ExprP& e) const {
+// A lower (`upper`: an upper) bound of integer `e` over the enclosing loops
+// that depends on the sizes only: `e` itself where it mentions no counter,
+// the hull of an affine part, 0 (m - 1) for `x % m` with a constant m > 0 and
+// x >= 0 (C's remainder of a non-negative value), sums and differences of
+// those. Null otherwise.
+std::optional<ExprP> LoopHeaders::extreme(const ExprP& e, bool upper) const {
   if (!any_node(e, [](const ExprP& x) { return x->op == Op::LoopVar; }))
     return e;
   if (auto p = to_poly(e))
-    return hull(e, *p, false);
-  if (e->op == Op::Add) {
-    auto a = smallest(e->ops[0]), b = smallest(e->ops[1]);
+    return hull(e, *p, upper);
+  if (e->op == Op::Add || e->op == Op::Sub) {
+    auto a = extreme(e->ops[0], upper), b = extreme(e->ops[1], upper == (e->op == Op::Add));
     if (a && b)
-      return binary(Op::Add, *a, *b);
+      return binary(e->op, *a, *b);
     return std::nullopt;
   }
   if (e->op == Op::Rem && e->ops[1]->op == Op::IntConst && e->ops[1]->ival > 0 &&
       L.provably_nonneg(e->ops[0]))
-    return int_const(0);
+    return int_const(upper ? e->ops[1]->ival - 1 : 0);
   if (e->op == Op::Local)
-    return smallest(e->local->def);
+    return extreme(e->local->def, upper);
   return std::nullopt;
 }
 

@@ -115,9 +115,10 @@ Escape Statements::lower(const Stmt* s) {
                              "iteration space");
   if (isa<SwitchStmt>(s))
     L.fail(s->getBeginLoc(), "'switch' is outside the kernel subset; use if/else on indices");
-  if (isa<CXXForRangeStmt>(s))
-    L.fail(s->getBeginLoc(), "range-based for is outside the kernel subset; use an integer "
-                             "counter");
+  if (const auto* rf = dyn_cast<CXXForRangeStmt>(s)) {
+    L.for_loops_.range_for(rf);
+    return Escape::None;
+  }
   L.fail(s->getBeginLoc(),
          fmt::format("statement '{}' is outside the kernel subset", s->getStmtClassName()));
 }
