@@ -74,7 +74,7 @@ void emit_terms(Code& code, const Kernel& k, const Term& t, const BoxTerm& bt,
     define_locals(code, guard_locals, done);
     std::vector<std::string> parts;
     for (const auto& g : gs)
-      parts.push_back(print(g));
+      parts.push_back(gs.size() == 1 ? print(g) : print_conjunct(g));
     code.open(fmt::format("if ({})", fmt::join(parts, " && ")));
   }
   define_locals(code, locals, done);

@@ -213,6 +213,8 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
                                       !p->kernel->intermediates.empty());
   if (view_buffers)
     c.raw("#include \"dpgen/view_buffer.hpp\"\n\n");
+  if (std::any_of(plans.begin(), plans.end(), [](const auto& p) { return has_nested(*p->kernel); }))
+    c.raw("#include \"dpgen/row_pointers.hpp\"\n\n");
   c.raw(global_declarations(all, "_adj", true));
   c.raw(kQuietUnused);
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"

@@ -302,6 +302,8 @@ EmittedFile emit_tangent_file(const std::vector<const Kernel*>& kernels,
   if (checks)
     c.raw("#include <stdexcept>\n#include <string>\n");
   c.raw("\n");
+  if (std::any_of(kernels.begin(), kernels.end(), [](const Kernel* k) { return has_nested(*k); }))
+    c.raw("#include \"dpgen/row_pointers.hpp\"\n\n");
   c.raw(global_declarations(kernels, "_dot", true));
   c.raw(kQuietUnused);
   c.raw("namespace {\n"

@@ -36,7 +36,7 @@ void collect(const ExprP& e, std::map<int, LocalP>& locals, std::set<std::string
 
 
 std::string cond_text(const PathCond& pc) {
-  return pc.positive ? print(pc.cond) : "!(" + print(pc.cond) + ")";
+  return pc.positive ? print_conjunct(pc.cond) : "!(" + print(pc.cond) + ")";
 }
 
 
@@ -66,6 +66,8 @@ void define_kernel_locals(Code& code, const Kernel& k, bool ints_only) {
 }
 
 std::string conjunction(const std::vector<PathCond>& conds) {
+  if (conds.size() == 1 && conds[0].positive) // (alone: no parentheses needed)
+    return print(conds[0].cond);
   std::vector<std::string> parts;
   for (const auto& pc : conds)
     parts.push_back(cond_text(pc));
@@ -125,6 +127,10 @@ bool has_rows(const Kernel& k) {
     return p.kind != ParamKind::Scalar &&
            (!p.rows.empty() || !p.container.empty() || p.scalar_ref);
   });
+}
+
+bool has_nested(const Kernel& k) {
+  return std::any_of(k.params.begin(), k.params.end(), [](const Param& p) { return p.nested; });
 }
 
 bool has_inout(const Kernel& k) {
@@ -279,6 +285,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
   std::string c = is_const ? "const " : "";
   if (p.view) // an array view: the kernel's type, or the same view of non-const elements
     return fmt::format("{} {}", view_declared_type(p, is_const), name);
+  if (shaped && p.nested) // std::vector<std::vector<double>>& a
+    return fmt::format("{}{}& {}", c, p.container, name);
   if (p.plane_pointers) // `double*** a`: `const double* const* const* a` (C: `double** const* a`)
     return c_language ? fmt::format("{}** const* {}", p.elem_name, name)
                       : fmt::format("{}{}* const* const* {}", c, p.elem_name, name);
@@ -301,6 +309,8 @@ std::string array_declaration(const Param& p, bool is_const, const std::string& 
 std::string flat_argument(const Param& p, bool is_const, const std::string& name) {
   if (p.view)
     return name;
+  if (p.nested) // each row's data(), in a vector that lives as long as the call
+    return fmt::format("dpgen::row_pointers({}).data()", name);
   if (!p.container.empty())
     return name + ".data()";
   if (p.scalar_ref)
@@ -314,6 +324,11 @@ void emit_vector_size_checks(Code& code, const Kernel& k, const std::string& fn,
                              const std::string& suffix, bool (*wanted)(const Param&)) {
   for (const auto& p : k.params)
     if (!p.container.empty() && wanted(p)) {
+      if (p.nested) { // (row by row: dpgen/row_pointers.hpp)
+        code.line("dpgen::check_same_rows(\"{}\", \"{}{}\", {}{}, \"{}\", {});", fn, p.name, suffix,
+                  p.name, suffix, p.name, p.name);
+        continue;
+      }
       code.open(fmt::format("if ({}{}.size() != {}.size())", p.name, suffix, p.name));
       code.line("throw std::invalid_argument(\"{}: {}{} has \" + "
                 "std::to_string({}{}.size()) + \" elements but {} has \" + "

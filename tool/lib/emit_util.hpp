@@ -123,6 +123,8 @@ bool has_spans(const Kernel& k);
 bool has_std_vectors(const Kernel& k);
 /// `#include <vector>` / `#include <span>` lines for a header that declares them.
 std::string container_includes(bool vectors, bool spans);
+/// Whether a parameter of `k` is a std::vector<std::vector<T>>& (Param::nested).
+bool has_nested(const Kernel& k);
 /// Arrays updated in place (DPGEN_INOUT).
 bool has_inout(const Kernel& k);
 void open_namespaces(Code& c, const Kernel& k);

@@ -209,6 +209,11 @@ struct Param {
   /// `double*** a` (a[k][j][i]): planes of rows. k * P + j * R + i, with
   /// P = plane_symbol(a) larger than any j * R + i.
   bool plane_pointers = false;
+  /// `std::vector<std::vector<double>>& a` (a[j][i]): rows through pointers
+  /// in the IR (row_pointers); the entry points take the vectors (their
+  /// rows' sizes checked against each other) and pass the flat twin each
+  /// row's data() (dpgen/row_pointers.hpp).
+  bool nested = false;
   /// An unsigned integer scalar (`unsigned n`, `size_t n`): generated code
   /// reads it through a signed copy, `<name>_signed`.
   bool is_unsigned = false;

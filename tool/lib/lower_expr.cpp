@@ -13,6 +13,27 @@ ExprP Expressions::cond(const clang::Expr* e) {
   return c;
 }
 
+// u[j][i] of a `std::vector<std::vector<T>>&` parameter (`oc` the column's
+// operator[], `row` the row's): the flat j * R + i of row pointers.
+auto Expressions::nested_element(const CXXOperatorCallExpr* oc, const CXXOperatorCallExpr* row)
+    -> Access {
+  const clang::Expr* base = row->getArg(0)->IgnoreParenImpCasts();
+  const Param* p = isa<DeclRefExpr>(base) ? array_base(base) : nullptr;
+  if (!p || !p->nested)
+    L.fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel "
+                                "(u[i], or u[j][i] of a std::vector<std::vector<T>>)");
+  ExprP j = expr(row->getArg(1)), i = expr(oc->getArg(1));
+  if (j->type != Type::Int || i->type != Type::Int)
+    L.fail(oc->getBeginLoc(), "array index must be an integer");
+  if (!to_poly(j) || !to_poly(i))
+    L.fail(oc->getBeginLoc(), fmt::format("'{}' is indexed at a data-dependent row or column; "
+                                          "dpgen needs both indices of {}[j][i] affine in the "
+                                          "loop counters and sizes (pass a flat array for "
+                                          "interpolation)",
+                                          p->name, p->name));
+  return Access{p, binary(Op::Add, binary(Op::Mul, j, L.row_lengths_.at(p->name)), i)};
+}
+
 auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
@@ -39,6 +60,9 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
       oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
     // v[i] of a std::vector parameter
     const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
+    if (const auto* row = dyn_cast<CXXOperatorCallExpr>(base);
+        row && row->getOperator() == OO_Subscript && row->getNumArgs() == 2)
+      return nested_element(oc, row);
     if (!isa<DeclRefExpr>(base))
       L.fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
     const Param* p = array_base(base);
@@ -314,6 +338,12 @@ ExprP Expressions::expr(const clang::Expr* e) {
     // on the same object: inlined like a helper, reading the same members
     if (L.this_call(m) && md && md->hasBody() && !md->isVirtual())
       return L.inl_.inline_call(m, md);
+    if (const auto* row =
+            dyn_cast<CXXOperatorCallExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+        row && row->getOperator() == OO_Subscript && md && md->getName() == "size")
+      L.fail(e->getExprLoc(), "the length of a row (u[j].size()) is outside the kernel subset: "
+                              "dpgen assumes each row holds the columns the kernel touches; "
+                              "pass the number of columns as a parameter");
     L.fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
                             "parameter, the kernel may call size())");
   }

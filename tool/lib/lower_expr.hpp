@@ -34,6 +34,10 @@ public:
   // The array element `e` names (`a[i]`, `a[j][i]`, `v(i, j)`, `*p`), if it
   // names one.
   std::optional<Access> element(const clang::Expr* e);
+  // u[j][i] of a `std::vector<std::vector<T>>&` parameter (`oc` the column's
+  // operator[], `row` the row's).
+  Access nested_element(const clang::CXXOperatorCallExpr* oc,
+                        const clang::CXXOperatorCallExpr* row);
 
   const Param* array_base(const clang::Expr* base);
 

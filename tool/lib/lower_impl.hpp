@@ -238,6 +238,11 @@ private:
   // statement (ForLoops): their counters are constants in each copy.
   int unrolling_ = 0;
 
+  // How many if/else arms enclose the current statement (Statements::branch):
+  // an escape (`return`, `continue`) inside one reaches what follows the
+  // outermost if as a condition, which that if makes a kernel guard.
+  int open_arms_ = 0;
+
   // The reads of work arrays and in-place arrays (DPGEN_INOUT) and the stores
   // to in-place arrays, which the checks need besides the IR (check.hpp).
   Accesses acc_;

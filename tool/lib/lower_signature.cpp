@@ -345,6 +345,18 @@ std::optional<Param> Signature::container_parameter(const DeclaratorDecl* p, con
                                       : q.getNonReferenceType().isConstQualified();
   elem = elem.getUnqualifiedType();
   out.span = !span_elem.isNull();
+  // std::vector<std::vector<T>>& u: rows of their own, u[j][i]
+  if (QualType row = out.span ? QualType() : L.vector_element(elem); !row.isNull()) {
+    if (!L.vector_element(row.getUnqualifiedType()).isNull())
+      L.fail(p->getLocation(),
+             fmt::format("parameter '{}' nests vectors three deep; pass rows as "
+                         "'std::vector<std::vector<T>>&' (a[j][i]) or a flat array",
+                         out.name),
+             "dpgen-signature");
+    out.nested = true;
+    out.row_pointers = true;
+    elem = row.getUnqualifiedType();
+  }
   auto et = L.scalar_type(elem);
   if (!et || *et == Type::Bool)
     L.fail(p->getLocation(), fmt::format("parameter '{}' holds '{}'; arrays must hold "
@@ -352,7 +364,10 @@ std::optional<Param> Signature::container_parameter(const DeclaratorDecl* p, con
                                        out.name, elem.getAsString()), "dpgen-signature");
   out.elem = *et;
   out.elem_name = Lowerer::spelled(elem);
-  out.container = fmt::format(out.span ? "std::span<{}>" : "std::vector<{}>", out.elem_name);
+  out.container = fmt::format(out.span     ? "std::span<{}>"
+                              : out.nested ? "std::vector<std::vector<{}>>"
+                                           : "std::vector<{}>",
+                              out.elem_name);
   if (ann == "dpgen.inout")
     L.fail(p->getLocation(), fmt::format("DPGEN_INOUT parameter '{}' must be a flat pointer "
                                        "to non-const float or double (pass {}.data())",

@@ -20,17 +20,8 @@ void Statements::body(const Stmt* s) {
 }
 
 Escape Statements::lower(const Stmt* s) {
-  if (const auto* c = dyn_cast<CompoundStmt>(s)) {
-    for (const Stmt* child : c->body()) {
-      if (L.lower_recovering(child) == Escape::Always) {
-        if (child != c->body_back())
-          L.fail(c->body_back()->getBeginLoc(), "statement after 'continue'/'return' is never "
-                                                "executed");
-        return Escape::Always;
-      }
-    }
-    return Escape::None;
-  }
+  if (const auto* c = dyn_cast<CompoundStmt>(s))
+    return sequence(std::vector<const Stmt*>(c->body_begin(), c->body_end()));
   if (isa<NullStmt>(s))
     return Escape::None;
   // `#pragma omp parallel for` (parsed with -fopenmp): the loop it wraps.
@@ -113,8 +104,8 @@ Escape Statements::lower(const Stmt* s) {
   if (isa<BreakStmt>(s))
     L.fail(s->getBeginLoc(), "'break' is outside the kernel subset: loop bounds must fix the "
                              "iteration space");
-  if (isa<SwitchStmt>(s))
-    L.fail(s->getBeginLoc(), "'switch' is outside the kernel subset; use if/else on indices");
+  if (const auto* sw = dyn_cast<SwitchStmt>(s))
+    return switch_stmt(sw);
   if (const auto* rf = dyn_cast<CXXForRangeStmt>(s)) {
     L.for_loops_.range_for(rf);
     return Escape::None;
@@ -139,23 +130,56 @@ Escape Statements::if_stmt(const IfStmt* s) {
   if (L.red_.if_update(s))
     return Escape::None;
   ExprP c = L.exprs_.cond(s->getCond());
+  return branch(
+      c, [&] { return L.lower_recovering(s->getThen()); },
+      [&] { return s->getElse() ? L.lower_recovering(s->getElse()) : Escape::None; });
+}
+
+// The statements of a block (or of a switch's case), in order.
+Escape Statements::sequence(const std::vector<const Stmt*>& body) {
+  for (const Stmt* child : body) {
+    if (L.lower_recovering(child) == Escape::Always) {
+      if (child != body.back())
+        L.fail(body.back()->getBeginLoc(), "statement after 'continue'/'return' is never "
+                                           "executed");
+      return Escape::Always;
+    }
+  }
+  return Escape::None;
+}
+
+// `if (c) then_arm() else else_arm()`: each arm lowered on its side of the
+// path, the values either assigns merged into selects after it.
+Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_arm,
+                          const std::function<Escape()>& else_arm) {
   size_t depth = L.path_.size();
   auto env_before = L.env_;
   int first_local = L.next_local_id_;
 
-  L.path_.push_back({c, true});
-  Escape then_e = L.lower_recovering(s->getThen());
-  L.path_.resize(depth);
+  // An arm's path at its end holds, past its own condition, the conditions
+  // under which it did not escape (`if (n < 3) return;` inside it): what
+  // follows the if runs only where the arm that ran went on to its end.
+  struct OpenArm {
+    int& n;
+    explicit OpenArm(int& c) : n(c) { ++n; }
+    ~OpenArm() { --n; }
+  };
+  auto run_arm = [&](bool positive, const std::function<Escape()>& arm,
+                     std::vector<PathCond>& goes_on) {
+    OpenArm open{L.open_arms_};
+    L.path_.push_back({c, positive});
+    Escape e = arm();
+    goes_on.assign(L.path_.begin() + std::ptrdiff_t(depth) + 1, L.path_.end());
+    L.path_.resize(depth);
+    return e;
+  };
+  std::vector<PathCond> then_goes_on, else_goes_on;
+  Escape then_e = run_arm(true, then_arm, then_goes_on);
   auto env_then = L.env_;
   int after_then = L.next_local_id_;
 
   L.env_ = env_before;
-  Escape else_e = Escape::None;
-  if (s->getElse()) {
-    L.path_.push_back({c, false});
-    else_e = L.lower_recovering(s->getElse());
-    L.path_.resize(depth);
-  }
+  Escape else_e = run_arm(false, else_arm, else_goes_on);
   auto env_else = L.env_;
   int after_else = L.next_local_id_;
 
@@ -189,16 +213,138 @@ Escape Statements::if_stmt(const IfStmt* s) {
   }
   if (then_e == Escape::Always && else_e == Escape::Always)
     return Escape::Always;
-  if (then_e == Escape::Always)
-    L.path_.push_back({c, false});
-  if (else_e == Escape::Always)
-    L.path_.push_back({c, true});
-  // `if (n < 3) return;` in the kernel itself, outside every loop and
-  // helper: a guard of the whole kernel (it is also on every later path).
-  if ((then_e == Escape::Always || else_e == Escape::Always) && L.loops_.empty() &&
-      L.frames_.empty())
-    L.k_.guards.push_back(L.path_.back());
+  // What follows runs where the arm that ran did not escape: the other arm's
+  // side where one always escapes (then what that arm went on under), else
+  // (c && then_goes_on) || (!c && else_goes_on) where an arm escaped in part.
+  const size_t before = L.path_.size();
+  auto all_of = [](ExprP first, const std::vector<PathCond>& rest) {
+    for (const auto& pc : rest)
+      first = binary(Op::And, first, pc.positive ? pc.cond : unary(Op::Not, pc.cond));
+    return first;
+  };
+  if (then_e == Escape::Always || else_e == Escape::Always) {
+    const bool then_runs = else_e == Escape::Always;
+    L.path_.push_back({c, then_runs});
+    for (const auto& pc : then_runs ? then_goes_on : else_goes_on)
+      L.path_.push_back(pc);
+  } else if (!then_goes_on.empty() || !else_goes_on.empty()) {
+    L.path_.push_back(
+        {binary(Op::Or, all_of(c, then_goes_on), all_of(unary(Op::Not, c), else_goes_on)), true});
+  }
+  // `if (n < 3) return;` in the kernel itself, outside every loop, helper and
+  // other if: a guard of the whole kernel (it is also on every later path).
+  if (L.loops_.empty() && L.frames_.empty() && L.open_arms_ == 0)
+    for (size_t i = before; i < L.path_.size(); ++i)
+      L.k_.guards.push_back(L.path_[i]);
   return Escape::None;
+}
+
+// Whether `s` holds a `break` that ends the switch around it (not one of a
+// nested switch).
+static const BreakStmt* switch_break(const Stmt* s) {
+  if (!s || isa<SwitchStmt>(s) || isa<ForStmt>(s) || isa<CXXForRangeStmt>(s) || isa<WhileStmt>(s) ||
+      isa<DoStmt>(s)) // (a loop's own break: refused with the loop)
+    return nullptr;
+  if (const auto* b = dyn_cast<BreakStmt>(s))
+    return b;
+  for (const Stmt* c : s->children())
+    if (const BreakStmt* b = switch_break(c))
+      return b;
+  return nullptr;
+}
+
+// `switch (x) { case 1: case 2: A; break; default: B; }` on an integer:
+// if/else arms on `x == 1 || x == 2`, the default on none of the labels.
+// Each case ends in `break` (or in `continue`/`return`, or is the last):
+// a case that falls through into the next, or breaks from inside an if, is
+// refused.
+Escape Statements::switch_stmt(const SwitchStmt* s) {
+  if (s->getInit() || s->getConditionVariable())
+    L.fail(s->getBeginLoc(), "switch with an initializer or a declaration is outside the subset");
+  const auto* body = dyn_cast<CompoundStmt>(s->getBody());
+  if (!body)
+    L.fail(s->getBeginLoc(), "a switch's body is a block of cases: 'switch (x) { case 0: ... "
+                             "break; }'");
+  ExprP x = L.exprs_.expr(s->getCond());
+  if (x->type != Type::Int)
+    L.fail(s->getCond()->getBeginLoc(), "a switch on a value that is not an integer");
+  struct Case {
+    std::vector<int64_t> labels;
+    bool is_default = false;
+    std::vector<const Stmt*> stmts;
+    SourceLocation loc;
+  };
+  std::vector<Case> cases;
+  for (const Stmt* child : body->body()) {
+    const Stmt* st = child;
+    if (isa<SwitchCase>(st)) {
+      cases.push_back({});
+      cases.back().loc = st->getBeginLoc();
+      // `case 1: case 2: A`: labels nest, the statement innermost
+      while (const auto* sc = dyn_cast<SwitchCase>(st)) {
+        if (const auto* c = dyn_cast<CaseStmt>(sc)) {
+          clang::Expr::EvalResult r;
+          if (c->caseStmtIsGNURange() || !c->getLHS()->EvaluateAsInt(r, L.ctx_))
+            L.fail(c->getBeginLoc(), "a case label is one integer constant");
+          cases.back().labels.push_back(r.Val.getInt().getSExtValue());
+        } else {
+          cases.back().is_default = true;
+        }
+        st = sc->getSubStmt();
+      }
+    } else if (cases.empty()) {
+      L.fail(st->getBeginLoc(), "statement before the first case of a switch is never executed");
+    }
+    cases.back().stmts.push_back(st);
+  }
+  for (size_t k = 0; k < cases.size(); ++k) {
+    auto& c = cases[k];
+    const bool last = k + 1 == cases.size();
+    // `case 2: { ...; break; }`: the block's statements
+    if (const auto* block = c.stmts.empty() ? nullptr : dyn_cast<CompoundStmt>(c.stmts.back());
+        block && !block->body_empty() && isa<BreakStmt>(block->body_back())) {
+      c.stmts.pop_back();
+      c.stmts.insert(c.stmts.end(), block->body_begin(), block->body_end());
+    }
+    if (!c.stmts.empty() && isa<BreakStmt>(c.stmts.back()))
+      c.stmts.pop_back();
+    else if (!last && (c.stmts.empty() ||
+                       !(isa<ReturnStmt>(c.stmts.back()) || isa<ContinueStmt>(c.stmts.back()))))
+      L.fail(c.loc,
+             "a case that falls through into the next is outside the kernel subset; end "
+             "each case with 'break' (cases that share their statements are labels of "
+             "one case: 'case 1: case 2: ...')",
+             "dpgen-unsupported");
+    for (const Stmt* st : c.stmts)
+      if (const BreakStmt* b = switch_break(st))
+        L.fail(b->getBeginLoc(),
+               "a 'break' ends its case only as the case's last statement; "
+               "put what follows it under an if/else",
+               "dpgen-unsupported");
+  }
+  // The cases in source order, each on its labels (the earlier ones do not
+  // hold there), and the default's statements (a case with a `default:`
+  // label among its labels) where none holds.
+  auto matches = [&](const Case& c) {
+    ExprP m;
+    for (int64_t v : c.labels) {
+      ExprP eq = binary(Op::Eq, x, int_const(v));
+      m = m ? binary(Op::Or, m, eq) : eq;
+    }
+    return m;
+  };
+  const Case* fallback = nullptr;
+  std::vector<const Case*> labelled;
+  for (const auto& c : cases)
+    (c.is_default ? fallback : labelled.emplace_back()) = &c;
+  std::function<Escape(size_t)> arms = [&](size_t k) -> Escape {
+    if (k == labelled.size())
+      return fallback ? sequence(fallback->stmts) : Escape::None;
+    return branch(
+        matches(*labelled[k]), [&] { return sequence(labelled[k]->stmts); },
+        [&] { return arms(k + 1); });
+  };
+  return arms(0);
 }
 
 ExprP Statements::inline_locals(const ExprP& e, int from, int to) {

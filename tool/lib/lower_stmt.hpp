@@ -54,6 +54,14 @@ private:
   // `if (c) A else B`; a branch ending in continue/return puts the negated
   // condition on the path of everything that follows.
   Escape if_stmt(const clang::IfStmt* s);
+  // `if (c) then_arm() else else_arm()`: each arm lowered on its side of the
+  // path, the values either assigns merged into selects after it.
+  Escape branch(const ExprP& c, const std::function<Escape()>& then_arm,
+                const std::function<Escape()>& else_arm);
+  // The statements of a block (or of a switch's case), in order.
+  Escape sequence(const std::vector<const clang::Stmt*>& body);
+  // `switch (x) { case 1: case 2: A; break; default: B; }`: if/else arms.
+  Escape switch_stmt(const clang::SwitchStmt* s);
 
   ExprP inline_locals(const ExprP& e, int from, int to);
 

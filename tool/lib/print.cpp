@@ -123,6 +123,10 @@ std::string subscript(const ExprP& index, Shape shape) {
   return subscript(*p, shape);
 }
 
+// `e` as one operand of a `&&` chain: parenthesized where it binds more
+// loosely than `&&` (`(a || b) && c`, not `a || b && c`).
+std::string print_conjunct(const ExprP& e) { return wrap(e, op_info(Op::And).precedence); }
+
 std::string print(const ExprP& e) {
   if (!e) // no ExprP is null (an exact zero is zero(), ir.hpp): a bug in the phase that made it
     throw std::logic_error("internal error: print: a null expression (a missing value in the IR "

@@ -10,6 +10,9 @@
 namespace dpgen {
 
 std::string print(const ExprP& e);
+/// `e` as one operand of a `&&` chain: parenthesized where it binds more
+/// loosely than `&&` (`(a || b) && c`, never `a || b && c`).
+std::string print_conjunct(const ExprP& e);
 /// The subscript of an element of an array with `levels` pointer levels
 /// (pointer_levels(), ir.hpp) at this flat index: "[i + 1]" for a flat array;
 /// for row pointers (levels 1, the flat index j * R + i with R the row symbol)

@@ -1,0 +1,88 @@
+// `return` and `continue` nested inside an if (or a switch case): what
+// follows the outer if runs only where the arm that ran went on to its end.
+// Until this test, the condition of an escape two levels deep was dropped
+// (the stores after it ran everywhere: wrong values and derivatives), and
+// a kernel-level `if (kind == 1) { if (n < 3) return; }` became the guard
+// `n >= 3` for every kind. Found by a helper's corpus (session 19).
+#include "dpgen/annotate.hpp"
+
+DPGEN_KERNEL void ret_nested_if(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int kind) {
+  if (kind == 1) {
+    if (n < 3)
+      return;
+  }
+  for (int i = 0; i < n; ++i)
+    v[i] = u[i] * u[i] * (kind + 2);
+}
+
+DPGEN_KERNEL void ret_between_nests(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                    DPGEN_OUT double* w, int n, int kind) {
+  for (int i = 0; i < n; ++i)
+    w[i] = u[i] * u[i];
+  if (kind >= 1) {
+    if (n < 3 || kind == 2)
+      return;
+  }
+  for (int i = 0; i < n; ++i)
+    v[i] = u[i] * (kind + 2) * u[i];
+}
+
+DPGEN_KERNEL void ret_switch_case(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int kind) {
+  switch (kind) {
+  case 0:
+    return;
+  case 1:
+    if (n < 3)
+      return;
+    break;
+  default:
+    break;
+  }
+  for (int i = 0; i < n; ++i)
+    v[i] = u[i] * u[i] * (kind + 2);
+}
+
+DPGEN_KERNEL void cont_else_if(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, int kind) {
+  for (int i = 0; i < n; ++i) {
+    double r = u[i];
+    if (kind == 1) {
+      r = r * 2.0;
+    } else if (i == 1 || kind == 2) {
+      continue;
+    }
+    v[i] = r * u[i];
+  }
+}
+
+DPGEN_KERNEL void cont_inner_2d(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx, int ny,
+                                int kind) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (i == kind)
+        continue;
+      if (j > 0) {
+        if (i + j == 3 || kind == 2)
+          continue;
+      }
+      v[j * nx + i] = u[j * nx + i] * u[j * nx + i];
+    }
+}
+
+DPGEN_KERNEL void cont_switch_case_if(DPGEN_IN const double* u, DPGEN_OUT double* v, int n,
+                                      int kind) {
+  for (int i = 0; i < n; ++i) {
+    switch (kind) {
+    case 0:
+      if (u[i] < 0.0)
+        continue;
+      break;
+    case 1:
+      if (i > 1)
+        continue;
+      break;
+    default:
+      break;
+    }
+    v[i] = u[i] * u[i] * u[i];
+  }
+}
