@@ -24,7 +24,9 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     r5_pin_diag_elem r5_lw_coef2_overlap r5_ip_2d_fluxes_omp r5_ip_max_ties
     r5_min_lw_countdown r5_min_mm_ternary_oob r5_ip_pinned_update
     # refused until strided loops could count down (i -= 2), now accepted and right
-    r3_step2_down r4_par_countdown_step2)
+    r3_step2_down r4_par_countdown_step2
+    # refused until switch statements were in the subset, now accepted and right
+    r4_br_switch)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after

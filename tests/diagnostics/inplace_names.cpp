@@ -11,3 +11,13 @@ DPGEN_KERNEL void row_sum_inplace(DPGEN_INOUT double* u, DPGEN_IN const double* 
       // CHECK: inplace_names.cpp:[[@LINE+1]]:7: error: in-place array 'u' is written at the same index by every iteration of loop 'j'
       u[i] += a[i * m + j] * u[i];
 }
+
+DPGEN_KERNEL void two_conditional_updates(DPGEN_INOUT double* u, DPGEN_IN const double* f, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (u[i] > 0.5)
+      u[i] = u[i] - 1.0 + 0.1 * f[i];
+    if (u[i] < 0.0)
+      // CHECK: inplace_names.cpp:[[@LINE+1]]:7: error: in-place array 'u' may be written twice in one iteration (first at line [[@LINE-2]])
+      u[i] = u[i] * 3.0 * f[i];
+  }
+}

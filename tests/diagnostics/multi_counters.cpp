@@ -2,9 +2,10 @@
 // and strided count-downs are accepted (tests/styles/multi_counters.cpp).
 // What is not: a condition on both counters or on neither, a companion
 // whose start reads the other counter, one that does not step once per
-// iteration or is changed in the body, an unsigned companion counting down,
-// an unsigned strided count-down that can wrap, a companion of a strided
-// loop whose start moves, and a C89 companion read after its loop.
+// iteration or is changed in the body, an unsigned companion counting down
+// that may go below zero in the body, an unsigned strided count-down that
+// can wrap, a companion of a strided loop whose start moves, and a C89
+// companion read after its loop.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
@@ -23,7 +24,7 @@ DPGEN_KERNEL void start_from_other(DPGEN_IN const double* a, DPGEN_OUT double* b
 }
 
 DPGEN_KERNEL void not_stepped(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
-  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:3: error: loop counter 'j' must have an integer type and step by a constant once per iteration in the loop's increment ('++i, --j') [dpgen-loop]
+  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:3: error: loop counter 'j' must have an integer type and step by a constant once per iteration in the loop's increment ('++j', '--j', 'j += 2') [dpgen-loop]
   for (int i = 0, j = 0; i < n; ++i)
     b[i] = a[j];
 }
@@ -43,9 +44,9 @@ DPGEN_KERNEL void changed_in_body(DPGEN_IN const double* a, DPGEN_OUT double* b,
 }
 
 DPGEN_KERNEL void unsigned_companion(DPGEN_IN const double* a, DPGEN_OUT double* b, unsigned n) {
-  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:47: error: unsigned counter 'j' counts down beside loop counter 'i': it wraps around at 0; use a signed counter [dpgen-loop]
-  for (unsigned i = 0, j = n - 1; i < n; ++i, --j)
-    b[i] = a[j];
+  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:47: error: unsigned counter 'j' counts down beside loop counter 'i', and dpgen cannot prove from the loop's bounds that it stays >= 0 in the body (where it would wrap around); use a signed counter [dpgen-loop]
+  for (unsigned i = 0, j = n / 2; i < n; ++i, --j)
+    b[i] = a[j] * (j < 3 ? 1.0 : 2.0);
 }
 
 DPGEN_KERNEL void unsigned_wraps(DPGEN_IN const double* a, DPGEN_OUT double* b, unsigned n) {

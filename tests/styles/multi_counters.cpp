@@ -12,6 +12,11 @@ DPGEN_KERNEL void mirror_product(DPGEN_IN const double* a, DPGEN_OUT double* b, 
     b[i] = a[j] * a[i];
 }
 
+DPGEN_KERNEL void unsigned_mirror(DPGEN_IN const double* a, DPGEN_OUT double* b, unsigned n) {
+  for (unsigned i = 0, j = n - 1; i < n; ++i, --j) // (j wraps only after the last iteration)
+    b[i] = a[j] * a[i] * (j < 2 ? 3.0 : 1.0);
+}
+
 DPGEN_KERNEL void complex_magnitude(DPGEN_IN const double* z, DPGEN_OUT double* mag, int n) {
   int i, k;
   for (i = 0, k = 0; i < n; i++, k += 2)

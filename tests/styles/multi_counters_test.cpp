@@ -24,6 +24,11 @@ TEST_CASE("styles: mirror_product, reverse_blend, postdec_pair, offset_weights")
         N, N, [&](auto a, auto b) { reverse_blend(a, b, n); },
         [&](auto a, auto adj, auto seed) { reverse_blend_adjoint(a, adj, seed, n); },
         [&](auto a, auto d, auto b, auto bd) { reverse_blend_tangent(a, d, b, bd, n); });
+    const unsigned un = unsigned(n);
+    check_one_to_one(
+        N, N, [&](auto a, auto b) { unsigned_mirror(a, b, un); },
+        [&](auto a, auto adj, auto seed) { unsigned_mirror_adjoint(a, adj, seed, un); },
+        [&](auto a, auto d, auto b, auto bd) { unsigned_mirror_tangent(a, d, b, bd, un); });
     check_one_to_one(
         N, N, [&](auto a, auto c) { postdec_pair(a, c, n); },
         [&](auto a, auto adj, auto seed) { postdec_pair_adjoint(a, adj, seed, n); },

@@ -179,8 +179,13 @@ ExprP unary(Op op, ExprP a) {
       return a->ops[0]; // -(-x) = x
     if (a->op == Op::IntConst)
       return int_const(-a->ival);
-    if (a->op == Op::RealConst && a->rval == 0)
-      return a;
+    if (a->op == Op::RealConst && a->exact_zero)
+      return a;                                 // (a structural zero: a derivative's)
+    if (a->op == Op::RealConst && a->rval == 0) // -0.0, written so (std::copysign(x, -0.0))
+      return real_const(-a->rval, a->type,
+                        a->spelling.empty()     ? ""
+                        : a->spelling[0] == '-' ? a->spelling.substr(1)
+                                                : "-" + a->spelling);
     return node(Op::Neg, a->type, {a});
   }
   if (op == Op::Not && a->op == Op::Not)

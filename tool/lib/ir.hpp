@@ -214,6 +214,9 @@ struct Param {
   /// rows' sizes checked against each other) and pass the flat twin each
   /// row's data() (dpgen/row_pointers.hpp).
   bool nested = false;
+  /// An enum scalar (`Bc bc`): generated code reads it through an integer
+  /// copy, `<name>_value` (a scoped enum does not compare with integers).
+  bool enum_value = false;
   /// An unsigned integer scalar (`unsigned n`, `size_t n`): generated code
   /// reads it through a signed copy, `<name>_signed`.
   bool is_unsigned = false;

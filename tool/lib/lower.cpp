@@ -137,6 +137,24 @@ SourcePos Lowerer::pos(SourceLocation loc) const {
 }
 
 // T of a std::vector<T> (any allocator); null for any other type.
+// A kernel-level `const std::ptrdiff_t <name>_<suffix> = def;` through which
+// generated code reads parameter `name` (its unsigned or enum value): its
+// reference.
+ExprP Lowerer::integer_copy(const std::string& name, const char* suffix, const ExprP& def) {
+  auto l = std::make_shared<LocalVar>();
+  l->name = name + "_" + suffix;
+  for (int n = 1; is_reserved(l->name) || local_names_.count(l->name); ++n)
+    l->name = fmt::format("{}_{}_{}", unprefixed(name), suffix, n);
+  l->type_name = "std::ptrdiff_t";
+  l->def = def;
+  l->id = next_local_id_++;
+  l->kernel_level = true;
+  l->opaque = true;
+  local_names_.insert(l->name);
+  k_.kernel_locals.push_back(l);
+  return local_ref(l);
+}
+
 QualType Lowerer::vector_element(QualType q, const char* which) const {
   const auto* rd = q.getCanonicalType()->getAsCXXRecordDecl();
   const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(rd);

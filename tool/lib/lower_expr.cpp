@@ -205,8 +205,9 @@ ExprP Expressions::expr(const clang::Expr* e) {
     return expr(c->getSubExpr());
   if (const auto* t = dyn_cast<SubstNonTypeTemplateParmExpr>(e)) // Dir of template <int Dir>
     return expr(t->getReplacement());
-  if (const auto* l = dyn_cast<IntegerLiteral>(e))
-    return int_const(static_cast<long long>(l->getValue().getSExtValue()));
+  if (const auto* l = dyn_cast<IntegerLiteral>(e)) // (3000000000u is positive)
+    return int_const(L.ints_.constant(
+        llvm::APSInt(l->getValue(), l->getType()->isUnsignedIntegerType()), l->getBeginLoc()));
   if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
     Type t = L.type_of(e);
     // The literal as written; from a macro (`#define C 0.5` in a header the
@@ -289,7 +290,7 @@ ExprP Expressions::expr(const clang::Expr* e) {
                                   ? val->getArrayInitializedElt(unsigned(*i))
                                   : val->getArrayFiller();
           if (el.isInt())
-            return int_const(el.getInt().getSExtValue());
+            return int_const(L.ints_.constant(el.getInt(), e->getBeginLoc()));
         }
     ExprP r = read(p->name, acc->index, p->elem, L.pos(e->getBeginLoc()), shape_of(*p));
     std::const_pointer_cast<Expr>(r)->source = L.text(e); // as written, for remarks
@@ -424,7 +425,7 @@ ExprP Expressions::decl_ref(const DeclRefExpr* r) {
         if (init->EvaluateAsRValue(res, L.ctx_) && res.Val.isFloat())
           return real_const(res.Val.getFloat().convertToDouble(), L.type_of(r));
         if (init->EvaluateAsRValue(res, L.ctx_) && res.Val.isInt())
-          return int_const(res.Val.getInt().getSExtValue());
+          return int_const(L.ints_.constant(res.Val.getInt(), r->getLocation()));
       }
     }
     L.fail(r->getLocation(), fmt::format("'{}' is global state, outside the kernel subset; "
@@ -479,6 +480,8 @@ ExprP Expressions::binary_expr(const BinaryOperator* b) {
   if (row->op == Op::Sub && b->getType()->isUnsignedIntegerType())
     L.ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
                                   fmt::format("unsigned difference '{}'", L.text(b)), b);
+  if (b->getType()->isUnsignedIntegerType())
+    L.ints_.check_unsigned_constant(b, l, r);
   if (row->op == Op::Rem) {
     // a periodic wrap `(x + 1 + nx) % nx` as the choice it is (prove.hpp)
     std::vector<Loop> around;
@@ -518,7 +521,7 @@ ExprP Expressions::call_expr(const CallExpr* c) {
     if (c->EvaluateAsRValue(r, L.ctx_) && !r.HasSideEffects) {
       Type t = L.type_of(c);
       if (r.Val.isInt() && t == Type::Int)
-        return int_const(r.Val.getInt().getSExtValue());
+        return int_const(L.ints_.constant(r.Val.getInt(), c->getBeginLoc()));
       if (r.Val.isFloat() && is_real(t)) {
         const llvm::APFloat& v = r.Val.getFloat();
         if (v.isInfinity()) // (printed as <cmath> spells it)

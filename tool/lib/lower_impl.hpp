@@ -105,9 +105,15 @@ private:
   std::map<std::string, ExprP> plane_lengths_; // double*** array -> its plane symbol
   std::map<std::string, ExprP> cube_lengths_;  // rank-4 view -> its cube symbol
   std::map<std::string, ExprP> signed_views_; // unsigned scalar parameter -> its signed copy
+  std::map<std::string, ExprP> enum_views_;   // enum parameter -> its integer copy
+  // A kernel-level `const std::ptrdiff_t <name>_<suffix> = def;` through which
+  // generated code reads parameter `name`: its reference.
+  ExprP integer_copy(const std::string& name, const char* suffix, const ExprP& def);
   ExprP scalar_param(const std::string& name, Type t) {
-    auto it = signed_views_.find(name);
-    return it != signed_views_.end() ? it->second : param(name, t);
+    for (const auto* views : {&signed_views_, &enum_views_})
+      if (auto it = views->find(name); it != views->end())
+        return it->second;
+    return param(name, t);
   }
   std::set<std::string> local_names_;
   std::set<std::string> loop_names_; // every counter name the generated code uses

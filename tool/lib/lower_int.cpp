@@ -71,6 +71,35 @@ void IntegerChecks::check_unsigned_result(const ExprP& value, SourceLocation loc
                         what));
 }
 
+// The value of integer constant `v` (unsigned ones are not negative: a
+// 32-bit 3000000000u is 3000000000); one past the range of long long, which
+// dpgen's integers are, is refused.
+long long IntegerChecks::constant(const llvm::APSInt& v, SourceLocation loc) {
+  if (v.isUnsigned() ? v.getActiveBits() > 63 : v.getSignificantBits() > 64)
+    L.fail(loc, fmt::format("this integer constant ({} bits) is outside the range of long long, "
+                            "in which dpgen computes integers",
+                            v.getActiveBits()));
+  return v.isUnsigned() ? static_cast<long long>(v.getZExtValue()) : v.getSExtValue();
+}
+
+// Unsigned arithmetic with a constant of 2^31 or more (`i * 2654435761u`, a
+// hash; `i + 4294967295u`, i - 1 modulo 2^32): it wraps past the type's
+// maximum where dpgen's signed 64-bit arithmetic does not.
+void IntegerChecks::check_unsigned_constant(const clang::BinaryOperator* b, const ExprP& l,
+                                            const ExprP& r) {
+  const BinaryOperatorKind op = b->getOpcode();
+  if (op != BO_Add && op != BO_Mul && op != BO_Shl && op != BO_Sub)
+    return;
+  for (const ExprP& x : {l, r})
+    if (x->op == Op::IntConst && x->ival >= (1LL << 31))
+      L.fail(b->getOperatorLoc(),
+             fmt::format("unsigned arithmetic '{}' with the constant {} may wrap around past the "
+                         "type's largest value (a hash, or a subtraction written as an "
+                         "addition), where dpgen's index arithmetic (signed, 64 bits) does not; "
+                         "outside the kernel subset",
+                         L.text(b), x->ival));
+}
+
 // An index that multiplies three or more sizes and counters (a 3D
 // `(l*ny + j)*nx + i`) passes 2^31 on grids of 1290^3 cells: computed in a
 // 32-bit type it overflows, in the forward kernel and in its adjoint alike.

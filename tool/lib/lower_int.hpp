@@ -35,6 +35,13 @@ public:
   // 32-bit type it overflows, in the forward kernel and in its adjoint alike
   // (a warning, once per kernel).
   void check_index_width(const clang::Expr* e, const ExprP& idx, const std::string& array);
+  // The value of integer constant `v` (unsigned ones are not negative); one
+  // outside the range of long long is refused (at `loc`).
+  long long constant(const llvm::APSInt& v, clang::SourceLocation loc);
+  // Unsigned `+`, `-`, `*` or `<<` of `b` (operands lowered to `l`, `r`) with
+  // a constant of 2^31 or more: it may wrap past the type's maximum, which
+  // dpgen's signed 64-bit arithmetic does not; refused.
+  void check_unsigned_constant(const clang::BinaryOperator* b, const ExprP& l, const ExprP& r);
 
 private:
   Lowerer& L;

@@ -88,16 +88,11 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
         L.env_[var] = b;
         for (const auto& c : h.companions) {
           b.value = binary(Op::Add, c.init, int_const(c.step * n));
+          if (c.unsigned_down)
+            check_stays_nonneg(c, *b.value, h.var);
           L.env_[c.var] = b;
         }
-        try {
-          L.stmts_.lower(f->getBody());
-        } catch (const Rejected&) {
-          --L.unrolling_;
-          L.path_.resize(depth);
-          throw;
-        }
-        L.path_.resize(depth);
+        lower_copy(f->getBody(), depth);
       }
       --L.unrolling_;
       counters_after(h, env_before);
@@ -105,6 +100,19 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
     }
   }
   return false;
+}
+
+// One copy of an unrolled loop's body (the path back at `depth` after it;
+// on a refusal, the unrolling ended too).
+void ForLoops::lower_copy(const Stmt* body, size_t depth) {
+  try {
+    L.stmts_.lower(body);
+  } catch (const Rejected&) {
+    --L.unrolling_;
+    L.path_.resize(depth);
+    throw;
+  }
+  L.path_.resize(depth);
 }
 
 // `for (double w : weights)` over a local array (a C array or std::array,
@@ -159,14 +167,7 @@ void ForLoops::range_for(const CXXForRangeStmt* f) {
     b.kind = Binding::Value;
     b.value = cast(*elems[k], *t);
     L.env_[var] = b;
-    try {
-      L.stmts_.lower(f->getBody());
-    } catch (const Rejected&) {
-      --L.unrolling_;
-      L.path_.resize(depth);
-      throw;
-    }
-    L.path_.resize(depth);
+    lower_copy(f->getBody(), depth);
   }
   --L.unrolling_;
   L.env_.erase(var);
@@ -281,6 +282,9 @@ void ForLoops::for_loop(const ForStmt* f) {
          true});
   }
   L.loops_.push_back(loop);
+  for (const auto& c : h.companions) // (now that the counter's range is a fact)
+    if (c.unsigned_down)
+      check_stays_nonneg(c, *L.env_[c.var].value, h.var);
   if (!L.in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
     L.library_loops_.insert(loop.get());
   L.loop_ids_.push_back(L.next_loop_id_++);
@@ -307,6 +311,22 @@ void ForLoops::for_loop(const ForStmt* f) {
                                   v->getNameAsString());
   }
   counters_after(h, env_before);
+}
+
+// An unsigned companion counting down (`for (unsigned i = 0, j = n - 1; i <
+// n; ++i, --j)`) wraps past zero only after the last iteration, where the
+// body no longer sees it; `value`, its value in the body, must provably stay
+// >= 0 there (dpgen's integers are signed: a wrapped value would differ).
+void ForLoops::check_stays_nonneg(const ForHeader::Companion& c, const ExprP& value,
+                                  const VarDecl* counter) {
+  if (L.provably_nonneg(value))
+    return;
+  L.fail(c.inc->getBeginLoc(),
+         fmt::format("unsigned counter '{}' counts down beside loop counter '{}', and dpgen "
+                     "cannot prove from the loop's bounds that it stays >= 0 in the body (where "
+                     "it would wrap around); use a signed counter",
+                     c.var->getNameAsString(), counter->getNameAsString()),
+         "dpgen-loop");
 }
 
 // After loop `h`: its counters declared in its header are gone; one declared

@@ -51,6 +51,8 @@ struct ForHeader {
     const clang::VarDecl* var = nullptr;
     ExprP init;
     int step = 0;
+    bool unsigned_down = false; // (must provably stay >= 0 in the body)
+    const clang::Expr* inc = nullptr;
   };
   std::vector<Companion> companions;
   ExprP first; // the counter's first value, as the body may name it
@@ -121,9 +123,15 @@ private:
   // a[i + m]`) is unrolled: its counter is a constant in each copy.
   bool should_unroll(const clang::ForStmt* f, long long lo, long long hi);
   bool unroll(const clang::ForStmt* f, const ForHeader& h);
+  // One copy of an unrolled loop's body (the path back at `depth` after it).
+  void lower_copy(const clang::Stmt* body, size_t depth);
   // After loop `h` (`before`: the bindings before it): its counters declared
   // in its header are gone; one declared before it (C89) is no value.
   void counters_after(const ForHeader& h, const std::map<const clang::VarDecl*, Binding>& before);
+  // An unsigned companion counting down must provably stay >= 0 in the body
+  // (`value` there); refused otherwise.
+  void check_stays_nonneg(const ForHeader::Companion& c, const ExprP& value,
+                          const clang::VarDecl* counter);
 
   // A local (or local array) assigned in a loop has no single value after
   // it: forgets it. False if `v` is no such variable.

@@ -19,14 +19,7 @@ std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
 
 // Whether `s` names variable `v`.
 bool LoopHeaders::mentions(const Stmt* s, const VarDecl* v) {
-  if (!s)
-    return false;
-  if (const auto* r = dyn_cast<DeclRefExpr>(s); r && r->getDecl() == v)
-    return true;
-  for (const Stmt* c : s->children())
-    if (mentions(c, v))
-      return true;
-  return false;
+  return ReductionForms::mentions(s, v);
 }
 
 // The header of `for` statement `f`: its counter, its range [lo, hi) with
@@ -177,26 +170,24 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       if (k == 0 || !t->isIntegerType() || t->isBooleanType())
         L.fail(its ? its->getBeginLoc() : f->getBeginLoc(),
                fmt::format("loop counter '{}' must have an integer type and step by a constant "
-                           "once per iteration in the loop's increment ('++i, --{}')",
-                           v->getNameAsString(), v->getNameAsString()),
-               "dpgen-loop");
-      if (t->isUnsignedIntegerType() && k < 0)
-        L.fail(its->getBeginLoc(),
-               fmt::format("unsigned counter '{}' counts down beside loop counter '{}': it "
-                           "wraps around at 0; use a signed counter",
-                           v->getNameAsString(), var->getNameAsString()),
+                           "once per iteration in the loop's increment ('++{}', '--{}', "
+                           "'{} += 2')",
+                           v->getNameAsString(), v->getNameAsString(), v->getNameAsString(),
+                           v->getNameAsString()),
                "dpgen-loop");
       L.in_loop_bounds_ = true;
       ExprP value = L.exprs_.expr(e);
       L.in_loop_bounds_ = false;
-      companions.push_back({v, value, k});
+      // (an unsigned one counting down must stay >= 0 in the body: checked
+      // where the loop's range is known, ForLoops::for_loop)
+      companions.push_back({v, value, k, t->isUnsignedIntegerType() && k < 0, its});
     }
   }
   int step = post_decrement ? -1 : loop_step(inc, var);
   if (step == 0)
     L.fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
-           "loop increment must be ++i, i++ or i += s for a constant s (or --i for a loop "
-           "counting down)",
+           "loop increment must be ++i, i++ or i += s for a constant s (or --i, i -= s for "
+           "a loop counting down)",
            "dpgen-loop");
   ExprP lo, hi;
   ExprP one = int_const(1);

@@ -8,6 +8,17 @@
 
 namespace dpgen::lowering {
 
+// `static_cast<std::ptrdiff_t>(name)`: an enum parameter as the integer the
+// IR compares with its enumerators.
+static ExprP enum_as_integer(const std::string& name) {
+  auto as_int = std::make_shared<dpgen::Expr>();
+  as_int->op = Op::Cast;
+  as_int->type = Type::Int;
+  as_int->ops = {param(name, Type::Int)};
+  as_int->cast_type = "std::ptrdiff_t";
+  return as_int;
+}
+
 void Signature::header() {
   // A member kernel (`DPGEN_KERNEL void step(double dt) const;` of class
   // Heat1D): the members it reads are parameters before the method's own,
@@ -134,22 +145,15 @@ void Signature::header() {
   // size) are read through a signed 64-bit copy defined first in every
   // generated function (`const std::ptrdiff_t n_signed = n;`): index
   // arithmetic in the adjoint goes below zero (`-n + 1`, `i = c_i + n - 1`),
-  // which unsigned arithmetic would wrap to huge values.
+  // which unsigned arithmetic would wrap to huge values. Enum parameters
+  // likewise, through `const std::ptrdiff_t bc_value =
+  // static_cast<std::ptrdiff_t>(bc);` (case labels and comparisons with its
+  // enumerators are integers in the IR).
   for (const auto& p : L.k_.params)
-    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && p.is_unsigned) {
-      auto l = std::make_shared<LocalVar>();
-      l->name = p.name + "_signed";
-      for (int n = 1; L.is_reserved(l->name) || L.local_names_.count(l->name); ++n)
-        l->name = fmt::format("{}_signed_{}", L.unprefixed(p.name), n);
-      l->type_name = "std::ptrdiff_t";
-      l->def = param(p.name, Type::Int);
-      l->id = L.next_local_id_++;
-      l->kernel_level = true;
-      l->opaque = true;
-      L.local_names_.insert(l->name);
-      L.k_.kernel_locals.push_back(l);
-      L.signed_views_[p.name] = local_ref(l);
-    }
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && p.is_unsigned)
+      L.signed_views_[p.name] = L.integer_copy(p.name, "signed", param(p.name, Type::Int));
+    else if (p.kind == ParamKind::Scalar && p.enum_value)
+      L.enum_views_[p.name] = L.integer_copy(p.name, "value", enum_as_integer(p.name));
   L.k_.hidden.reserve(Lowerer::kMaxAccumulators); // (start_accumulator: pointers stay valid)
   // Bind parameters (after the vector is complete, so pointers stay valid).
   // By name: a rejected parameter has no Param (and is poisoned).
@@ -345,14 +349,9 @@ std::optional<Param> Signature::container_parameter(const DeclaratorDecl* p, con
                                       : q.getNonReferenceType().isConstQualified();
   elem = elem.getUnqualifiedType();
   out.span = !span_elem.isNull();
-  // std::vector<std::vector<T>>& u: rows of their own, u[j][i]
+  // std::vector<std::vector<T>>& u: rows of their own, u[j][i] (three deep:
+  // its elements are no numbers, refused below)
   if (QualType row = out.span ? QualType() : L.vector_element(elem); !row.isNull()) {
-    if (!L.vector_element(row.getUnqualifiedType()).isNull())
-      L.fail(p->getLocation(),
-             fmt::format("parameter '{}' nests vectors three deep; pass rows as "
-                         "'std::vector<std::vector<T>>&' (a[j][i]) or a flat array",
-                         out.name),
-             "dpgen-signature");
     out.nested = true;
     out.row_pointers = true;
     elem = row.getUnqualifiedType();
@@ -510,6 +509,12 @@ void Signature::value_parameter(const DeclaratorDecl* p, const std::string& ann,
   out.elem = *t;
   out.elem_name = Lowerer::spelled(q);
   out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
+  // an enum parameter (`Bc bc`): the generated declarations name its type,
+  // so they include the header that declares it
+  out.enum_value = q.getCanonicalType()->isEnumeralType();
+  if (const auto* et = q.getCanonicalType()->getAs<EnumType>())
+    out.tag_declaration = L.views_.include_for(et->getDecl(), p->getLocation(),
+                                               fmt::format("parameter '{}'", out.name));
 }
 
 

@@ -174,6 +174,9 @@ void Stores::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, Bi
     case BO_DivAssign:
       bop = Op::Div;
       break;
+    case BO_RemAssign: // (an integer's: `m %= 5`)
+      bop = Op::Rem;
+      break;
     default:
       L.fail(loc, "this compound assignment is outside the kernel subset");
     }
@@ -306,9 +309,13 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
         continue;
       }
     }
-    L.fail(loc, fmt::format("output '{}' may be written twice in one iteration (first at "
-                            "line {}); write each element once",
-                            array, s.pos.line));
+    const Param* twin = L.k_.find_param(array); // (an in-place array's new values: u_new)
+    L.fail(loc,
+           fmt::format("{} may be written twice in one iteration (first at line {}); write "
+                       "each element once",
+                       twin && !twin->twin_of.empty() ? "in-place array '" + twin->twin_of + "'"
+                                                      : "output '" + array + "'",
+                       s.pos.line));
   }
   Store st{array, idx, value, L.path_, p};
   st.accumulate = accumulate;

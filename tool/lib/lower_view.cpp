@@ -65,19 +65,20 @@ bool Views::is_view_class(const CXXRecordDecl* rd) const {
   return false;
 }
 
-std::string Views::include_for(const CXXRecordDecl* rd, SourceLocation use,
-                                 const std::string& what) {
+std::string Views::include_for(const TagDecl* rd, SourceLocation use, const std::string& what) {
   const Decl* d = rd;
   if (const auto* s = dyn_cast<ClassTemplateSpecializationDecl>(rd))
     d = s->getSpecializedTemplate();
+  const char* kind = isa<EnumDecl>(rd) ? "an enum" : "a class";
   FileID fid = L.sm_.getFileID(L.sm_.getExpansionLoc(d->getLocation()));
   const FileID main = L.sm_.getMainFileID();
   if (fid == main)
-    L.fail(use, fmt::format("{} has a class defined in the kernel file ('{}'): the generated "
-                          "files must see its definition, so move it to a header the kernel "
-                          "file includes",
-                          what, rd->getQualifiedNameAsString()),
-         "dpgen-signature");
+    L.fail(use,
+           fmt::format("{} has {} defined in the kernel file ('{}'): the generated "
+                       "files must see its definition, so move it to a header the kernel "
+                       "file includes",
+                       what, kind, rd->getQualifiedNameAsString()),
+           "dpgen-signature");
   SourceLocation inc;
   for (int depth = 0; depth < 256; ++depth) {
     inc = L.sm_.getIncludeLoc(fid);
@@ -89,10 +90,11 @@ std::string Views::include_for(const CXXRecordDecl* rd, SourceLocation use,
     fid = parent;
   }
   if (inc.isInvalid() || L.sm_.getFileID(L.sm_.getExpansionLoc(inc)) != main)
-    L.fail(use, fmt::format("{}: dpgen cannot find the #include of the kernel file that declares "
-                          "class '{}'",
-                          what, rd->getQualifiedNameAsString()),
-         "dpgen-signature");
+    L.fail(use,
+           fmt::format("{}: dpgen cannot find the #include of the kernel file that declares "
+                       "'{}'",
+                       what, rd->getQualifiedNameAsString()),
+           "dpgen-signature");
   // The whole line of the directive, as written.
   auto [file, offset] = L.sm_.getDecomposedLoc(L.sm_.getExpansionLoc(inc));
   llvm::StringRef buffer = L.sm_.getBufferData(file);
@@ -101,10 +103,11 @@ std::string Views::include_for(const CXXRecordDecl* rd, SourceLocation use,
   size_t end = buffer.find('\n', offset);
   std::string line = buffer.slice(begin, end).trim().str();
   if (line.empty() || line[0] != '#')
-    L.fail(use, fmt::format("{}: the directive that includes class '{}' is not a plain #include "
-                          "line",
-                          what, rd->getQualifiedNameAsString()),
-         "dpgen-signature");
+    L.fail(use,
+           fmt::format("{}: the directive that includes '{}' is not a plain #include "
+                       "line",
+                       what, rd->getQualifiedNameAsString()),
+           "dpgen-signature");
   return line;
 }
 

@@ -38,7 +38,7 @@ public:
   void view_param(const clang::DeclaratorDecl* p, const std::string& ann, Param& out);
   // The kernel file's #include line that brings in class `rd` (for the
   // generated headers); fails if the kernel file defines it.
-  std::string include_for(const clang::CXXRecordDecl* rd, clang::SourceLocation use,
+  std::string include_for(const clang::TagDecl* rd, clang::SourceLocation use,
                           const std::string& what);
   // v(k, j, i) of a view parameter: its flat element; nullopt if `oc` is no
   // call of a view parameter's operator.

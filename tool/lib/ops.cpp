@@ -55,9 +55,25 @@ WholeRule pick(Op cmp) {
   };
 }
 
+// d fmin(a,b) = (a <= b || b != b) ? da : db ; d fmax likewise with >=: a
+// NaN argument gives the other one, and its derivative
+WholeRule pick_number(Op cmp) {
+  return [cmp](const CallRule& r) {
+    auto arm = [&](const ExprP& d) { return is_zero(d) ? zero(r.type()) : d; };
+    ExprP first = binary(cmp, r.arg(0), r.arg(1));
+    if (r.arg(1)->op != Op::RealConst) // (a constant is no NaN)
+      first = binary(Op::Or, first, binary(Op::Ne, r.arg(1), r.arg(1)));
+    return select(first, arm(r.d[0]), arm(r.d[1]));
+  };
+}
+
 const std::vector<MathFn> kMath = {
-    {"min", {"fmin"}, 2, "dpgen_min", false, {}, pick(Op::Le)},
-    {"max", {"fmax"}, 2, "dpgen_max", false, {}, pick(Op::Ge)},
+    {"min", {}, 2, "dpgen_min", false, {}, pick(Op::Le)},
+    {"max", {}, 2, "dpgen_max", false, {}, pick(Op::Ge)},
+    // std::fmin/std::fmax: as min/max, but a NaN argument gives the other one
+    // (printed as themselves; so does the derivative)
+    {"fmin", {}, 2, "std::fmin", false, {}, pick_number(Op::Le)},
+    {"fmax", {}, 2, "std::fmax", false, {}, pick_number(Op::Ge)},
     // d|a| = sign(a)·da
     {"abs",
      {"fabs"},
@@ -70,30 +86,36 @@ const std::vector<MathFn> kMath = {
        return select(binary(Op::Lt, a, real_const(0, a->type)), unary(Op::Neg, r.d[0]), r.d[0]);
      }},
     // d sqrt(a) = da / (2·sqrt(a))
-    {"sqrt", {}, 1, "std::sqrt", false,
-     {[](const CallRule& r, const ExprP& da) { return div(da, mul(r.lit(2), r.value())); }}},
+    {"sqrt", {}, 1, "std::sqrt", false, {[](const CallRule& r, const ExprP& da) {
+       return div(da, mul(r.lit(2), r.value()));
+     }}},
     // d exp(a) = exp(a)·da
-    {"exp", {}, 1, "std::exp", false,
-     {[](const CallRule& r, const ExprP& da) { return mul(r.value(), da); }}},
+    {"exp", {}, 1, "std::exp", false, {[](const CallRule& r, const ExprP& da) {
+       return mul(r.value(), da);
+     }}},
     // d log(a) = da / a
-    {"log", {}, 1, "std::log", false,
-     {[](const CallRule& r, const ExprP& da) { return div(da, r.arg(0)); }}},
+    {"log", {}, 1, "std::log", false, {[](const CallRule& r, const ExprP& da) {
+       return div(da, r.arg(0));
+     }}},
     // d sin(a) = cos(a)·da
-    {"sin", {}, 1, "std::sin", false,
-     {[](const CallRule& r, const ExprP& da) { return mul(r.fn("cos", {r.arg(0)}), da); }}},
+    {"sin", {}, 1, "std::sin", false, {[](const CallRule& r, const ExprP& da) {
+       return mul(r.fn("cos", {r.arg(0)}), da);
+     }}},
     // d cos(a) = -sin(a)·da
-    {"cos", {}, 1, "std::cos", false,
-     {[](const CallRule& r, const ExprP& da) {
+    {"cos", {}, 1, "std::cos", false, {[](const CallRule& r, const ExprP& da) {
        return unary(Op::Neg, mul(r.fn("sin", {r.arg(0)}), da));
      }}},
     // d tanh(a) = (1 - tanh²(a))·da
-    {"tanh", {}, 1, "std::tanh", false,
-     {[](const CallRule& r, const ExprP& da) {
+    {"tanh", {}, 1, "std::tanh", false, {[](const CallRule& r, const ExprP& da) {
        ExprP t = r.value();
        return mul(binary(Op::Sub, r.lit(1), mul(t, t)), da);
      }}},
     // d a^b = b·a^(b-1)·da + a^b·log(a)·db
-    {"pow", {}, 2, "std::pow", false,
+    {"pow",
+     {},
+     2,
+     "std::pow",
+     false,
      {[](const CallRule& r, const ExprP& da) {
         const ExprP &a = r.arg(0), &b = r.arg(1);
         return mul(mul(b, r.fn("pow", {a, binary(Op::Sub, b, r.lit(1))})), da);
@@ -109,7 +131,11 @@ const std::vector<MathFn> kMath = {
     {"floor", {}, 1, "std::floor", true, {}, nullptr},
     {"ceil", {}, 1, "std::ceil", true, {}, nullptr},
     // d atan2(y, x) = (x·dy - y·dx) / (x² + y²)
-    {"atan2", {}, 2, "std::atan2", false,
+    {"atan2",
+     {},
+     2,
+     "std::atan2",
+     false,
      {[](const CallRule& r, const ExprP& dy) {
         const ExprP &y = r.arg(0), &x = r.arg(1);
         return div(mul(x, dy), plus(mul(x, x), mul(y, y)));
@@ -119,24 +145,30 @@ const std::vector<MathFn> kMath = {
         return unary(Op::Neg, div(mul(y, dx), plus(mul(x, x), mul(y, y))));
       }}},
     // d hypot(a, b) = (a·da + b·db) / hypot(a, b)
-    {"hypot", {}, 2, "std::hypot", false,
+    {"hypot",
+     {},
+     2,
+     "std::hypot",
+     false,
      {[](const CallRule& r, const ExprP& da) { return div(mul(r.arg(0), da), r.value()); },
       [](const CallRule& r, const ExprP& db) { return div(mul(r.arg(1), db), r.value()); }}},
     // d erf(a) = 2/sqrt(pi)·exp(-a²)·da
-    {"erf", {}, 1, "std::erf", false,
-     {[](const CallRule& r, const ExprP& da) {
+    {"erf", {}, 1, "std::erf", false, {[](const CallRule& r, const ExprP& da) {
        const ExprP& a = r.arg(0);
        return mul(mul(r.lit(1.1283791670955126), r.fn("exp", {unary(Op::Neg, mul(a, a))})), da);
      }}},
     // d cbrt(a) = da / (3·cbrt(a)²)
-    {"cbrt", {}, 1, "std::cbrt", false,
-     {[](const CallRule& r, const ExprP& da) {
+    {"cbrt", {}, 1, "std::cbrt", false, {[](const CallRule& r, const ExprP& da) {
        ExprP v = r.value();
        return div(da, mul(mul(r.lit(3), v), v));
      }}},
     // copysign(a, b) = |a|·sign(b): d = sign(a)·sign(b)·da (with the signs of
     // signed zeros, as copysign sees them); b's sign is piecewise constant.
-    {"copysign", {}, 2, "std::copysign", false,
+    {"copysign",
+     {},
+     2,
+     "std::copysign",
+     false,
      {[](const CallRule& r, const ExprP& da) {
         return mul(mul(r.fn("copysign", {r.lit(1), r.arg(0)}),
                        r.fn("copysign", {r.lit(1), r.arg(1)})),
@@ -144,16 +176,22 @@ const std::vector<MathFn> kMath = {
       },
       [](const CallRule& r, const ExprP&) { return zero(r.type()); }}},
     // d fma(a, b, c) = b·da + a·db + dc
-    {"fma", {}, 3, "std::fma", false,
+    {"fma",
+     {},
+     3,
+     "std::fma",
+     false,
      {[](const CallRule& r, const ExprP& da) { return mul(r.arg(1), da); },
       [](const CallRule& r, const ExprP& db) { return mul(r.arg(0), db); },
       [](const CallRule&, const ExprP& dc) { return dc; }}},
     // d log1p(a) = da / (1 + a)
-    {"log1p", {}, 1, "std::log1p", false,
-     {[](const CallRule& r, const ExprP& da) { return div(da, plus(r.lit(1), r.arg(0))); }}},
+    {"log1p", {}, 1, "std::log1p", false, {[](const CallRule& r, const ExprP& da) {
+       return div(da, plus(r.lit(1), r.arg(0)));
+     }}},
     // d expm1(a) = (expm1(a) + 1)·da
-    {"expm1", {}, 1, "std::expm1", false,
-     {[](const CallRule& r, const ExprP& da) { return mul(plus(r.value(), r.lit(1)), da); }}},
+    {"expm1", {}, 1, "std::expm1", false, {[](const CallRule& r, const ExprP& da) {
+       return mul(plus(r.value(), r.lit(1)), da);
+     }}},
 };
 
 } // namespace

@@ -3,6 +3,7 @@
 
 #include "ops.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <optional>
 
@@ -16,7 +17,7 @@ namespace {
 // Larger binds tighter (C++ precedence; the table's column, ops.hpp). A
 // negative literal binds as a unary minus.
 int precedence(const Expr& e) {
-  if ((e.op == Op::IntConst && e.ival < 0) || (e.op == Op::RealConst && e.rval < 0))
+  if ((e.op == Op::IntConst && e.ival < 0) || (e.op == Op::RealConst && std::signbit(e.rval)))
     return op_info(Op::Neg).precedence;
   return op_info(e.op).precedence;
 }
@@ -177,6 +178,12 @@ std::string print(const ExprP& e) {
     if (op_info(e->op).bitwise) // (ops.hpp: operands parenthesized)
       return fmt::format("{} {} {}", wrap(e->ops[0], op_info(Op::Neg).precedence),
                          op_info(e->op).symbol, wrap(e->ops[1], op_info(Op::Neg).precedence));
+    if (e->op == Op::Or) { // (a && b) || c: parenthesized as -Wparentheses asks
+      auto side = [&](const ExprP& x, int min) {
+        return x->op == Op::And ? "(" + print(x) + ")" : wrap(x, min);
+      };
+      return fmt::format("{} || {}", side(e->ops[0], p), side(e->ops[1], p + 1));
+    }
     return fmt::format("{} {} {}", wrap(e->ops[0], p), op_info(e->op).symbol, wrap(e->ops[1], p + 1));
   }
   }

@@ -162,8 +162,9 @@ const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const R
     bool from_library = f && (sm_.isInSystemHeader(sm_.getExpansionLoc(f->getLocation())) ||
                               f->getBuiltinID() != 0);
     int kind = 0;
-    if (m && from_library && (m->name == "max" || m->name == "min"))
-      kind = m->name == "max" ? 1 : -1;
+    if (m && from_library &&
+        (m->name == "max" || m->name == "min" || m->name == "fmax" || m->name == "fmin"))
+      kind = m->name == "max" || m->name == "fmax" ? 1 : -1;
     else if (f && !from_library && same_type(c->getType(), t))
       kind = helper_extremum(f); // the user's own `dmax(a, b)`, in the target's type
     if (kind == 0)

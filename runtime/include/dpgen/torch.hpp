@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace dpgen::torch_ops {
@@ -45,13 +46,16 @@ inline void check_extent(const at::Tensor& t, std::int64_t needed, const char* o
 
 /// An integer op argument converted to the kernel's integer type, range checked.
 template <typename T> T narrow(std::int64_t v, const char* op, const char* arg) {
-  TORCH_CHECK(v >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
-                  static_cast<std::uint64_t>(v) <=
-                      static_cast<std::uint64_t>(std::numeric_limits<T>::max()),
-              op, ": argument '", arg, "' = ", v, " does not fit the kernel's ",
-              sizeof(T) * 8, "-bit ", std::numeric_limits<T>::is_signed ? "signed" : "unsigned",
-              " type");
-  return static_cast<T>(v);
+  if constexpr (std::is_enum_v<T>) { // (an enum parameter: its underlying type's range)
+    return static_cast<T>(narrow<std::underlying_type_t<T>>(v, op, arg));
+  } else {
+    TORCH_CHECK(v >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
+                    static_cast<std::uint64_t>(v) <=
+                        static_cast<std::uint64_t>(std::numeric_limits<T>::max()),
+                op, ": argument '", arg, "' = ", v, " does not fit the kernel's ", sizeof(T) * 8,
+                "-bit ", std::numeric_limits<T>::is_signed ? "signed" : "unsigned", " type");
+    return static_cast<T>(v);
+  }
 }
 
 /// The shape of an output: the one given (`<name>_shape=`), else `fallback`'s shape.

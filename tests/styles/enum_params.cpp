@@ -1,0 +1,19 @@
+// A boundary kind passed as an enum class from a header (the generated
+// declarations include that header), compared with `==` and switched on,
+// its cases grouped.
+#include "dpgen/annotate.hpp"
+#include "include/boundary_kinds.hpp"
+
+DPGEN_KERNEL void enum_class_bc(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, Bc bc) {
+  for (int i = 1; i < n; ++i)
+    v[i] = u[i] * u[i - 1];
+  switch (bc) {
+  case Bc::Zero:
+    v[0] = 0.0;
+    break;
+  case Bc::Copy:
+  case Bc::Flip:
+    v[0] = bc == Bc::Flip ? -u[0] * u[1] : u[0] * u[1];
+    break;
+  }
+}

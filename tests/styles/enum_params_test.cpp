@@ -1,0 +1,26 @@
+// enum_params (tests/styles/): an enum class parameter from a header. Each
+// kind: adjoint and tangent against the checker's differences, v[0] by hand.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "enum_params_adjoint.hpp"
+#include "enum_params_kernels.hpp"
+#include "enum_params_tangent.hpp"
+
+TEST_CASE("styles: enum_class_bc") {
+  for (Bc bc : {Bc::Zero, Bc::Copy, Bc::Flip}) {
+    for (int n : {2, 3, 7}) {
+      CAPTURE(int(bc));
+      CAPTURE(n);
+      const size_t N = size_t(n);
+      dpgen_test::check_one_to_one(
+          N, N, [&](auto u, auto v) { enum_class_bc(u, v, n, bc); },
+          [&](auto u, auto adj, auto seed) { enum_class_bc_adjoint(u, adj, seed, n, bc); },
+          [&](auto u, auto d, auto v, auto vd) { enum_class_bc_tangent(u, d, v, vd, n, bc); });
+    }
+    const double u[2] = {2.0, 3.0};
+    double v[2] = {0.0, 0.0};
+    enum_class_bc(u, v, 2, bc);
+    CHECK(v[0] == (bc == Bc::Zero ? 0.0 : bc == Bc::Copy ? 6.0 : -6.0));
+  }
+}
