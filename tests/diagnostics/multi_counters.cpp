@@ -44,9 +44,16 @@ DPGEN_KERNEL void changed_in_body(DPGEN_IN const double* a, DPGEN_OUT double* b,
 }
 
 DPGEN_KERNEL void unsigned_companion(DPGEN_IN const double* a, DPGEN_OUT double* b, unsigned n) {
-  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:47: error: unsigned counter 'j' counts down beside loop counter 'i', and dpgen cannot prove from the loop's bounds that it stays >= 0 in the body (where it would wrap around); use a signed counter [dpgen-loop]
+  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:47: error: unsigned counter 'j' steps beside loop counter 'i', and dpgen cannot prove from the loop's bounds that it stays >= 0 in the body (where it would wrap around); use a signed counter [dpgen-loop]
   for (unsigned i = 0, j = n / 2; i < n; ++i, --j)
     b[i] = a[j] * (j < 3 ? 1.0 : 2.0);
+}
+
+DPGEN_KERNEL void unsigned_up_from_below(DPGEN_IN const double* a, DPGEN_OUT double* b,
+                                         unsigned n, unsigned off) {
+  // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:49: error: unsigned counter 'j' steps beside loop counter 'i'
+  for (unsigned i = 0, j = off - 2; i < n; ++i, ++j)
+    b[i] = a[i] * (j < 10 ? 1.0 : 2.0);
 }
 
 DPGEN_KERNEL void unsigned_wraps(DPGEN_IN const double* a, DPGEN_OUT double* b, unsigned n) {

@@ -1,13 +1,16 @@
 // A range-based for over a local table is unrolled
 // (tests/styles/range_for_tables.cpp). What is not accepted: one over a
 // kernel array or a std::vector parameter, a non-const reference that could
-// write the table, a body that assigns the table, and a table element read
-// before it is set.
+// write the table, a body that assigns the table (also a std::array's element
+// through operator[]), and a table element read before it is set. And a
+// std::array element summed in a loop and read after it (once read as the
+// value before the loop: 0).
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
+#include <array>
 #include <vector>
 
 DPGEN_KERNEL void over_vector(DPGEN_IN const std::vector<double>& a, DPGEN_OUT double* b) {
@@ -50,4 +53,25 @@ DPGEN_KERNEL void unset_element(DPGEN_IN const double* a, DPGEN_OUT double* b, i
       s += x;
     b[i] = s;
   }
+}
+
+DPGEN_KERNEL void writes_std_array(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 3> t{a[i], 1.0, 2.0};
+    double s = 0.0;
+    // CHECK-DAG: range_for.cpp:[[@LINE+1]]:5: error: the body of a range-based for over 't' assigns 't'; fill the array in a loop of its own [dpgen-loop]
+    for (const double& w : t) {
+      t[1] = 2.0 * w;
+      s += w;
+    }
+    b[i] = s;
+  }
+}
+
+DPGEN_KERNEL void std_array_sum_after_loop(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  std::array<double, 1> acc{};
+  for (int i = 0; i < n; ++i)
+    acc[0] += a[i] * a[i];
+  // CHECK-DAG: range_for.cpp:[[@LINE+1]]:10: error: 'acc' is read after the loop that assigns it
+  b[0] = acc[0];
 }

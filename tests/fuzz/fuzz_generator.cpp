@@ -54,14 +54,15 @@ const std::string& annotate_header() {
 // The headers the kernels may include: annotate.hpp, and the style corpus's
 // class headers (array views, member-kernel classes), by the names the seeds
 // use ("include/user_views.hpp") and the names they use among themselves;
-// and the runtime header generated code includes (view_buffer.hpp: a staged
-// adjoint's view outputs).
+// and the runtime headers generated code includes (view_buffer.hpp: a staged
+// adjoint's view outputs; row_pointers.hpp: rows as nested vectors).
 const std::vector<std::pair<std::string, std::string>>& headers() {
   static const std::vector<std::pair<std::string, std::string>> h = [] {
     std::vector<std::pair<std::string, std::string>> out = {
         {"dpgen/annotate.hpp", annotate_header()},
-        {"dpgen/view_buffer.hpp", read_file(DPGEN_VIEW_BUFFER_HPP)}};
-    for (const char* name : {"user_views.hpp", "member_classes.hpp"}) {
+        {"dpgen/view_buffer.hpp", read_file(DPGEN_VIEW_BUFFER_HPP)},
+        {"dpgen/row_pointers.hpp", read_file(DPGEN_ROW_POINTERS_HPP)}};
+    for (const char* name : {"user_views.hpp", "member_classes.hpp", "boundary_kinds.hpp"}) {
       std::string text = read_file((std::string(DPGEN_STYLE_INCLUDE_DIR) + "/" + name).c_str());
       out.push_back({name, text});
       out.push_back({std::string("include/") + name, text});

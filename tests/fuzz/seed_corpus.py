@@ -5,8 +5,9 @@ The fuzzer hands the generator one buffer with no include path beyond
 dpgen/annotate.hpp, so a seed's own headers are inlined here: a
 `#include "x.hpp"` found next to the including file is replaced by that
 header's text, once per seed, except the style corpus's class headers
-(`include/user_views.hpp`: view and member classes must be in a header,
-and fuzz_generator.cpp maps them);
+(`include/user_views.hpp`, `include/boundary_kinds.hpp`: view and member
+classes and enum parameters' types must be in a header, and
+fuzz_generator.cpp maps them);
 the generated-declaration headers (`*kernels.hpp`, `operators.hpp`) become
 `#include "dpgen/annotate.hpp"` (they declare the kernels and include it).
 

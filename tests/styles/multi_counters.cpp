@@ -7,6 +7,8 @@
 // a start that alternates with the row).
 #include "dpgen/annotate.hpp"
 
+#include <cstddef>
+
 DPGEN_KERNEL void mirror_product(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
   for (int i = 0, j = n - 1; i < n; ++i, --j)
     b[i] = a[j] * a[i];
@@ -67,4 +69,10 @@ DPGEN_KERNEL void unsigned_down_by_three(DPGEN_IN const double* a, DPGEN_OUT dou
                                          unsigned n) {
   for (unsigned i = n; i >= 3; i -= 3)
     e[i] = a[i] * a[i] * a[i / 3];
+}
+
+DPGEN_KERNEL void strided_unsigned_scatter(DPGEN_IN const double* a, DPGEN_OUT double* e,
+                                           std::size_t n) {
+  for (std::size_t i = 10; i < n; i += 3) // (no iteration below n = 11)
+    e[i] = a[i / 3] * a[i];
 }

@@ -95,3 +95,13 @@ TEST_CASE("styles: down_by_two, unsigned_down_by_three") {
         [&](auto a, auto d, auto e, auto ed) { unsigned_down_by_three_tangent(a, d, e, ed, m); });
   }
 }
+
+TEST_CASE("styles: strided_unsigned_scatter (a scatter adjoint over an empty strided range)") {
+  for (std::size_t n : {0, 5, 10, 11, 14, 23}) {
+    CAPTURE(n);
+    check_one_to_one(
+        n, n, [&](auto a, auto e) { strided_unsigned_scatter(a, e, n); },
+        [&](auto a, auto adj, auto seed) { strided_unsigned_scatter_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto e, auto ed) { strided_unsigned_scatter_tangent(a, d, e, ed, n); });
+  }
+}

@@ -86,3 +86,14 @@ DPGEN_KERNEL void cont_switch_case_if(DPGEN_IN const double* u, DPGEN_OUT double
     v[i] = u[i] * u[i] * u[i];
   }
 }
+
+DPGEN_KERNEL void cont_local_in_arm(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i > 0) {
+      const double d = u[i] - u[i - 1]; // (read only where i > 0)
+      if (d < 0.0)
+        continue;
+    }
+    v[i] = u[i] * u[i];
+  }
+}

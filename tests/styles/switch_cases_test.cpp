@@ -26,7 +26,7 @@ template <typename K, typename P> void same_bits(size_t n, size_t m, K kernel, P
     in[i] = std::sin(1.0 + 0.7 * double(i));
   kernel(in.data(), a.data());
   parallel(in.data(), b.data());
-  CHECK(std::memcmp(a.data(), b.data(), sizeof(double) * m) == 0);
+  CHECK((m == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * m) == 0));
 }
 
 } // namespace

@@ -409,7 +409,7 @@ ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
 
 ExprP Expressions::decl_ref(const DeclRefExpr* r) {
   if (const auto* ec = dyn_cast<EnumConstantDecl>(r->getDecl()))
-    return int_const(ec->getInitVal().getSExtValue());
+    return int_const(L.ints_.constant(ec->getInitVal(), r->getLocation()));
   const auto* v = dyn_cast<VarDecl>(r->getDecl());
   if (!v)
     L.fail(r->getLocation(),
@@ -481,7 +481,7 @@ ExprP Expressions::binary_expr(const BinaryOperator* b) {
     L.ints_.check_unsigned_result(binary(Op::Sub, l, r), b->getOperatorLoc(),
                                   fmt::format("unsigned difference '{}'", L.text(b)), b);
   if (b->getType()->isUnsignedIntegerType())
-    L.ints_.check_unsigned_constant(b, l, r);
+    L.ints_.check_unsigned_constant(b->getOpcode(), b->getOperatorLoc(), L.text(b), l, r);
   if (row->op == Op::Rem) {
     // a periodic wrap `(x + 1 + nx) % nx` as the choice it is (prove.hpp)
     std::vector<Loop> around;

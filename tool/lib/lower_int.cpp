@@ -85,19 +85,20 @@ long long IntegerChecks::constant(const llvm::APSInt& v, SourceLocation loc) {
 // Unsigned arithmetic with a constant of 2^31 or more (`i * 2654435761u`, a
 // hash; `i + 4294967295u`, i - 1 modulo 2^32): it wraps past the type's
 // maximum where dpgen's signed 64-bit arithmetic does not.
-void IntegerChecks::check_unsigned_constant(const clang::BinaryOperator* b, const ExprP& l,
+void IntegerChecks::check_unsigned_constant(BinaryOperatorKind op, SourceLocation loc,
+                                            const std::string& text, const ExprP& l,
                                             const ExprP& r) {
-  const BinaryOperatorKind op = b->getOpcode();
+  if (BinaryOperator::isCompoundAssignmentOp(op)) // (`h *= 2654435761u` as `h * ...`)
+    op = BinaryOperator::getOpForCompoundAssignment(op);
   if (op != BO_Add && op != BO_Mul && op != BO_Shl && op != BO_Sub)
     return;
   for (const ExprP& x : {l, r})
-    if (x->op == Op::IntConst && x->ival >= (1LL << 31))
-      L.fail(b->getOperatorLoc(),
-             fmt::format("unsigned arithmetic '{}' with the constant {} may wrap around past the "
-                         "type's largest value (a hash, or a subtraction written as an "
-                         "addition), where dpgen's index arithmetic (signed, 64 bits) does not; "
-                         "outside the kernel subset",
-                         L.text(b), x->ival));
+    if (auto c = int_value(x); c && *c >= (1LL << 31)) // (also through a local: `K`)
+      L.fail(loc, fmt::format("unsigned arithmetic '{}' with the constant {} may wrap around past "
+                              "the type's largest value (a hash, or a subtraction written as an "
+                              "addition), where dpgen's index arithmetic (signed, 64 bits) does "
+                              "not; outside the kernel subset",
+                              text, *int_value(x)));
 }
 
 // An index that multiplies three or more sizes and counters (a 3D

@@ -38,10 +38,12 @@ public:
   // The value of integer constant `v` (unsigned ones are not negative); one
   // outside the range of long long is refused (at `loc`).
   long long constant(const llvm::APSInt& v, clang::SourceLocation loc);
-  // Unsigned `+`, `-`, `*` or `<<` of `b` (operands lowered to `l`, `r`) with
+  // Unsigned `+`, `-`, `*` or `<<` (operands lowered to `l`, `r`) with
   // a constant of 2^31 or more: it may wrap past the type's maximum, which
   // dpgen's signed 64-bit arithmetic does not; refused.
-  void check_unsigned_constant(const clang::BinaryOperator* b, const ExprP& l, const ExprP& r);
+  // (`op` may be a compound assignment, `h *= c`; `text` the operation as written)
+  void check_unsigned_constant(clang::BinaryOperatorKind op, clang::SourceLocation loc,
+                               const std::string& text, const ExprP& l, const ExprP& r);
 
 private:
   Lowerer& L;

@@ -88,7 +88,7 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
         L.env_[var] = b;
         for (const auto& c : h.companions) {
           b.value = binary(Op::Add, c.init, int_const(c.step * n));
-          if (c.unsigned_down)
+          if (c.is_unsigned)
             check_stays_nonneg(c, *b.value, h.var);
           L.env_[c.var] = b;
         }
@@ -195,7 +195,10 @@ void ForLoops::for_loop(const ForStmt* f) {
   for (int n = 1; L.is_reserved(loop->var) || L.local_names_.count(loop->var); ++n)
     loop->var = fmt::format("{}_{}", L.unprefixed(base), n);
   L.loop_names_.insert(loop->var);
-  loop->type_name = L.spelled(var->getType());
+  // (a strided loop counts its steps, which may number below zero for an
+  // empty range: signed, whatever the kernel's counter is)
+  loop->type_name = strided && var->getType()->isUnsignedIntegerType() ? "std::ptrdiff_t"
+                                                                       : L.spelled(var->getType());
   loop->lo = lo;
   loop->hi = hi;
   loop->descending = step == -1;
@@ -283,7 +286,7 @@ void ForLoops::for_loop(const ForStmt* f) {
   }
   L.loops_.push_back(loop);
   for (const auto& c : h.companions) // (now that the counter's range is a fact)
-    if (c.unsigned_down)
+    if (c.is_unsigned)
       check_stays_nonneg(c, *L.env_[c.var].value, h.var);
   if (!L.in_loop_body_frame()) // a helper's loop (a parallel-for's), not one in its body
     L.library_loops_.insert(loop.get());
@@ -313,16 +316,17 @@ void ForLoops::for_loop(const ForStmt* f) {
   counters_after(h, env_before);
 }
 
-// An unsigned companion counting down (`for (unsigned i = 0, j = n - 1; i <
-// n; ++i, --j)`) wraps past zero only after the last iteration, where the
-// body no longer sees it; `value`, its value in the body, must provably stay
-// >= 0 there (dpgen's integers are signed: a wrapped value would differ).
+// An unsigned companion (`for (unsigned i = 0, j = n - 1; i < n; ++i, --j)`
+// wraps past zero only after the last iteration, where the body no longer
+// sees it): `value`, its value in the body, must provably stay >= 0 there
+// (dpgen's integers are signed: a wrapped value, `j = off - 2` with off = 0,
+// would differ).
 void ForLoops::check_stays_nonneg(const ForHeader::Companion& c, const ExprP& value,
                                   const VarDecl* counter) {
   if (L.provably_nonneg(value))
     return;
   L.fail(c.inc->getBeginLoc(),
-         fmt::format("unsigned counter '{}' counts down beside loop counter '{}', and dpgen "
+         fmt::format("unsigned counter '{}' steps beside loop counter '{}', and dpgen "
                      "cannot prove from the loop's bounds that it stays >= 0 in the body (where "
                      "it would wrap around); use a signed counter",
                      c.var->getNameAsString(), counter->getNameAsString()),
@@ -356,6 +360,9 @@ void ForLoops::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
     e = e->IgnoreParenImpCasts();
     if (const auto* sub = dyn_cast<ArraySubscriptExpr>(e)) // an element of a local array
       e = sub->getBase()->IgnoreParenImpCasts();
+    else if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e); // of a std::array: t[k]
+             oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2)
+      e = oc->getArg(0)->IgnoreParenImpCasts();
     if (const auto* r = dyn_cast<DeclRefExpr>(e))
       if (const auto* v = dyn_cast<VarDecl>(r->getDecl()))
         out.insert(v);

@@ -51,7 +51,7 @@ struct ForHeader {
     const clang::VarDecl* var = nullptr;
     ExprP init;
     int step = 0;
-    bool unsigned_down = false; // (must provably stay >= 0 in the body)
+    bool is_unsigned = false; // (must provably stay >= 0 in the body)
     const clang::Expr* inc = nullptr;
   };
   std::vector<Companion> companions;

@@ -178,9 +178,9 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       L.in_loop_bounds_ = true;
       ExprP value = L.exprs_.expr(e);
       L.in_loop_bounds_ = false;
-      // (an unsigned one counting down must stay >= 0 in the body: checked
+      // (an unsigned one must stay >= 0 in the body, `j = off - 2` too: checked
       // where the loop's range is known, ForLoops::for_loop)
-      companions.push_back({v, value, k, t->isUnsignedIntegerType() && k < 0, its});
+      companions.push_back({v, value, k, t->isUnsignedIntegerType(), its});
     }
   }
   int step = post_decrement ? -1 : loop_step(inc, var);

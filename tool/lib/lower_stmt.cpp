@@ -182,6 +182,12 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   Escape else_e = run_arm(false, else_arm, else_goes_on);
   auto env_else = L.env_;
   int after_else = L.next_local_id_;
+  // (an arm's escape conditions may read values made in the arm: inlined, so
+  // nothing of an arm is evaluated where the arm does not run)
+  for (auto& pc : then_goes_on)
+    pc.cond = inline_locals(pc.cond, first_local, after_then);
+  for (auto& pc : else_goes_on)
+    pc.cond = inline_locals(pc.cond, after_then, after_else);
 
   // Merge values assigned in the branches: v = c ? v_then : v_else. A
   // branch that escaped contributes nothing to what follows.
@@ -286,7 +292,7 @@ Escape Statements::switch_stmt(const SwitchStmt* s) {
           clang::Expr::EvalResult r;
           if (c->caseStmtIsGNURange() || !c->getLHS()->EvaluateAsInt(r, L.ctx_))
             L.fail(c->getBeginLoc(), "a case label is one integer constant");
-          cases.back().labels.push_back(r.Val.getInt().getSExtValue());
+          cases.back().labels.push_back(L.ints_.constant(r.Val.getInt(), c->getBeginLoc()));
         } else {
           cases.back().is_default = true;
         }

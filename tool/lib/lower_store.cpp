@@ -181,6 +181,12 @@ void Stores::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, Bi
       L.fail(loc, "this compound assignment is outside the kernel subset");
     }
     value = binary(bop, *b.value, r);
+    if (var->getType().getNonReferenceType()->isUnsignedIntegerType() && rhs)
+      L.ints_.check_unsigned_constant(op, loc,
+                                      fmt::format("{} {} {}", var->getNameAsString(),
+                                                  BinaryOperator::getOpcodeStr(op).str(),
+                                                  L.text(rhs)),
+                                      *b.value, r);
     if (bop == Op::Sub && var->getType().getNonReferenceType()->isUnsignedIntegerType())
       L.ints_.check_unsigned_result(
           value, loc, fmt::format("unsigned '{}' after '-='", var->getNameAsString()), lhs);
