@@ -159,16 +159,12 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   // An arm's path at its end holds, past its own condition, the conditions
   // under which it did not escape (`if (n < 3) return;` inside it): what
   // follows the if runs only where the arm that ran went on to its end.
-  struct OpenArm {
-    int& n;
-    explicit OpenArm(int& c) : n(c) { ++n; }
-    ~OpenArm() { --n; }
-  };
   auto run_arm = [&](bool positive, const std::function<Escape()>& arm,
                      std::vector<PathCond>& goes_on) {
-    OpenArm open{L.open_arms_};
+    ++L.open_arms_; // (an arm's errors are recovered in it: it returns)
     L.path_.push_back({c, positive});
     Escape e = arm();
+    --L.open_arms_;
     goes_on.assign(L.path_.begin() + std::ptrdiff_t(depth) + 1, L.path_.end());
     L.path_.resize(depth);
     return e;
