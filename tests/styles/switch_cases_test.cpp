@@ -5,6 +5,7 @@
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
+#include "same_bits.hpp"
 #include "switch_cases_adjoint.hpp"
 #include "switch_cases_kernels.hpp"
 #include "switch_cases_tangent.hpp"
@@ -16,20 +17,7 @@
 
 using dpgen_test::check_one_to_one;
 
-namespace {
-
-// `kernel` and `parallel` (the printed forward) on the same input, outputs prefilled with
-// NaN, bit for bit.
-template <typename K, typename P> void same_bits(size_t n, size_t m, K kernel, P parallel) {
-  std::vector<double> in(n), a(m, std::nan("")), b(m, std::nan(""));
-  for (size_t i = 0; i < n; ++i)
-    in[i] = std::sin(1.0 + 0.7 * double(i));
-  kernel(in.data(), a.data());
-  parallel(in.data(), b.data());
-  CHECK((m == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * m) == 0));
-}
-
-} // namespace
+using dpgen_test::same_bits;
 
 TEST_CASE("styles: sweep_switch") {
   for (int dir : {0, 1, 2}) {
