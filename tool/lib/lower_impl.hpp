@@ -51,6 +51,10 @@
 
 namespace dpgen::lowering {
 
+// The conjunction of path[from..] as one condition (null where there is
+// none): the conditions of a store path's tail, of an arm that went on.
+ExprP all_of(const std::vector<PathCond>& path, size_t from = 0);
+
 using namespace clang;
 
 enum class Escape { None, Always };

@@ -219,10 +219,8 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   // side where one always escapes (then what that arm went on under), else
   // (c && then_goes_on) || (!c && else_goes_on) where an arm escaped in part.
   const size_t before = L.path_.size();
-  auto all_of = [](ExprP first, const std::vector<PathCond>& rest) {
-    for (const auto& pc : rest)
-      first = binary(Op::And, first, pc.positive ? pc.cond : unary(Op::Not, pc.cond));
-    return first;
+  auto went_on = [](const ExprP& first, const std::vector<PathCond>& rest) {
+    return rest.empty() ? first : binary(Op::And, first, all_of(rest));
   };
   if (then_e == Escape::Always || else_e == Escape::Always) {
     const bool then_runs = else_e == Escape::Always;
@@ -231,7 +229,7 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
       L.path_.push_back(pc);
   } else if (!then_goes_on.empty() || !else_goes_on.empty()) {
     L.path_.push_back(
-        {binary(Op::Or, all_of(c, then_goes_on), all_of(unary(Op::Not, c), else_goes_on)), true});
+        {binary(Op::Or, went_on(c, then_goes_on), went_on(unary(Op::Not, c), else_goes_on)), true});
   }
   // `if (n < 3) return;` in the kernel itself, outside every loop, helper and
   // other if: a guard of the whole kernel (it is also on every later path).

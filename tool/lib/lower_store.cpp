@@ -224,8 +224,8 @@ bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<Pa
   return true;
 }
 
-namespace {
-// The conjunction of path[from..] as one condition (null where there is none).
+// The conjunction of path[from..] as one condition (null where there is none;
+// lower_impl.hpp).
 ExprP all_of(const std::vector<PathCond>& path, size_t from) {
   ExprP cond;
   for (size_t i = from; i < path.size(); ++i) {
@@ -234,7 +234,6 @@ ExprP all_of(const std::vector<PathCond>& path, size_t from) {
   }
   return cond;
 }
-} // namespace
 
 void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
                        SourcePos p, SourceLocation loc, int extremum) {
