@@ -17,3 +17,14 @@ DPGEN_KERNEL void enum_class_bc(DPGEN_IN const double* u, DPGEN_OUT double* v, i
     break;
   }
 }
+
+// The same kind by const reference, as configuration structs' getters hand
+// it out: the generated declarations include the header here too.
+DPGEN_KERNEL void enum_ref_bc(DPGEN_IN const double* u, DPGEN_OUT double* v, int n, const Bc& bc) {
+  for (int i = 1; i < n; ++i)
+    v[i] = u[i] * u[i - 1];
+  if (bc == Bc::Flip)
+    v[0] = -u[0] * u[0];
+  else
+    v[0] = bc == Bc::Zero ? 0.0 : u[0];
+}

@@ -1,5 +1,6 @@
-// enum_params (tests/styles/): an enum class parameter from a header. Each
-// kind: adjoint and tangent against the checker's differences, v[0] by hand.
+// enum_params (tests/styles/): an enum class parameter from a header, by value
+// and by const reference. Each kind: adjoint and tangent against the
+// checker's differences, v[0] by hand.
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
@@ -22,5 +23,24 @@ TEST_CASE("styles: enum_class_bc") {
     double v[2] = {0.0, 0.0};
     enum_class_bc(u, v, 2, bc);
     CHECK(v[0] == (bc == Bc::Zero ? 0.0 : bc == Bc::Copy ? 6.0 : -6.0));
+  }
+}
+
+TEST_CASE("styles: enum_ref_bc") {
+  for (Bc bc : {Bc::Zero, Bc::Copy, Bc::Flip}) {
+    for (int n : {1, 2, 5}) {
+      CAPTURE(int(bc));
+      CAPTURE(n);
+      const size_t N = size_t(n);
+      const Bc& ref = bc;
+      dpgen_test::check_one_to_one(
+          N, N, [&](auto u, auto v) { enum_ref_bc(u, v, n, ref); },
+          [&](auto u, auto adj, auto seed) { enum_ref_bc_adjoint(u, adj, seed, n, ref); },
+          [&](auto u, auto d, auto v, auto vd) { enum_ref_bc_tangent(u, d, v, vd, n, ref); });
+    }
+    const double u[1] = {3.0};
+    double v[1] = {1.0};
+    enum_ref_bc(u, v, 1, bc);
+    CHECK(v[0] == (bc == Bc::Zero ? 0.0 : bc == Bc::Copy ? 3.0 : -9.0));
   }
 }

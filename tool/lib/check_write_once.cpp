@@ -523,6 +523,14 @@ private:
     // rows never are; `out[i]` and `out[stride + i]` are planes_apart's)
     if (c.is_constant() && (c.constant_term() == 1 || c.constant_term() == -1))
       return false;
+    // (a loop counting down by a constant, `b[i]` with `i -= 2`: c * j + r =
+    // |c| * (-j) + r, rows of length |c| all the same)
+    if (c.is_constant() && c.constant_term() < 0)
+      c = -c;
+    // (indices a multiple of c apart meet across iterations: last_writer's)
+    const Poly d = py - px;
+    if (c.is_constant() && d.is_constant() && d.constant_term() % c.constant_term() == 0)
+      return false;
     auto rx = index_range(px.without(j), x.path, nx), ry = index_range(py.without(j), y.path, ny);
     if (!rx || !ry)
       return false;

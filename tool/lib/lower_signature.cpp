@@ -230,11 +230,7 @@ void Signature::parameter(const DeclaratorDecl* p) {
   } else if (ref_scalar && ref_elem != Type::Bool && (ann == "dpgen.in" || ann == "dpgen.out")) {
     scalar_ref_parameter(p, ann, ref_elem, out);
   } else if (ref_scalar && q.getNonReferenceType().isConstQualified() && ann.empty()) {
-    // const double& dx: read like a value; the adjoint takes it the same way.
-    out.kind = ParamKind::Scalar;
-    out.elem = ref_elem;
-    out.elem_name = Lowerer::spelled(q.getNonReferenceType().getUnqualifiedType());
-    out.is_unsigned = ref_elem == Type::Int && q.getNonReferenceType()->isUnsignedIntegerType();
+    value_parameter(p, ann, out); // const double& dx: read like a value, taken the same way
   } else if (ref_scalar && ann.empty()) {
     L.fail(p->getLocation(), fmt::format("unmarked parameter '{}' is a non-const reference: "
                                        "mark it DPGEN_OUT, or make it const",
@@ -494,7 +490,7 @@ std::optional<Param> Signature::pointer_parameter(const DeclaratorDecl* p, const
 
 // A scalar by value (or a const reference to one, read alike).
 void Signature::value_parameter(const DeclaratorDecl* p, const std::string& ann, Param& out) {
-  QualType q = p->getType();
+  QualType q = p->getType().getNonReferenceType();
   auto t = L.scalar_type(q);
   if (!t)
     L.fail(p->getLocation(), fmt::format("parameter '{}' has type '{}', outside the kernel "
@@ -509,14 +505,13 @@ void Signature::value_parameter(const DeclaratorDecl* p, const std::string& ann,
   out.elem = *t;
   out.elem_name = Lowerer::spelled(q);
   out.is_unsigned = *t == Type::Int && q->isUnsignedIntegerType();
-  // an enum parameter (`Bc bc`): the generated declarations name its type,
-  // so they include the header that declares it
+  // an enum (`Bc bc`, `const Bc& bc`): the generated declarations name its
+  // type, so they include the header that declares it
   out.enum_value = q.getCanonicalType()->isEnumeralType();
   if (const auto* et = q.getCanonicalType()->getAs<EnumType>())
     out.tag_declaration = L.views_.include_for(et->getDecl(), p->getLocation(),
                                                fmt::format("parameter '{}'", out.name));
 }
-
 
 // The parameters keep their names in every generated function, so a name
 // the generated code needs for something else is an error: the adjoint or
