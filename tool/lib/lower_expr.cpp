@@ -316,6 +316,8 @@ ExprP Expressions::expr(const clang::Expr* e) {
       L.fail(u->getOperatorLoc(), "pointer arithmetic is outside the kernel subset; index "
                                   "parameters directly");
     default:
+      if (L.for_loops_.running_.inline_steps_.count(u)) // its statement steps it
+        return expr(u->getSubExpr());
       L.fail(u->getOperatorLoc(), "increment/decrement inside an expression is outside the "
                                   "kernel subset");
     }

@@ -357,6 +357,7 @@ private:
   friend class Stores;
   friend class LoopHeaders;
   friend class ForLoops;
+  friend class RunningIndices;
   friend class Expressions;
   Statements stmts_{*this};
   Stores stores_{*this};

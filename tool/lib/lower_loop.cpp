@@ -250,6 +250,7 @@ void ForLoops::for_loop(const ForStmt* f) {
   // from the previous iteration.
   std::set<const VarDecl*> assigned;
   assigned_vars(f->getBody(), assigned);
+  auto inductions = running_.begin(f, h, *loop, trip, assigned);
   // Scalar accumulators of this loop (`s += f(...)`, `s` read only after
   // the loop) and its min/max reductions: hidden work arrays (lower_reduce).
   const Reductions::LoopScope reductions =
@@ -266,8 +267,13 @@ void ForLoops::for_loop(const ForStmt* f) {
         "assigned in this iteration: a value carried from one iteration to the next (a "
         "recurrence, or a running sum read inside its loop) is outside the kernel subset; "
         "assign it before each use in the iteration, or only add to it (`s += ...`) or take "
-        "its min/max (`m = std::max(m, ...)`) in the loop and read it after the loop",
-        v->getNameAsString());
+        "its min/max (`m = std::max(m, ...)`) in the loop and read it after the loop{}",
+        v->getNameAsString(),
+        v->getType()->isIntegerType()
+            ? "; a running index is in the subset too: stepped (`k++`, `k += s`) by the same "
+              "amount in every iteration, outside any `if` and with no `continue` before its "
+              "step, and read inside the innermost loop that steps it"
+            : "");
   }
   // (after the accumulators' initial stores, which are outside the loop)
   for (const auto& [bound_at, upper] : triangle) // the triangle's side(s)
@@ -294,6 +300,7 @@ void ForLoops::for_loop(const ForStmt* f) {
   L.segments_.push_back(--L.next_segment_);
   Escape e = L.lower_recovering(f->getBody());
   (void)e; // a body ending in continue is fine
+  running_.end_body(f, inductions);
   L.library_loops_.erase(loop.get());
   L.loops_.pop_back();
   L.loop_ids_.pop_back();
@@ -313,6 +320,7 @@ void ForLoops::for_loop(const ForStmt* f) {
                                   "is the last iteration's, outside the kernel subset",
                                   v->getNameAsString());
   }
+  running_.end(inductions, *loop);
   counters_after(h, env_before);
 }
 

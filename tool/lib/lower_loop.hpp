@@ -13,6 +13,7 @@
 
 #include <clang/AST/OperationKinds.h>
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
@@ -23,6 +24,7 @@ class BinaryOperator;
 class CXXRecordDecl;
 class Expr;
 class ForStmt;
+class UnaryOperator;
 class Stmt;
 class VarDecl;
 } // namespace clang
@@ -99,6 +101,42 @@ private:
   int loop_step(const clang::Expr* inc, const clang::VarDecl* var);
 };
 
+// Running indices (lower_induction.cpp): an integer local declared before a
+// loop and stepped in its body (`b[idx] = ...; idx++;`), in closed form in
+// each iteration: its value before the loop plus the iteration's number times
+// its step per iteration (a kernel-level local, `<v>_per_<counter>`).
+class RunningIndices {
+public:
+  explicit RunningIndices(Lowerer& lowerer) : L(lowerer) {}
+
+  struct Induction {
+    const clang::VarDecl* var = nullptr;
+    ExprP entry, start;            // its value before the loop, at an iteration's start
+    std::shared_ptr<LocalVar> per; // its step per iteration (defined by end_body)
+    bool is_unsigned = false;
+    bool enclosed = false; // an enclosing loop steps it too
+  };
+  // Before loop `f`'s body (`trip`: the iteration's number from 0): the
+  // running indices among `assigned` (which loses them) get their closed form.
+  std::vector<Induction> begin(const clang::ForStmt* f, const ForHeader& h, const Loop& loop,
+                               const ExprP& trip, std::set<const clang::VarDecl*>& assigned);
+  // After the body: each one's step per iteration, from its value there.
+  void end_body(const clang::ForStmt* f, std::vector<Induction>& inductions);
+  // After the loop: each one's value past it, where that is a value.
+  void end(const std::vector<Induction>& inductions, const Loop& loop);
+
+  // Expression statement `e` with steps inside it (`b[idx++] = x`), lowered;
+  // false where it has none. The steps the expression being lowered reads
+  // as their variable's value:
+  bool lower_inner_steps(const clang::Expr* e);
+  std::set<const clang::UnaryOperator*> inline_steps_;
+
+private:
+  Lowerer& L;
+  bool steps_only(const clang::Stmt* body, const clang::VarDecl* v, bool& read, bool& up);
+  std::set<const clang::VarDecl*> active_; // stepped by a loop being lowered
+};
+
 class ForLoops {
 public:
   explicit ForLoops(Lowerer& lowerer) : L(lowerer) {}
@@ -138,6 +176,9 @@ private:
   bool forget_value(const clang::VarDecl* v);
 
   std::set<const clang::CXXRecordDecl*> lambdas_seen_; // (assigned_vars: no endless recursion)
+
+public:
+  RunningIndices running_{L};
 };
 
 } // namespace dpgen::lowering

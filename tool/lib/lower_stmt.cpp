@@ -565,6 +565,8 @@ void Statements::expr_stmt(const clang::Expr* e) {
                      u->getOperatorLoc());
     return;
   }
+  if (L.for_loops_.running_.lower_inner_steps(e)) // b[idx++] = x
+    return;
   // `(void)x;` (silences an unused-variable warning): nothing to do.
   if (const auto* c = dyn_cast<ExplicitCastExpr>(e);
       c && c->getType()->isVoidType() && isa<DeclRefExpr>(c->getSubExpr()->IgnoreParenImpCasts()))
