@@ -76,3 +76,12 @@ DPGEN_KERNEL void read_after(DPGEN_IN const double* a, DPGEN_OUT double* b, int 
   // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:12: error: loop counter 'j' is read after its loop; use the loop bound instead
   b[0] = a[j];
 }
+
+DPGEN_KERNEL void before_and_in_body(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  int p = 0;
+  for (int i = 0; i < n; ++i, ++p) {
+    b[i] = a[p];
+    // CHECK-DAG: multi_counters.cpp:[[@LINE+1]]:6: error: loop counter 'p' is modified in the loop body [dpgen-loop]
+    p++;
+  }
+}

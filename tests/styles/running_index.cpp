@@ -124,3 +124,25 @@ DPGEN_KERNEL void fill_backwards(DPGEN_IN const double* a, DPGEN_OUT double* b, 
   for (int i = 0; i < n; ++i)
     b[--k] = a[i] - a[i] * a[i];
 }
+
+// A local set before the loop that its increment steps beside the counter
+// (`int p = j * nx + 1; for (i = 1; ...; ++i, ++p)`): a companion from its
+// value there, stepped also after a `continue`.
+DPGEN_KERNEL void row_pointer_index(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {
+  for (int j = 1; j < ny - 1; ++j) {
+    int p = j * nx + 1;
+    for (int i = 1; i < nx - 1; ++i, ++p)
+      b[p] = a[p - 1] + a[p + 1] - 2.0 * a[p] * a[p - nx];
+  }
+}
+
+DPGEN_KERNEL void strided_before(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  int k = 0, m = 2 * n - 1;
+  int i;
+  for (i = 0; i < n; ++i, k += 2, m -= 2) {
+    b[i] = 0.0;
+    if (i % 3 == 1)
+      continue;
+    b[i] = a[k] * a[m];
+  }
+}

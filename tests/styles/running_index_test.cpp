@@ -149,3 +149,34 @@ TEST_CASE("styles: pack_squares, unpack_pairs, fill_backwards") {
       100 * 100, 100 * 100, [](auto a, auto b) { pack_squares(a, b, 100, 100); },
       [](auto a, auto b) { pack_squares_parallel_forward(a, b, 100, 100); });
 }
+
+TEST_CASE("styles: row_pointer_index, strided_before") {
+  for (int nx : {2, 3, 5})
+    for (int ny : {2, 4}) {
+      CAPTURE(nx);
+      CAPTURE(ny);
+      const size_t N = size_t(nx * ny);
+      check_one_to_one(
+          N, N, [&](auto a, auto b) { row_pointer_index(a, b, nx, ny); },
+          [&](auto a, auto adj, auto seed) { row_pointer_index_adjoint(a, adj, seed, nx, ny); },
+          [&](auto a, auto d, auto b, auto bd) { row_pointer_index_tangent(a, d, b, bd, nx, ny); });
+    }
+  for (int n : {0, 1, 2, 7}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    check_one_to_one(
+        2 * N, N, [&](auto a, auto b) { strided_before(a, b, n); },
+        [&](auto a, auto adj, auto seed) { strided_before_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto b, auto bd) { strided_before_tangent(a, d, b, bd, n); });
+  }
+  // by hand: b[2] of n = 3 reads a[4] and a[1]; b[1] is skipped
+  const double a[6] = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0};
+  double b[3] = {7.0, 7.0, 7.0};
+  strided_before(a, b, 3);
+  CHECK(b[0] == 1.0 * 6.0);
+  CHECK(b[1] == 0.0);
+  CHECK(b[2] == 5.0 * 2.0);
+  dpgen_test::same_bits(
+      100 * 100, 100 * 100, [](auto a, auto b) { row_pointer_index(a, b, 100, 100); },
+      [](auto a, auto b) { row_pointer_index_parallel_forward(a, b, 100, 100); });
+}

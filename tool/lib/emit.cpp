@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <climits>
 #include <functional>
 #include <map>
 #include <set>
@@ -184,6 +185,35 @@ std::string print_bound(const CellBound& b, const std::string& t, bool lower) {
   if (parts.size() == 2)
     return fmt::format("std::{}<{}>({}, {})", fn, t, parts[0], parts[1]);
   return fmt::format("std::{}<{}>({{{}}})", fn, t, fmt::join(parts, ", "));
+}
+
+// The conditions under which a sum of an interior term over counters outside
+// the layout (a read of `a[j * nx]` in a loop over i) runs over no iteration;
+// an interior cell stores its sum unconditionally, so the interior must then
+// be empty. (Ranges empty or not whatever the sizes are left out.)
+std::vector<std::string> empty_sums(const CellLoop& plan) {
+  std::vector<std::string> out;
+  for (size_t gi = 0; gi < plan.groups.size(); ++gi)
+    for (const auto& terms : plan.interior_terms[gi])
+      for (const BoxTerm& bt : terms)
+        for (const std::string& r : plan.groups[gi]->reduced) {
+          auto d = bt.box.dims.find(r);
+          if (d == bt.box.dims.end() || d->second.lo.empty() || d->second.hi.empty())
+            continue;
+          bool constant = true;
+          long long lo = LLONG_MIN, hi = LLONG_MAX;
+          for (const Poly& p : d->second.lo)
+            constant = constant && p.is_constant(), lo = std::max(lo, p.constant_term());
+          for (const Poly& p : d->second.hi)
+            constant = constant && p.is_constant(), hi = std::min(hi, p.constant_term());
+          if (constant && lo < hi)
+            continue;
+          std::string c = fmt::format("{} >= {}", print_max(d->second.lo, kCellType),
+                                      print_min(d->second.hi, kCellType));
+          if (std::find(out.begin(), out.end(), c) == out.end())
+            out.push_back(c);
+        }
+  return out;
 }
 
 std::string adj_cell(const Kernel& k, const GatherGroup& g) {
@@ -423,6 +453,16 @@ void emit_gather(Code& code, const Kernel& k, const CellLoop& plan) {
     if (!apart.empty()) {
       code.open(fmt::format("if (!({}))", fmt::join(apart, " && ")));
       code.line("// an edge term reaches into the interior: treat every cell as an edge");
+      for (const auto& [v, c] : g0.layout)
+        code.line("{} = {} = {};", in_lo(v), in_hi(v), hi_of(v));
+      code.close();
+    }
+    const std::vector<std::string> empty = empty_sums(plan);
+    if (!empty.empty()) {
+      code.open(fmt::format("if ({})", fmt::join(empty, " || ")));
+      code.line("// an interior sum over {} runs over no iteration, so the source reads no "
+                "cell: treat every cell as an edge (written only where read)",
+                fmt::join(g0.reduced, ", "));
       for (const auto& [v, c] : g0.layout)
         code.line("{} = {} = {};", in_lo(v), in_hi(v), hi_of(v));
       code.close();

@@ -99,6 +99,7 @@ private:
                    clang::BinaryOperatorKind& op);
 
   int loop_step(const clang::Expr* inc, const clang::VarDecl* var);
+  const clang::VarDecl* stepped_local(const clang::Expr* e) const;
 };
 
 // Running indices (lower_induction.cpp): an integer local declared before a

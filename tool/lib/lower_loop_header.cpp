@@ -17,6 +17,23 @@ std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
   return {e};
 }
 
+// The integer local with a value that increment part `e` steps (`++p`, `p
+// += 2`), if that is what it is.
+const VarDecl* LoopHeaders::stepped_local(const clang::Expr* e) const {
+  const clang::Expr* operand = nullptr;
+  if (const auto* u = dyn_cast<UnaryOperator>(e->IgnoreParens()); u && u->isIncrementDecrementOp())
+    operand = u->getSubExpr();
+  else if (const auto* c = dyn_cast<CompoundAssignOperator>(e->IgnoreParens()))
+    operand = c->getLHS();
+  const auto* r = operand ? dyn_cast<DeclRefExpr>(operand->IgnoreParenImpCasts()) : nullptr;
+  const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+  auto it = v ? L.env_.find(v) : L.env_.end();
+  if (it == L.env_.end() || it->second.kind != Binding::Value || !it->second.value ||
+      !v->getType()->isIntegerType() || v->getType()->isBooleanType())
+    return nullptr;
+  return v;
+}
+
 // Whether `s` names variable `v`.
 bool LoopHeaders::mentions(const Stmt* s, const VarDecl* v) {
   return ReductionForms::mentions(s, v);
@@ -142,10 +159,13 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   // with companions, one of these for each counter (`++i, --j`)
   std::vector<ForHeader::Companion> companions;
   const clang::Expr* inc = f->getInc();
-  if (inits.size() > 1) {
+  if (inits.size() > 1 || (inc && comma_parts(inc).size() > 1)) {
     inc = nullptr;
-    // each part of the increment steps one counter, each counter once
+    // each part of the increment steps one counter, each counter once; a
+    // local set before the loop may step beside them (`int p = j * nx + 1;
+    // for (i = 1; i < nx - 1; ++i, ++p)`), a companion from its value there
     std::map<const VarDecl*, const clang::Expr*> own;
+    std::vector<const VarDecl*> before;
     if (f->getInc())
       for (const clang::Expr* part : comma_parts(f->getInc())) {
         const VarDecl* stepped = nullptr;
@@ -153,6 +173,10 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
         for (const auto& [v, e] : inits)
           if (mentions(part, v))
             stepped = v, ++n;
+        if (const VarDecl* w = n == 0 ? stepped_local(part) : nullptr) {
+          stepped = w, n = 1;
+          before.push_back(w);
+        }
         if (n != 1 || own.count(stepped) || (post_decrement && stepped == var))
           L.fail(part->getBeginLoc(),
                  "the increment of a loop with several counters steps each of them once: "
@@ -181,6 +205,17 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       // (an unsigned one must stay >= 0 in the body, `j = off - 2` too: checked
       // where the loop's range is known, ForLoops::for_loop)
       companions.push_back({v, value, k, t->isUnsignedIntegerType(), its});
+    }
+    for (const VarDecl* w : before) {
+      const int k = loop_step(own[w], w);
+      if (k == 0)
+        L.fail(own[w]->getBeginLoc(),
+               fmt::format("'{}' steps beside the loop's counter: by a constant once per "
+                           "iteration ('++{}', '{} += 2')",
+                           w->getNameAsString(), w->getNameAsString(), w->getNameAsString()),
+               "dpgen-loop");
+      companions.push_back(
+          {w, *L.env_.at(w).value, k, w->getType()->isUnsignedIntegerType(), own[w]});
     }
   }
   int step = post_decrement ? -1 : loop_step(inc, var);
