@@ -28,7 +28,9 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     # refused until switch statements were in the subset, now accepted and right
     r4_br_switch
     # accepted, but its run-time layout check threw for every n >= 3 (corpus 20)
-    c20_strided_down_overwrite)
+    c20_strided_down_overwrite
+    # its interior cells stored empty sums outside an empty array (nx = 0)
+    c20_row_start_read)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after
