@@ -39,6 +39,8 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
     collect(index, locals, vars);
     collect(value, locals, vars);
     collect(dot, locals, vars);
+    if (fs.chain)
+      collect(fs.chain, locals, vars);
     std::set<int> inner = done;
     define_locals(code, locals, guarded ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
@@ -46,14 +48,16 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
     std::string dot_text = !is_zero(dot)                             ? print(dot)
                            : type_spelling(s.value->type) == "float" ? "0.0f"
                                                                      : "0.0";
-    if (s.extremum != 0 || !tangent) {
-      // (a min/max scan is a constant to derivatives: its tangent stays what
-      // its first store set, 0)
-      code.line("{}", store_statement(s, s.array + idx, print(value)));
-    } else {
-      code.line("{}{} {} {};", s.array, idx, op, print(value));
+    // (`+=` statements merged into one store: the element's new value as the
+    // kernel adds them, (x + a) + b, not x + (a + b))
+    const std::string primal = fs.chain && s.extremum == 0
+                                   ? fmt::format("{}{} = {};", s.array, idx, print(fs.chain))
+                                   : store_statement(s, s.array + idx, print(value));
+    code.line("{}", primal);
+    // (a min/max scan is a constant to derivatives: its tangent stays what its
+    // first store set, 0)
+    if (s.extremum == 0 && tangent)
       code.line("{}_dot{} {} {};", s.array, idx, op, dot_text);
-    }
     if (auto w = options.written.find(s.array); w != options.written.end())
       code.line("{}{} = 1; // (copied back to '{}')", w->second, idx,
                 k.find_param(s.array)->twin_of);

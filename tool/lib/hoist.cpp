@@ -355,6 +355,8 @@ void hoist_invariants(ForwardPlan& plan, const std::set<std::string>* taken) {
       s.value = hoist(s.value, summed);
       if (s.dot && !is_zero(s.dot))
         s.dot = hoist(s.dot, summed);
+      if (s.chain)
+        s.chain = hoist(s.chain);
       hoist.all(s.path);
     }
   };

@@ -388,6 +388,11 @@ struct Store {
   /// Its value is a constant to every derivative (dpgen_nograd): the
   /// reduction's derivative comes from the separate sums lowering builds.
   int extremum = 0;
+  /// `+=` statements into one element merged into this store (`x += a; x +=
+  /// b;`, value a + b): the element's new value as the kernel computes it,
+  /// (x + a) + b, which the forward forms print for the same bits. Null
+  /// where `x += value` is that.
+  ExprP chain;
   /// Program order of the store statements in the kernel.
   int seq = 0;
 };

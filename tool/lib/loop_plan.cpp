@@ -547,7 +547,7 @@ ForwardPlan plan_forward(const Kernel& k) {
                                   [](const Store& s) { return s.accumulate; });
     plan.nests.push_back({&nest, !nest.loops.empty() && !adds, {}, {}, {}});
     for (const auto& st : nest.stores)
-      plan.nests.back().stores.push_back({&st, st.index, st.value, nullptr, st.path});
+      plan.nests.back().stores.push_back({&st, st.index, st.value, nullptr, st.path, st.chain});
   }
   return plan;
 }
@@ -684,6 +684,8 @@ bool fold_store(const Box& box, Specializer& spec, ForwardStore& s) {
   s.value = spec(s.value);
   if (s.dot)
     s.dot = spec(s.dot);
+  if (s.chain)
+    s.chain = spec(s.chain);
   std::vector<PathCond> path;
   for (const auto& pc : s.path) {
     const FoldedCond f = fold_cond(box, spec(pc.cond));
@@ -734,7 +736,7 @@ void peel_forward(ForwardPlan& plan) {
           std::equal(s.path.begin(), s.path.end(), before.path.begin(),
                      [](const PathCond& a, const PathCond& b) { return a.cond == b.cond; });
       folded = folded || !kept || !same_path || s.index != before.index ||
-               s.value != before.value || s.dot != before.dot;
+               s.value != before.value || s.dot != before.dot || s.chain != before.chain;
       if (kept)
         inside.push_back(std::move(s));
     }

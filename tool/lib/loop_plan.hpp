@@ -181,6 +181,7 @@ struct ForwardStore {
   const Store* store = nullptr;
   ExprP index, value, dot;
   std::vector<PathCond> path;
+  ExprP chain; // Store::chain
 };
 
 /// Fewer iterations than this run serially in a forward form: a parallel

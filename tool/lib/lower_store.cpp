@@ -280,6 +280,18 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
         : accumulate ? binary(Op::Add, prev->value, value)
                      : value;
     const ExprP cond = all_of(L.path_, prev->path.size());
+    if (accumulate && prev->accumulate && !extremum) { // (x + a) + b, as the kernel adds
+      const Param* a = L.k_.find_param(array);
+      const ExprP before =
+          prev->chain
+              ? prev->chain
+              : binary(Op::Add, read(array, idx, value->type, p, a ? shape_of(*a) : Shape{}),
+                       prev->value);
+      const ExprP after = binary(Op::Add, before, value);
+      prev->chain = cond ? select(cond, after, before) : after;
+    } else {
+      prev->chain = nullptr;
+    }
     prev->value = cond ? select(cond, updated, prev->value) : updated;
     prev->pos = p;
     return;
