@@ -28,3 +28,15 @@ DPGEN_KERNEL void enum_ref_bc(DPGEN_IN const double* u, DPGEN_OUT double* v, int
   else
     v[0] = bc == Bc::Zero ? 0.0 : u[0];
 }
+
+// The kind as a member of an object parameter and of a member kernel's class.
+DPGEN_KERNEL void enum_member_bc(DPGEN_IN const double* u, DPGEN_OUT double* v, int n,
+                                 const BcParams& p) {
+  for (int i = 0; i < n; ++i)
+    v[i] = p.bc == Bc::Flip ? -u[i] * p.dt : u[i] * u[i] * p.dt;
+}
+
+void EdgeSolver::run() const {
+  for (int i = 0; i < n_; ++i)
+    v_[i] = bc_ == Bc::Zero && (i == 0 || i == n_ - 1) ? 0.0 : u_[i] * u_[i];
+}

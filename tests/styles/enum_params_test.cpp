@@ -44,3 +44,38 @@ TEST_CASE("styles: enum_ref_bc") {
     CHECK(v[0] == (bc == Bc::Zero ? 0.0 : bc == Bc::Copy ? 3.0 : -9.0));
   }
 }
+
+TEST_CASE("styles: enum_member_bc, EdgeSolver::run") {
+  for (Bc bc : {Bc::Zero, Bc::Copy, Bc::Flip}) {
+    for (int n : {0, 1, 2, 5}) {
+      CAPTURE(int(bc));
+      CAPTURE(n);
+      const size_t N = size_t(n);
+      const BcParams p{0.25, bc};
+      dpgen_test::check_one_to_one(
+          N, N, [&](auto u, auto v) { enum_member_bc(u, v, n, p); },
+          [&](auto u, auto adj, auto seed) { enum_member_bc_adjoint(u, adj, seed, n, p); },
+          [&](auto u, auto d, auto v, auto vd) { enum_member_bc_tangent(u, d, v, vd, n, p); });
+      dpgen_test::Problem<double> q;
+      q.in_sizes = {N};
+      q.out_sizes = {N};
+      q.forward = [&](auto in, auto out) { EdgeSolver(n, bc, in[0], out[0]).run(); };
+      q.adjoint = [&](auto in, auto adj, auto seed) {
+        EdgeSolver_run_adjoint(EdgeSolver(n, bc, in[0], nullptr), adj[0], seed[0]);
+      };
+      q.tangent = [&](auto in, auto d, auto out, auto dout) {
+        EdgeSolver s(n, bc, in[0], out[0]);
+        EdgeSolver_run_tangent(s, d[0], dout[0]);
+      };
+      dpgen_test::check_adjoint(q);
+    }
+    // by hand: u = 2, 3, 4
+    const double u[3] = {2.0, 3.0, 4.0};
+    double v[3] = {0.0, 0.0, 0.0};
+    EdgeSolver(3, bc, u, v).run();
+    CHECK(v[0] == (bc == Bc::Zero ? 0.0 : 4.0));
+    CHECK(v[1] == 9.0);
+    enum_member_bc(u, v, 3, BcParams{0.5, bc});
+    CHECK(v[2] == (bc == Bc::Flip ? -2.0 : 8.0));
+  }
+}

@@ -194,8 +194,15 @@ std::vector<RadixStep> mixed_radix(std::vector<std::pair<Poly, Poly>> dims) {
   std::vector<RadixStep> out;
   for (size_t i = 0; i < dims.size(); ++i)
     out.push_back({i, dims[i].first, dims[i].first, Poly()});
-  std::stable_sort(out.begin(), out.end(), [](const RadixStep& a, const RadixStep& b) {
-    return smaller_coefficient(a.coefficient, b.coefficient);
+  // (of equal coefficients, a counter that takes one value first: it reaches
+  // nothing, `v[i + c]` for c in [0, 1))
+  auto single = [&](const RadixStep& s) {
+    const Poly& e = dims[s.dim].second;
+    return e.is_constant() && e.constant_term() == 1;
+  };
+  std::stable_sort(out.begin(), out.end(), [&](const RadixStep& a, const RadixStep& b) {
+    return smaller_coefficient(a.coefficient, b.coefficient) ||
+           (!smaller_coefficient(b.coefficient, a.coefficient) && single(a) && !single(b));
   });
   Poly reach;
   for (auto& s : out) {

@@ -151,6 +151,31 @@ void Extents::view_outputs_located() {
     }
 }
 
+// One past `last`, the largest index of an access at `index` in nest `n`
+// under `path`, counted where the access runs: the loops around it that leave
+// its element alone run, its conditions on the sizes hold.
+Extent::End Extents::counted_where_run(const Poly& last, const ExprP& index,
+                                       const std::vector<PathCond>& path, const Nest& n) {
+  Extent::End end{{}, last + Poly::constant(1)};
+  auto add = [&](const SizeCond& c) {
+    if (std::none_of(end.runs.begin(), end.runs.end(),
+                     [&](const SizeCond& o) { return o.code() == c.code(); }))
+      end.runs.push_back(c);
+  };
+  auto pi = to_poly(index);
+  for (const auto& l : n.loops)
+    if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi))
+      add(SizeCond::runs(*to_poly(l.lo), *to_poly(l.hi)));
+  for (const auto& pc : path) {
+    Facts facts;
+    add_facts(pc, facts);
+    for (const Poly& p : facts)
+      if (!p.mentions_any_counter())
+        add(SizeCond::nonneg(p));
+  }
+  return end;
+}
+
 // One past the largest index each output's stores reach, for the buffers
 // of an adjoint that recomputes the forward kernel (work arrays).
 void Extents::output_extents() {
@@ -203,16 +228,7 @@ void Extents::output_extents() {
       // A store at an element that stays while a loop around it runs (a
       // sum, a pinned store) reaches it only if that loop runs: an
       // in-place array's seed copy must not read u_adj[0] of an empty one.
-      Extent::End end{{}, r->second + Poly::constant(1)};
-      auto pi = to_poly(st.index);
-      for (const auto& l : n.loops)
-        if (pi && !pi->mentions_counter(l.var) && to_poly(l.lo) && to_poly(l.hi)) {
-          SizeCond run = SizeCond::runs(*to_poly(l.lo), *to_poly(l.hi));
-          if (std::none_of(end.runs.begin(), end.runs.end(),
-                           [&](const SizeCond& o) { return o.code() == run.code(); }))
-            end.runs.push_back(run);
-        }
-      ends[st.array].add(end);
+      ends[st.array].add(counted_where_run(r->second, st.index, {}, n));
     }
   // A later loop may read a work array beyond what was written (the
   // buffer holds NaN there): the buffer covers the reads too.
@@ -234,7 +250,9 @@ void Extents::output_extents() {
                                 r.array));
         continue;
       }
-      ends[r.array].add({{}, range->second + Poly::constant(1)});
+      // (a read under a guard on the sizes, `if (n > 1) ... w[1]`, where it runs:
+      // the seed copy must not read w_adj[1] of a shorter one)
+      ends[r.array].add(counted_where_run(range->second, r.index, r.path, *reader));
     }
     // Provably outside every earlier store's range: an element no loop
     // writes, whose value is the caller's (the adjoint's buffer has NaN).

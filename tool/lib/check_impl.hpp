@@ -145,6 +145,8 @@ private:
   std::optional<std::pair<Poly, Poly>> extent_range(const Poly& p, const std::vector<PathCond>& path,
                                                     const Nest& nest, const SourcePos& pos,
                                                     const std::string& array);
+  static Extent::End counted_where_run(const Poly& last, const ExprP& index,
+                                       const std::vector<PathCond>& path, const Nest& n);
 };
 
 } // namespace checking

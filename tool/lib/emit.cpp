@@ -609,8 +609,11 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterLoop& plan) {
   // read guarded by the arms it sits in.
   std::set<int> done;
   std::set<std::string> vars;
-  if (open_guard(code, plan.path, done, vars))
-    ++opened;
+  {
+    std::set<int> inside; // (what follows is inside those blocks)
+    opened += open_guard(code, plan.path, done, vars, inside);
+    done = inside;
+  }
   std::map<int, LocalP> seed_locals;
   collect(out_index, seed_locals, vars);
   define_locals(code, seed_locals, done);
@@ -620,17 +623,17 @@ void emit_scatter(Code& code, const Kernel& k, const ScatterLoop& plan) {
     code.line("// {}{} = f(..., {}, ...): {}_adj{} += ∂f/∂{} · seed", s.array, out_sub,
               r.read->read->source, r.read->read->name,
               subscript(r.read->read->ops[0], r.read->read->shape), r.read->read->source);
-    bool guarded = open_guard(code, r.conds, done, vars);
+    std::set<int> inner;
+    const int guards = open_guard(code, r.conds, done, vars, inner);
     const ExprP& partial = r.partial;
     const ExprP& index = r.index;
     std::map<int, LocalP> locals;
     collect(partial, locals, vars);
     collect(index, locals, vars);
-    std::set<int> inner = done;
-    define_locals(code, locals, guarded ? inner : done);
+    define_locals(code, locals, guards ? inner : done);
     code.line("{}_adj{} += {};", r.read->read->name, subscript(index, r.read->read->shape),
               print(binary(Op::Mul, partial, param(seed, s.value->type))));
-    if (guarded)
+    for (int g = 0; g < guards; ++g)
       code.close();
   }
   for (int i = 0; i < opened; ++i)

@@ -170,7 +170,7 @@ void emit_checked_entry(Code& code, const Kernel& k) {
   std::vector<std::string> shown;
   for (const auto& p : k.params)
     if (p.kind == ParamKind::Scalar && p.elem == Type::Int && !p.synthetic)
-      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
+      shown.push_back(shown_value(p));
   std::string sizes = shown.empty() ? "std::string()"
                                     : fmt::format("{}", fmt::join(shown, " + \", \" + "));
   // The integer locals the bounds may use (x_min = *xmin); not the real ones,

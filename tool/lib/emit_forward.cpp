@@ -34,15 +34,15 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
     const ExprP& index = fs.index;
     const ExprP& value = fs.value;
     const ExprP dot = tangent ? fs.dot : zero(s.value->type);
-    bool guarded = open_guard(code, fs.path, done, vars);
+    std::set<int> inner;
+    const int guards = open_guard(code, fs.path, done, vars, inner);
     std::map<int, LocalP> locals;
     collect(index, locals, vars);
     collect(value, locals, vars);
     collect(dot, locals, vars);
     if (fs.chain)
       collect(fs.chain, locals, vars);
-    std::set<int> inner = done;
-    define_locals(code, locals, guarded ? inner : done);
+    define_locals(code, locals, guards ? inner : done);
     const char* op = s.accumulate ? "+=" : "=";
     std::string idx = subscript(index, k.shape_of(s.array));
     std::string dot_text = !is_zero(dot)                             ? print(dot)
@@ -61,7 +61,7 @@ void emit_stores(Code& code, const Kernel& k, const std::vector<ForwardStore>& s
     if (auto w = options.written.find(s.array); w != options.written.end())
       code.line("{}{} = 1; // (copied back to '{}')", w->second, idx,
                 k.find_param(s.array)->twin_of);
-    if (guarded)
+    for (int g = 0; g < guards; ++g)
       code.close();
   }
 }

@@ -93,6 +93,14 @@ std::string literal(const std::string& s) {
   return out + "\"";
 }
 
+// `"n = " + std::to_string(n)` for integer parameter `p` in a message (an
+// enum, which std::to_string does not take, as its integer).
+std::string shown_value(const Param& p) {
+  return p.enum_value
+             ? fmt::format("\"{} = \" + std::to_string(static_cast<long long>({}))", p.name, p.name)
+             : fmt::format("\"{} = \" + std::to_string({})", p.name, p.name);
+}
+
 // The write-once rules dpgen could not prove for all sizes, checked on entry:
 // sizes that break one would make the adjoint wrong, so they stop it with a
 // message naming the rule, the kernel line and the sizes.
@@ -100,7 +108,7 @@ void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name) {
   std::vector<std::string> shown;
   for (const auto& p : k.params)
     if (p.kind == ParamKind::Scalar && p.elem == Type::Int && !p.global)
-      shown.push_back(fmt::format("\"{} = \" + std::to_string({})", p.name, p.name));
+      shown.push_back(shown_value(p));
   std::string sizes = shown.empty() ? "\"\""
                                     : fmt::format("{}", fmt::join(shown, " + \", \" + "));
   for (const auto& c : k.size_checks) {

@@ -102,6 +102,10 @@ std::string base_name(const std::string& path);
 std::string literal(const std::string& s);
 /// The kernel's run-time size checks (SizeCheck), each throwing
 /// std::invalid_argument with the rule, the kernel line and the sizes.
+/// `"n = " + std::to_string(n)` for integer parameter `p` in a message (an
+/// enum as its integer).
+std::string shown_value(const Param& p);
+
 void emit_size_checks(Code& code, const Kernel& k, const std::string& fn_name);
 /// Arrays of rows or std::vectors: the entry point takes them as declared and
 /// calls a flat twin.

@@ -376,16 +376,34 @@ void emit_hoisted(Code& code, const std::vector<LocalP>& hoisted) {
     code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
 }
 
-bool open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
-                std::set<std::string>& vars) {
-  if (conds.empty())
-    return false;
-  std::map<int, LocalP> cond_locals;
-  for (const auto& pc : conds)
+int open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
+               std::set<std::string>& vars, std::set<int>& inside) {
+  inside = done;
+  int opened = 0;
+  std::vector<PathCond> pending;
+  auto open = [&] {
+    code.open(fmt::format("if ({})", conjunction(pending)));
+    ++opened;
+    pending.clear();
+  };
+  for (const auto& pc : conds) {
+    std::map<int, LocalP> cond_locals;
     collect(pc.cond, cond_locals, vars);
-  define_locals(code, cond_locals, done);
-  code.open(fmt::format("if ({})", conjunction(conds)));
-  return true;
+    // a local a later condition reads is defined inside the conditions
+    // before it, which may be what keeps its reads in bounds (`if (i > 0 &&
+    // d > 0)` with d = u[i] - u[i - 1])
+    const bool missing = std::any_of(cond_locals.begin(), cond_locals.end(),
+                                     [&](const auto& l) { return !inside.count(l.first); });
+    if (missing && !pending.empty())
+      open();
+    define_locals(code, cond_locals, opened ? inside : done);
+    if (!opened)
+      inside = done;
+    pending.push_back(pc);
+  }
+  if (!pending.empty())
+    open();
+  return opened;
 }
 
 } // namespace dpgen

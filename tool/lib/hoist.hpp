@@ -117,8 +117,10 @@ void emit_hoisted(Code& code, const std::vector<LocalP>& hoisted);
 
 /// Opens `if (<conds>)` for a guarded statement of a generated loop (`conds`
 /// as planned, hoisted), the locals they use defined first (into `done`, as
-/// define_locals does). False, and nothing written, when `conds` is empty.
-bool open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
-                std::set<std::string>& vars);
+/// define_locals does), each after the conditions before it where a local
+/// needs them (nested ifs). Returns the number of blocks opened (0, nothing
+/// written, when `conds` is empty); `inside`: the locals defined inside them.
+int open_guard(Code& code, const std::vector<PathCond>& conds, std::set<int>& done,
+               std::set<std::string>& vars, std::set<int>& inside);
 
 } // namespace dpgen

@@ -169,8 +169,9 @@ std::optional<ExprP> Objects::object_value(const clang::Expr* e) {
   if (!text)
     return std::nullopt;
   // (an unsigned value, `u.extent(0)`, is read as a signed 64-bit one: index
-  // arithmetic goes below zero)
-  if (*t == Type::Int && s->getType()->isUnsignedIntegerType())
+  // arithmetic goes below zero; an enum, `p.bc`, as the integer its
+  // enumerators are in the IR)
+  if (*t == Type::Int && (s->getType()->isUnsignedIntegerType() || s->getType()->isEnumeralType()))
     text = fmt::format("static_cast<std::ptrdiff_t>({})", *text);
   if (*t == Type::Int)
     object_values_.insert(*text);

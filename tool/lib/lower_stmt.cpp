@@ -148,6 +148,25 @@ Escape Statements::sequence(const std::vector<const Stmt*>& body) {
   return Escape::None;
 }
 
+namespace {
+
+// A value made in an arm (locals with ids in [from, to)) with those locals'
+// definitions in their place, to evaluate where the arm ran.
+ExprP inline_locals(const ExprP& e, int from, int to) {
+  if (!e)
+    throw std::logic_error("internal error: lower: a null expression to inline");
+  if (e->op == Op::Local) {
+    // (not a kernel-level local, defined before every loop, nor a view's row
+    // symbol, whose definition is a placeholder)
+    if (e->local->id >= from && e->local->id < to && !e->local->kernel_level && !e->local->opaque)
+      return inline_locals(e->local->def, from, to);
+    return e;
+  }
+  return map_operands(e, [&](const ExprP& o) { return inline_locals(o, from, to); });
+}
+
+} // namespace
+
 // `if (c) then_arm() else else_arm()`: each arm lowered on its side of the
 // path, the values either assigns merged into selects after it.
 Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_arm,
@@ -345,17 +364,6 @@ Escape Statements::switch_stmt(const SwitchStmt* s) {
         [&] { return arms(k + 1); });
   };
   return arms(0);
-}
-
-ExprP Statements::inline_locals(const ExprP& e, int from, int to) {
-  if (!e)
-    throw std::logic_error("internal error: lower: a null expression to inline");
-  if (e->op == Op::Local) {
-    if (e->local->id >= from && e->local->id < to)
-      return inline_locals(e->local->def, from, to);
-    return e;
-  }
-  return map_operands(e, [&](const ExprP& o) { return inline_locals(o, from, to); });
 }
 
 ExprP Statements::make_local(const std::string& base, const VarDecl* decl, ExprP def) {

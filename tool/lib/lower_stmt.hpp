@@ -63,8 +63,6 @@ private:
   // `switch (x) { case 1: case 2: A; break; default: B; }`: if/else arms.
   Escape switch_stmt(const clang::SwitchStmt* s);
 
-  ExprP inline_locals(const ExprP& e, int from, int to);
-
   void declare(const clang::Decl* d);
 
   // A small local array (`double w[3] = {...}`, a line buffer `double v[5]`):
