@@ -15,7 +15,7 @@
 DPGEN_KERNEL void step_in_if(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
   int idx = 0;
   for (int i = 0; i < n; ++i) {
-    // CHECK-DAG: running_index.cpp:[[@LINE+1]]:14: error: 'idx' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration: {{.*}}; a running index is in the subset too: stepped (`k++`, `k += s`) by the same amount in every iteration, outside any `if` and with no `continue` before its step, and read inside the innermost loop that steps it [dpgen-unsupported]
+    // CHECK-DAG: running_index.cpp:[[@LINE+1]]:14: error: 'idx' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration: {{.*}}; a running index is in the subset too: stepped (`k++`, `k += s`) by the same amount in every iteration, outside any `if`, in a loop with no `continue`, `break` or `return`, and read inside the innermost loop that steps it [dpgen-unsupported]
     b[i] = a[idx];
     if (a[i] > 0.0)
       idx++;
@@ -67,7 +67,7 @@ DPGEN_KERNEL void read_after(DPGEN_IN const double* a, DPGEN_OUT double* b, int 
     b[idx] = a[idx];
     idx++;
   }
-  // CHECK-DAG: running_index.cpp:[[@LINE+1]]:5: error: 'idx' is read after the loop that steps it, and dpgen cannot prove that loop runs (its upper bound at least its lower one) to count its steps; compute it from the loop's bounds [dpgen-unsupported]
+  // CHECK-DAG: running_index.cpp:[[@LINE+1]]:5: error: 'idx' is read after the loops that step it, and dpgen cannot prove that each of them runs (its upper bound at least its lower one) to count its steps; compute it from the loops' bounds [dpgen-unsupported]
   b[idx] = a[idx] * a[idx];
 }
 
@@ -91,4 +91,21 @@ DPGEN_KERNEL void step_beside_a_lambda(DPGEN_IN const double* a, DPGEN_OUT doubl
   for (int i = 0; i < n; ++i)
     // CHECK-DAG: running_index.cpp:[[@LINE+1]]:10: error: increment/decrement inside an expression is outside the kernel subset [dpgen-unsupported]
     b[idx++] = get() * a[i];
+}
+
+// (the review's case: the outer loop provably runs, the inner one may not,
+// and a read after the nest would count nx - 2 < 0 steps per row)
+DPGEN_KERNEL void read_after_nest(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {
+  if (ny < 1)
+    return;
+  int idx = 0;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 1; i < nx - 1; ++i) {
+      b[idx] = a[idx] * a[idx];
+      idx++;
+    }
+    idx += 2;
+  }
+  // CHECK-DAG: running_index.cpp:[[@LINE+1]]:5: error: 'idx' is read after the loops that step it
+  b[idx] = a[idx] * a[0];
 }

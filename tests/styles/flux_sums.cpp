@@ -22,3 +22,11 @@ DPGEN_KERNEL void row_totals(DPGEN_IN const double* u, DPGEN_OUT double* t, int 
       t[j] += 0.5 * u[j * nx + i];
     }
 }
+
+// Added to, then set: the element holds the value set (the sum is gone).
+DPGEN_KERNEL void add_then_set(DPGEN_IN const double* u, DPGEN_OUT double* r, int n) {
+  for (int i = 0; i < n; ++i) {
+    r[i] += u[i] * u[i];
+    r[i] = 2.0 * u[i] + u[i] * u[i];
+  }
+}

@@ -63,3 +63,22 @@ TEST_CASE("styles: face_sums, row_totals") {
   row_totals_tangent(v.data(), vd.data(), tt.data(), td.data(), nx, ny);
   CHECK(same(tk, tt));
 }
+
+TEST_CASE("styles: add_then_set") {
+  for (int n : {0, 1, 4}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto u, auto r) { add_then_set(u, r, n); },
+        [&](auto u, auto adj, auto seed) { add_then_set_adjoint(u, adj, seed, n); },
+        [&](auto u, auto d, auto r, auto rd) { add_then_set_tangent(u, d, r, rd, n); });
+  }
+  // by hand: whatever r held, r = 2 u + u^2 (the old generator added it to r)
+  const double u[2] = {1.0, 3.0};
+  double r[2] = {100.0, 100.0}, rd[2] = {0.0, 0.0};
+  const double d[2] = {1.0, 0.0};
+  add_then_set_tangent(u, d, r, rd, 2);
+  CHECK(r[0] == 3.0);
+  CHECK(r[1] == 15.0);
+  CHECK(rd[0] == 4.0);
+}

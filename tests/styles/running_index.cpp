@@ -102,6 +102,22 @@ DPGEN_KERNEL void tail_after(DPGEN_IN const double* a, DPGEN_OUT double* b, int 
   b[idx] = a[idx] * a[idx];
 }
 
+// Read after a nest, where the guard proves both loops run: nx - 1 cells of
+// each row, the row's last skipped, then one cell past the rows.
+DPGEN_KERNEL void tail_after_nest(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {
+  if (nx < 2 || ny < 1)
+    return;
+  int idx = 0;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 1; i < nx; ++i) {
+      b[idx] = a[idx] * a[idx + 1];
+      idx++;
+    }
+    idx += 1;
+  }
+  b[idx] = a[idx] * a[0];
+}
+
 // The step inside the store, as C writes a packed output (`b[k++] = x`), or
 // in the read (`a[k++]`), the index read nowhere else in the statement.
 DPGEN_KERNEL void pack_squares(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {

@@ -180,3 +180,26 @@ TEST_CASE("styles: row_pointer_index, strided_before") {
       100 * 100, 100 * 100, [](auto a, auto b) { row_pointer_index(a, b, 100, 100); },
       [](auto a, auto b) { row_pointer_index_parallel_forward(a, b, 100, 100); });
 }
+
+TEST_CASE("styles: tail_after_nest") {
+  for (int nx : {0, 1, 2, 4})
+    for (int ny : {0, 1, 3}) {
+      CAPTURE(nx);
+      CAPTURE(ny);
+      const size_t N = size_t(nx * ny + 1);
+      check_one_to_one(
+          N, N, [&](auto a, auto b) { tail_after_nest(a, b, nx, ny); },
+          [&](auto a, auto adj, auto seed) { tail_after_nest_adjoint(a, adj, seed, nx, ny); },
+          [&](auto a, auto d, auto b, auto bd) { tail_after_nest_tangent(a, d, b, bd, nx, ny); });
+    }
+  // by hand: 3 x 2, the last cell b[6] = a[6] * a[0]
+  double a[7], b[7];
+  for (int k = 0; k < 7; ++k) {
+    a[k] = k + 1.0;
+    b[k] = -1.0;
+  }
+  tail_after_nest(a, b, 3, 2);
+  CHECK(b[6] == 7.0);
+  CHECK(b[2] == -1.0);
+  CHECK(b[4] == 5.0 * 6.0);
+}

@@ -57,7 +57,7 @@ std::vector<const UnaryOperator*> inner_steps(const clang::Expr* e) {
   // (`sure`: the step runs whenever the statement does; not in an arm of
   // `?:` nor right of `&&`, `||`; a lambda's body counts its mentions only)
   std::function<void(const Stmt*, bool)> walk = [&](const Stmt* s, bool sure) {
-    if (!s)
+    if (!s || isa<UnaryExprOrTypeTraitExpr>(s)) // (sizeof: not evaluated)
       return;
     calls_lambda = calls_lambda || isa<LambdaExpr>(s);
     if (const auto* r = dyn_cast<DeclRefExpr>(s)) {
@@ -246,28 +246,39 @@ void RunningIndices::end_body(const ForStmt* f, std::vector<Induction>& inductio
 }
 
 // After loop `loop`: a running index holds its value before the loop plus
-// the number of iterations times its step. Inside a loop that steps it too,
-// that value only feeds the enclosing loop's step (which reads it nowhere
-// else); at the outermost level it is a value only where the loop provably
-// runs a non-negative number of times.
+// the number of iterations times its step, where the loop runs a number of
+// times dpgen proves non-negative (else `hi - lo` counts a loop that does not
+// run as running backwards). Inside a loop that steps it too, that value
+// feeds the enclosing loop's step, which the closed form uses only where this
+// loop runs (the index is read in the innermost stepping loop alone); after
+// the outermost loop it is a value only where every loop that stepped it
+// provably ran so.
 void RunningIndices::end(const std::vector<Induction>& inductions, const Loop& loop) {
   const ExprP trips = binary(Op::Sub, loop.hi, loop.lo);
+  const bool counted = L.provably_nonneg(trips);
   for (const Induction& ind : inductions) {
-    if (!ind.enclosed)
+    bool exact = counted && !unproved_.count(ind.var);
+    if (ind.enclosed) {
+      if (!counted)
+        unproved_.insert(ind.var);
+      exact = true;
+    } else {
       active_.erase(ind.var);
+      unproved_.erase(ind.var);
+    }
     auto it = L.env_.find(ind.var);
     if (it == L.env_.end())
       continue;
-    if (ind.enclosed || L.provably_nonneg(trips)) {
+    if (exact) {
       it->second.value = binary(Op::Add, ind.entry, binary(Op::Mul, trips, local_ref(ind.per)));
       L.why_unset_.erase(ind.var);
       continue;
     }
     it->second.value = std::nullopt;
     L.why_unset_[ind.var] =
-        fmt::format("'{}' is read after the loop that steps it, and dpgen cannot prove that "
-                    "loop runs (its upper bound at least its lower one) to count its steps; "
-                    "compute it from the loop's bounds",
+        fmt::format("'{}' is read after the loops that step it, and dpgen cannot prove that "
+                    "each of them runs (its upper bound at least its lower one) to count its "
+                    "steps; compute it from the loops' bounds",
                     ind.var->getNameAsString());
   }
 }

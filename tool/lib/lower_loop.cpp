@@ -271,8 +271,8 @@ void ForLoops::for_loop(const ForStmt* f) {
         v->getNameAsString(),
         v->getType()->isIntegerType()
             ? "; a running index is in the subset too: stepped (`k++`, `k += s`) by the same "
-              "amount in every iteration, outside any `if` and with no `continue` before its "
-              "step, and read inside the innermost loop that steps it"
+              "amount in every iteration, outside any `if`, in a loop with no `continue`, `break` "
+              "or `return`, and read inside the innermost loop that steps it"
             : "");
   }
   // (after the accumulators' initial stores, which are outside the loop)

@@ -136,6 +136,8 @@ private:
   Lowerer& L;
   bool steps_only(const clang::Stmt* body, const clang::VarDecl* v, bool& read, bool& up);
   std::set<const clang::VarDecl*> active_; // stepped by a loop being lowered
+  // stepped by an inner loop that may not have run (end: no value after the nest)
+  std::set<const clang::VarDecl*> unproved_;
 };
 
 class ForLoops {

@@ -280,6 +280,20 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
         : accumulate ? binary(Op::Add, prev->value, value)
                      : value;
     const ExprP cond = all_of(L.path_, prev->path.size());
+    if (prev->accumulate && !prev->extremum && !accumulate && !extremum) {
+      // `x[k] += a; x[k] = b;`: the element holds b, what it held is gone
+      if (cond)
+        L.fail(loc, fmt::format("output '{}' is set here under a condition after '+=' added to "
+                                "it in this iteration: where the condition fails it keeps what "
+                                "it held before plus the sum, and where it holds it does not; "
+                                "set it before adding to it",
+                                array));
+      prev->accumulate = false;
+      prev->chain = nullptr;
+      prev->value = value;
+      prev->pos = p;
+      return;
+    }
     if (accumulate && prev->accumulate && !extremum) { // (x + a) + b, as the kernel adds
       const Param* a = L.k_.find_param(array);
       const ExprP before =
