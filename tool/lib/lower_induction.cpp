@@ -4,7 +4,7 @@
 // step is unconditional, its value at an iteration's start is a closed form,
 // the value before the loop plus the iteration's number times the loop's step
 // per iteration, so each iteration can run alone as the adjoint's gather and
-// the parallel forward need (lower_loop.hpp: ForLoops::begin_inductions).
+// the parallel forward need (lower_loop.hpp: RunningIndices).
 #include "lower_impl.hpp"
 
 namespace dpgen::lowering {
@@ -167,7 +167,7 @@ bool RunningIndices::steps_only(const Stmt* body, const VarDecl* v, bool& read, 
 // Before loop `f`'s body (its counter bound, `trip` the iteration's number
 // from 0): each running index among `assigned` (which loses it) gets its
 // closed form, `entry + trip * <v>_per_<counter>`, that local's definition
-// (the step per iteration) known once the body is lowered (end_inductions).
+// (the step per iteration) known once the body is lowered (end_body).
 std::vector<RunningIndices::Induction> RunningIndices::begin(const ForStmt* f, const ForHeader& h,
                                                              const Loop& loop, const ExprP& trip,
                                                              std::set<const VarDecl*>& assigned) {
