@@ -14,3 +14,34 @@ DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
     // CHECK: written_twice.cpp:[[@LINE-1]]:7: error: output 'out' may be written twice in one iteration (first at line 11)
   }
 }
+
+// Paths that overlap (both hold where i > 4): the truth table over the
+// conditions that decides disjoint paths (session 21) finds the row.
+DPGEN_KERNEL void overlapping_arms(DPGEN_IN const double* a, DPGEN_OUT double* v, int n, int k) {
+  for (int i = 0; i < n; ++i) {
+    if (i > k || i > 4)
+      v[i] = a[i];
+    if (i > 4) {
+      if (k < 2) {
+        v[i] = 2.0 * a[i];
+        // CHECK: written_twice.cpp:[[@LINE-1]]:9: error: output 'v' may be written twice
+        // CHECK-SAME: in one iteration (first at line [[@LINE-5]])
+      }
+    }
+  }
+}
+
+// An escape nested in an arm: the store after the if runs where the arm's
+// store does not, also for the kernel below (no error at its lines).
+// CHECK-NOT: written_twice.cpp:{{[0-9]+}}:{{[0-9]+}}: error
+DPGEN_KERNEL void nested_escape_ok(DPGEN_IN const double* a, DPGEN_OUT double* v, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i > 2) {
+      if (i > 4) {
+        v[i] = a[i];
+        continue;
+      }
+    }
+    v[i] = 2.0 * a[i];
+  }
+}

@@ -97,3 +97,35 @@ DPGEN_KERNEL void cont_local_in_arm(DPGEN_IN const double* u, DPGEN_OUT double* 
     v[i] = u[i] * u[i];
   }
 }
+
+// A store in an arm ahead of an escape nested in it, and a store after the
+// if: their paths exclude each other (the second runs where the escape did
+// not), which dpgen decides on a truth table over the conditions; it refused
+// both kernels as "may be written twice" until session 21 (corpus 22).
+DPGEN_KERNEL void store_nested_continue(DPGEN_IN const double* u, DPGEN_OUT double* v, int n,
+                                        int kind) {
+  for (int i = 0; i < n; ++i) {
+    if (i > kind) {
+      if (i > 4) {
+        v[i] = u[i] * u[i];
+        continue;
+      }
+    }
+    v[i] = 2.0 * u[i];
+  }
+}
+
+DPGEN_KERNEL void edge_store_else_if(DPGEN_IN const double* u, DPGEN_OUT double* v, int n,
+                                     int kind) {
+  for (int i = 0; i < n; ++i) {
+    int im = i - 1, ip = i + 1;
+    if (kind == 1) {
+      im = i == 0 ? n - 1 : i - 1;
+      ip = i == n - 1 ? 0 : i + 1;
+    } else if (i == 0 || i == n - 1) {
+      v[i] = u[i] * u[i];
+      continue;
+    }
+    v[i] = u[im] * u[ip] + u[i];
+  }
+}

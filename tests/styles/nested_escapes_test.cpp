@@ -38,6 +38,8 @@ TEST_CASE("styles: nested returns and continues") {
       DPGEN_NESTED_ESCAPES_CHECK(ret_switch_case);
       DPGEN_NESTED_ESCAPES_CHECK(cont_else_if);
       DPGEN_NESTED_ESCAPES_CHECK(cont_switch_case_if);
+      DPGEN_NESTED_ESCAPES_CHECK(store_nested_continue);
+      DPGEN_NESTED_ESCAPES_CHECK(edge_store_else_if);
 #undef DPGEN_NESTED_ESCAPES_CHECK
       dpgen_test::Problem<double> p;
       p.in_sizes = {N};

@@ -5,6 +5,7 @@
 #include "derive.hpp"
 
 #include "ops.hpp"
+#include "print.hpp"
 #include "prove.hpp"
 
 #include <map>
@@ -33,7 +34,12 @@ public:
         return it->second;
       const ExprP& def = e->local->def;
       // A call's rule reuses its value (d exp(a) = exp(a)·da): use the local.
+      // (The local is evaluated where the kernel defines it, outside the arms
+      // it is used in: its derivative is, too.)
+      std::vector<PathCond> arms;
+      arms.swap(arms_);
       ExprP r = def->op == Op::Call ? call_rule(def, e) : d(def);
+      arms.swap(arms_);
       if (!is_zero(r) && tangents_ && r->op != Op::Read && r->op != Op::RealConst)
         r = tangent_local(*e->local, r);
       memo[e->local.get()] = r;
@@ -83,7 +89,11 @@ public:
     }
     case Op::Select: {
       // d(c ? a : b) = c ? da : db   (the condition is piecewise constant)
-      ExprP da = d(e->ops[1]), db = d(e->ops[2]);
+      arms_.push_back({e->ops[0], true});
+      ExprP da = d(e->ops[1]);
+      arms_.back().positive = false;
+      ExprP db = d(e->ops[2]);
+      arms_.pop_back();
       if (is_zero(da) && is_zero(db))
         return zero(e->type);
       return select(e->ops[0], arm(da, e), arm(db, e));
@@ -124,6 +134,8 @@ private:
     return local_ref(l);
   }
   std::map<const LocalVar*, ExprP> local_memo_;
+  /// The arms of conditionals the derivative being built is in.
+  std::vector<PathCond> arms_;
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
   // The same value in every iteration of the kernel's loops, and computable
@@ -184,10 +196,20 @@ private:
   // local's definition, else a local of its own, so it is evaluated once. The
   // same call node always gets the same local, numbered in the order the
   // kernel's derivatives first need them: names depend on the kernel only.
+  // A call in an arm of a conditional (`i + 1 < n ? exp(a[i + 1]) : 0.0`)
+  // gets a local evaluated only there, `i + 1 < n ? exp(a[i + 1]) : 0`: the
+  // local is defined before the expression that uses it, and the call may
+  // read outside the arrays where the arm does not run.
   ExprP named(const ExprP& e, const std::optional<ExprP>& self) {
     if (self)
       return *self;
-    auto it = names_.calls.find(e.get());
+    ExprP cond;
+    for (const auto& pc : arms_) {
+      ExprP c = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
+      cond = cond ? binary(Op::And, cond, c) : c;
+    }
+    const auto key = std::make_pair(e.get(), cond ? print(cond) : std::string());
+    auto it = names_.calls.find(key);
     if (it != names_.calls.end())
       return local_ref(it->second);
     auto l = std::make_shared<LocalVar>();
@@ -195,9 +217,9 @@ private:
     while (names_.taken && names_.taken->count(l->name))
       l->name += "_";
     l->type_name = type_spelling(e->type);
-    l->def = e;
+    l->def = cond ? select(cond, e, zero(e->type)) : e;
     l->id = 1000000 + names_.next++; // after every user local
-    names_.calls[e.get()] = l;
+    names_.calls[key] = l;
     return local_ref(l);
   }
 
@@ -229,6 +251,33 @@ private:
   }
 };
 
+bool has(const std::vector<PathCond>& conds, const PathCond& pc) {
+  return std::any_of(conds.begin(), conds.end(), [&](const PathCond& q) {
+    return q.cond == pc.cond && q.positive == pc.positive;
+  });
+}
+
+// What a condition implies, split at its conjunctions (`a && b` holds: a and
+// b; `a || b` fails: a and b fail) and negations.
+void add_atoms(const ExprP& c, bool positive, std::vector<PathCond>& out) {
+  if (c->op == Op::Not)
+    return add_atoms(c->ops[0], !positive, out);
+  if (c->op == (positive ? Op::And : Op::Or)) {
+    add_atoms(c->ops[0], positive, out);
+    add_atoms(c->ops[1], positive, out);
+    return;
+  }
+  if (!has(out, {c, positive}))
+    out.push_back({c, positive});
+}
+
+std::vector<PathCond> atoms_of(const std::vector<PathCond>& conds) {
+  std::vector<PathCond> out;
+  for (const auto& pc : conds)
+    add_atoms(pc.cond, pc.positive, out);
+  return out;
+}
+
 void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<ReadSite>& out,
                    std::set<const Expr*>& seen, std::set<const LocalVar*>& seen_locals) {
   if (e->op == Op::Local) {
@@ -249,14 +298,16 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
       // ? 0 : a[i - 1]` reads a[i - 1] under `i != 0` both in c and in the arm).
       for (auto& site : out)
         if (site.read == e.get()) {
-          auto shared = [&](const PathCond& pc) {
-            return std::any_of(conds.begin(), conds.end(), [&](const PathCond& q) {
-              return q.cond == pc.cond && q.positive == pc.positive;
-            });
-          };
+          // (also the conjuncts both imply, where the lists differ: `c1 && c2
+          // ? x : (c1 ? y : 0)` with a[i - 1] in x and in y reads it under c1)
+          const std::vector<PathCond> before = atoms_of(site.conds), here = atoms_of(conds);
           site.conds.erase(std::remove_if(site.conds.begin(), site.conds.end(),
-                                          [&](const PathCond& pc) { return !shared(pc); }),
+                                          [&](const PathCond& pc) { return !has(conds, pc); }),
                            site.conds.end());
+          const std::vector<PathCond> kept = atoms_of(site.conds);
+          for (const PathCond& a : before)
+            if (has(here, a) && !has(kept, a) && !has(site.conds, a))
+              site.conds.push_back(a);
         }
     }
   }

@@ -17,7 +17,8 @@ namespace dpgen {
 /// that its own derivative reuses, such as exp(a) in d exp(a) = exp(a)·da),
 /// one per call node, named in order of first use within the kernel.
 struct DeriveNames {
-  std::map<const Expr*, LocalP> calls;
+  /// A call's value, by the call and the conditions of the arms it is in.
+  std::map<std::pair<const Expr*, std::string>, LocalP> calls;
   int next = 0;
   /// Names the locals must not take (the kernel's own, Kernel::names).
   const std::set<std::string>* taken = nullptr;

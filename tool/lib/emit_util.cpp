@@ -372,8 +372,8 @@ std::string member_wrapper(const Kernel& k, bool tangent) {
          "} // namespace dpgen_access\n#endif\n";
   std::string cls = k.member_class;
   for (const Param& p : k.params) {
-    if (!p.member)
-      continue;
+    if (!p.member || p.synthetic || !p.twin_of.empty() || p.global)
+      continue; // (an in-place member's new values, u_new, are no member)
     std::string tag = access_tag(cls, p.name);
     std::string guard = "DPGEN_ACCESS_" + tag.substr(std::string("dpgen_access::").size());
     std::string type = p.view ? p.view_type : p.spelling;
@@ -402,7 +402,8 @@ std::string member_wrapper(const Kernel& k, bool tangent) {
     if (array) {
       // adjoint: an input's is accumulated, an output's is its seed; tangent:
       // an input's direction is read, an output's written
-      bool d_const = tangent ? p.kind == ParamKind::In : p.kind == ParamKind::Out;
+      // (an in-place array's tangent is updated in place)
+      bool d_const = tangent ? p.kind == ParamKind::In && !p.inout : p.kind == ParamKind::Out;
       decl_d = array_declaration(p, d_const, p.name + suffix, true, false);
     }
     std::vector<std::string>& list = p.member ? members : params;

@@ -15,6 +15,7 @@
 #include <clang/Frontend/FrontendActions.h>
 #include <clang/Tooling/Tooling.h>
 #include <llvm/Support/MemoryBuffer.h>
+#include <llvm/Support/Path.h>
 #include <llvm/Support/VirtualFileSystem.h>
 
 #include <cctype>
@@ -42,8 +43,11 @@ public:
     const auto* fn = r.Nodes.getNodeAs<FunctionDecl>("kernel");
     if (!fn || annotation(fn) != "dpgen.kernel")
       return;
-    if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation())))
+    if (!r.SourceManager->isInMainFile(r.SourceManager->getExpansionLoc(fn->getLocation()))) {
+      if (!fn->isTemplateInstantiation())
+        elsewhere_.push_back(fn);
       return;
+    }
     if (fn->isTemplateInstantiation())
       return; // lowered from its template (below)
     found_ = true;
@@ -61,6 +65,8 @@ public:
     }
   }
   bool found() const { return found_; }
+  /// Kernels defined in a file the main file includes.
+  const std::vector<const FunctionDecl*>& elsewhere() const { return elsewhere_; }
 
 private:
   // A template kernel: each instantiation the file makes (explicitly, or by
@@ -136,6 +142,7 @@ private:
   bool& ok_;
   std::string file_;
   bool found_ = false;
+  std::vector<const FunctionDecl*> elsewhere_;
 };
 
 class Consumer : public ASTConsumer {
@@ -158,9 +165,22 @@ public:
       return; // a syntax error was reported by Clang already
     }
     finder_.matchAST(ctx);
+    auto& d = ctx.getDiagnostics();
+    const auto& sm = ctx.getSourceManager();
+    // A kernel defined in an included file gets no adjoint from this run: said,
+    // not silently left out.
+    const auto main_file = sm.getFileEntryRefForID(sm.getMainFileID());
+    const std::string main_name =
+        main_file ? llvm::sys::path::filename(main_file->getName()).str() : "this file";
+    for (const FunctionDecl* fn : collector_.elsewhere())
+      d.Report(fn->getLocation(),
+               d.getCustomDiagID(DiagnosticsEngine::Warning,
+                                 "kernel '%0' is defined in a file that '%1' includes: dpgen "
+                                 "writes adjoints for the kernels defined in the file it is run "
+                                 "on; run it on the file that defines this kernel as well "
+                                 "[dpgen-kernel-elsewhere]"))
+          << fn->getQualifiedNameAsString() << main_name;
     if (!collector_.found() && ok_) {
-      auto& d = ctx.getDiagnostics();
-      const auto& sm = ctx.getSourceManager();
       unsigned id = d.getCustomDiagID(DiagnosticsEngine::Error,
                                       "no DPGEN_KERNEL function in this file (mark a kernel "
                                       "with DPGEN_KERNEL from dpgen/annotate.hpp) [dpgen-no-kernel]");

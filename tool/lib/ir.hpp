@@ -76,6 +76,12 @@ struct Shape {
   bool view = false;
 };
 
+/// One condition on a store's path: `cond` held (positive) or did not.
+struct PathCond {
+  ExprP cond;
+  bool positive;
+};
+
 /// A local variable of the kernel after SSA renaming: every assignment makes a
 /// new Local, so a Local has exactly one definition.
 struct LocalVar {
@@ -87,6 +93,10 @@ struct LocalVar {
   /// A symbol in index algebra whatever its definition (a row-pointer
   /// array's row length, ir.hpp: row_symbol).
   bool opaque = false;
+  /// The path conditions open where it was made (lower.cpp's path_): a value
+  /// made in an arm has more than a store it is merged into past the arm
+  /// (lower_store.cpp: Stores::guarded).
+  std::vector<PathCond> made_under;
 };
 using LocalP = std::shared_ptr<const LocalVar>;
 
@@ -364,12 +374,6 @@ struct Loop {
   /// iterations, later ones at smaller counters (what "later" means when one
   /// iteration overwrites another's element, check.cpp: last_writer).
   bool descending = false;
-};
-
-/// One condition on a store's path: `cond` held (positive) or did not.
-struct PathCond {
-  ExprP cond;
-  bool positive;
 };
 
 struct Store {

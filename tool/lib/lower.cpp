@@ -6,6 +6,7 @@
 // output rules (check.hpp). find.cpp hands it the functions to lower.
 #include "lower.hpp"
 #include "lower_impl.hpp"
+#include "print.hpp"
 
 namespace dpgen::lowering {
 
@@ -319,12 +320,67 @@ bool Lowerer::provably_nonneg(const ExprP& e, const std::vector<PathCond>& more)
   return prove_nonneg(*p, f) || (!ne.empty() && split(0, f));
 }
 
-bool Lowerer::paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
+namespace {
+
+// The conditions in `e` that are no conjunction, disjunction or negation: the
+// atoms of a truth table, by their text (the same text, the same value).
+struct Atoms {
+  std::map<std::string, size_t> by_text;
+  std::map<const Expr*, size_t> at;
+};
+
+void path_atoms(const ExprP& e, Atoms& atoms) {
+  if (e->op == Op::And || e->op == Op::Or || e->op == Op::Not) {
+    for (const auto& o : e->ops)
+      path_atoms(o, atoms);
+    return;
+  }
+  if (!atoms.at.count(e.get()))
+    atoms.at[e.get()] = atoms.by_text.emplace(print(e), atoms.by_text.size()).first->second;
+}
+
+bool holds(const ExprP& e, const Atoms& atoms, unsigned values) {
+  switch (e->op) {
+  case Op::And:
+    return holds(e->ops[0], atoms, values) && holds(e->ops[1], atoms, values);
+  case Op::Or:
+    return holds(e->ops[0], atoms, values) || holds(e->ops[1], atoms, values);
+  case Op::Not:
+    return !holds(e->ops[0], atoms, values);
+  default:
+    return (values >> atoms.at.at(e.get())) & 1u;
+  }
+}
+
+} // namespace
+
+// Whether no iteration takes both paths: a pair of opposite conditions, else
+// no row of the truth table over the conditions' atoms (each a free boolean,
+// which only adds rows) satisfies both, as after an escape nested in an arm
+// (`if (i > 2) { if (i > 4) { v[i] = u[i]; continue; } } v[i] = 2 * u[i];`:
+// the second store's path is `i > 2 && !(i > 4) || !(i > 2)`).
+bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b) {
   for (const auto& x : a)
     for (const auto& y : b)
       if (x.cond == y.cond && x.positive != y.positive)
         return true;
-  return false;
+  if (a.empty() || b.empty())
+    return false;
+  Atoms atoms;
+  for (const auto* path : {&a, &b})
+    for (const auto& pc : *path)
+      path_atoms(pc.cond, atoms);
+  if (atoms.by_text.size() > 12)
+    return false;
+  for (unsigned values = 0; values < (1u << atoms.by_text.size()); ++values) {
+    bool both = true;
+    for (const auto* path : {&a, &b})
+      for (const auto& pc : *path)
+        both = both && holds(pc.cond, atoms, values) == pc.positive;
+    if (both)
+      return false;
+  }
+  return true;
 }
 
 const Param* Lowerer::scalar_ref_param(const clang::Expr* e) const {

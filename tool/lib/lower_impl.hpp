@@ -55,6 +55,17 @@ namespace dpgen::lowering {
 // none): the conditions of a store path's tail, of an arm that went on.
 ExprP all_of(const std::vector<PathCond>& path, size_t from = 0);
 
+// Whether evaluating `e` where the kernel would not may fault: it reads an
+// array, or divides integers by a variable (not looking into its locals).
+bool may_fault(const ExprP& e);
+
+// `cond ? value : 0` (`cond && value` for a boolean; `value` where cond is
+// null): a value safe to evaluate where `cond` fails.
+ExprP when(const ExprP& cond, const ExprP& value);
+
+// Whether no iteration takes both paths (lower.cpp).
+bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
+
 using namespace clang;
 
 enum class Escape { None, Always };
@@ -279,8 +290,6 @@ private:
       add_facts(pc, f);
     return f;
   }
-
-  static bool paths_disjoint(const std::vector<PathCond>& a, const std::vector<PathCond>& b);
 
   // ---- helper functions and lambdas (lower_inline.hpp) ------------------------
 

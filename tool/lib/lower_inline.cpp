@@ -213,15 +213,18 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     L.fail(def->getBody()->getEndLoc(), fmt::format("helper '{}' may reach its end without "
                                                   "returning a value",
                                                   def->getNameAsString()));
-  // The last return is reached when no earlier one was.
-  ExprP v = fr.returns.back().second;
+  // The last return is reached when no earlier one was. (A value made in the
+  // helper's arms, `if (i == 0) return 0.0; const double d = a[i - 1]; return
+  // d * d;`, is guarded by them: the select evaluates both.)
+  ExprP v = L.stores_.guarded(fr.returns.back().second, fr.path_depth);
   for (size_t i = fr.returns.size() - 1; i-- > 0;) {
     ExprP cond;
     for (const auto& pc : fr.returns[i].first) {
       ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
       cond = cond ? binary(Op::And, cond, c1) : c1;
     }
-    v = cond ? select(cond, fr.returns[i].second, v) : fr.returns[i].second;
+    const ExprP value = L.stores_.guarded(fr.returns[i].second, fr.path_depth);
+    v = cond ? select(cond, value, v) : value;
   }
   return v;
 }

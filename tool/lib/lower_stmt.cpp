@@ -378,9 +378,16 @@ ExprP Statements::make_local(const std::string& base, const VarDecl* decl, ExprP
   l->id = L.next_local_id_++;
   // (a value computed from an accumulator's sum, `double norm = sqrt(s);`,
   // is needed only where that sum is: not a kernel-level local)
+  l->made_under = L.path_;
   l->kernel_level = L.loops_.empty() && !any_node(def, [&](const ExprP& x) {
                       return x->op == Op::Read && L.is_hidden(x->name);
                     });
+  // A kernel-level value made under a condition (in an arm, after a guard:
+  // `if (n == 0) return; double last = a[n - 1];`) is computed before every
+  // loop: where it reads an array or divides integers by a variable, only
+  // where the condition holds (`!(n == 0) ? a[n - 1] : 0.0`).
+  if (l->kernel_level && !L.path_.empty() && may_fault(def))
+    l->def = when(all_of(L.path_), def);
   if (def->type == Type::Int) {
     // Integers become std::ptrdiff_t in the generated code (see emit.cpp:
     // index arithmetic that vectorizes and never wraps, also for unsigned

@@ -235,6 +235,56 @@ ExprP all_of(const std::vector<PathCond>& path, size_t from) {
   return cond;
 }
 
+// (lower_impl.hpp)
+bool may_fault(const ExprP& e) {
+  bool found = false;
+  std::set<const LocalVar*> seen;
+  walk(
+      e,
+      [&](const ExprP& x) {
+        found = found || x->op == Op::Read ||
+                ((x->op == Op::Div || x->op == Op::Rem) && !is_real(x->type) &&
+                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival == 0));
+        return !found;
+      },
+      [](const ExprP&) { return false; }, seen);
+  return found;
+}
+
+// (lower_impl.hpp)
+ExprP when(const ExprP& cond, const ExprP& value) {
+  if (!cond)
+    return value;
+  if (value->type == Type::Bool)
+    return binary(Op::And, cond, value);
+  return select(cond, value, value->type == Type::Int ? int_const(0) : zero(value->type));
+}
+
+// (lower_stmt.hpp) Each local made under more conditions than `depth` (not a
+// kernel-level one: those are guarded where made; nor a view's row symbol,
+// whose definition is a placeholder) gets a copy that is safe to evaluate
+// anywhere, `d_1 = i > 0 ? a[i - 1] : 0.0` where it reads or divides
+// integers, one per local and depth, so values the arm shares stay shared.
+ExprP Stores::guarded(const ExprP& e, size_t depth) {
+  if (e->op != Op::Local)
+    return map_operands(e, [&](const ExprP& o) { return guarded(o, depth); });
+  const LocalVar& l = *e->local;
+  if (l.kernel_level || l.opaque || l.made_under.size() <= depth)
+    return e;
+  auto it = guarded_.find({l.id, depth});
+  if (it != guarded_.end())
+    return it->second;
+  ExprP def = guarded(l.def, depth);
+  if (may_fault(def))
+    def = when(all_of(l.made_under, depth), def);
+  ExprP copy = L.stmts_.make_local(l.name, nullptr, def);
+  auto g = std::const_pointer_cast<LocalVar>(copy->local);
+  g->type_name = l.type_name;
+  g->kernel_level = false;
+  g->made_under.assign(l.made_under.begin(), l.made_under.begin() + std::ptrdiff_t(depth));
+  return guarded_[{l.id, depth}] = copy;
+}
+
 void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
                        SourcePos p, SourceLocation loc, int extremum) {
   // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
@@ -273,13 +323,15 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
   if (Store* prev = visible_store(nest, array, idx)) {
     // (two min/max updates in one iteration: the scan takes the extremum of
     // both, still a constant to derivatives)
+    const ExprP cond = all_of(L.path_, prev->path.size());
+    if (cond) // (the value is evaluated past the arm, in a select on its conditions)
+      value = guarded(value, prev->path.size());
     ExprP updated =
         extremum     ? call("dpgen_nograd",
                             {call(extremum > 0 ? "max" : "min", {prev->value, value}, value->type)},
                             value->type)
         : accumulate ? binary(Op::Add, prev->value, value)
                      : value;
-    const ExprP cond = all_of(L.path_, prev->path.size());
     if (prev->accumulate && !prev->extremum && !accumulate && !extremum) {
       // `x[k] += a; x[k] = b;`: the element holds b, what it held is gone
       if (cond)
@@ -313,7 +365,7 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
   // Otherwise a store whose path is not provably disjoint from another
   // store's to an element that may be the same would overwrite it.
   for (auto& s : nest.stores) {
-    if (s.array != array || L.paths_disjoint(s.path, L.path_) || (s.accumulate && accumulate))
+    if (s.array != array || paths_disjoint(s.path, L.path_) || (s.accumulate && accumulate))
       continue;
     auto pa = to_poly(s.index), pb = to_poly(idx);
     Facts facts;
@@ -374,7 +426,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
   if (nit == L.nest_index_.end())
     return r;
   for (const Store& s : L.k_.nests[nit->second].stores) {
-    if (s.array != twin || !same_index(s.index, idx) || L.paths_disjoint(s.path, L.path_))
+    if (s.array != twin || !same_index(s.index, idx) || paths_disjoint(s.path, L.path_))
       continue;
     size_t common = 0; // the conditions this point shares with the store
     while (common < s.path.size() && common < L.path_.size() &&
@@ -382,7 +434,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
            s.path[common].positive == L.path_[common].positive)
       ++common;
     const ExprP cond = all_of(s.path, common);
-    r = cond ? select(cond, s.value, r) : s.value;
+    r = cond ? select(cond, guarded(s.value, common), r) : s.value;
   }
   return r;
 }

@@ -37,3 +37,13 @@ struct Smoother2D {
   }
   DPGEN_KERNEL void run() const;
 };
+
+/// A reaction step that updates its state array in place (a DPGEN_INOUT
+/// member): the generated wrappers did not compile until session 21 (they
+/// named the new values' internal twin, u_new, as a member).
+struct Reaction1D {
+  int n = 0;
+  double* u DPGEN_INOUT = nullptr;
+  const double* rate DPGEN_IN = nullptr;
+  DPGEN_KERNEL void step(double dt) const;
+};
