@@ -153,3 +153,31 @@ DPGEN_KERNEL void every_sth(DPGEN_IN const double* a, DPGEN_OUT double* b, int n
   for (int i = 0; i < m; ++i)
     b[i] = a[i * s] * a[i * s];
 }
+
+// An arm's condition that reads a value of the enclosing arm (`d > 0.0`): the
+// select past the arms tests a guarded copy of `d`.
+DPGEN_KERNEL void cond_on_arm_value(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    b[i] = a[i];
+    if (i > 0) {
+      const double d = a[i - 1];
+      if (d > 0.0) {
+        const double e = 2.0 * a[i - 1] + a[i];
+        b[i] = e * d;
+      }
+    }
+  }
+}
+
+// The same for an in-place array read back after the arms.
+DPGEN_KERNEL void damp_by_right(DPGEN_IN const double* a, DPGEN_INOUT double* u,
+                                DPGEN_OUT double* f, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i + 1 < n) {
+      const double r = a[i + 1];
+      if (r < 0.5)
+        u[i] = r * u[i];
+    }
+    f[i] = 2.0 * u[i];
+  }
+}

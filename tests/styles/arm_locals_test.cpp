@@ -301,3 +301,47 @@ TEST_CASE("styles: early_returns, arm_chain, every_sth") {
     }
   }
 }
+
+TEST_CASE("styles: cond_on_arm_value, damp_by_right (conditions on an arm's values)") {
+  for (int n : {0, 1, 2, 3, 8}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto a, auto b) { cond_on_arm_value(a, b, n); },
+        [&](auto a, auto adj, auto seed) { cond_on_arm_value_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto b, auto bd) { cond_on_arm_value_tangent(a, d, b, bd, n); });
+    forward_forms(
+        n, n, [&](auto a, auto b) { cond_on_arm_value(a, b, n); },
+        [&](auto a, auto b) { cond_on_arm_value_parallel_forward(a, b, n); },
+        [&](auto a, auto d, auto b, auto bd) { cond_on_arm_value_tangent(a, d, b, bd, n); });
+    const Vec a = wavy(n, 0.5), seed = wavy(n, 1.4);
+    Vec adj = filled(n, 0.0);
+    cond_on_arm_value_adjoint(a.data(), adj.data(), seed.data(), n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N, N};
+    p.out_sizes = {N, N};
+    p.forward = [&](auto in, auto out) {
+      std::copy(in[1], in[1] + N, out[0]);
+      damp_by_right(in[0], out[0], out[1], n);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      Vec u_adj(seed[0], seed[0] + N);
+      damp_by_right_adjoint(in[0], adj[0], in[1], u_adj.data(), seed[1], n);
+      for (size_t i = 0; i < N; ++i)
+        adj[1][i] += u_adj[i];
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto od) {
+      std::copy(in[1], in[1] + N, out[0]);
+      std::copy(dir[1], dir[1] + N, od[0]);
+      damp_by_right_tangent(in[0], dir[0], out[0], od[0], out[1], od[1], n);
+    };
+    dpgen_test::check_adjoint(p);
+    // exactly n values: the kernel and the tangent's primal bit for bit
+    const Vec u0 = wavy(n, 2.1), d = wavy(n, 0.7);
+    Vec u = u0, f = filled(n, std::nan("")), ut = u0, ft = f, ud = d, fd = f;
+    damp_by_right(a.data(), u.data(), f.data(), n);
+    damp_by_right_tangent(a.data(), d.data(), ut.data(), ud.data(), ft.data(), fd.data(), n);
+    CHECK(same_values(u, ut));
+    CHECK(same_values(f, ft));
+  }
+}

@@ -224,7 +224,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
       cond = cond ? binary(Op::And, cond, c1) : c1;
     }
     const ExprP value = L.stores_.guarded(fr.returns[i].second, fr.path_depth);
-    v = cond ? select(cond, value, v) : value;
+    v = cond ? select(L.stores_.guarded(cond, fr.path_depth), value, v) : value;
   }
   return v;
 }

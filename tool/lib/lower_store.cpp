@@ -275,8 +275,8 @@ ExprP Stores::guarded(const ExprP& e, size_t depth) {
   if (it != guarded_.end())
     return it->second;
   ExprP def = guarded(l.def, depth);
-  if (may_fault(def))
-    def = when(all_of(l.made_under, depth), def);
+  if (may_fault(def)) // (the conditions may read the arm's values too: `if (d > 0)`)
+    def = when(guarded(all_of(l.made_under, depth), depth), def);
   ExprP copy = L.stmts_.make_local(l.name, nullptr, def);
   auto g = std::const_pointer_cast<LocalVar>(copy->local);
   g->type_name = l.type_name;
@@ -323,9 +323,13 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
   if (Store* prev = visible_store(nest, array, idx)) {
     // (two min/max updates in one iteration: the scan takes the extremum of
     // both, still a constant to derivatives)
-    const ExprP cond = all_of(L.path_, prev->path.size());
-    if (cond) // (the value is evaluated past the arm, in a select on its conditions)
+    // (the value is evaluated past the arm, in a select on the arm's
+    // conditions, which may read the arm's values too: `if (d > 0.0)`)
+    ExprP cond = all_of(L.path_, prev->path.size());
+    if (cond) {
+      cond = guarded(cond, prev->path.size());
       value = guarded(value, prev->path.size());
+    }
     ExprP updated =
         extremum     ? call("dpgen_nograd",
                             {call(extremum > 0 ? "max" : "min", {prev->value, value}, value->type)},
@@ -434,7 +438,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
            s.path[common].positive == L.path_[common].positive)
       ++common;
     const ExprP cond = all_of(s.path, common);
-    r = cond ? select(cond, guarded(s.value, common), r) : s.value;
+    r = cond ? select(guarded(cond, common), guarded(s.value, common), r) : s.value;
   }
   return r;
 }
