@@ -376,9 +376,9 @@ ExprP Statements::make_local(const std::string& base, const VarDecl* decl, ExprP
   l->name = name;
   l->def = def;
   l->id = L.next_local_id_++;
+  l->made_under = L.path_;
   // (a value computed from an accumulator's sum, `double norm = sqrt(s);`,
   // is needed only where that sum is: not a kernel-level local)
-  l->made_under = L.path_;
   l->kernel_level = L.loops_.empty() && !any_node(def, [&](const ExprP& x) {
                       return x->op == Op::Read && L.is_hidden(x->name);
                     });
