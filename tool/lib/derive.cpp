@@ -43,6 +43,8 @@ public:
       if (!is_zero(r) && tangents_ && r->op != Op::Read && r->op != Op::RealConst)
         r = tangent_local(*e->local, r);
       memo[e->local.get()] = r;
+      if (!tangents_)
+        local_ds_.emplace_back(r, e->local.get());
       return r;
     }
     switch (e->op) {
@@ -112,8 +114,68 @@ public:
     throw std::logic_error("derive: no rule for a real-valued expression of this kind");
   }
 
+  /// Reverse mode: `r`, a partial d() built, with each local's derivative
+  /// that `r` uses more than once named as a local of its own
+  /// (`x2_d0 = x1 * x1_d1 + ...`), as the tangent names `x2_dot`. Why: a
+  /// derivative is a DAG that shares each local's derivative among its uses
+  /// (d(x1 * x1 + x1) uses dx1 three times); printed as a tree, a chain of
+  /// such locals grows as 3^depth (14 of them ran out of memory). Evaluating
+  /// the named one where the locals are defined is safe: it reads nothing
+  /// its local's definition does not, and computes in floating point only.
+  ExprP name_shared(const ExprP& r) {
+    std::map<const Expr*, int> refs; // operand references, each node's once
+    std::set<const Expr*> seen;
+    count_refs(r, refs, seen);
+    std::map<const Expr*, const LocalVar*> named_as;
+    for (const auto& [dl, l] : local_ds_)
+      if (refs[dl.get()] >= 2 && !trivial(dl))
+        named_as.emplace(dl.get(), l);
+    if (named_as.empty())
+      return r;
+    std::map<const Expr*, ExprP> done;
+    return rename(r, named_as, done);
+  }
+
 private:
   static inline const std::set<const Expr*> no_reads_{};
+  /// The derivatives of locals d() built (reverse mode), in order, with the local of each.
+  std::vector<std::pair<ExprP, const LocalVar*>> local_ds_;
+
+  static void count_refs(const ExprP& e, std::map<const Expr*, int>& refs,
+                         std::set<const Expr*>& seen) {
+    if (!seen.insert(e.get()).second || e->op == Op::Local)
+      return; // (a local's definition is the primal's, printed once under its name)
+    for (const auto& o : e->ops) {
+      ++refs[o.get()];
+      count_refs(o, refs, seen);
+    }
+  }
+  // A leaf, a local, a read or the negation of one: printing it twice costs nothing.
+  static bool trivial(const ExprP& e) {
+    const Expr* x = e->op == Op::Neg ? e->ops[0].get() : e.get();
+    return x->ops.empty() || x->op == Op::Local || x->op == Op::Read;
+  }
+  // `e` with each node in `named_as` replaced by a local defined as it (its
+  // operands replaced first, so a local's definition names only earlier ones).
+  ExprP rename(const ExprP& e, const std::map<const Expr*, const LocalVar*>& named_as,
+               std::map<const Expr*, ExprP>& done) {
+    if (auto it = done.find(e.get()); it != done.end())
+      return it->second;
+    ExprP out = e->op == Op::Local
+                    ? e
+                    : map_operands(e, [&](const ExprP& o) { return rename(o, named_as, done); });
+    if (auto it = named_as.find(e.get()); it != named_as.end()) {
+      auto l = std::make_shared<LocalVar>();
+      l->name = it->second->name + "_d" + std::to_string(names_.next_partial);
+      while (names_.taken && names_.taken->count(l->name))
+        l->name += "_";
+      l->type_name = type_spelling(e->type);
+      l->def = out;
+      l->id = 3000000 + names_.next_partial++; // after every other local
+      out = local_ref(l);
+    }
+    return done[e.get()] = out;
+  }
   const std::set<const Expr*>& reads_;
   DeriveNames& names_;
   const std::set<std::string>* active_ = nullptr;
@@ -327,7 +389,8 @@ void collect_reads(const ExprP& e, std::vector<PathCond>& conds, std::vector<Rea
 } // namespace
 
 ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveNames& names) {
-  return Deriver(reads, names).d(value);
+  Deriver d(reads, names);
+  return d.name_shared(d.d(value));
 }
 
 const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {

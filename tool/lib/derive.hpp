@@ -20,6 +20,9 @@ struct DeriveNames {
   /// A call's value, by the call and the conditions of the arms it is in.
   std::map<std::pair<const Expr*, std::string>, LocalP> calls;
   int next = 0;
+  /// The locals that name a local's derivative shared within a partial
+  /// (`x2_d0`), numbered apart from the calls' so adding one renames none.
+  int next_partial = 0;
   /// Names the locals must not take (the kernel's own, Kernel::names).
   const std::set<std::string>* taken = nullptr;
 };

@@ -275,7 +275,7 @@ ExprP Expressions::expr(const clang::Expr* e) {
                            "values; read the input it came from, or store it earlier in the same "
                            "iteration and read it back at the same index",
                            p->name, st ? " after '+=' (its previous contents)" : ""));
-      return st->value;
+      return L.stores_.shared_value(*st, p->name);
     }
     if (p->inout)
       return L.stores_.inout_value(p, acc->index, e->getBeginLoc(), e);

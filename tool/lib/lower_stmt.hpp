@@ -103,6 +103,17 @@ public:
   ExprP inout_value(const Param* p, const ExprP& idx, clang::SourceLocation loc,
                     const clang::Expr* e);
 
+  // The value `st` stores, for a read back of it: a local made where the
+  // store is (`b_1 = ...`), which becomes the store's value, so a value read
+  // back twice, or kept and updated under a condition, is printed once
+  // (`b[i] = b[i] * b[i] + b[i];` four times over is no tree of 3^4 copies).
+  // A leaf or a local is returned as it is, as is a store outside every loop.
+  ExprP shared_value(Store& st, const std::string& name);
+  // `v` as such a local (for a value of `st` the forward forms print twice).
+  ExprP local_at(const Store& st, const std::string& name, const ExprP& v);
+  // The name such locals start from: the array's (an in-place array's, not its twin's).
+  std::string local_base(const std::string& array) const;
+
   bool written_by_other_nest(const std::string& array) const;
 
   // `prefix` holds wherever `path` holds: its conditions open `path`.

@@ -329,6 +329,8 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
     if (cond) {
       cond = guarded(cond, prev->path.size());
       value = guarded(value, prev->path.size());
+      if (accumulate || extremum) // (the earlier value is in both arms of the select below)
+        shared_value(*prev, local_base(array));
     }
     ExprP updated =
         extremum     ? call("dpgen_nograd",
@@ -357,8 +359,10 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
               ? prev->chain
               : binary(Op::Add, read(array, idx, value->type, p, a ? shape_of(*a) : Shape{}),
                        prev->value);
-      const ExprP after = binary(Op::Add, before, value);
-      prev->chain = cond ? select(cond, after, before) : after;
+      // (in both arms of the select: one local, `x_1 = x[k] + a`)
+      const ExprP shared = cond ? local_at(*prev, local_base(array), before) : before;
+      const ExprP after = binary(Op::Add, shared, value);
+      prev->chain = cond ? select(cond, after, shared) : after;
     } else {
       prev->chain = nullptr;
     }
@@ -423,7 +427,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
   auto nit = L.nest_index_.find(L.cur_key());
   if (nit != L.nest_index_.end())
     if (Store* st = visible_store(L.k_.nests[nit->second], twin, idx))
-      return st->value;
+      return shared_value(*st, p->name);
   L.acc_.inout_reads.push_back({p->name, L.cur_key(), L.next_store_seq_, idx, {}, L.pos(loc)});
   ExprP r = read(p->name, idx, p->elem, L.pos(loc), shape_of(*p));
   std::const_pointer_cast<Expr>(r)->source = L.text(e);
@@ -441,6 +445,24 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
     r = cond ? select(guarded(cond, common), guarded(s.value, common), r) : s.value;
   }
   return r;
+}
+
+ExprP Stores::shared_value(Store& st, const std::string& name) {
+  return st.value = local_at(st, name, st.value);
+}
+
+ExprP Stores::local_at(const Store& st, const std::string& name, const ExprP& v) {
+  if (v->ops.empty() || v->op == Op::Local || v->op == Op::Read || L.loops_.empty())
+    return v;
+  ExprP l = L.stmts_.make_local(name, nullptr, v);
+  // (made where the store is: its value holds wherever the store's path does)
+  std::const_pointer_cast<LocalVar>(l->local)->made_under = st.path;
+  return l;
+}
+
+std::string Stores::local_base(const std::string& array) const {
+  const Param* a = L.k_.find_param(array); // (u_new: u's new values)
+  return a && !a->twin_of.empty() ? a->twin_of : array;
 }
 
 bool Stores::written_by_other_nest(const std::string& array) const {
