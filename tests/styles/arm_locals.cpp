@@ -154,6 +154,27 @@ DPGEN_KERNEL void every_sth(DPGEN_IN const double* a, DPGEN_OUT double* b, int n
     b[i] = a[i * s] * a[i * s];
 }
 
+// A shift by a variable after the guard that keeps it in range (`1 << sh` at
+// sh = -2 is undefined): computed before the loops only where the guard holds.
+DPGEN_KERNEL void pow2_after_guard(DPGEN_IN const double* a, DPGEN_OUT double* b, int n, int sh) {
+  if (sh < 0 || sh > 30)
+    return;
+  const int m = 1 << sh;
+  for (int i = 0; i < n; ++i)
+    b[i] = a[i] * double(m % 7 + 1);
+}
+
+// The same in an arm, by the loop's counter (`1 << (i - 1)` at i = 0).
+DPGEN_KERNEL void pow2_in_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    b[i] = a[i];
+    if (i >= 1 && i < 20) {
+      const int s = 1 << (i - 1);
+      b[i] = a[i] * double(s % 5 + 1);
+    }
+  }
+}
+
 // An arm's condition that reads a value of the enclosing arm (`d > 0.0`): the
 // select past the arms tests a guarded copy of `d`.
 DPGEN_KERNEL void cond_on_arm_value(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {

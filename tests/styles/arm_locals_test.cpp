@@ -302,6 +302,32 @@ TEST_CASE("styles: early_returns, arm_chain, every_sth") {
   }
 }
 
+TEST_CASE("styles: pow2_after_guard, pow2_in_arm (shifts by a variable, under UBSan)") {
+  for (int n : {0, 1, 3, 25}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    for (int sh : {-2, 0, 2, 40}) {
+      CAPTURE(sh);
+      dpgen_test::check_one_to_one(
+          N, N, [&](auto a, auto b) { pow2_after_guard(a, b, n, sh); },
+          [&](auto a, auto adj, auto seed) { pow2_after_guard_adjoint(a, adj, seed, n, sh); },
+          [&](auto a, auto d, auto b, auto bd) { pow2_after_guard_tangent(a, d, b, bd, n, sh); });
+      forward_forms(
+          n, n, [&](auto a, auto b) { pow2_after_guard(a, b, n, sh); },
+          [&](auto a, auto b) { pow2_after_guard_parallel_forward(a, b, n, sh); },
+          [&](auto a, auto d, auto b, auto bd) { pow2_after_guard_tangent(a, d, b, bd, n, sh); });
+    }
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto a, auto b) { pow2_in_arm(a, b, n); },
+        [&](auto a, auto adj, auto seed) { pow2_in_arm_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto b, auto bd) { pow2_in_arm_tangent(a, d, b, bd, n); });
+    forward_forms(
+        n, n, [&](auto a, auto b) { pow2_in_arm(a, b, n); },
+        [&](auto a, auto b) { pow2_in_arm_parallel_forward(a, b, n); },
+        [&](auto a, auto d, auto b, auto bd) { pow2_in_arm_tangent(a, d, b, bd, n); });
+  }
+}
+
 TEST_CASE("styles: cond_on_arm_value, damp_by_right (conditions on an arm's values)") {
   for (int n : {0, 1, 2, 3, 8}) {
     CAPTURE(n);

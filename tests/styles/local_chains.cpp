@@ -72,6 +72,32 @@ DPGEN_KERNEL void chain_in_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, in
   }
 }
 
+// A chain made in an arm and carried past it in a local variable (merged into
+// a select after the if), not in a store.
+DPGEN_KERNEL void chain_merged_past_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    double y = a[i];
+    if (i > 0) {
+      double x = 0.1 * a[i - 1];
+      for (int k = 0; k < 14; ++k)
+        x = x * x + x;
+      y = a[i] + x * y;
+    }
+    b[i] = y;
+  }
+}
+
+// A local named so that its derivative's local (`inv_d0`) is the name the
+// adjoint gives the hoisted 1.0 / d0: the generator must keep them apart (one
+// shadowing the other multiplied the partial by cos(a[i]) instead of 1 / d0).
+DPGEN_KERNEL void names_like_hoisted(DPGEN_IN const double* a, DPGEN_OUT double* b, double d0,
+                                     int n) {
+  for (int i = 0; i < n; ++i) {
+    const double inv = std::sin(a[i]);
+    b[i] = (inv * inv + inv) / d0;
+  }
+}
+
 // Two reads of one input feed one chain, and a math function in it.
 DPGEN_KERNEL void shared_chain_2d(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx, int ny) {
   for (int j = 0; j < ny; ++j)

@@ -3,8 +3,9 @@
 // tangent's primal) bit for bit against the kernel, and the checked adjoint
 // on arrays of exactly the kernel's sizes. The generator of session 21 ran out
 // of memory on chain14 (std::bad_alloc: its partial printed as a tree of 3^13
-// copies of the first local's derivative) and on conditional_adds (3.8 GB in
-// 9 s), and wrote 54 KB for a read-back chain of four.
+// copies of the first local's derivative), on chain_merged_past_arm and on
+// conditional_adds (3.8 GB in 9 s), and wrote 54 KB for a read-back chain of
+// four. names_like_hoisted checks the names of the locals this takes.
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
@@ -44,6 +45,27 @@ TEST_CASE("styles: chain14, chain_in_arm") {
     CHECK(same_values(adj, adj_checked));
     chain14(a.data(), b.data(), n);
     chain14_parallel_forward(a.data(), bp.data(), n);
+    CHECK(same_values(b, bp));
+  }
+}
+
+TEST_CASE("styles: chain_merged_past_arm, names_like_hoisted") {
+  for (int n : {0, 1, 2, 5}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto a, auto b) { chain_merged_past_arm(a, b, n); },
+        [&](auto a, auto adj, auto seed) { chain_merged_past_arm_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto b, auto bd) { chain_merged_past_arm_tangent(a, d, b, bd, n); });
+    const double d0 = 3.0;
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto a, auto b) { names_like_hoisted(a, b, d0, n); },
+        [&](auto a, auto adj, auto seed) { names_like_hoisted_adjoint(a, adj, seed, d0, n); },
+        [&](auto a, auto d, auto b, auto bd) { names_like_hoisted_tangent(a, d, b, bd, d0, n); });
+    const Vec a = dpgen_test::wavy(N, 0.4);
+    Vec b(N, std::nan("")), bp = b;
+    chain_merged_past_arm(a.data(), b.data(), n);
+    chain_merged_past_arm_parallel_forward(a.data(), bp.data(), n);
     CHECK(same_values(b, bp));
   }
 }

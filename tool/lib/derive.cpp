@@ -167,8 +167,7 @@ private:
     if (auto it = named_as.find(e.get()); it != named_as.end()) {
       auto l = std::make_shared<LocalVar>();
       l->name = it->second->name + "_d" + std::to_string(names_.next_partial);
-      while (names_.taken && names_.taken->count(l->name))
-        l->name += "_";
+      l->name = free_name(l->name, true);
       l->type_name = type_spelling(e->type);
       l->def = out;
       l->id = 3000000 + names_.next_partial++; // after every other local
@@ -198,6 +197,17 @@ private:
   std::map<const LocalVar*, ExprP> local_memo_;
   /// The arms of conditionals the derivative being built is in.
   std::vector<PathCond> arms_;
+
+  // `base`, or with `_` appended until no kernel name is it; `record`: added
+  // to DeriveNames::given. (A call's value needs no record: the adjoint and
+  // the tangent name it alike, and no name made up later ends in `_v<n>`.)
+  std::string free_name(std::string base, bool record) {
+    while (names_.taken && names_.taken->count(base))
+      base += "_";
+    if (record && names_.given)
+      names_.given->insert(base);
+    return base;
+  }
 
   static ExprP one(const ExprP& like) { return real_const(1, like->type); }
   // The same value in every iteration of the kernel's loops, and computable
@@ -275,9 +285,7 @@ private:
     if (it != names_.calls.end())
       return local_ref(it->second);
     auto l = std::make_shared<LocalVar>();
-    l->name = e->name + "_v" + std::to_string(names_.next);
-    while (names_.taken && names_.taken->count(l->name))
-      l->name += "_";
+    l->name = free_name(e->name + "_v" + std::to_string(names_.next), false);
     l->type_name = type_spelling(e->type);
     l->def = cond ? select(cond, e, zero(e->type)) : e;
     l->id = 1000000 + names_.next++; // after every user local
@@ -400,8 +408,8 @@ const ExprP& Partials::of(const Store& s, const std::set<const Expr*>& reads) {
   return it->second;
 }
 
-Partials derive(const Kernel& k) {
-  Partials partials(&k.names);
+Partials derive(const Kernel& k, std::set<std::string>* names) {
+  Partials partials(&k.names, names);
   for (const auto& param : k.params) {
     if (param.kind != ParamKind::In)
       continue;

@@ -25,6 +25,9 @@ struct DeriveNames {
   int next_partial = 0;
   /// Names the locals must not take (the kernel's own, Kernel::names).
   const std::set<std::string>* taken = nullptr;
+  /// Where the names given out are added, if anywhere (Kernel::names, so the
+  /// names later passes make up, Kernel::fresh and hoist's, avoid them).
+  std::set<std::string>* given = nullptr;
 };
 
 /// d value / d(reads): the partial of `value` w.r.t. the Read nodes in
@@ -44,7 +47,12 @@ ExprP derivative(const ExprP& value, const std::set<const Expr*>& reads, DeriveN
 class Partials {
 public:
   /// `taken`: names the rules' locals avoid (Kernel::names); must outlive this.
-  explicit Partials(const std::set<std::string>* taken = nullptr) { names_.taken = taken; }
+  /// `given`: where the names of those locals are added (may be `taken`).
+  explicit Partials(const std::set<std::string>* taken = nullptr,
+                    std::set<std::string>* given = nullptr) {
+    names_.taken = taken;
+    names_.given = given;
+  }
   /// d s.value / d(reads); zero() where it vanishes (is_zero), never null.
   const ExprP& of(const Store& s, const std::set<const Expr*>& reads);
 
@@ -55,8 +63,10 @@ private:
 
 /// Phase 3: the partial of every store that runs (store_domain, prove.hpp)
 /// w.r.t. each read of a DPGEN_IN array in it, one read at a time, in the
-/// order input -> loop nest -> store -> read.
-Partials derive(const Kernel& k);
+/// order input -> loop nest -> store -> read. `names`: where the names of
+/// the locals the partials introduce are added (the kernel's Kernel::names,
+/// so the names later passes make up avoid them); the partials keep it.
+Partials derive(const Kernel& k, std::set<std::string>* names = nullptr);
 
 /// The locals a tangent introduces: `<local>_dot` for each local whose
 /// derivative is not trivial (numbered after every other local), and the

@@ -57,12 +57,12 @@ int generate(const std::vector<std::string>& inputs, const GenerateOptions& opts
     };
     std::vector<AdjointPlan> plans;
     try {
-      for (const auto& k : kernels) {
+      for (auto& k : kernels) {
         current = &k;
         print_after("lower", print_ir(k));
         pass = "derive";
         test_internal_error("derive");
-        Partials partials = derive(k); // 3. derive: each partial once
+        Partials partials = derive(k, &k.names); // 3. derive: each partial once
         if (opts.print_after.count("derive"))
           print_after("derive", print_partials(k, partials));
         pass = "schedule";

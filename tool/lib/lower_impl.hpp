@@ -55,8 +55,10 @@ namespace dpgen::lowering {
 // none): the conditions of a store path's tail, of an arm that went on.
 ExprP all_of(const std::vector<PathCond>& path, size_t from = 0);
 
-// Whether evaluating `e` where the kernel would not may fault: it reads an
-// array, or divides integers by a variable (not looking into its locals).
+// Whether evaluating `e` where the kernel would not may fault or be undefined:
+// it reads an array, divides integers by a variable, shifts by a variable
+// (`1 << (i - 1)` at i = 0), or converts a real to an integer (out of range:
+// undefined) (not looking into its locals).
 bool may_fault(const ExprP& e);
 
 // `cond ? value : 0` (`cond && value` for a boolean; `value` where cond is

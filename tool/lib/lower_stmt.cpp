@@ -151,18 +151,36 @@ Escape Statements::sequence(const std::vector<const Stmt*>& body) {
 namespace {
 
 // A value made in an arm (locals with ids in [from, to)) with those locals'
-// definitions in their place, to evaluate where the arm ran.
-ExprP inline_locals(const ExprP& e, int from, int to) {
+// definitions in their place, to evaluate where the arm ran; a local the
+// value names more than once is `shared(local)` instead (a copy guarded by
+// the arm's conditions, Stores::guarded): inlined, a chain of locals each
+// used twice grew as 3^depth.
+ExprP inline_locals(const ExprP& e, int from, int to,
+                    const std::function<ExprP(const ExprP&)>& shared) {
   if (!e)
     throw std::logic_error("internal error: lower: a null expression to inline");
-  if (e->op == Op::Local) {
-    // (not a kernel-level local, defined before every loop, nor a view's row
-    // symbol, whose definition is a placeholder)
-    if (e->local->id >= from && e->local->id < to && !e->local->kernel_level && !e->local->opaque)
-      return inline_locals(e->local->def, from, to);
-    return e;
-  }
-  return map_operands(e, [&](const ExprP& o) { return inline_locals(o, from, to); });
+  std::map<const LocalVar*, int> uses;
+  std::set<const LocalVar*> seen;
+  walk(
+      e,
+      [&](const ExprP& x) {
+        if (x->op == Op::Local)
+          ++uses[x->local.get()];
+        return true;
+      },
+      [](const ExprP&) { return true; }, seen);
+  std::function<ExprP(const ExprP&)> in = [&](const ExprP& x) -> ExprP {
+    if (x->op == Op::Local) {
+      // (not a kernel-level local, defined before every loop, nor a view's row
+      // symbol, whose definition is a placeholder)
+      const LocalVar& l = *x->local;
+      if (l.id < from || l.id >= to || l.kernel_level || l.opaque)
+        return x;
+      return uses[&l] > 1 ? shared(x) : in(l.def);
+    }
+    return map_operands(x, in);
+  };
+  return in(e);
 }
 
 } // namespace
@@ -199,10 +217,11 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   int after_else = L.next_local_id_;
   // (an arm's escape conditions may read values made in the arm: inlined, so
   // nothing of an arm is evaluated where the arm does not run)
+  auto shared = [&](const ExprP& local) { return L.stores_.guarded(local, depth); };
   for (auto& pc : then_goes_on)
-    pc.cond = inline_locals(pc.cond, first_local, after_then);
+    pc.cond = inline_locals(pc.cond, first_local, after_then, shared);
   for (auto& pc : else_goes_on)
-    pc.cond = inline_locals(pc.cond, after_then, after_else);
+    pc.cond = inline_locals(pc.cond, after_then, after_else, shared);
 
   // Merge values assigned in the branches: v = c ? v_then : v_else. A
   // branch that escaped contributes nothing to what follows.
@@ -218,8 +237,8 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
       return std::nullopt; // assigned in one branch only: uninitialised after
     // Values made inside a branch are inlined into the select, so nothing
     // of a branch is evaluated where the branch does not run.
-    ExprP then_value = inline_locals(*t, first_local, after_then);
-    ExprP else_value = inline_locals(*e, after_then, after_else);
+    ExprP then_value = inline_locals(*t, first_local, after_then, shared);
+    ExprP else_value = inline_locals(*e, after_then, after_else, shared);
     return make_local(decl->getNameAsString(), decl, select(c, then_value, else_value));
   };
   for (auto& [decl, b] : L.env_) {

@@ -244,7 +244,10 @@ bool may_fault(const ExprP& e) {
       [&](const ExprP& x) {
         found = found || x->op == Op::Read ||
                 ((x->op == Op::Div || x->op == Op::Rem) && !is_real(x->type) &&
-                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival == 0));
+                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival == 0)) ||
+                ((x->op == Op::Shl || x->op == Op::Shr) &&
+                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival < 0 || x->ops[1]->ival > 31)) ||
+                (x->op == Op::Cast && !is_real(x->type) && is_real(x->ops[0]->type));
         return !found;
       },
       [](const ExprP&) { return false; }, seen);

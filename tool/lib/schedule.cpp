@@ -369,7 +369,7 @@ AdjointPlan schedule(const Kernel& k, Partials& partials) {
           p.kind = nest_reads(k.nests[j], p.name) ? ParamKind::In : ParamKind::Out;
           p.view_buffered = p.view; // the driver's buffers, read and written as the view is
         }
-      Partials stage_partials = derive(*s);
+      Partials stage_partials = derive(*s, &s->names);
       auto stage_plan = std::make_shared<AdjointPlan>(schedule_reads(*s, stage_partials));
       plan.stages.push_back({s, stage_plan});
     }
