@@ -175,6 +175,19 @@ DPGEN_KERNEL void pow2_in_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int
   }
 }
 
+// A constant shift of a value that is negative where the arm does not run
+// (`(i - 1) << 2` at i = 0), used three times past the arm in a local.
+DPGEN_KERNEL void neg_shift_in_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    double y = a[i];
+    if (i >= 1) {
+      const int s = (i - 1) << 2;
+      y = a[i] * double(s * s + s + 1) * 1e-3;
+    }
+    b[i] = y;
+  }
+}
+
 // An arm's condition that reads a value of the enclosing arm (`d > 0.0`): the
 // select past the arms tests a guarded copy of `d`.
 DPGEN_KERNEL void cond_on_arm_value(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {

@@ -302,7 +302,7 @@ TEST_CASE("styles: early_returns, arm_chain, every_sth") {
   }
 }
 
-TEST_CASE("styles: pow2_after_guard, pow2_in_arm (shifts by a variable, under UBSan)") {
+TEST_CASE("styles: pow2_after_guard, pow2_in_arm, neg_shift_in_arm (shifts, under UBSan)") {
   for (int n : {0, 1, 3, 25}) {
     CAPTURE(n);
     const size_t N = size_t(n);
@@ -317,6 +317,14 @@ TEST_CASE("styles: pow2_after_guard, pow2_in_arm (shifts by a variable, under UB
           [&](auto a, auto b) { pow2_after_guard_parallel_forward(a, b, n, sh); },
           [&](auto a, auto d, auto b, auto bd) { pow2_after_guard_tangent(a, d, b, bd, n, sh); });
     }
+    dpgen_test::check_one_to_one(
+        N, N, [&](auto a, auto b) { neg_shift_in_arm(a, b, n); },
+        [&](auto a, auto adj, auto seed) { neg_shift_in_arm_adjoint(a, adj, seed, n); },
+        [&](auto a, auto d, auto b, auto bd) { neg_shift_in_arm_tangent(a, d, b, bd, n); });
+    forward_forms(
+        n, n, [&](auto a, auto b) { neg_shift_in_arm(a, b, n); },
+        [&](auto a, auto b) { neg_shift_in_arm_parallel_forward(a, b, n); },
+        [&](auto a, auto d, auto b, auto bd) { neg_shift_in_arm_tangent(a, d, b, bd, n); });
     dpgen_test::check_one_to_one(
         N, N, [&](auto a, auto b) { pow2_in_arm(a, b, n); },
         [&](auto a, auto adj, auto seed) { pow2_in_arm_adjoint(a, adj, seed, n); },

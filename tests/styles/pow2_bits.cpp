@@ -15,6 +15,17 @@ DPGEN_KERNEL void pow2_transpose_scale(DPGEN_IN const double* a, DPGEN_OUT doubl
       b[(j << lg) | i] = std::sin(a[(i << lg) | j]) * a[j * n + i];
 }
 
+// The same after a guard on the shift (the local is made under it, `lg` out of
+// range computes no 1 << lg): still a power of two where the stores run.
+DPGEN_KERNEL void pow2_guarded(DPGEN_IN const double* a, DPGEN_OUT double* b, int lg) {
+  if (lg < 0 || lg > 15)
+    return;
+  const int n = 1 << lg;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      b[(j << lg) | i] = a[j * n + i] * a[j * n + i];
+}
+
 // Blocks of 8 (a constant shift): the column counter stays below 8.
 DPGEN_KERNEL void blocks8(DPGEN_IN const double* a, DPGEN_OUT double* b, int m) {
   for (int j = 0; j < m; ++j)

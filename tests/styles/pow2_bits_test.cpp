@@ -33,6 +33,24 @@ TEST_CASE("styles: pow2_transpose_scale, pow2_cube") {
   }
 }
 
+TEST_CASE("styles: pow2_guarded") {
+  for (int lg : {-1, 0, 1, 2, 16}) {
+    CAPTURE(lg);
+    const size_t n = lg >= 0 && lg <= 15 ? size_t(1) << lg : 0;
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n * n};
+    p.out_sizes = {n * n};
+    p.forward = [&](auto in, auto out) { pow2_guarded(in[0], out[0], lg); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      pow2_guarded_adjoint(in[0], adj[0], seed[0], lg);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      pow2_guarded_tangent(in[0], d[0], out[0], dout[0], lg);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
 TEST_CASE("styles: blocks8") {
   for (int m : {1, 3}) {
     CAPTURE(m);

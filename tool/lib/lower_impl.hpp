@@ -57,8 +57,9 @@ ExprP all_of(const std::vector<PathCond>& path, size_t from = 0);
 
 // Whether evaluating `e` where the kernel would not may fault or be undefined:
 // it reads an array, divides integers by a variable, shifts by a variable
-// (`1 << (i - 1)` at i = 0), or converts a real to an integer (out of range:
-// undefined) (not looking into its locals).
+// (`1 << (i - 1)` at i = 0) or shifts a variable left (`(i - 1) << 2`: a
+// negative value), or converts a real to an integer (out of range: undefined)
+// (not looking into its locals).
 bool may_fault(const ExprP& e);
 
 // `cond ? value : 0` (`cond && value` for a boolean; `value` where cond is

@@ -247,6 +247,7 @@ bool may_fault(const ExprP& e) {
                  (x->ops[1]->op != Op::IntConst || x->ops[1]->ival == 0)) ||
                 ((x->op == Op::Shl || x->op == Op::Shr) &&
                  (x->ops[1]->op != Op::IntConst || x->ops[1]->ival < 0 || x->ops[1]->ival > 31)) ||
+                (x->op == Op::Shl && (x->ops[0]->op != Op::IntConst || x->ops[0]->ival < 0)) ||
                 (x->op == Op::Cast && !is_real(x->type) && is_real(x->ops[0]->type));
         return !found;
       },

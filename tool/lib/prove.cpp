@@ -272,12 +272,35 @@ std::optional<Poly> power_of_two_factor(const Poly& p, const std::vector<LocalP>
 
 ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
                   const std::vector<PathCond>& path, const std::vector<LocalP>& locals) {
-  // the kernel-level locals `1 << s` (an integer power of two for any valid s)
-  std::vector<LocalP> pow2;
-  for (const auto& l : locals)
-    if (l->kernel_level && l->def && l->def->op == Op::Shl && l->def->type == Type::Int &&
-        l->def->ops[0]->op == Op::IntConst && l->def->ops[0]->ival == 1)
-      pow2.push_back(l);
+  // the kernel-level locals `1 << s` (an integer power of two for any valid s),
+  // also as made after a guard of the kernel, `c ? 1 << s : 0` (lower_stmt.cpp:
+  // make_local), where the store's path holds c: c is the conjunction of the
+  // path's first conditions, as the guard made it
+  auto path_holds = [&](const ExprP& c) {
+    ExprP conj;
+    for (const auto& pc : path) {
+      ExprP x = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
+      conj = conj ? binary(Op::And, conj, x) : x;
+      if (same(conj, c))
+        return true;
+    }
+    return false;
+  };
+  std::vector<std::pair<LocalP, ExprP>> pow2; // (local, its 1 << s)
+  for (const auto& l : locals) {
+    if (!l->kernel_level || !l->def)
+      continue;
+    ExprP v = l->def;
+    if (v->op == Op::Select && v->ops[2]->op == Op::IntConst && v->ops[2]->ival == 0 &&
+        path_holds(v->ops[0]))
+      v = v->ops[1];
+    if (v->op == Op::Shl && v->type == Type::Int && v->ops[0]->op == Op::IntConst &&
+        v->ops[0]->ival == 1)
+      pow2.emplace_back(l, v);
+  }
+  std::vector<LocalP> pow2_locals;
+  for (const auto& [l, v] : pow2)
+    pow2_locals.push_back(l);
   Facts facts; // where the store runs: its loops' ranges, its path
   for (const auto& l : loops) {
     add_nonempty(l, facts);
@@ -291,8 +314,8 @@ ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
     ExprP r = map_operands(e, rewrite);
     if (r->op == Op::Shl && r->ops[1]->op != Op::IntConst) {
       // a << s: a * (1 << s), as the local that holds 1 << s
-      for (const auto& l : pow2)
-        if (same(l->def->ops[1], r->ops[1]))
+      for (const auto& [l, v] : pow2)
+        if (same(v->ops[1], r->ops[1]))
           return binary(Op::Mul, r->ops[0], local_ref(l));
       return r;
     }
@@ -303,7 +326,7 @@ ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
       auto pa = to_poly(a), pb = to_poly(b);
       if (!pa || !pb)
         continue;
-      auto m = power_of_two_factor(*pa, pow2);
+      auto m = power_of_two_factor(*pa, pow2_locals);
       if (!m)
         continue;
       // 0 <= b <= M - 1: b fits in the bits below M, which a leaves clear
