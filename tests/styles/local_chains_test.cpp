@@ -4,8 +4,10 @@
 // on arrays of exactly the kernel's sizes. The generator of session 21 ran out
 // of memory on chain14 (std::bad_alloc: its partial printed as a tree of 3^13
 // copies of the first local's derivative), on chain_merged_past_arm and on
-// conditional_adds (3.8 GB in 9 s), and wrote 54 KB for a read-back chain of
-// four. names_like_hoisted checks the names of the locals this takes.
+// conditional_adds (3.8 GB in 9 s), and wrote a 54 KB adjoint file for a
+// four-step read-back chain and one small kernel beside it (18 KB now).
+// names_like_hoisted checks that the names of the locals this adds stay apart
+// from those hoist gives (`inv_d0`).
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
