@@ -31,4 +31,120 @@ DPGEN_KERNEL void init_capture(DPGEN_IN const double* a, DPGEN_OUT double* out, 
   for (int i = 0; i < n; ++i)
     out[i] = f(a[i]);
 }
+
+// A lambda's returns become one value, selected by the conditions under
+// which each is reached; an assignment to a variable of its caller after a
+// `return` inside a branch, or in an if one of whose arms returns, would not
+// follow the path that returned (a wrong value and gradient until
+// 2026-11-30): refused. Set before the first such if, or in an if/else whose
+// arms both go on, it is merged per path (tests/styles/lambdas.cpp).
+DPGEN_KERNEL void sets_after_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto g = [&](double x) {
+      if (x < 0.0)
+        return 0.0;
+      d = 2.0 * x;
+      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: lambda returns inside a branch (line [[#@LINE-2]]) and assigns 'd', a variable of its caller, after it
+      return x * x;
+    };
+    const double v = g(a[i]);
+    out[i] = v + d * a[i];
+  }
+}
+
+DPGEN_KERNEL void sets_beside_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double w[2] = {1.0, 1.0};
+    auto g = [&](double x) {
+      if (x > 0.0) {
+        w[1] = 3.0;
+        // CHECK: lambda_rules.cpp:[[@LINE-1]]:9: error: lambda returns inside a branch (line [[#@LINE+2]]) and assigns 'w', a variable of its caller, in an if whose other arm returns
+      } else {
+        return 0.0;
+      }
+      return x * x;
+    };
+    const double v = g(a[i]);
+    out[i] = v + w[1] * a[i];
+  }
+}
+
+static void set_twice(double& d, double x) { d = 2.0 * x; }
+
+DPGEN_KERNEL void sets_through_helper(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto g = [&](double x) {
+      if (x < 0.0)
+        return 0.0;
+      set_twice(d, x);
+      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: lambda returns inside a branch (line [[#@LINE-2]]) and assigns 'd', a variable of its caller, after it
+      return x * x;
+    };
+    const double v = g(a[i]);
+    out[i] = v + d * a[i];
+  }
+}
+
+// The same bug without a return: an operand that C++ evaluates only under a
+// condition (a `?:` arm, the right side of `&&`) is lowered as if it always
+// ran, so a call in it must not assign the caller's variables or store.
+DPGEN_KERNEL void sets_in_conditional(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto sq = [&](double x) {
+      d = 2.0 * x;
+      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: 'd' is assigned by a call in an operand that C++ evaluates only under a condition (line [[#@LINE+3]]: a '?:' arm
+      return x * x;
+    };
+    const double v = a[i] < 0.0 ? 0.0 : sq(a[i]);
+    out[i] = v + d * a[i];
+  }
+}
+
+DPGEN_KERNEL void sets_in_and(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto big = [&](double x) {
+      d = 2.0 * x;
+      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: 'd' is assigned by a call in an operand that C++ evaluates only under a condition (line [[#@LINE+4]]: a '?:' arm, or the right side of '&&' / '||')
+      return x > 0.5;
+    };
+    double v = 0.0;
+    if (a[i] > 0.0 && big(a[i]))
+      v = a[i];
+    out[i] = v + d * a[i];
+  }
+}
+
+DPGEN_KERNEL void stores_in_conditional(DPGEN_INOUT double* u, DPGEN_IN const double* a,
+                                        DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    auto bump = [&](double x) {
+      u[i] += x;
+      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: a call in an operand that C++ evaluates only under a condition (line [[#@LINE+3]]: a '?:' arm, or the right side of '&&' / '||') stores into 'u'
+      return x;
+    };
+    out[i] = a[i] < 0.0 ? 0.0 : bump(a[i]);
+  }
+}
+
+// A helper's out-parameter (or `const&` parameter) and a lambda it runs that
+// captured the same local by reference: the parameter is inlined as a copy
+// (copied back), so the two would not see each other's changes.
+template <class Fn> void run_then_add(double& r, const Fn& f, double x) {
+  f(x);
+  r = r + 1.0;
+}
+
+DPGEN_KERNEL void out_param_alias(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto set = [&](double y) { d = y; };
+    run_then_add(d, set, a[i]);
+    // CHECK: lambda_rules.cpp:[[@LINE-1]]:5: error: 'd' is passed to parameter 'r' of helper 'run_then_add' (inlined as a copy) and captured by reference by a lambda passed to the same call
+    out[i] = d;
+  }
+}
 // CHECK-NOT: a lambda is called through

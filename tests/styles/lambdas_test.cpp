@@ -69,5 +69,41 @@ TEST_CASE("styles: lambdas") {
       lambda_window_sum_tangent(in[0], d[0], out[0], dout[0], n, 1);
     };
     dpgen_test::check_adjoint(w);
+
+    dpgen_test::Problem<double> s;
+    s.in_sizes = {N};
+    s.out_sizes = {N};
+    s.forward = [&](auto in, auto out) { lambda_sets_then_returns(in[0], out[0], n); };
+    s.adjoint = [&](auto in, auto adj, auto seed) {
+      lambda_sets_then_returns_adjoint(in[0], adj[0], seed[0], n);
+    };
+    s.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lambda_sets_then_returns_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(s);
+
+    dpgen_test::Problem<double> u;
+    u.in_sizes = {N, N};
+    u.out_sizes = {N};
+    u.forward = [&](auto in, auto out) { lambda_direction_then_returns(in[0], in[1], out[0], n); };
+    u.adjoint = [&](auto in, auto adj, auto seed) {
+      lambda_direction_then_returns_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n);
+    };
+    u.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lambda_direction_then_returns_tangent(in[0], d[0], in[1], d[1], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(u);
+
+    dpgen_test::Problem<double> r2;
+    r2.in_sizes = {N};
+    r2.out_sizes = {N};
+    r2.forward = [&](auto in, auto out) { lambda_reassigned(in[0], out[0], n); };
+    r2.adjoint = [&](auto in, auto adj, auto seed) {
+      lambda_reassigned_adjoint(in[0], adj[0], seed[0], n);
+    };
+    r2.tangent = [&](auto in, auto d, auto out, auto dout) {
+      lambda_reassigned_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(r2);
   }
 }

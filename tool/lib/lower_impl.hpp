@@ -308,8 +308,15 @@ private:
     Type ret;
     std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
     bool is_void = false; // results through out-parameters, or stores
+    // Where it first returned inside a branch, and first assigned each
+    // variable of a caller (Stores::check_caller_write, check_arm_writes).
+    std::optional<SourceLocation> branch_return = std::nullopt;
+    std::map<const VarDecl*, SourceLocation> caller_writes = {};
   };
   std::vector<InlineFrame> frames_;
+  // Operands C++ evaluates only under a condition (`?:` arms, `&&`'s right
+  // side), being lowered: the frame depth at each start, and where it is.
+  std::vector<std::pair<size_t, SourceLocation>> cond_operands_;
   // The inlining of helpers and lambdas (lower_inline.hpp).
   friend class Inliner;
   Inliner inl_{*this};

@@ -93,6 +93,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   // a local x of the caller: copied in, and copied back after the body
   // (the same as a reference while no two of them name one local).
   std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
+  std::vector<std::optional<ExprP>> outs_bound; // each local's value when bound
   auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
     const clang::Expr* a = arg->IgnoreParenImpCasts();
     if (pointer) {
@@ -121,6 +122,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     b.deref_only = pointer;
     binds.push_back({pd, b});
     outs.push_back({pd, v});
+    outs_bound.push_back(it->second.value);
   };
   for (unsigned i = 0; i < def->getNumParams(); ++i) {
     const ParmVarDecl* pd = def->getParamDecl(i);
@@ -181,6 +183,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
                   : L.stmts_.make_local(pd->getNameAsString(), pd, v);
     binds.push_back({pd, b});
   }
+  check_aliases(c, def, binds, outs);
   for (const auto& [pd, b] : binds)
     L.env_[pd] = b;
   L.frames_.push_back({def, L.path_.size(), L.loops_.size(), *rt, {}, is_void});
@@ -205,8 +208,21 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   L.frames_.pop_back();
   L.path_.resize(fr.path_depth);
   if (is_void) {
-    for (const auto& [pd, v] : outs)
+    for (size_t k = 0; k < outs.size(); ++k) {
+      const auto& [pd, v] = outs[k];
+      // (the helper changed v itself too, through a lambda that captured it:
+      // the copy back would undo that)
+      if (L.env_[v].value != outs_bound[k])
+        L.fail(c->getBeginLoc(),
+               fmt::format("'{}' is passed to out-parameter '{}' of helper "
+                           "'{}' and also assigned during the call (by a "
+                           "lambda that captured it by reference); pass the "
+                           "lambda another variable",
+                           v->getNameAsString(), pd->getNameAsString(), def->getNameAsString()));
+      if (L.env_[v].value != L.env_[pd].value) // (the caller may be a frame too)
+        L.stores_.check_caller_write(v, c->getBeginLoc());
       L.env_[v].value = L.env_[pd].value;
+    }
     return nullptr;
   }
   if (e != Escape::Always || fr.returns.empty())
@@ -227,6 +243,41 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     v = cond ? select(L.stores_.guarded(cond, fr.path_depth), value, v) : value;
   }
   return v;
+}
+
+// A local bound to an out-parameter or a `const&` parameter (a copy, and a
+// copy back) and captured by reference by a lambda passed to the same call,
+// which reads or assigns the local itself: the two would not see each other.
+void Inliner::check_aliases(
+    const CallExpr* c, const FunctionDecl* def,
+    const std::vector<std::pair<const VarDecl*, Binding>>& binds,
+    const std::vector<std::pair<const ParmVarDecl*, const VarDecl*>>& outs) {
+  std::set<const VarDecl*> by_ref;
+  for (const auto& [pd, b] : binds)
+    if (b.kind == Binding::Lambda && b.closure && b.closure->isLambda())
+      for (const LambdaCapture& lc : b.closure->captures())
+        if (lc.capturesVariable() && lc.getCaptureKind() == LCK_ByRef)
+          if (const auto* cv = dyn_cast<VarDecl>(lc.getCapturedVar()))
+            by_ref.insert(cv);
+  if (by_ref.empty())
+    return;
+  std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> copies = outs;
+  for (unsigned i = 0; i < def->getNumParams(); ++i) {
+    const ParmVarDecl* pd = def->getParamDecl(i);
+    const clang::Expr* arg = c->getArg(i + (c->getNumArgs() - def->getNumParams()));
+    const auto* r = dyn_cast<DeclRefExpr>(arg->IgnoreParenImpCasts());
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    if (pd->getType()->isReferenceType() && v)
+      copies.push_back({pd, v});
+  }
+  for (const auto& [pd, v] : copies)
+    if (by_ref.count(v))
+      L.fail(c->getBeginLoc(),
+             fmt::format("'{}' is passed to parameter '{}' of helper '{}' "
+                         "(inlined as a copy) and captured by reference by a "
+                         "lambda passed to the same call; pass the lambda "
+                         "another variable",
+                         v->getNameAsString(), pd->getNameAsString(), def->getNameAsString()));
 }
 
 // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A

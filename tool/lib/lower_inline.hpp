@@ -42,6 +42,13 @@ public:
   Binding lambda_binding(const clang::LambdaExpr* le, const std::string& name);
 
 private:
+  // Refuses a local bound to an out-parameter or a `const&` parameter of
+  // call `c` that a lambda argument of the same call captured by reference.
+  void check_aliases(
+      const clang::CallExpr* c, const clang::FunctionDecl* def,
+      const std::vector<std::pair<const clang::VarDecl*, Binding>>& binds,
+      const std::vector<std::pair<const clang::ParmVarDecl*, const clang::VarDecl*>>& outs);
+
   Lowerer& L;
 };
 

@@ -66,6 +66,8 @@ Escape Statements::lower(const Stmt* s) {
         L.fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
       // The value first: it may inline further helpers, which grows frames_.
       ExprP v = L.exprs_.expr(r->getRetValue());
+      if (L.path_.size() > L.frames_.back().path_depth && !L.frames_.back().branch_return)
+        L.frames_.back().branch_return = s->getBeginLoc(); // (Stores::check_caller_write)
       Lowerer::InlineFrame& fr = L.frames_.back();
       v = cast(v, fr.ret);
       fr.returns.push_back(
@@ -241,6 +243,8 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
     ExprP else_value = inline_locals(*e, after_then, after_else, shared);
     return make_local(decl->getNameAsString(), decl, select(c, then_value, else_value));
   };
+  if (then_e == Escape::Always || else_e == Escape::Always)
+    L.stores_.check_arm_writes(env_before, env_then, env_else);
   for (auto& [decl, b] : L.env_) {
     if (b.kind == Binding::Value) {
       b.value = merge(decl, env_then[decl].value, env_else[decl].value);

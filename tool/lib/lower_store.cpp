@@ -17,6 +17,75 @@ const VarDecl* Stores::deref_local(const clang::Expr* e) {
                                                                                           : nullptr;
 }
 
+// A frame's returns are merged into one value, selected by the conditions
+// under which each is reached; a local's assignments are not: a later one
+// replaces the value on every path. So a caller's variable that a lambda
+// assigns after a `return` inside a branch, or in an if one of whose arms
+// returns, would take the new value also where the lambda returned (or lose
+// it there).
+std::string Stores::caller_write_message(size_t frame, const VarDecl* var, SourceLocation ret,
+                                         const char* where) const {
+  const FunctionDecl* fn = L.frames_[frame].fn;
+  const auto* m = dyn_cast<CXXMethodDecl>(fn);
+  return fmt::format("{} returns inside a branch (line {}) and assigns '{}', a variable of its "
+                     "caller, {}: its returns become one value, but the assignment would not "
+                     "follow the path that returned; assign '{}' before the first 'if' that "
+                     "returns, or return the value and assign it in the caller",
+                     m && m->getParent()->isLambda()
+                         ? std::string("lambda")
+                         : fmt::format("helper '{}'", fn->getNameAsString()),
+                     L.pos(ret).line, var->getNameAsString(), where, var->getNameAsString());
+}
+
+// (lower_stmt.hpp) Only a return escapes where no loop of the frame is open.
+void Stores::check_arm_writes(const std::map<const VarDecl*, Binding>& before,
+                              const std::map<const VarDecl*, Binding>& then_arm,
+                              const std::map<const VarDecl*, Binding>& else_arm) {
+  if (L.frames_.empty() || L.frames_.back().is_void ||
+      L.loops_.size() != L.frames_.back().loop_depth)
+    return;
+  const size_t k = L.frames_.size() - 1;
+  const auto changed = [&](const std::map<const VarDecl*, Binding>& arm, const VarDecl* v) {
+    auto a = arm.find(v), b = before.find(v);
+    return a != arm.end() && b != before.end() &&
+           (a->second.value != b->second.value || a->second.elems != b->second.elems);
+  };
+  for (const auto& [var, loc] : L.frames_[k].caller_writes)
+    if (changed(then_arm, var) || changed(else_arm, var))
+      L.fail(loc, caller_write_message(k, var, *L.frames_[k].branch_return,
+                                       "in an if whose other arm returns"));
+}
+
+// (lower_stmt.hpp)
+size_t Stores::first_outer_frame(const VarDecl* var) const {
+  const auto* owner = dyn_cast<FunctionDecl>(var->getDeclContext());
+  size_t first = 0;
+  for (size_t k = 0; k < L.frames_.size(); ++k)
+    if (owner && owner->getCanonicalDecl() == L.frames_[k].fn->getCanonicalDecl())
+      first = k + 1;
+  return first;
+}
+
+// (lower_stmt.hpp)
+void Stores::check_caller_write(const VarDecl* var, SourceLocation loc) {
+  const size_t first = first_outer_frame(var);
+  for (const auto& [depth, where] : L.cond_operands_)
+    if (first <= depth && depth < L.frames_.size())
+      L.fail(loc, fmt::format("'{}' is assigned by a call in an operand that C++ evaluates only "
+                              "under a condition (line {}: a '?:' arm, or the right side of "
+                              "'&&' / '||'), which dpgen evaluates as if it always ran; make "
+                              "the call in an if/else statement",
+                              var->getNameAsString(), L.pos(where).line));
+  for (size_t k = first; k < L.frames_.size(); ++k) {
+    Lowerer::InlineFrame& fr = L.frames_[k];
+    if (fr.is_void) // (a void frame returns inside no branch: refused where it is)
+      continue;
+    if (fr.branch_return)
+      L.fail(loc, caller_write_message(k, var, *fr.branch_return, "after it"), "dpgen-unsupported");
+    fr.caller_writes.emplace(var, loc);
+  }
+}
+
 void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
                     SourceLocation loc) {
   lhs = lhs->IgnoreParenImpCasts();
@@ -25,16 +94,21 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
     return;
   }
   if (auto le = L.stmts_.local_element(lhs)) {
+    check_caller_write(le->first, lhs->getBeginLoc());
+    // The right side first (C++17 sequences it before the left), then the
+    // binding: lowering it may inline a call whose branches reassign env_,
+    // which reuses its nodes for other variables (a reference taken before
+    // pointed at another one: the assignment was lost).
+    ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
     Binding& b = L.env_[le->first];
     std::optional<ExprP>& slot = b.elems[le->second];
     std::string name = fmt::format("{}_{}", le->first->getNameAsString(), le->second);
     if (op == BO_Assign) {
-      slot = L.stmts_.make_local(name, nullptr, cast(L.exprs_.expr(rhs), b.elem));
+      slot = L.stmts_.make_local(name, nullptr, cast(r, b.elem));
       return;
     }
     if (!slot)
       L.fail(lhs->getBeginLoc(), L.unset_message(le->first, "used before it has a value"));
-    ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
     Op bop = op == BO_AddAssign   ? Op::Add
              : op == BO_SubAssign ? Op::Sub
              : op == BO_MulAssign ? Op::Mul
@@ -150,16 +224,19 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
 // stands for).
 void Stores::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, BinaryOperatorKind op,
                           const clang::Expr* rhs, SourceLocation loc) {
+  check_caller_write(var, lhs->getBeginLoc());
   if (L.red_.local_update(var, t, lhs, op, rhs, loc)) // s += e, m = std::max(m, e)
     return;
+  // The right side first, then the binding (as for a local array's element
+  // above: a reference into env_ does not survive lowering a call).
+  ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
   Binding& b = L.env_[var];
   ExprP value;
   if (op == BO_Assign) {
-    value = L.exprs_.expr(rhs);
+    value = r;
   } else {
     if (!b.value)
       L.fail(lhs->getBeginLoc(), L.unset_message(var, "used before it has a value"));
-    ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
     Op bop;
     switch (op) {
     case BO_AddAssign:
@@ -291,6 +368,13 @@ ExprP Stores::guarded(const ExprP& e, size_t depth) {
 
 void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
                        SourcePos p, SourceLocation loc, int extremum) {
+  for (const auto& [depth, where] : L.cond_operands_)
+    if (depth < L.frames_.size())
+      L.fail(loc, fmt::format("a call in an operand that C++ evaluates only under a condition "
+                              "(line {}: a '?:' arm, or the right side of '&&' / '||') stores "
+                              "into '{}', which dpgen would store as if the call always ran; "
+                              "make the call in an if/else statement",
+                              L.pos(where).line, local_base(array)));
   // `(j << lg) | i` as the sum it equals, `j * n + i`, where the loops keep
   // i below n = 1 << lg (prove.hpp: bits_as_sum)
   if (!to_poly(idx)) {
