@@ -275,11 +275,7 @@ private:
   ExprP named(const ExprP& e, const std::optional<ExprP>& self) {
     if (self)
       return *self;
-    ExprP cond;
-    for (const auto& pc : arms_) {
-      ExprP c = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
-      cond = cond ? binary(Op::And, cond, c) : c;
-    }
+    const ExprP cond = path_condition(arms_);
     const auto key = std::make_pair(e.get(), cond ? print(cond) : std::string());
     auto it = names_.calls.find(key);
     if (it != names_.calls.end())

@@ -269,6 +269,16 @@ ExprP binary(Op op, ExprP a, ExprP b) {
   return node(op, t, {std::move(a), std::move(b)});
 }
 
+// (ir.hpp)
+ExprP path_condition(const std::vector<PathCond>& path, size_t from, size_t to) {
+  ExprP cond;
+  for (size_t i = from; i < std::min(to, path.size()); ++i) {
+    ExprP c = path[i].positive ? path[i].cond : unary(Op::Not, path[i].cond);
+    cond = cond ? binary(Op::And, cond, c) : c;
+  }
+  return cond;
+}
+
 ExprP select(ExprP c, ExprP a, ExprP b) {
   if (same(a, b))
     return a;

@@ -134,6 +134,9 @@ ExprP read(const std::string& array, ExprP index, Type t, SourcePos pos, Shape s
 ExprP unary(Op op, ExprP a);
 ExprP binary(Op op, ExprP a, ExprP b);
 ExprP select(ExprP c, ExprP a, ExprP b);
+/// The conjunction of path[from..to) (each condition, or its negation, and-ed
+/// left to right) as one condition; null where the range is empty.
+ExprP path_condition(const std::vector<PathCond>& path, size_t from = 0, size_t to = SIZE_MAX);
 ExprP call(const std::string& fn, std::vector<ExprP> args, Type t);
 /// The value of an integer expression of constants only (after unrolling,
 /// `m % 2` with m = 3), with C's semantics (division truncates); nullopt if

@@ -51,10 +51,6 @@
 
 namespace dpgen::lowering {
 
-// The conjunction of path[from..] as one condition (null where there is
-// none): the conditions of a store path's tail, of an arm that went on.
-ExprP all_of(const std::vector<PathCond>& path, size_t from = 0);
-
 // Whether evaluating `e` where the kernel would not may fault or be undefined:
 // it reads an array, divides integers by a variable, shifts by a variable
 // (`1 << (i - 1)` at i = 0) or shifts a variable left (`(i - 1) << 2`: a

@@ -234,11 +234,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   // d * d;`, is guarded by them: the select evaluates both.)
   ExprP v = L.stores_.guarded(fr.returns.back().second, fr.path_depth);
   for (size_t i = fr.returns.size() - 1; i-- > 0;) {
-    ExprP cond;
-    for (const auto& pc : fr.returns[i].first) {
-      ExprP c1 = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
-      cond = cond ? binary(Op::And, cond, c1) : c1;
-    }
+    const ExprP cond = path_condition(fr.returns[i].first);
     const ExprP value = L.stores_.guarded(fr.returns[i].second, fr.path_depth);
     v = cond ? select(L.stores_.guarded(cond, fr.path_depth), value, v) : value;
   }

@@ -262,7 +262,7 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   // (c && then_goes_on) || (!c && else_goes_on) where an arm escaped in part.
   const size_t before = L.path_.size();
   auto went_on = [](const ExprP& first, const std::vector<PathCond>& rest) {
-    return rest.empty() ? first : binary(Op::And, first, all_of(rest));
+    return rest.empty() ? first : binary(Op::And, first, path_condition(rest));
   };
   if (then_e == Escape::Always || else_e == Escape::Always) {
     const bool then_runs = else_e == Escape::Always;
@@ -410,7 +410,7 @@ ExprP Statements::make_local(const std::string& base, const VarDecl* decl, ExprP
   // loop: where it reads an array or divides integers by a variable, only
   // where the condition holds (`!(n == 0) ? a[n - 1] : 0.0`).
   if (l->kernel_level && !L.path_.empty() && may_fault(def))
-    l->def = when(all_of(L.path_), def);
+    l->def = when(path_condition(L.path_), def);
   if (def->type == Type::Int) {
     // Integers become std::ptrdiff_t in the generated code (see emit.cpp:
     // index arithmetic that vectorizes and never wraps, also for unsigned

@@ -301,17 +301,6 @@ bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<Pa
   return true;
 }
 
-// The conjunction of path[from..] as one condition (null where there is none;
-// lower_impl.hpp).
-ExprP all_of(const std::vector<PathCond>& path, size_t from) {
-  ExprP cond;
-  for (size_t i = from; i < path.size(); ++i) {
-    ExprP c = path[i].positive ? path[i].cond : unary(Op::Not, path[i].cond);
-    cond = cond ? binary(Op::And, cond, c) : c;
-  }
-  return cond;
-}
-
 // (lower_impl.hpp)
 bool may_fault(const ExprP& e) {
   bool found = false;
@@ -357,7 +346,7 @@ ExprP Stores::guarded(const ExprP& e, size_t depth) {
     return it->second;
   ExprP def = guarded(l.def, depth);
   if (may_fault(def)) // (the conditions may read the arm's values too: `if (d > 0)`)
-    def = when(guarded(all_of(l.made_under, depth), depth), def);
+    def = when(guarded(path_condition(l.made_under, depth), depth), def);
   ExprP copy = L.stmts_.make_local(l.name, nullptr, def);
   auto g = std::const_pointer_cast<LocalVar>(copy->local);
   g->type_name = l.type_name;
@@ -413,7 +402,7 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
     // both, still a constant to derivatives)
     // (the value is evaluated past the arm, in a select on the arm's
     // conditions, which may read the arm's values too: `if (d > 0.0)`)
-    ExprP cond = all_of(L.path_, prev->path.size());
+    ExprP cond = path_condition(L.path_, prev->path.size());
     if (cond) {
       cond = guarded(cond, prev->path.size());
       value = guarded(value, prev->path.size());
@@ -529,7 +518,7 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
            s.path[common].cond == L.path_[common].cond &&
            s.path[common].positive == L.path_[common].positive)
       ++common;
-    const ExprP cond = all_of(s.path, common);
+    const ExprP cond = path_condition(s.path, common);
     r = cond ? select(guarded(cond, common), guarded(s.value, common), r) : s.value;
   }
   return r;

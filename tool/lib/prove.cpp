@@ -277,13 +277,9 @@ ExprP bits_as_sum(const ExprP& index, const std::vector<Loop>& loops,
   // make_local), where the store's path holds c: c is the conjunction of the
   // path's first conditions, as the guard made it
   auto path_holds = [&](const ExprP& c) {
-    ExprP conj;
-    for (const auto& pc : path) {
-      ExprP x = pc.positive ? pc.cond : unary(Op::Not, pc.cond);
-      conj = conj ? binary(Op::And, conj, x) : x;
-      if (same(conj, c))
+    for (size_t k = 1; k <= path.size(); ++k)
+      if (same(path_condition(path, 0, k), c))
         return true;
-    }
     return false;
   };
   std::vector<std::pair<LocalP, ExprP>> pow2; // (local, its 1 << s)
