@@ -147,4 +147,20 @@ DPGEN_KERNEL void out_param_alias(DPGEN_IN const double* a, DPGEN_OUT double* ou
     out[i] = d;
   }
 }
+// An argument that assigns the out-parameter's local before the helper runs
+// (C++ evaluates it first; the copy bound to the parameter would be stale).
+static void add_to(double& r, double x) { r = r + x; }
+
+DPGEN_KERNEL void out_param_argument(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double d = 1.0;
+    auto set = [&](double y) {
+      d = y;
+      return y;
+    };
+    add_to(d, set(a[i]));
+    // CHECK: lambda_rules.cpp:[[@LINE-1]]:5: error: 'd' is passed to out-parameter 'r' of helper 'add_to' and also assigned during the call (by a lambda that captured it by reference, or in another argument)
+    out[i] = d;
+  }
+}
 // CHECK-NOT: a lambda is called through

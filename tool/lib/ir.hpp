@@ -95,7 +95,7 @@ struct LocalVar {
   bool opaque = false;
   /// The path conditions open where it was made (lower.cpp's path_): a value
   /// made in an arm has more than a store it is merged into past the arm
-  /// (lower_store.cpp: Stores::guarded).
+  /// (lower_guard.cpp: Guards::guarded).
   std::vector<PathCond> made_under;
 };
 using LocalP = std::shared_ptr<const LocalVar>;

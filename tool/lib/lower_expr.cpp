@@ -329,8 +329,10 @@ ExprP Expressions::expr(const clang::Expr* e) {
     Type t = L.type_of(c);
     // (the false arm first: the order in which GCC evaluated the arguments of
     // the select this was before, so that locals keep their names)
-    ExprP no = conditional(c->getFalseExpr(), [&] { return cast(expr(c->getFalseExpr()), t); });
-    ExprP yes = conditional(c->getTrueExpr(), [&] { return cast(expr(c->getTrueExpr()), t); });
+    ExprP no = L.guards_.conditional(c->getFalseExpr(), PathCond{cc, false},
+                                     [&] { return cast(expr(c->getFalseExpr()), t); });
+    ExprP yes = L.guards_.conditional(c->getTrueExpr(), PathCond{cc, true},
+                                      [&] { return cast(expr(c->getTrueExpr()), t); });
     return select(cc, yes, no);
   }
   if (const auto* m = dyn_cast<CXXMemberCallExpr>(e)) {
@@ -468,19 +470,6 @@ ExprP Expressions::decl_ref(const DeclRefExpr* r) {
   throw std::logic_error("internal error: lower: a binding of no known kind");
 }
 
-// An operand C++ evaluates only under a condition (a `?:` arm, the right
-// side of `&&` / `||`), lowered as if it always ran (its value is selected
-// after): on Lowerer::cond_operands_ while it is, so that a call in it that
-// assigns or stores is refused (Stores::check_caller_write, add_store).
-ExprP Expressions::conditional(const clang::Expr* operand, const std::function<ExprP()>& lower) {
-  L.cond_operands_.emplace_back(L.frames_.size(), operand->getBeginLoc());
-  struct Mark {
-    Lowerer& L;
-    ~Mark() { L.cond_operands_.pop_back(); } // (also when an error abandons the operand)
-  } mark{L};
-  return lower();
-}
-
 ExprP Expressions::binary_expr(const BinaryOperator* b) {
   if (b->isAssignmentOp())
     L.fail(b->getOperatorLoc(), "assignment inside an expression is outside the kernel subset");
@@ -488,7 +477,8 @@ ExprP Expressions::binary_expr(const BinaryOperator* b) {
     L.fail(b->getOperatorLoc(), "comma operator is outside the kernel subset");
   if (b->getOpcode() == BO_LAnd || b->getOpcode() == BO_LOr) {
     ExprP l = cond(b->getLHS()); // (first: what it assigns, the right side sees)
-    ExprP r = conditional(b->getRHS(), [&] { return cond(b->getRHS()); });
+    ExprP r = L.guards_.conditional(b->getRHS(), PathCond{l, b->getOpcode() == BO_LAnd},
+                                    [&] { return cond(b->getRHS()); });
     return binary(b->getOpcode() == BO_LAnd ? Op::And : Op::Or, l, r);
   }
   ExprP l = expr(b->getLHS()), r = expr(b->getRHS());

@@ -24,9 +24,6 @@ class Lowerer;
 
 class Expressions {
 public:
-  // `lower()` of an operand C++ evaluates only under a condition (a `?:` arm,
-  // the right side of `&&` / `||`), on Lowerer::cond_operands_ while it runs.
-  ExprP conditional(const clang::Expr* operand, const std::function<ExprP()>& lower);
   explicit Expressions(Lowerer& lowerer) : L(lowerer) {}
 
   ExprP expr(const clang::Expr* e);

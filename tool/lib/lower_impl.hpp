@@ -4,7 +4,8 @@
 // it is split into along its seams, each a class with its own file(s) that
 // reaches the shared state through the Lowerer: statements and stores
 // (lower_stmt.hpp), loops and their headers (lower_loop.hpp), expressions
-// (lower_expr.hpp), reductions, line buffers, inlined helpers, integer checks,
+// (lower_expr.hpp), guards of values made under conditions (lower_guard.hpp),
+// reductions, line buffers, inlined helpers, integer checks,
 // views, objects, the signature and globals. Included by those files only.
 #pragma once
 
@@ -18,6 +19,7 @@
 #include "lower_common.hpp"
 #include "lower_expr.hpp"
 #include "lower_globals.hpp"
+#include "lower_guard.hpp"
 #include "lower_inline.hpp"
 #include "lower_int.hpp"
 #include "lower_loop.hpp"
@@ -367,18 +369,20 @@ private:
   std::map<std::string, const VarDecl*> global_decls_;
 
   // ---- the parts along the seams (lower_stmt.hpp, lower_loop.hpp,
-  // lower_expr.hpp) ---------------------------------------------------------
+  // lower_expr.hpp, lower_guard.hpp) ------------------------------------------
   friend class Statements;
   friend class Stores;
   friend class LoopHeaders;
   friend class ForLoops;
   friend class RunningIndices;
   friend class Expressions;
+  friend class Guards;
   Statements stmts_{*this};
   Stores stores_{*this};
   LoopHeaders headers_{*this};
   ForLoops for_loops_{*this};
   Expressions exprs_{*this};
+  Guards guards_{*this};
 };
 
 } // namespace dpgen::lowering

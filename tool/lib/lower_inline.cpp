@@ -210,14 +210,14 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   if (is_void) {
     for (size_t k = 0; k < outs.size(); ++k) {
       const auto& [pd, v] = outs[k];
-      // (the helper changed v itself too, through a lambda that captured it:
-      // the copy back would undo that)
+      // (v changed since it was bound, through a lambda that captured it or
+      // in another argument: the copy back would undo that)
       if (L.env_[v].value != outs_bound[k])
         L.fail(c->getBeginLoc(),
-               fmt::format("'{}' is passed to out-parameter '{}' of helper "
-                           "'{}' and also assigned during the call (by a "
-                           "lambda that captured it by reference); pass the "
-                           "lambda another variable",
+               fmt::format("'{}' is passed to out-parameter '{}' of helper '{}' and also "
+                           "assigned during the call (by a lambda that captured it by "
+                           "reference, or in another argument); pass the helper another "
+                           "variable",
                            v->getNameAsString(), pd->getNameAsString(), def->getNameAsString()));
       if (L.env_[v].value != L.env_[pd].value) // (the caller may be a frame too)
         L.stores_.check_caller_write(v, c->getBeginLoc());
@@ -232,11 +232,11 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   // The last return is reached when no earlier one was. (A value made in the
   // helper's arms, `if (i == 0) return 0.0; const double d = a[i - 1]; return
   // d * d;`, is guarded by them: the select evaluates both.)
-  ExprP v = L.stores_.guarded(fr.returns.back().second, fr.path_depth);
+  ExprP v = L.guards_.guarded(fr.returns.back().second, fr.path_depth);
   for (size_t i = fr.returns.size() - 1; i-- > 0;) {
     const ExprP cond = path_condition(fr.returns[i].first);
-    const ExprP value = L.stores_.guarded(fr.returns[i].second, fr.path_depth);
-    v = cond ? select(L.stores_.guarded(cond, fr.path_depth), value, v) : value;
+    const ExprP value = L.guards_.guarded(fr.returns[i].second, fr.path_depth);
+    v = cond ? select(L.guards_.guarded(cond, fr.path_depth), value, v) : value;
   }
   return v;
 }

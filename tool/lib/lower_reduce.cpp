@@ -58,7 +58,8 @@ bool Reductions::if_update(const IfStmt* s) {
   auto update = [&](Accumulator& a, Type t) {
     size_t depth = L.path_.size();
     if (rest)
-      L.path_.push_back({L.exprs_.conditional(rest, [&] { return L.exprs_.cond(rest); }), true});
+      L.path_.push_back(
+          {L.guards_.conditional(rest, std::nullopt, [&] { return L.exprs_.cond(rest); }), true});
     extremum_update(a, term, t, s->getBeginLoc());
     L.path_.resize(depth);
   };

@@ -155,7 +155,7 @@ namespace {
 // A value made in an arm (locals with ids in [from, to)) with those locals'
 // definitions in their place, to evaluate where the arm ran; a local the
 // value names more than once is `shared(local)` instead (a copy guarded by
-// the arm's conditions, Stores::guarded): inlined, a chain of locals each
+// the arm's conditions, Guards::guarded): inlined, a chain of locals each
 // used twice grew as 3^depth.
 ExprP inline_locals(const ExprP& e, int from, int to,
                     const std::function<ExprP(const ExprP&)>& shared) {
@@ -219,7 +219,7 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   int after_else = L.next_local_id_;
   // (an arm's escape conditions may read values made in the arm: inlined, so
   // nothing of an arm is evaluated where the arm does not run)
-  auto shared = [&](const ExprP& local) { return L.stores_.guarded(local, depth); };
+  auto shared = [&](const ExprP& local) { return L.guards_.guarded(local, depth); };
   for (auto& pc : then_goes_on)
     pc.cond = inline_locals(pc.cond, first_local, after_then, shared);
   for (auto& pc : else_goes_on)

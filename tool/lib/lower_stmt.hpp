@@ -141,17 +141,8 @@ public:
   // `prefix` holds wherever `path` holds: its conditions open `path`.
   static bool is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path);
 
-  // `e`, a value made in an arm, for use past the arm where the path has
-  // only its first `depth` conditions (merged into a select on the others:
-  // `b[i] = 0; if (i > 0) { double d = a[i - 1]; b[i] = d * d; }`): the locals
-  // made under more conditions replaced by copies guarded by those
-  // conditions, so nothing of the arm reads out of bounds where it does not
-  // run. (A helper's return values past its ifs alike.)
-  ExprP guarded(const ExprP& e, size_t depth);
-
 private:
   Lowerer& L;
-  std::map<std::pair<int, size_t>, ExprP> guarded_; // by local id and depth
 
   // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
   // stands for).

@@ -301,60 +301,6 @@ bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<Pa
   return true;
 }
 
-// (lower_impl.hpp)
-bool may_fault(const ExprP& e) {
-  bool found = false;
-  std::set<const LocalVar*> seen;
-  walk(
-      e,
-      [&](const ExprP& x) {
-        found = found || x->op == Op::Read ||
-                ((x->op == Op::Div || x->op == Op::Rem) && !is_real(x->type) &&
-                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival == 0)) ||
-                ((x->op == Op::Shl || x->op == Op::Shr) &&
-                 (x->ops[1]->op != Op::IntConst || x->ops[1]->ival < 0 || x->ops[1]->ival > 31)) ||
-                (x->op == Op::Shl && (x->ops[0]->op != Op::IntConst || x->ops[0]->ival < 0)) ||
-                (x->op == Op::Cast && !is_real(x->type) && is_real(x->ops[0]->type));
-        return !found;
-      },
-      [](const ExprP&) { return false; }, seen);
-  return found;
-}
-
-// (lower_impl.hpp)
-ExprP when(const ExprP& cond, const ExprP& value) {
-  if (!cond)
-    return value;
-  if (value->type == Type::Bool)
-    return binary(Op::And, cond, value);
-  return select(cond, value, value->type == Type::Int ? int_const(0) : zero(value->type));
-}
-
-// (lower_stmt.hpp) Each local made under more conditions than `depth` (not a
-// kernel-level one: those are guarded where made; nor a view's row symbol,
-// whose definition is a placeholder) gets a copy that is safe to evaluate
-// anywhere, `d_1 = i > 0 ? a[i - 1] : 0.0` where it reads or divides
-// integers, one per local and depth, so values the arm shares stay shared.
-ExprP Stores::guarded(const ExprP& e, size_t depth) {
-  if (e->op != Op::Local)
-    return map_operands(e, [&](const ExprP& o) { return guarded(o, depth); });
-  const LocalVar& l = *e->local;
-  if (l.kernel_level || l.opaque || l.made_under.size() <= depth)
-    return e;
-  auto it = guarded_.find({l.id, depth});
-  if (it != guarded_.end())
-    return it->second;
-  ExprP def = guarded(l.def, depth);
-  if (may_fault(def)) // (the conditions may read the arm's values too: `if (d > 0)`)
-    def = when(guarded(path_condition(l.made_under, depth), depth), def);
-  ExprP copy = L.stmts_.make_local(l.name, nullptr, def);
-  auto g = std::const_pointer_cast<LocalVar>(copy->local);
-  g->type_name = l.type_name;
-  g->kernel_level = false;
-  g->made_under.assign(l.made_under.begin(), l.made_under.begin() + std::ptrdiff_t(depth));
-  return guarded_[{l.id, depth}] = copy;
-}
-
 void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
                        SourcePos p, SourceLocation loc, int extremum) {
   for (const auto& [depth, where] : L.cond_operands_)
@@ -404,8 +350,8 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
     // conditions, which may read the arm's values too: `if (d > 0.0)`)
     ExprP cond = path_condition(L.path_, prev->path.size());
     if (cond) {
-      cond = guarded(cond, prev->path.size());
-      value = guarded(value, prev->path.size());
+      cond = L.guards_.guarded(cond, prev->path.size());
+      value = L.guards_.guarded(value, prev->path.size());
       if (accumulate || extremum) // (the earlier value is in both arms of the select below)
         shared_value(*prev, local_base(array));
     }
@@ -519,7 +465,8 @@ ExprP Stores::inout_value(const Param* p, const ExprP& idx, SourceLocation loc,
            s.path[common].positive == L.path_[common].positive)
       ++common;
     const ExprP cond = path_condition(s.path, common);
-    r = cond ? select(guarded(cond, common), guarded(s.value, common), r) : s.value;
+    r = cond ? select(L.guards_.guarded(cond, common), L.guards_.guarded(s.value, common), r)
+             : s.value;
   }
   return r;
 }
