@@ -5,17 +5,22 @@
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
-static void early(double a, double& r) {
-  r = a;
-  if (a > 0.0)
-    return;
-  // CHECK: helper_outparams.cpp:[[@LINE-1]]:5: error: 'return' inside a branch of void helper 'early': assign the out-parameters in if/else instead
-  r = -a;
+// A return inside a small constant loop that dpgen unrolls: the copies after
+// it would not see that it escaped (they stored and read as if it had not).
+static void scaled_sum(double x, double& r) {
+  const double w[3] = {0.5, -1.0, 2.0};
+  r = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    if (x * w[k] < 0.0)
+      return;
+    // CHECK: helper_outparams.cpp:[[@LINE-1]]:7: error: 'return' in a small constant loop that dpgen unrolls
+    r += x * w[k];
+  }
 }
-DPGEN_KERNEL void k_early(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
+DPGEN_KERNEL void k_unrolled_return(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
   for (int i = 0; i < n; ++i) {
     double r;
-    early(a[i], r);
+    scaled_sum(a[i], r);
     o[i] = r;
   }
 }

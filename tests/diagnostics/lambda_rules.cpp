@@ -32,64 +32,11 @@ DPGEN_KERNEL void init_capture(DPGEN_IN const double* a, DPGEN_OUT double* out, 
     out[i] = f(a[i]);
 }
 
-// A lambda's returns become one value, selected by the conditions under
-// which each is reached; an assignment to a variable of its caller after a
-// `return` inside a branch, or in an if one of whose arms returns, would not
-// follow the path that returned (a wrong value and gradient until
-// 2026-11-30): refused. Set before the first such if, or in an if/else whose
-// arms both go on, it is merged per path (tests/styles/lambdas.cpp).
-DPGEN_KERNEL void sets_after_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
-  for (int i = 0; i < n; ++i) {
-    double d = 1.0;
-    auto g = [&](double x) {
-      if (x < 0.0)
-        return 0.0;
-      d = 2.0 * x;
-      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: lambda returns inside a branch (line [[#@LINE-2]]) and assigns 'd', a variable of its caller, after it
-      return x * x;
-    };
-    const double v = g(a[i]);
-    out[i] = v + d * a[i];
-  }
-}
-
-DPGEN_KERNEL void sets_beside_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
-  for (int i = 0; i < n; ++i) {
-    double w[2] = {1.0, 1.0};
-    auto g = [&](double x) {
-      if (x > 0.0) {
-        w[1] = 3.0;
-        // CHECK: lambda_rules.cpp:[[@LINE-1]]:9: error: lambda returns inside a branch (line [[#@LINE+2]]) and assigns 'w', a variable of its caller, in an if whose other arm returns
-      } else {
-        return 0.0;
-      }
-      return x * x;
-    };
-    const double v = g(a[i]);
-    out[i] = v + w[1] * a[i];
-  }
-}
-
-static void set_twice(double& d, double x) { d = 2.0 * x; }
-
-DPGEN_KERNEL void sets_through_helper(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
-  for (int i = 0; i < n; ++i) {
-    double d = 1.0;
-    auto g = [&](double x) {
-      if (x < 0.0)
-        return 0.0;
-      set_twice(d, x);
-      // CHECK: lambda_rules.cpp:[[@LINE-1]]:7: error: lambda returns inside a branch (line [[#@LINE-2]]) and assigns 'd', a variable of its caller, after it
-      return x * x;
-    };
-    const double v = g(a[i]);
-    out[i] = v + d * a[i];
-  }
-}
-
-// The same bug without a return: an operand that C++ evaluates only under a
-// condition (a `?:` arm, the right side of `&&`) is lowered as if it always
-// ran, so a call in it must not assign the caller's variables or store.
+// A call in an operand that C++ evaluates only under a condition (a `?:`
+// arm, the right side of `&&`) is lowered as if it always ran, so it must not
+// assign the caller's variables or store (a wrong value and gradient until
+// 2026-11-30). (A lambda that returns inside a branch and assigns its
+// caller's variables is merged per way out: tests/styles/early_returns.cpp.)
 DPGEN_KERNEL void sets_in_conditional(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 0; i < n; ++i) {
     double d = 1.0;

@@ -76,6 +76,17 @@ DPGEN_KERNEL void nested_select(DPGEN_IN const double* a, DPGEN_OUT double* b, i
     b[i] = i > 1 ? (a[i] > 0.0 ? sq(a[i - 1]) : sq(a[i - 2])) : a[i];
 }
 
+// A line buffer read in an arm at an index only the arm's condition keeps
+// written (w[0] is never written): the condition is a fact of the operand,
+// so the read is proven (refused until the operand was lowered under it).
+DPGEN_KERNEL void buffer_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  double w[n + 1];
+  for (int i = 1; i < n; ++i)
+    w[i] = a[i] * a[i] + a[i - 1];
+  for (int i = 0; i < n; ++i)
+    b[i] = a[i] * (i > 0 ? sq(w[i]) * a[i] : 1.0);
+}
+
 // C89 counter, a branching helper in an arm, a template helper with const&.
 DPGEN_KERNEL void c89_limited(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
   int i;

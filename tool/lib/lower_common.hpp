@@ -48,6 +48,11 @@ struct Binding {
   std::shared_ptr<std::map<const clang::FieldDecl*, Binding>> fields;
 };
 
+// The ways out of an inlined call inside a branch (its returns there): the
+// conditions of each, past the call's, and the bindings it left.
+using FrameExits =
+    std::vector<std::pair<std::vector<PathCond>, std::map<const clang::VarDecl*, Binding>>>;
+
 // An error at `loc` through Clang (which shows the line and any macro
 // expansion behind it), ending with its id: "message [dpgen-loop]".
 void report_error(clang::ASTContext& ctx, clang::SourceLocation loc, const std::string& msg,

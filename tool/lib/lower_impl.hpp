@@ -298,7 +298,8 @@ private:
   // differentiated by inlining: its parameters are bound to the arguments'
   // values (arrays to the kernel's arrays), its body is lowered like the
   // kernel's, and its returns become one value, selected by the conditions
-  // under which each return is reached.
+  // under which each return is reached; so do the caller's variables it
+  // assigns (`exits`: the bindings at each return inside a branch).
   struct InlineFrame {
     const FunctionDecl* fn;
     size_t path_depth;
@@ -306,10 +307,8 @@ private:
     Type ret;
     std::vector<std::pair<std::vector<PathCond>, ExprP>> returns;
     bool is_void = false; // results through out-parameters, or stores
-    // Where it first returned inside a branch, and first assigned each
-    // variable of a caller (Stores::check_caller_write, check_arm_writes).
-    std::optional<SourceLocation> branch_return = std::nullopt;
-    std::map<const VarDecl*, SourceLocation> caller_writes = {};
+    int unrolling = 0;    // Lowerer::unrolling_ at the call
+    FrameExits exits = {};
   };
   std::vector<InlineFrame> frames_;
   // Operands C++ evaluates only under a condition (`?:` arms, `&&`'s right

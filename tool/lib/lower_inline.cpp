@@ -184,9 +184,16 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     binds.push_back({pd, b});
   }
   check_aliases(c, def, binds, outs);
+  // What the caller sees of the call: its variables and the out-parameters.
+  std::set<const VarDecl*> visible;
+  for (const auto& [v, b] : L.env_)
+    if (!def->Encloses(v->getDeclContext()))
+      visible.insert(v);
+  for (const auto& [pd, v] : outs)
+    visible.insert(pd);
   for (const auto& [pd, b] : binds)
     L.env_[pd] = b;
-  L.frames_.push_back({def, L.path_.size(), L.loops_.size(), *rt, {}, is_void});
+  L.frames_.push_back({def, L.path_.size(), L.loops_.size(), *rt, {}, is_void, L.unrolling_});
   std::map<const FieldDecl*, Binding> outer_fields;
   if (functor_fields) {
     outer_fields = L.fields_;
@@ -207,6 +214,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   Lowerer::InlineFrame fr = L.frames_.back();
   L.frames_.pop_back();
   L.path_.resize(fr.path_depth);
+  merge_exits(fr.exits, fr.path_depth, visible);
   if (is_void) {
     for (size_t k = 0; k < outs.size(); ++k) {
       const auto& [pd, v] = outs[k];
@@ -239,6 +247,52 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     v = cond ? select(L.guards_.guarded(cond, fr.path_depth), value, v) : value;
   }
   return v;
+}
+
+// (lower_inline.hpp) Each way out is taken where its conditions hold and no
+// earlier one's did (the statements after a return run under its negation),
+// so a variable is, after the call, `c1 ? at_1 : c2 ? at_2 : ... : at_end`,
+// its values guarded as a merged arm's are.
+void Inliner::merge_exits(const FrameExits& exits, size_t depth,
+                          const std::set<const VarDecl*>& visible) {
+  auto merged = [&](const VarDecl* var, std::optional<ExprP> v, auto&& at) {
+    for (size_t k = exits.size(); k-- > 0;) {
+      const std::optional<ExprP> x = at(exits[k].second);
+      if (x == v)
+        continue;
+      if (!x || !v) { // (unset on one way out: unset after the call)
+        v = std::nullopt;
+        continue;
+      }
+      const ExprP cond = L.guards_.guarded(path_condition(exits[k].first), depth);
+      v = L.stmts_.make_local(
+          var->getNameAsString(), var,
+          select(cond, L.guards_.guarded(*x, depth), L.guards_.guarded(*v, depth)));
+    }
+    return v;
+  };
+  for (const VarDecl* var : exits.empty() ? std::set<const VarDecl*>{} : visible) {
+    auto find = [&](const std::map<const VarDecl*, Binding>& env) {
+      auto it = env.find(var);
+      return it == env.end() ? nullptr : &it->second;
+    };
+    auto it = L.env_.find(var);
+    if (it == L.env_.end())
+      continue;
+    Binding& b = it->second;
+    if (b.kind == Binding::Value) {
+      b.value = merged(var, b.value, [&](const auto& env) {
+        const Binding* e = find(env);
+        return e ? e->value : std::nullopt;
+      });
+    } else if (b.kind == Binding::LocalArray) {
+      for (size_t i = 0; i < b.elems.size(); ++i)
+        b.elems[i] = merged(var, b.elems[i], [&](const auto& env) -> std::optional<ExprP> {
+          const Binding* e = find(env);
+          return e && i < e->elems.size() ? e->elems[i] : std::nullopt;
+        });
+    }
+  }
 }
 
 // A local bound to an out-parameter or a `const&` parameter (a copy, and a

@@ -10,6 +10,7 @@
 
 #include "lower_common.hpp"
 
+#include <set>
 #include <string>
 
 namespace clang {
@@ -42,6 +43,10 @@ public:
   Binding lambda_binding(const clang::LambdaExpr* le, const std::string& name);
 
 private:
+  // After a call whose frame began at path depth `depth`: each variable in
+  // `visible` (the caller's, and the out-parameters) merged over `exits`.
+  void merge_exits(const FrameExits& exits, size_t depth,
+                   const std::set<const clang::VarDecl*>& visible);
   // Refuses a local bound to an out-parameter or a `const&` parameter of
   // call `c` that a lambda argument of the same call captured by reference.
   void check_aliases(

@@ -53,25 +53,27 @@ Escape Statements::lower(const Stmt* s) {
   if (const auto* r = dyn_cast<ReturnStmt>(s)) {
     if (!L.frames_.empty() && L.loops_.size() == L.frames_.back().loop_depth) {
       // `return v;` in a helper being inlined: v where this path holds.
-      if (L.frames_.back().is_void) {
-        // (an early return would have to undo the out-parameters' later
-        // assignments on its path)
-        if (L.path_.size() > L.frames_.back().path_depth)
-          L.fail(s->getBeginLoc(), fmt::format("'return' inside a branch of void helper '{}': "
-                                               "assign the out-parameters in if/else instead",
-                                               L.frames_.back().fn->getNameAsString()));
-        return Escape::Always;
+      // (An unrolled loop's copies would not see that it escaped.)
+      if (L.unrolling_ > L.frames_.back().unrolling)
+        L.fail(s->getBeginLoc(), "'return' in a small constant loop that dpgen unrolls (it "
+                                 "reads or writes a local array, or sums into a variable); use "
+                                 "an if/else");
+      if (!L.frames_.back().is_void) {
+        if (!r->getRetValue())
+          L.fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
+        // The value first: it may inline further helpers, which grows frames_.
+        ExprP v = L.exprs_.expr(r->getRetValue());
+        Lowerer::InlineFrame& fr = L.frames_.back();
+        fr.returns.push_back(
+            {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()),
+             cast(v, fr.ret)});
       }
-      if (!r->getRetValue())
-        L.fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
-      // The value first: it may inline further helpers, which grows frames_.
-      ExprP v = L.exprs_.expr(r->getRetValue());
-      if (L.path_.size() > L.frames_.back().path_depth && !L.frames_.back().branch_return)
-        L.frames_.back().branch_return = s->getBeginLoc(); // (Stores::check_caller_write)
+      // A way out inside a branch: what the caller's variables hold here
+      // (merged at the end of the call, Inliner::merge_exits).
       Lowerer::InlineFrame& fr = L.frames_.back();
-      v = cast(v, fr.ret);
-      fr.returns.push_back(
-          {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()), v});
+      if (L.path_.size() > fr.path_depth)
+        fr.exits.push_back(
+            {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()), L.env_});
       return Escape::Always;
     }
     if (!L.loops_.empty() || L.unrolling_ > 0)
@@ -226,7 +228,8 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
     pc.cond = inline_locals(pc.cond, after_then, after_else, shared);
 
   // Merge values assigned in the branches: v = c ? v_then : v_else. A
-  // branch that escaped contributes nothing to what follows.
+  // branch that escaped contributes nothing to what follows (what a return
+  // of a helper leaves its caller is in InlineFrame::exits).
   auto merge = [&](const VarDecl* decl, std::optional<ExprP> t,
                    std::optional<ExprP> e) -> std::optional<ExprP> {
     if (then_e == Escape::Always)
@@ -243,8 +246,6 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
     ExprP else_value = inline_locals(*e, after_then, after_else, shared);
     return make_local(decl->getNameAsString(), decl, select(c, then_value, else_value));
   };
-  if (then_e == Escape::Always || else_e == Escape::Always)
-    L.stores_.check_arm_writes(env_before, env_then, env_else);
   for (auto& [decl, b] : L.env_) {
     if (b.kind == Binding::Value) {
       b.value = merge(decl, env_then[decl].value, env_else[decl].value);

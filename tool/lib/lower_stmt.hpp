@@ -88,25 +88,11 @@ public:
   const clang::VarDecl* deref_local(const clang::Expr* e);
 
   // An assignment to `var` at `loc`: refused inside a call in an operand
-  // evaluated under a condition where `var` is declared outside it, and in a
-  // value-returning frame (a lambda) after a return inside a branch where
-  // `var` belongs to a caller; otherwise recorded in the frames to which
-  // `var` belongs to a caller (InlineFrame::caller_writes; lower_store.cpp).
+  // evaluated under a condition where `var` is declared outside it.
   void check_caller_write(const clang::VarDecl* var, clang::SourceLocation loc);
   // The frames [first, end) to which `var` is a caller's (or the kernel's)
   // variable: those that run inside the function that declares it.
   size_t first_outer_frame(const clang::VarDecl* var) const;
-  // After an if one of whose arms escapes (`env_*`: the bindings before it
-  // and after each arm): refused where it is a return of a value-returning
-  // frame and an arm assigned a variable of the frame's caller (such an
-  // arm's value would not follow the path that returned).
-  void check_arm_writes(const std::map<const clang::VarDecl*, Binding>& before,
-                        const std::map<const clang::VarDecl*, Binding>& then_arm,
-                        const std::map<const clang::VarDecl*, Binding>& else_arm);
-
-private:
-  std::string caller_write_message(size_t frame, const clang::VarDecl* var,
-                                   clang::SourceLocation ret, const char* where) const;
 
 public:
   // The store of this iteration that a later statement on the current path

@@ -17,45 +17,6 @@ const VarDecl* Stores::deref_local(const clang::Expr* e) {
                                                                                           : nullptr;
 }
 
-// A frame's returns are merged into one value, selected by the conditions
-// under which each is reached; a local's assignments are not: a later one
-// replaces the value on every path. So a caller's variable that a lambda
-// assigns after a `return` inside a branch, or in an if one of whose arms
-// returns, would take the new value also where the lambda returned (or lose
-// it there).
-std::string Stores::caller_write_message(size_t frame, const VarDecl* var, SourceLocation ret,
-                                         const char* where) const {
-  const FunctionDecl* fn = L.frames_[frame].fn;
-  const auto* m = dyn_cast<CXXMethodDecl>(fn);
-  return fmt::format("{} returns inside a branch (line {}) and assigns '{}', a variable of its "
-                     "caller, {}: its returns become one value, but the assignment would not "
-                     "follow the path that returned; assign '{}' before the first 'if' that "
-                     "returns, or return the value and assign it in the caller",
-                     m && m->getParent()->isLambda()
-                         ? std::string("lambda")
-                         : fmt::format("helper '{}'", fn->getNameAsString()),
-                     L.pos(ret).line, var->getNameAsString(), where, var->getNameAsString());
-}
-
-// (lower_stmt.hpp) Only a return escapes where no loop of the frame is open.
-void Stores::check_arm_writes(const std::map<const VarDecl*, Binding>& before,
-                              const std::map<const VarDecl*, Binding>& then_arm,
-                              const std::map<const VarDecl*, Binding>& else_arm) {
-  if (L.frames_.empty() || L.frames_.back().is_void ||
-      L.loops_.size() != L.frames_.back().loop_depth)
-    return;
-  const size_t k = L.frames_.size() - 1;
-  const auto changed = [&](const std::map<const VarDecl*, Binding>& arm, const VarDecl* v) {
-    auto a = arm.find(v), b = before.find(v);
-    return a != arm.end() && b != before.end() &&
-           (a->second.value != b->second.value || a->second.elems != b->second.elems);
-  };
-  for (const auto& [var, loc] : L.frames_[k].caller_writes)
-    if (changed(then_arm, var) || changed(else_arm, var))
-      L.fail(loc, caller_write_message(k, var, *L.frames_[k].branch_return,
-                                       "in an if whose other arm returns"));
-}
-
 // (lower_stmt.hpp)
 size_t Stores::first_outer_frame(const VarDecl* var) const {
   const auto* owner = dyn_cast<FunctionDecl>(var->getDeclContext());
@@ -76,14 +37,6 @@ void Stores::check_caller_write(const VarDecl* var, SourceLocation loc) {
                               "'&&' / '||'), which dpgen evaluates as if it always ran; make "
                               "the call in an if/else statement",
                               var->getNameAsString(), L.pos(where).line));
-  for (size_t k = first; k < L.frames_.size(); ++k) {
-    Lowerer::InlineFrame& fr = L.frames_[k];
-    if (fr.is_void) // (a void frame returns inside no branch: refused where it is)
-      continue;
-    if (fr.branch_return)
-      L.fail(loc, caller_write_message(k, var, *fr.branch_return, "after it"), "dpgen-unsupported");
-    fr.caller_writes.emplace(var, loc);
-  }
 }
 
 void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::Expr* rhs,
