@@ -80,7 +80,7 @@ DPGEN_KERNEL void nested_select(DPGEN_IN const double* a, DPGEN_OUT double* b, i
 // written (w[0] is never written): the condition is a fact of the operand,
 // so the read is proven (refused until the operand was lowered under it).
 DPGEN_KERNEL void buffer_arm(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
-  double w[n + 1];
+  double w[128]; // (n <= 128: the generated functions check it)
   for (int i = 1; i < n; ++i)
     w[i] = a[i] * a[i] + a[i - 1];
   for (int i = 0; i < n; ++i)
