@@ -252,7 +252,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
 // (lower_inline.hpp) Each way out is taken where its conditions hold and no
 // earlier one's did (the statements after a return run under its negation),
 // so a variable is, after the call, `c1 ? at_1 : c2 ? at_2 : ... : at_end`,
-// its values guarded as a merged arm's are.
+// its values guarded as a merged arm's are. (Values and local arrays only:
+// an object's fields are not assigned in the kernel subset.)
 void Inliner::merge_exits(const FrameExits& exits, size_t depth,
                           const std::set<const VarDecl*>& visible) {
   auto merged = [&](const VarDecl* var, std::optional<ExprP> v, auto&& at) {

@@ -68,8 +68,7 @@ Escape Statements::lower(const Stmt* s) {
             {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()),
              cast(v, fr.ret)});
       }
-      // A way out inside a branch: what the caller's variables hold here
-      // (merged at the end of the call, Inliner::merge_exits).
+      // A way out inside a branch: the bindings it leaves (Inliner::merge_exits).
       Lowerer::InlineFrame& fr = L.frames_.back();
       if (L.path_.size() > fr.path_depth)
         fr.exits.push_back(
@@ -227,9 +226,8 @@ Escape Statements::branch(const ExprP& c, const std::function<Escape()>& then_ar
   for (auto& pc : else_goes_on)
     pc.cond = inline_locals(pc.cond, after_then, after_else, shared);
 
-  // Merge values assigned in the branches: v = c ? v_then : v_else. A
-  // branch that escaped contributes nothing to what follows (what a return
-  // of a helper leaves its caller is in InlineFrame::exits).
+  // Merge values assigned in the branches: v = c ? v_then : v_else. A branch
+  // that escaped contributes nothing after it (a return: InlineFrame::exits).
   auto merge = [&](const VarDecl* decl, std::optional<ExprP> t,
                    std::optional<ExprP> e) -> std::optional<ExprP> {
     if (then_e == Escape::Always)
