@@ -109,6 +109,29 @@ DPGEN_KERNEL void store_early(DPGEN_IN const double* a, DPGEN_OUT double* b, int
   }
 }
 
+// An order chosen at compile time: `if constexpr` returns in one
+// instantiation, and what follows it is code of the other.
+template <int Order> void face_value(double l, double r, double& f) {
+  if constexpr (Order == 1) {
+    f = l;
+    return;
+  }
+  f = 1.5 * l - 0.5 * r;
+}
+
+DPGEN_KERNEL void constexpr_early(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i + 1 == n) {
+      b[i] = a[i];
+      continue;
+    }
+    double f1, f2;
+    face_value<1>(a[i], a[i + 1], f1);
+    face_value<2>(a[i], a[i + 1], f2);
+    b[i] = f1 * f2;
+  }
+}
+
 // A lambda that returns in a branch and assigns its caller's variable after
 // it (session 23 rejected this: the assignment would have held also where the
 // lambda returned).

@@ -117,8 +117,7 @@ Escape Statements::lower(const Stmt* s) {
          fmt::format("statement '{}' is outside the kernel subset", s->getStmtClassName()));
 }
 
-// `if (c) A else B`; a branch ending in continue/return puts the negated
-// condition on the path of everything that follows.
+// (lower_stmt.hpp)
 Escape Statements::if_stmt(const IfStmt* s) {
   if (s->getInit() || s->getConditionVariable())
     L.fail(s->getBeginLoc(), "if with an initializer or a declaration is outside the subset");
@@ -142,7 +141,9 @@ Escape Statements::if_stmt(const IfStmt* s) {
 Escape Statements::sequence(const std::vector<const Stmt*>& body) {
   for (const Stmt* child : body) {
     if (L.lower_recovering(child) == Escape::Always) {
-      if (child != body.back())
+      // (after an `if constexpr` that escapes: code of other instantiations)
+      const auto* cx = dyn_cast<IfStmt>(child);
+      if (child != body.back() && !(cx && cx->isConstexpr()))
         L.fail(body.back()->getBeginLoc(), "statement after 'continue'/'return' is never "
                                            "executed");
       return Escape::Always;
