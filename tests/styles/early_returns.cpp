@@ -74,6 +74,31 @@ DPGEN_KERNEL void nested_early(DPGEN_IN const double* a, DPGEN_OUT double* b, in
   }
 }
 
+// An out-pointer passed on to a second helper (`inner(f, x)`), both
+// returning early: one local of the caller all the way down.
+static void inner_flux(double* f, double x) {
+  if (x > 0.0) {
+    *f = x;
+    return;
+  }
+  *f = -x * x;
+}
+
+static void outer_flux(double* f, double x) {
+  inner_flux(f, x);
+  if (x > 1.0)
+    return;
+  *f += 1.0;
+}
+
+DPGEN_KERNEL void forwarded_early(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    double r;
+    outer_flux(&r, 2.0 * a[i]);
+    b[i] = r;
+  }
+}
+
 // Reads after the early return are guarded by it (a[i - 1] at i = 0 never).
 static void left_product(const double* a, int i, double& r) {
   if (i == 0) {

@@ -8,8 +8,9 @@
 #include "one_to_one_cases.hpp"
 
 TEST_CASE("styles: early returns of helpers and lambdas") {
-  dpgen_test::check_cases(
-      {DPGEN_CASE(flux_early), DPGEN_CASE(slopes_early), DPGEN_CASE(nested_early),
-       DPGEN_CASE(guarded_early), DPGEN_CASE(store_early), DPGEN_CASE(constexpr_early),
-       DPGEN_CASE(lambda_sets_after), DPGEN_CASE(lambda_arm_sets), DPGEN_CASE(lambda_helper_sets)});
+  dpgen_test::check_cases({DPGEN_CASE(flux_early), DPGEN_CASE(slopes_early),
+                           DPGEN_CASE(nested_early), DPGEN_CASE(forwarded_early),
+                           DPGEN_CASE(guarded_early), DPGEN_CASE(store_early),
+                           DPGEN_CASE(constexpr_early), DPGEN_CASE(lambda_sets_after),
+                           DPGEN_CASE(lambda_arm_sets), DPGEN_CASE(lambda_helper_sets)});
 }

@@ -94,16 +94,25 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   // (the same as a reference while no two of them name one local).
   std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> outs;
   std::vector<std::optional<ExprP>> outs_bound; // each local's value when bound
+  // `inner(f, x)` in a helper whose `double* f` is an out-parameter: f passed
+  // on, bound to the same local of the caller.
+  auto forwarded = [&](const clang::Expr* arg) {
+    const auto* r = dyn_cast<DeclRefExpr>(arg->IgnoreParenImpCasts());
+    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v ? L.env_.find(v) : L.env_.end();
+    return it != L.env_.end() && it->second.kind == Binding::Value && it->second.deref_only;
+  };
   auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
     const clang::Expr* a = arg->IgnoreParenImpCasts();
-    if (pointer) {
+    const bool fwd = pointer && forwarded(arg);
+    if (pointer && !fwd) {
       const auto* u = dyn_cast<UnaryOperator>(a);
       a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
     }
     const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
     const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
     auto it = v ? L.env_.find(v) : L.env_.end();
-    if (it == L.env_.end() || it->second.kind != Binding::Value || it->second.deref_only)
+    if (it == L.env_.end() || it->second.kind != Binding::Value || (it->second.deref_only && !fwd))
       L.fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
                                            "be {}a local variable of the caller",
                                            pd->getNameAsString(), def->getNameAsString(),
@@ -137,7 +146,7 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
         L.scalar_type(pt->getPointeeType()) && [&] {
           const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
-          return u && u->getOpcode() == UO_AddrOf;
+          return (u && u->getOpcode() == UO_AddrOf) || forwarded(arg);
         }()) {
       out_param(pd, arg, true);
       continue;
