@@ -110,4 +110,32 @@ DPGEN_KERNEL void out_param_argument(DPGEN_IN const double* a, DPGEN_OUT double*
     out[i] = d;
   }
 }
+// The called lambda itself captures the local it is passed by reference
+// (a stale read of `r` through the capture: a wrong value and gradient until
+// 2026-11-30).
+DPGEN_KERNEL void self_alias(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double r = 0.0, s = 0.0;
+    auto g = [&](double* f, double x) {
+      *f = x * x;
+      s = r + x;
+    };
+    g(&r, a[i]);
+    // CHECK: lambda_rules.cpp:[[@LINE-1]]:5: error: 'r' is passed to parameter 'f' of this lambda (inlined as a copy) and captured by reference by the lambda itself
+    out[i] = s + r;
+  }
+}
+
+DPGEN_KERNEL void self_alias_cref(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double r = a[i], s = 0.0;
+    auto g = [&](const double& f, double x) {
+      r = x * x;
+      s = f + x;
+    };
+    g(r, a[i]);
+    // CHECK: lambda_rules.cpp:[[@LINE-1]]:5: error: 'r' is passed to parameter 'f' of this lambda (inlined as a copy) and captured by reference by the lambda itself
+    out[i] = s + r;
+  }
+}
 // CHECK-NOT: a lambda is called through

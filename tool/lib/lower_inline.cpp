@@ -307,19 +307,25 @@ void Inliner::merge_exits(const FrameExits& exits, size_t depth,
 
 // A local bound to an out-parameter or a `const&` parameter (a copy, and a
 // copy back) and captured by reference by a lambda passed to the same call,
-// which reads or assigns the local itself: the two would not see each other.
+// or by the called lambda itself, which reads or assigns the local itself:
+// the two would not see each other.
 void Inliner::check_aliases(
     const CallExpr* c, const FunctionDecl* def,
     const std::vector<std::pair<const VarDecl*, Binding>>& binds,
     const std::vector<std::pair<const ParmVarDecl*, const VarDecl*>>& outs) {
-  std::set<const VarDecl*> by_ref;
+  auto captured_by_ref = [](const CXXRecordDecl* closure, std::set<const VarDecl*>& out) {
+    for (const LambdaCapture& lc : closure->captures())
+      if (lc.capturesVariable() && lc.getCaptureKind() == LCK_ByRef)
+        if (const auto* cv = dyn_cast<VarDecl>(lc.getCapturedVar()))
+          out.insert(cv);
+  };
+  std::set<const VarDecl*> by_ref, by_self; // (by_self: the called lambda's own captures)
   for (const auto& [pd, b] : binds)
     if (b.kind == Binding::Lambda && b.closure && b.closure->isLambda())
-      for (const LambdaCapture& lc : b.closure->captures())
-        if (lc.capturesVariable() && lc.getCaptureKind() == LCK_ByRef)
-          if (const auto* cv = dyn_cast<VarDecl>(lc.getCapturedVar()))
-            by_ref.insert(cv);
-  if (by_ref.empty())
+      captured_by_ref(b.closure, by_ref);
+  if (const auto* m = dyn_cast<CXXMethodDecl>(def); m && m->getParent()->isLambda())
+    captured_by_ref(m->getParent(), by_self);
+  if (by_ref.empty() && by_self.empty())
     return;
   std::vector<std::pair<const ParmVarDecl*, const VarDecl*>> copies = outs;
   for (unsigned i = 0; i < def->getNumParams(); ++i) {
@@ -330,7 +336,13 @@ void Inliner::check_aliases(
     if (pd->getType()->isReferenceType() && v)
       copies.push_back({pd, v});
   }
-  for (const auto& [pd, v] : copies)
+  for (const auto& [pd, v] : copies) {
+    if (by_self.count(v))
+      L.fail(c->getBeginLoc(),
+             fmt::format("'{}' is passed to parameter '{}' of this lambda (inlined as a copy) "
+                         "and captured by reference by the lambda itself: the two would not "
+                         "see each other's changes; pass another variable",
+                         v->getNameAsString(), pd->getNameAsString()));
     if (by_ref.count(v))
       L.fail(c->getBeginLoc(),
              fmt::format("'{}' is passed to parameter '{}' of helper '{}' "
@@ -338,6 +350,7 @@ void Inliner::check_aliases(
                          "lambda passed to the same call; pass the lambda "
                          "another variable",
                          v->getNameAsString(), pd->getNameAsString(), def->getNameAsString()));
+  }
 }
 
 // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A

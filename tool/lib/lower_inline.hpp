@@ -48,7 +48,8 @@ private:
   void merge_exits(const FrameExits& exits, size_t depth,
                    const std::set<const clang::VarDecl*>& visible);
   // Refuses a local bound to an out-parameter or a `const&` parameter of
-  // call `c` that a lambda argument of the same call captured by reference.
+  // call `c` that a lambda argument of the same call, or the called lambda,
+  // captured by reference.
   void check_aliases(
       const clang::CallExpr* c, const clang::FunctionDecl* def,
       const std::vector<std::pair<const clang::VarDecl*, Binding>>& binds,
