@@ -30,7 +30,10 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     # accepted, but its run-time layout check threw for every n >= 3 (corpus 20)
     c20_strided_down_overwrite
     # its interior cells stored empty sums outside an empty array (nx = 0)
-    c20_row_start_read)
+    c20_row_start_read
+    # accepted with wrong adjoints in round r5, then refused; since 2026-12-01 accepted
+    # and right (a sum or max updated in a helper's `double&`/`double*` or a lambda)
+    r5_min_helper_ptr_accum r5_mm_helper_ref_update r5_mm_lambda_ref_capture)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after

@@ -31,3 +31,42 @@ DPGEN_KERNEL void decay(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) 
   // CHECK: accumulator_rules.cpp:[[@LINE-1]]:15: error: 's' is declared outside the loop and assigned inside it
   out[0] = s;
 }
+
+// The same rules through lambdas and helpers (tests/styles/lambda_accumulators.cpp: the sums
+// they may add): a running sum a lambda adds to and the loop reads, a helper's recurrence
+// through `double&`, and a C helper that reads the sum it adds to through `double*`; the
+// message names the caller's variable where the callee uses it.
+DPGEN_KERNEL void lambda_prefix(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  auto add = [&](double x) { s += x * x; };
+  for (int i = 0; i < n; ++i) {
+    add(a[i]);
+    out[i] = s;
+    // CHECK: accumulator_rules.cpp:[[@LINE-1]]:14: error: 's' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+  }
+}
+
+static void halve_add(double& acc, double x) { acc = 0.5 * acc + x; }
+// CHECK: accumulator_rules.cpp:[[@LINE-1]]:60: error: 's' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+
+DPGEN_KERNEL void helper_recurrence(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    halve_add(s, a[i]);
+  out[0] = s;
+  // CHECK: accumulator_rules.cpp:[[@LINE-1]]:12: error: 's' is read after the loop that assigns it
+}
+
+static void add_and_copy(double* acc, double x, double* seen) {
+  *acc += x;
+  // CHECK: accumulator_rules.cpp:[[@LINE-1]]:3: error: 's' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+  *seen = *acc;
+}
+
+DPGEN_KERNEL void pointer_read(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0, t = 0.0;
+  for (int i = 0; i < n; ++i)
+    add_and_copy(&s, a[i], &t);
+  out[0] = s + t;
+  // CHECK: accumulator_rules.cpp:[[@LINE-1]]:12: error: 's' is read after the loop that assigns it
+}

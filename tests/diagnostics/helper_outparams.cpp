@@ -46,3 +46,52 @@ DPGEN_KERNEL void k_both(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
     o[i] = both(a[i], &e);
   }
 }
+
+// A helper's own loop is run as a parallel-for (each iteration on its own): what it assigns
+// through an out-parameter there carries no value across its iterations. Until 2026-12-01
+// these were accepted and the loop's assignments through `*p` were dropped (the caller's
+// local kept its value from before the call: a wrong value and gradient).
+static void add_row(double* acc, const double* a, int j, int m) {
+  for (int i = 0; i < m; ++i)
+    *acc += a[j * m + i] * a[j * m + i];
+  // CHECK: helper_outparams.cpp:[[@LINE-1]]:10: error: 'acc' is updated in the loop of helper 'add_row', which dpgen runs as a parallel loop
+}
+DPGEN_KERNEL void k_row_total(DPGEN_IN const double* a, DPGEN_OUT double* o, int nx, int ny) {
+  double s = 0.0;
+  for (int j = 0; j < ny; ++j)
+    add_row(&s, a, j, nx);
+  o[0] = s;
+}
+
+static void add_row_once(double* acc, const double* a, int m) {
+  for (int i = 0; i < m; ++i)
+    *acc += a[i] * a[i];
+  // CHECK: helper_outparams.cpp:[[@LINE-1]]:5: error: 'acc' is assigned in the loop of helper 'add_row_once', which dpgen runs as a parallel loop
+}
+DPGEN_KERNEL void k_once(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
+  double r = 0.0;
+  add_row_once(&r, a, n);
+  o[0] = r;
+}
+
+static void last_square(double* out, const double* a, int m) {
+  for (int i = 0; i < m; ++i)
+    *out = a[i] * a[i];
+}
+DPGEN_KERNEL void k_last(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
+  double s = 5.0;
+  last_square(&s, a, n);
+  o[0] = s;
+  // CHECK: helper_outparams.cpp:[[@LINE-1]]:10: error: 'out' is read after the loop that assigns it
+}
+
+static void grow(double* v, int m) {
+  for (int i = 0; i < m; ++i)
+    *v *= 1.5;
+  // CHECK: helper_outparams.cpp:[[@LINE-1]]:5: error: 'v' is assigned in the loop of helper 'grow', which dpgen runs as a parallel loop
+}
+DPGEN_KERNEL void k_grow(DPGEN_IN const double* a, DPGEN_OUT double* o, int n) {
+  double s = a[0];
+  grow(&s, n);
+  o[0] = s;
+}

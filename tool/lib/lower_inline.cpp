@@ -96,10 +96,14 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   std::vector<std::optional<ExprP>> outs_bound; // each local's value when bound
   // `inner(f, x)` in a helper whose `double* f` is an out-parameter: f passed
   // on, bound to the same local of the caller.
-  auto forwarded = [&](const clang::Expr* arg) {
-    const auto* r = dyn_cast<DeclRefExpr>(arg->IgnoreParenImpCasts());
+  // The binding of the local that `e` names (env_'s end if none).
+  auto local_of = [&](const clang::Expr* e) {
+    const auto* r = e ? dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts()) : nullptr;
     const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = v ? L.env_.find(v) : L.env_.end();
+    return v ? L.env_.find(v) : L.env_.end();
+  };
+  auto forwarded = [&](const clang::Expr* arg) {
+    auto it = local_of(arg);
     return it != L.env_.end() && it->second.kind == Binding::Value && it->second.deref_only;
   };
   auto out_param = [&](const ParmVarDecl* pd, const clang::Expr* arg, bool pointer) {
@@ -109,9 +113,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
       const auto* u = dyn_cast<UnaryOperator>(a);
       a = u && u->getOpcode() == UO_AddrOf ? u->getSubExpr()->IgnoreParenImpCasts() : nullptr;
     }
-    const auto* r = a ? dyn_cast<DeclRefExpr>(a) : nullptr;
-    const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
-    auto it = v ? L.env_.find(v) : L.env_.end();
+    auto it = local_of(a);
+    const VarDecl* v = it != L.env_.end() ? it->first : nullptr;
     if (it == L.env_.end() || it->second.kind != Binding::Value || (it->second.deref_only && !fwd))
       L.fail(arg->getBeginLoc(), fmt::format("argument for out-parameter '{}' of helper '{}' must "
                                            "be {}a local variable of the caller",
@@ -131,6 +134,12 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     b.deref_only = pointer;
     binds.push_back({pd, b});
     outs.push_back({pd, v});
+    L.red_.bind_param(pd, v); // (an accumulator's updates through the parameter)
+    // why `v` has no value here (a sum of the loop), said of the parameter too
+    if (auto why = L.why_unset_.find(v); why != L.why_unset_.end())
+      L.why_unset_[pd] = why->second;
+    else
+      L.why_unset_.erase(pd);
     outs_bound.push_back(it->second.value);
   };
   for (unsigned i = 0; i < def->getNumParams(); ++i) {
@@ -212,6 +221,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   try {
     e = L.stmts_.lower(def->getBody());
   } catch (const Rejected&) {
+    for (const auto& [pd, v] : outs)
+      L.red_.unbind_param(pd);
     L.path_.resize(L.frames_.back().path_depth);
     L.frames_.pop_back();
     if (functor_fields)
@@ -220,6 +231,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   }
   if (functor_fields)
     L.fields_ = outer_fields;
+  for (const auto& [pd, v] : outs)
+    L.red_.unbind_param(pd);
   Lowerer::InlineFrame fr = L.frames_.back();
   L.frames_.pop_back();
   L.path_.resize(fr.path_depth);
@@ -239,6 +252,8 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
       if (L.env_[v].value != L.env_[pd].value) // (the caller may be a frame too)
         L.stores_.check_caller_write(v, c->getBeginLoc());
       L.env_[v].value = L.env_[pd].value;
+      if (auto why = L.why_unset_.find(pd); !L.env_[v].value && why != L.why_unset_.end())
+        L.why_unset_[v] = why->second; // (left without a value by the helper: why)
     }
     return nullptr;
   }

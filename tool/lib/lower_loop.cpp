@@ -262,6 +262,15 @@ void ForLoops::for_loop(const ForStmt* f) {
       L.why_unset_[v] = *why;
       continue;
     }
+    if (!L.in_loop_body_frame()) { // a void helper's own loop: a parallel-for (library_loops_)
+      L.why_unset_[v] = fmt::format(
+          "'{}' is assigned in the loop of helper '{}', which dpgen runs as a parallel loop "
+          "(each iteration on its own, as a library's parallel-for): a value carried from one "
+          "iteration to the next, a sum included, is outside the kernel subset there; write "
+          "the loop in the kernel or in a lambda, and call the helper inside it",
+          v->getNameAsString(), L.frames_.back().fn->getNameAsString());
+      continue;
+    }
     L.why_unset_[v] = fmt::format(
         "'{}' is declared outside the loop and assigned inside it, and read here before it is "
         "assigned in this iteration: a value carried from one iteration to the next (a "
@@ -368,6 +377,8 @@ void ForLoops::assigned_vars(const Stmt* s, std::set<const VarDecl*>& out) {
     e = e->IgnoreParenImpCasts();
     if (const auto* sub = dyn_cast<ArraySubscriptExpr>(e)) // an element of a local array
       e = sub->getBase()->IgnoreParenImpCasts();
+    else if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref)
+      e = u->getSubExpr()->IgnoreParenImpCasts(); // `*p`: a helper's out-pointer's local
     else if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e); // of a std::array: t[k]
              oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2)
       e = oc->getArg(0)->IgnoreParenImpCasts();

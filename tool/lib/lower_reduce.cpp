@@ -64,8 +64,9 @@ bool Reductions::if_update(const IfStmt* s) {
     L.path_.resize(depth);
   };
   const auto* v = term && !target.element ? dyn_cast<VarDecl>(target.decl) : nullptr;
-  if (auto acc = v ? accumulators_.find(v) : accumulators_.end();
+  if (auto acc = v ? accumulators_.find(bound(v)) : accumulators_.end();
       acc != accumulators_.end() && acc->second.extremum == kind) {
+    check_serial(v, s->getBeginLoc());
     update(acc->second, *L.scalar_type(v->getType().getNonReferenceType()));
     return true;
   }
@@ -93,9 +94,10 @@ bool Reductions::element_update(const clang::Expr* lhs, BinaryOperatorKind op,
 
 bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs,
                               BinaryOperatorKind op, const clang::Expr* rhs, SourceLocation loc) {
-  auto acc = accumulators_.find(var);
+  auto acc = accumulators_.find(bound(var));
   if (acc == accumulators_.end())
     return false;
+  check_serial(var, loc);
   if (acc->second.extremum) {
     // m = std::max(m, e), fmin(e, m), m > e ? m : e, ...: the scan's update.
     int kind = 0;
@@ -120,6 +122,19 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
   L.stores_.add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t),
                       true, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
   return true;
+}
+
+// An update of a reduction of the caller's loop inside a void helper's own loop, which
+// dpgen runs as a parallel-for: refused, naming the helper (not the hidden array).
+void Reductions::check_serial(const VarDecl* var, SourceLocation loc) {
+  if (L.in_loop_body_frame() || L.loops_.size() <= L.frames_.back().loop_depth)
+    return;
+  L.fail(loc, fmt::format("'{}' is updated in the loop of helper '{}', which dpgen runs as a "
+                          "parallel loop (each iteration on its own, as a library's "
+                          "parallel-for): a sum or min/max over its iterations is outside the "
+                          "kernel subset there; write the loop in the kernel or in a lambda, "
+                          "and call the helper inside it",
+                          var->getNameAsString(), L.frames_.back().fn->getNameAsString()));
 }
 
 // A read of hidden work array `array` at `idx` by a later nest.
@@ -203,8 +218,10 @@ void Reductions::finish_extremum(const Accumulator& a, SourceLocation loc) {
 // nothing done) where it cannot be one.
 bool Reductions::start_accumulator(const VarDecl* v, SourceLocation loc, int extremum) {
   auto it = L.env_.find(v);
+  // (a reference or a pointer: only a helper's out-parameter, bound to a local for the call)
+  const bool alias = v->getType()->isReferenceType() || v->getType()->isPointerType();
   if (it == L.env_.end() || it->second.kind != Binding::Value || !it->second.value ||
-      !is_real((*it->second.value)->type) || v->getType()->isReferenceType())
+      !is_real((*it->second.value)->type) || (alias && !params_.count(v)))
     return false;
   auto a = make_accumulator(v->getNameAsString(), v->getNameAsString(), *it->second.value,
                             extremum, loc, nullptr);

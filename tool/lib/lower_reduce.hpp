@@ -88,6 +88,11 @@ public:
   bool local_update(const clang::VarDecl* var, Type t, const clang::Expr* lhs,
                     clang::BinaryOperatorKind op, const clang::Expr* rhs,
                     clang::SourceLocation loc);
+  // A helper's out-parameter (`double& acc`, `double* acc`) bound to local `v` for one call
+  // (lower_inline.cpp): where `v` reduces, the helper's updates of `acc` are v's
+  // (ReductionForms::is_accumulator found that they are all it does with `acc`).
+  void bind_param(const clang::VarDecl* param, const clang::VarDecl* v) { params_[param] = v; }
+  void unbind_param(const clang::VarDecl* param) { params_.erase(param); }
 
 private:
   Lowerer& L;
@@ -108,7 +113,15 @@ private:
     std::vector<ExtremumUpdate> updates;
   };
   std::map<const clang::VarDecl*, Accumulator> accumulators_;
-
+  std::map<const clang::VarDecl*, const clang::VarDecl*> params_; // (bind_param)
+  // The local whose reduction `v` updates: `v`, or what the parameter is bound to, down the
+  // calls, up to the first that reduces (a helper's own loop may sum into its parameter).
+  const clang::VarDecl* bound(const clang::VarDecl* v) const {
+    for (auto it = params_.find(v); !accumulators_.count(v) && it != params_.end();
+         it = params_.find(v))
+      v = it->second;
+    return v;
+  }
 
   // Min/max reductions into output elements of the loop being lowered
   // (`*err = fmax(*err, ...)`): the element's store before the loop becomes
@@ -131,6 +144,8 @@ private:
                        clang::SourceLocation loc);
   // After the reducing loop: the ties and the result (the comment above).
   void finish_extremum(const Accumulator& a, clang::SourceLocation loc);
+  // Fails where `var`'s update sits in a void helper's own loop (a parallel-for).
+  void check_serial(const clang::VarDecl* var, clang::SourceLocation loc);
   // A read of hidden work array `array` at `idx` by a later nest.
   ExprP hidden_read(const std::string& array, const ExprP& idx, clang::SourceLocation loc);
 

@@ -58,21 +58,20 @@ Escape Statements::lower(const Stmt* s) {
         L.fail(s->getBeginLoc(), "'return' in a small constant loop that dpgen unrolls (it "
                                  "reads or writes a local array, or sums into a variable); use "
                                  "an if/else");
+      ExprP v;
       if (!L.frames_.back().is_void) {
         if (!r->getRetValue())
           L.fail(s->getBeginLoc(), "a helper called from a kernel must return a value");
         // The value first: it may inline further helpers, which grows frames_.
-        ExprP v = L.exprs_.expr(r->getRetValue());
-        Lowerer::InlineFrame& fr = L.frames_.back();
-        fr.returns.push_back(
-            {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()),
-             cast(v, fr.ret)});
+        v = L.exprs_.expr(r->getRetValue());
       }
-      // A way out inside a branch: the bindings it leaves (Inliner::merge_exits).
       Lowerer::InlineFrame& fr = L.frames_.back();
-      if (L.path_.size() > fr.path_depth)
-        fr.exits.push_back(
-            {std::vector<PathCond>(L.path_.begin() + long(fr.path_depth), L.path_.end()), L.env_});
+      std::vector<PathCond> here(L.path_.begin() + long(fr.path_depth), L.path_.end());
+      if (v)
+        fr.returns.push_back({here, cast(v, fr.ret)});
+      // A way out inside a branch: the bindings it leaves (Inliner::merge_exits).
+      if (!here.empty())
+        fr.exits.push_back({std::move(here), L.env_});
       return Escape::Always;
     }
     if (!L.loops_.empty() || L.unrolling_ > 0)

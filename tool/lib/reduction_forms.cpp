@@ -37,22 +37,134 @@ bool ReductionForms::mentions(const Stmt* s, const ValueDecl* v) {
   return false;
 }
 
-// Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
-// `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
-bool ReductionForms::is_accumulator(const Stmt* body, const VarDecl* v) {
+// The body of the lambda that `s` writes (a lambda expression) or names (a variable of its
+// closure type, as at each call), where the lambda captures `v` by reference (its mentions of
+// `v` are the caller's) or captures other lambdas and not `v`. Null for anything else (a
+// capture by copy names the lambda's copy).
+static const Stmt* lambda_body_of(const Stmt* s, const ValueDecl* v) {
+  const CXXRecordDecl* closure = nullptr;
+  if (const auto* le = dyn_cast<LambdaExpr>(s))
+    closure = le->getLambdaClass();
+  else if (const auto* r = dyn_cast<DeclRefExpr>(s))
+    closure = r->getType().getNonReferenceType()->getAsCXXRecordDecl();
+  if (!closure || !closure->isLambda())
+    return nullptr;
+  // by reference, or not at all but a lambda that may (`[&] { add(x); add(y); }`)
+  bool by_ref = false, by_copy = false, lambdas = false;
+  for (const LambdaCapture& lc : closure->captures()) {
+    if (!lc.capturesVariable())
+      continue;
+    const ValueDecl* cv = lc.getCapturedVar();
+    by_ref = by_ref || (cv == v && lc.getCaptureKind() == LCK_ByRef);
+    by_copy = by_copy || (cv == v && lc.getCaptureKind() != LCK_ByRef);
+    const auto* rd = cv->getType().getNonReferenceType()->getAsCXXRecordDecl();
+    lambdas = lambdas || (rd && rd->isLambda());
+  }
+  const CXXMethodDecl* call = closure->getLambdaCallOperator();
+  return call && (by_ref || (lambdas && !by_copy)) ? call->getBody() : nullptr;
+}
+
+// Visits the lambda bodies `s` leads to (lambda_body_of) with `visit`, once per path (a
+// lambda calling a lambda is followed; `open` keeps a body from being entered inside
+// itself). True where `s` is a lambda expression or names a closure: the caller visits
+// nothing more of it (a lambda's capture list is no use of `v`).
+static bool visit_lambda(const Stmt* s, const ValueDecl* v, std::set<const Stmt*>& open,
+                         const std::function<void(const Stmt*)>& visit) {
+  const bool closure =
+      isa<LambdaExpr>(s) || (isa<DeclRefExpr>(s) && lambda_body_of(s, v) != nullptr);
+  if (const Stmt* body = lambda_body_of(s, v); body && open.insert(body).second) {
+    visit(body);
+    open.erase(body);
+  }
+  return closure;
+}
+
+// The parameter through which call `c` lets its callee update `v`: a non-const reference
+// bound to `v` (`add(s, x)` for `double& acc`), or a pointer given `&v` (`add(&s, x)` for
+// `double* acc`; `pointer` set), or a pointer `v` passed on (`v` itself a pointer; `pointer`
+// set). Null where `c` passes `v` no such way or its callee has no body here. `arg`: the
+// argument.
+static const ParmVarDecl* updated_param(const CallExpr* c, const ValueDecl* v,
+                                        const clang::Expr*& arg, bool& pointer) {
+  const FunctionDecl* f = c->getDirectCallee();
+  if (!f || !f->hasBody(f)) // (the definition: its parameters are the ones its body names)
+    return nullptr;
+  // (a lambda's or functor's call, `add(s, x)`: argument 0 is the object)
+  const unsigned shift = isa<CXXOperatorCallExpr>(c) && isa<CXXMethodDecl>(f) ? 1 : 0;
+  for (unsigned i = shift; i < c->getNumArgs() && i - shift < f->getNumParams(); ++i) {
+    const clang::Expr* a = c->getArg(i)->IgnoreParenImpCasts();
+    bool by_address = false;
+    if (const auto* u = dyn_cast<UnaryOperator>(a); u && u->getOpcode() == UO_AddrOf) {
+      a = u->getSubExpr()->IgnoreParenImpCasts();
+      by_address = true;
+    }
+    const auto* r = dyn_cast<DeclRefExpr>(a);
+    if (!r || r->getDecl() != v)
+      continue;
+    const ParmVarDecl* p = f->getParamDecl(i - shift);
+    const QualType pt = p->getType();
+    const bool passed_on = !by_address && v->getType()->isPointerType();
+    pointer = by_address || passed_on;
+    const bool writable =
+        pointer ? pt->isPointerType() && !pt->getPointeeType().isConstQualified()
+                : pt->isReferenceType() && !pt.getNonReferenceType().isConstQualified();
+    if (writable) {
+      arg = c->getArg(i);
+      return p;
+    }
+  }
+  return nullptr;
+}
+
+// `e` names `v` (`deref`: is `*v`).
+static bool names(const clang::Expr* e, const ValueDecl* v, bool deref) {
+  e = e->IgnoreParenImpCasts();
+  if (deref) {
+    const auto* u = dyn_cast<UnaryOperator>(e);
+    if (!u || u->getOpcode() != UO_Deref)
+      return false;
+    e = u->getSubExpr()->IgnoreParenImpCasts();
+  }
+  const auto* r = dyn_cast<DeclRefExpr>(e);
+  return r && r->getDecl() == v;
+}
+
+// is_accumulator for `v`, or with `deref` for `*v` (a helper's pointer parameter: its
+// updates are `*v += e` and `*v -= e`). `open`: the bodies being visited.
+static bool accumulates(const Stmt* body, const VarDecl* v, bool deref,
+                        std::set<const Stmt*>& open) {
   int updates = 0;
   bool other = false;
   std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
     if (!s || other)
       return;
+    if (visit_lambda(s, v, open, visit))
+      return;
+    if (const auto* c = dyn_cast<CallExpr>(s)) {
+      const clang::Expr* arg = nullptr;
+      bool pointer = false;
+      if (const ParmVarDecl* p = updated_param(c, v, arg, pointer)) {
+        const Stmt* callee = c->getDirectCallee()->getBody();
+        const bool inside = open.insert(callee).second && accumulates(callee, p, pointer, open);
+        open.erase(callee);
+        if (!inside) {
+          other = true;
+          return;
+        }
+        ++updates; // (each of the callee's updates is one of `v`)
+        for (const Stmt* ch : c->children())
+          if (ch != arg)
+            visit(ch);
+        return;
+      }
+    }
     if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
-      const auto* r = dyn_cast<DeclRefExpr>(b->getLHS()->IgnoreParenImpCasts());
-      if (r && r->getDecl() == v) {
+      if (names(b->getLHS(), v, deref)) {
         bool negate = false;
         bool ok = b->getOpcode() == BO_AddAssign || b->getOpcode() == BO_SubAssign
-                      ? !mentions(b->getRHS(), v)
-                      : b->getOpcode() == BO_Assign &&
-                            accumulated_term(b->getRHS(), v, negate) != nullptr;
+                      ? !ReductionForms::mentions(b->getRHS(), v)
+                      : !deref && b->getOpcode() == BO_Assign &&
+                            ReductionForms::accumulated_term(b->getRHS(), v, negate) != nullptr;
         if (!ok)
           other = true;
         ++updates;
@@ -68,6 +180,17 @@ bool ReductionForms::is_accumulator(const Stmt* body, const VarDecl* v) {
   };
   visit(body);
   return updates > 0 && !other;
+}
+
+// Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
+// `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+// Lambdas that capture `v` by reference count as part of `body` where it
+// names them (`auto add = [&](double x) { s += x * x; };` ... `add(a[i]);`),
+// and so do helpers given `v` to add to (`add(s, x)` for `double& acc`,
+// `add(&s, x)` for `double* acc`), where they only add to it.
+bool ReductionForms::is_accumulator(const Stmt* body, const VarDecl* v) {
+  std::set<const Stmt*> open; // (a pointer: a helper's out-parameter, summed into as `*v`)
+  return accumulates(body, v, v->getType()->isPointerType(), open);
 }
 
 bool ReductionForms::same_expr(const clang::Expr* a, const clang::Expr* b) const {
@@ -277,12 +400,41 @@ bool ReductionForms::apart(const clang::Expr* a, const clang::Expr* b) const {
 }
 
 int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t) const {
+  std::set<const Stmt*> open;
+  return extremum_kind(body, t, open);
+}
+
+int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t,
+                                  std::set<const Stmt*>& open) const {
   int kind = 0, updates = 0;
   bool other = false;
   std::function<void(const Stmt*)> visit = [&](const Stmt* s) {
     if (!s || other)
       return;
+    // (a local's updates inside lambdas and helpers, as is_accumulator; a helper's
+    // `double& m` only: a pointer's `*m = std::max(*m, e)` is no form here)
+    if (!t.element && visit_lambda(s, t.decl, open, visit))
+      return;
     int k = 0;
+    if (const auto* c = dyn_cast<CallExpr>(s); c && !t.element) {
+      const clang::Expr* arg = nullptr;
+      bool pointer = false;
+      if (const ParmVarDecl* p = updated_param(c, t.decl, arg, pointer)) {
+        const Stmt* callee = c->getDirectCallee()->getBody();
+        k = !pointer && open.insert(callee).second ? extremum_kind(callee, {p, nullptr}, open) : 0;
+        open.erase(callee);
+        if (k == 0 || (kind != 0 && k != kind)) {
+          other = true;
+          return;
+        }
+        kind = k;
+        ++updates;
+        for (const Stmt* ch : c->children())
+          if (ch != arg)
+            visit(ch);
+        return;
+      }
+    }
     if (const auto* i = dyn_cast<IfStmt>(s)) {
       ReductionTarget u;
       const clang::Expr* rest = nullptr;

@@ -9,6 +9,7 @@
 #include <clang/AST/Type.h>
 
 #include <optional>
+#include <set>
 #include <utility>
 
 namespace clang {
@@ -67,6 +68,9 @@ public:
   // +1 or -1 if every mention of `t.decl` in `body` is in a min/max update of
   // `t` of one kind, and there is at least one; 0 otherwise.
   int extremum_kind(const clang::Stmt* body, const ReductionTarget& t) const;
+  // (`open`: the lambda and helper bodies being visited)
+  int extremum_kind(const clang::Stmt* body, const ReductionTarget& t,
+                    std::set<const clang::Stmt*>& open) const;
 
 private:
   // `*p` (element 0) or `p[c]` of a parameter p at an integer constant c.
