@@ -19,6 +19,8 @@ namespace {
 using dpgen_test::wavy;
 
 // One input of `n` values, `m` outputs; `expect(a)` the outputs as a plain loop computes them.
+// (DPGEN_ACC_CASE(k): the name and the three functions of a kernel `k(a, out, n)`.)
+#define DPGEN_ACC_CASE(k) #k, k, k##_adjoint, k##_tangent
 struct Case {
   const char* name;
   std::function<void(const double*, double*, int)> kernel;
@@ -50,9 +52,7 @@ void check(const Case& c, int n) {
 
 TEST_CASE("styles: accumulators updated inside lambdas") {
   const std::vector<Case> cases = {
-      {"energy_lambda", [](auto a, auto e, int n) { energy_lambda(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { energy_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { energy_lambda_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(energy_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (double x : a)
@@ -76,9 +76,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return o;
        },
        0},
-      {"max_lambda", [](auto a, auto m, int n) { max_lambda(a, m, n); },
-       [](auto a, auto aa, auto s, int n) { max_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto m, auto md, int n) { max_lambda_tangent(a, d, m, md, n); },
+      {DPGEN_ACC_CASE(max_lambda),
        [](const std::vector<double>& a) {
          double m = -1e300;
          for (double x : a)
@@ -86,9 +84,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{m};
        },
        1},
-      {"moments_lambda", [](auto a, auto m, int n) { moments_lambda(a, m, n); },
-       [](auto a, auto aa, auto s, int n) { moments_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto m, auto md, int n) { moments_lambda_tangent(a, d, m, md, n); },
+      {DPGEN_ACC_CASE(moments_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0, q = 0.0;
          for (double x : a)
@@ -99,9 +95,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s, q};
        },
        2},
-      {"positive_lambda", [](auto a, auto e, int n) { positive_lambda(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { positive_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { positive_lambda_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(positive_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (double x : a)
@@ -110,9 +104,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"inline_lambda", [](auto a, auto e, int n) { inline_lambda(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { inline_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { inline_lambda_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(inline_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (double x : a)
@@ -120,9 +112,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"nested_lambda", [](auto a, auto e, int n) { nested_lambda(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { nested_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { nested_lambda_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(nested_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0;
          const size_t n = a.size();
@@ -133,9 +123,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"energy_helper", [](auto a, auto e, int n) { energy_helper(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { energy_helper_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { energy_helper_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(energy_helper),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (double x : a)
@@ -143,9 +131,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"energy_c89", [](auto a, auto e, int n) { energy_c89(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { energy_c89_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { energy_c89_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(energy_c89),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (size_t i = 1; i < a.size(); ++i) {
@@ -155,9 +141,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"energy_template", [](auto a, auto e, int n) { energy_template(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { energy_template_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { energy_template_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(energy_template),
        [](const std::vector<double>& a) {
          double s = 2.0;
          for (double x : a)
@@ -165,9 +149,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"ref_param_lambda", [](auto a, auto e, int n) { ref_param_lambda(a, e, n); },
-       [](auto a, auto aa, auto s, int n) { ref_param_lambda_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto e, auto ed, int n) { ref_param_lambda_tangent(a, d, e, ed, n); },
+      {DPGEN_ACC_CASE(ref_param_lambda),
        [](const std::vector<double>& a) {
          double s = 0.0;
          for (double x : a)
@@ -175,9 +157,7 @@ TEST_CASE("styles: accumulators updated inside lambdas") {
          return std::vector<double>{s};
        },
        1},
-      {"range_helpers", [](auto a, auto r, int n) { range_helpers(a, r, n); },
-       [](auto a, auto aa, auto s, int n) { range_helpers_adjoint(a, aa, s, n); },
-       [](auto a, auto d, auto r, auto rd, int n) { range_helpers_tangent(a, d, r, rd, n); },
+      {DPGEN_ACC_CASE(range_helpers),
        [](const std::vector<double>& a) {
          double hi = -1e300, lo = 1e300;
          for (double x : a) {
