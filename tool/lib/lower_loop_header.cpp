@@ -34,6 +34,30 @@ const VarDecl* LoopHeaders::stepped_local(const clang::Expr* e) const {
   return v;
 }
 
+namespace {
+
+// Loop bound `e` with each integer local of a loop body (`const int m = nx;` in an outer
+// loop's body, a helper's `int n` parameter bound to `nx` where the helper is called in a
+// loop) replaced by its definition, where that mentions no counter and reads no array: the
+// same value (to_poly already sees through such a local), but one that generated code can
+// evaluate before the nest (a parallel loop's size test, the tangent's and the parallel
+// forward's headers), where the local is not defined.
+ExprP invariant_bound(const ExprP& e) {
+  if (e->op == Op::Local && !e->local->kernel_level && !e->local->opaque && e->type == Type::Int) {
+    ExprP def = invariant_bound(e->local->def);
+    return any_node(def,
+                    [](const ExprP& x) {
+                      return x->op == Op::LoopVar || x->op == Op::Read ||
+                             (x->op == Op::Local && !x->local->kernel_level);
+                    })
+               ? e
+               : def;
+  }
+  return map_operands(e, invariant_bound);
+}
+
+} // namespace
+
 // Whether `s` names variable `v`.
 bool LoopHeaders::mentions(const Stmt* s, const VarDecl* v) {
   return ReductionForms::mentions(s, v);
@@ -155,6 +179,8 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "'{} < hi'",
                        var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
+  init_value = invariant_bound(init_value);
+  bound = invariant_bound(bound);
   // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down);
   // with companions, one of these for each counter (`++i, --j`)
   std::vector<ForHeader::Companion> companions;
