@@ -33,7 +33,10 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     c20_row_start_read
     # accepted with wrong adjoints in round r5, then refused; since 2026-12-01 accepted
     # and right (a sum or max updated in a helper's `double&`/`double*` or a lambda)
-    r5_min_helper_ptr_accum r5_mm_helper_ref_update r5_mm_lambda_ref_capture)
+    r5_min_helper_ptr_accum r5_mm_helper_ref_update r5_mm_lambda_ref_capture
+    # refused until pointer locals and pointer arguments were in the subset (2026-12-01):
+    # `put(&o[i + 1], x)`, `lap(u + 1, i - 1)` in a helper, `const double* ap = a + 1;`
+    r3_helper_ptr_elem helper_ptr_offset ptr_arith)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after

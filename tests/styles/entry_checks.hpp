@@ -43,6 +43,17 @@ inline void check_large(const Entry& e) {
   omp_set_num_threads(saved);
 }
 
+// Calls `check(nx, ny, nz, large)` for 3D grids of 1 to 10,240 cells: small ones (large
+// false: check them with check_small) and one of 32 x 16 x 20 (large: check_large).
+template <typename Check> void for_3d_grids(Check&& check) {
+  const int dims[][3] = {{1, 1, 1}, {3, 2, 2}, {2, 4, 3}, {32, 16, 20}};
+  for (const auto& d : dims) {
+    CAPTURE(d[0]);
+    CAPTURE(d[2]);
+    check(d[0], d[1], d[2], d[0] == 32);
+  }
+}
+
 } // namespace dpgen_test
 
 // The Entry of kernel `k(a, b, args...)`: `in` input and `out` output values, the other

@@ -98,3 +98,15 @@ DPGEN_KERNEL void planes_3d(DPGEN_IN const double* a, DPGEN_OUT double* b, int n
     }
   }
 }
+
+// The row width read once from the data (a count stored beside the grid, clamped to the
+// grid), named again in the row loop: the bound is the kernel-level local.
+DPGEN_KERNEL void width_from_data(DPGEN_IN const double* a, DPGEN_OUT double* b, const int* width,
+                                  int nx, int ny) {
+  const int w = width[0] < nx ? width[0] : nx;
+  for (int j = 0; j < ny; ++j) {
+    const int m = w;
+    for (int i = 0; i < m; ++i)
+      b[j * nx + i] = a[j * nx + i] * std::cos(a[j * nx + i]);
+  }
+}

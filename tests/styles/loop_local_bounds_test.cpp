@@ -61,12 +61,22 @@ TEST_CASE("styles: nested ParallelFor, 3D planes") {
     const size_t cells = size_t(n) * size_t(n);
     (n < 96 ? check_small : check_large)(DPGEN_TEST_ENTRY(pfor_nested, cells, cells, n));
   }
-  const int dims[][3] = {{1, 1, 1}, {3, 2, 2}, {2, 4, 3}, {32, 16, 20}};
-  for (const auto& d : dims) {
-    const int nx = d[0], ny = d[1], nz = d[2];
-    CAPTURE(nx);
-    CAPTURE(nz);
+  dpgen_test::for_3d_grids([](int nx, int ny, int nz, bool large) {
     const size_t cells = size_t(nx) * size_t(ny) * size_t(nz);
-    (nx < 32 ? check_small : check_large)(DPGEN_TEST_ENTRY(planes_3d, cells, cells, nx, ny, nz));
+    (large ? check_large : check_small)(DPGEN_TEST_ENTRY(planes_3d, cells, cells, nx, ny, nz));
+  });
+}
+
+TEST_CASE("styles: a bound read from the data, named in the row loop") {
+  for (int w : {0, 2, 9}) {
+    CAPTURE(w);
+    const int width[1] = {w};
+    for (int nx : {1, 4}) {
+      const int ny = 3;
+      const size_t cells = size_t(nx) * size_t(ny);
+      check_small(DPGEN_TEST_ENTRY(width_from_data, cells, cells, width, nx, ny));
+    }
+    const int nx = 128, ny = 80;
+    check_large(DPGEN_TEST_ENTRY(width_from_data, size_t(nx * ny), size_t(nx * ny), width, nx, ny));
   }
 }

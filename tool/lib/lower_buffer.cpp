@@ -554,6 +554,12 @@ bool LineBuffers::declare_array_pointer(const VarDecl* v) {
   auto it = pv ? L.env_.find(pv) : L.env_.end();
   const Param* p = it != L.env_.end() && it->second.kind == Binding::ArrayParam ? it->second.param
                                                                                : nullptr;
+  if (p && it->second.offset) // (rows from a pointer local: its offset is not a whole row)
+    L.fail(v->getLocation(),
+           fmt::format("pointer '{}' to arrays is made from pointer '{}'; make it from the array "
+                       "parameter '{}' itself",
+                       name, pv->getNameAsString(), p->name),
+           "dpgen-pointer");
   if (!p || p->row_pointers || p->view || !p->container.empty() || p->scalar_ref ||
       !p->rows.empty() || buffer_of(p->name) || p->global)
     L.fail(v->getLocation(), fmt::format("pointer '{}' to arrays must be initialised with a cast "

@@ -37,6 +37,9 @@ struct Binding {
   std::vector<std::optional<ExprP>> elems; // LocalArray: each element's value (none: unset)
   Type elem = Type::Double; // LocalArray: element type
   const Param* param = nullptr;
+  // ArrayParam: the element of `param` a pointer local points at (`const double* row = a +
+  // j * nx;`: j * nx, lower_pointer.hpp); none for the parameter itself.
+  std::optional<ExprP> offset;
   bool kernel_level = false; // Value defined outside every loop
   // Value: a helper's pointer parameter bound to a caller's local (`&f`),
   // used only as `*p`; the binding holds the local's value.

@@ -43,6 +43,8 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
     return Access{p, int_const(0)};
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->getOpcode() == UO_Deref) {
     const clang::Expr* base = u->getSubExpr()->IgnoreParenImpCasts();
+    if (auto moved = L.ptrs_.pointer_into(base); moved && moved->offset) // *row, *(row + 1)
+      return Access{moved->param, *moved->offset};                       // (lower_pointer.hpp)
     if (isa<DeclRefExpr>(base)) {
       const Param* p = array_base(base);
       if (p->row_pointers)
@@ -148,7 +150,11 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
     // (the flat index of a[j][i] is computed by the compiler in 64 bits)
     return Access{inner->param, flat};
   }
-  const Param* p = array_base(base);
+  ExprP offset;
+  const Param* p = array_base(base, &offset);
+  if (offset) // row[i] of a pointer local: the parameter's element offset + i
+    return Access{
+        p, offset->op == Op::IntConst && offset->ival == 0 ? idx : binary(Op::Add, offset, idx)};
   if (p->row_pointers)
     L.fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
                                            "value; index its elements as {}[j][i]",
@@ -159,15 +165,21 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   return Access{p, idx};
 }
 
-const Param* Expressions::array_base(const clang::Expr* base) {
+const Param* Expressions::array_base(const clang::Expr* base, ExprP* offset) {
+  // (`offset`: where given, a pointer local's element offset; lower_pointer.hpp)
+  const auto param_of = [&](const Binding& b) { return L.ptrs_.param_of(b, base, offset); };
   if (isa<MemberExpr>(base->IgnoreParenImpCasts())) // `u_[i]` of a member kernel's array
     if (const Binding* b = L.bound(base); b && b->kind == Binding::ArrayParam)
-      return b->param;
+      return param_of(*b);
   const auto* ref = dyn_cast<DeclRefExpr>(base);
   if (!ref) {
     if (isa<BinaryOperator>(base) || isa<UnaryOperator>(base))
-      L.fail(base->getBeginLoc(), "pointer arithmetic is outside the kernel subset; index the "
-                                  "parameter directly: a[i + 1]");
+      L.fail(base->getBeginLoc(), isa<UnaryOperator>(base) // (`(*a)[j]`, `(&x)[0]`)
+                                      ? "pointer arithmetic is outside the kernel subset; index "
+                                        "the parameter directly: a[i + 1]"
+                                      : "pointer arithmetic is outside the kernel subset; index "
+                                        "the array (a[i + 1]) or a pointer named first (p = a + "
+                                        "1; p[i])");
     L.fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
   }
   if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && L.poisoned_.count(v))
@@ -179,7 +191,7 @@ const Param* Expressions::array_base(const clang::Expr* base) {
              fmt::format("'{}' is global state, outside the kernel subset", v->getNameAsString()));
     L.fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
   }
-  return it->second.param;
+  return param_of(it->second);
 }
 
 ExprP Expressions::expr(const clang::Expr* e) {
@@ -445,9 +457,10 @@ ExprP Expressions::decl_ref(const DeclRefExpr* r) {
   case Binding::ScalarParam:
     return L.scalar_param(b.param->name, b.param->elem);
   case Binding::ArrayParam:
-    L.fail(r->getLocation(), fmt::format("array '{}' used as a value; only its elements can be "
+    L.fail(r->getLocation(), fmt::format("{} '{}' used as a value; only its elements can be "
                                          "read",
-                                         b.param->name));
+                                         b.offset ? "pointer" : "array",
+                                         b.offset ? v->getNameAsString() : b.param->name));
   case Binding::LoopVar:
     return *b.value;
   case Binding::LocalArray:

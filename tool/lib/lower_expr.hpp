@@ -39,7 +39,7 @@ public:
   Access nested_element(const clang::CXXOperatorCallExpr* oc,
                         const clang::CXXOperatorCallExpr* row);
 
-  const Param* array_base(const clang::Expr* base);
+  const Param* array_base(const clang::Expr* base, ExprP* offset = nullptr);
 
 private:
   Lowerer& L;

@@ -24,6 +24,7 @@
 #include "lower_int.hpp"
 #include "lower_loop.hpp"
 #include "lower_object.hpp"
+#include "lower_pointer.hpp"
 #include "lower_reduce.hpp"
 #include "lower_signature.hpp"
 #include "lower_stmt.hpp"
@@ -145,7 +146,7 @@ private:
   // sentence. The ids: dpgen-signature (parameters and annotations),
   // dpgen-name (names the generated code needs), dpgen-loop (loop headers),
   // dpgen-call (math functions and helpers), dpgen-lambda, dpgen-buffer
-  // (line buffers: what each iteration writes and reads), and
+  // (line buffers: what each iteration writes and reads), dpgen-pointer (pointer locals), and
   // dpgen-unsupported (any other construct outside the subset); the output
   // rules have theirs (check.cpp).
   void error(SourceLocation loc, const std::string& msg, const char* id = "dpgen-unsupported") {
@@ -248,9 +249,11 @@ private:
   friend class Reductions;
   Reductions red_{*this};
 
-  // Line buffers and pointers to arrays (lower_buffer.hpp).
+  // Line buffers and pointers to arrays (lower_buffer.hpp); pointer locals (lower_pointer.hpp).
   friend class LineBuffers;
   LineBuffers bufs_{*this};
+  friend class PointerLocals;
+  PointerLocals ptrs_{*this};
 
   // The number of the next store lowered (Store::seq: the order of the
   // kernel's stores, which the checks compare).

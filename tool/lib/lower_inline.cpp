@@ -155,12 +155,18 @@ ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
     if (pt->isPointerType() && !pt->getPointeeType().isConstQualified() &&
         L.scalar_type(pt->getPointeeType()) && [&] {
           const auto* u = dyn_cast<UnaryOperator>(arg->IgnoreParenImpCasts());
-          return (u && u->getOpcode() == UO_AddrOf) || forwarded(arg);
+          return (u && u->getOpcode() == UO_AddrOf &&
+                  !isa<ArraySubscriptExpr>(u->getSubExpr()->IgnoreParens())) || // (not &b[k])
+                 forwarded(arg);
         }()) {
       out_param(pd, arg, true);
       continue;
     }
     if (pt->isPointerType()) {
+      if (std::optional<Binding> moved = L.ptrs_.pointer_into(arg); moved && moved->offset) {
+        binds.push_back({pd, *moved}); // `a + j * nx`, `&b[k]`, a pointer local (lower_pointer)
+        continue;
+      }
       const clang::Expr* base = arg->IgnoreParenImpCasts();
       const Param* ap =
           isa<DeclRefExpr>(base) || isa<MemberExpr>(base) ? L.exprs_.array_base(base) : nullptr;

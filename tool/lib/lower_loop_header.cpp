@@ -45,13 +45,18 @@ namespace {
 ExprP invariant_bound(const ExprP& e) {
   if (e->op == Op::Local && !e->local->kernel_level && !e->local->opaque && e->type == Type::Int) {
     ExprP def = invariant_bound(e->local->def);
-    return any_node(def,
-                    [](const ExprP& x) {
-                      return x->op == Op::LoopVar || x->op == Op::Read ||
-                             (x->op == Op::Local && !x->local->kernel_level);
-                    })
-               ? e
-               : def;
+    // (kernel-level locals are defined before every nest: not entered)
+    bool varies = false;
+    std::set<const LocalVar*> seen;
+    walk(
+        def,
+        [&](const ExprP& x) {
+          varies = varies || x->op == Op::LoopVar || x->op == Op::Read ||
+                   (x->op == Op::Local && !x->local->kernel_level);
+          return !varies;
+        },
+        [](const ExprP&) { return false; }, seen);
+    return varies ? e : def;
   }
   return map_operands(e, invariant_bound);
 }

@@ -458,7 +458,7 @@ void Statements::declare(const Decl* d) {
     L.bufs_.declare_buffer(v, vat->getElementType(), L.exprs_.expr(vat->getSizeExpr()));
     return;
   }
-  if (L.bufs_.declare_array_pointer(v)) // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`
+  if (L.bufs_.declare_array_pointer(v) || L.ptrs_.declare(v)) // `double (*u)[n][n]`, `double* row`
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {

@@ -162,6 +162,13 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
     L.fail(lhs->getBeginLoc(),
            fmt::format("'{}' is outside the kernel subset", var->getNameAsString()));
   }
+  if (it->second.kind == Binding::ArrayParam && it->second.offset)
+    L.fail(lhs->getBeginLoc(),
+           fmt::format("pointer '{}' is changed after its declaration; dpgen follows a pointer "
+                       "fixed where it is declared: declare another ('const double* next = {} + "
+                       "nx;') or index this one",
+                       var->getNameAsString(), var->getNameAsString()),
+           "dpgen-pointer");
   if (it->second.kind != Binding::Value)
     L.fail(lhs->getBeginLoc(), fmt::format("parameter '{}' is assigned; kernel parameters are "
                                            "read only",

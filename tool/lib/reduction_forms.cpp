@@ -70,13 +70,12 @@ static const Stmt* lambda_body_of(const Stmt* s, const ValueDecl* v) {
 // nothing more of it (a lambda's capture list is no use of `v`).
 static bool visit_lambda(const Stmt* s, const ValueDecl* v, std::set<const Stmt*>& open,
                          const std::function<void(const Stmt*)>& visit) {
-  const bool closure =
-      isa<LambdaExpr>(s) || (isa<DeclRefExpr>(s) && lambda_body_of(s, v) != nullptr);
-  if (const Stmt* body = lambda_body_of(s, v); body && open.insert(body).second) {
+  const Stmt* body = lambda_body_of(s, v);
+  if (body && open.insert(body).second) {
     visit(body);
     open.erase(body);
   }
-  return closure;
+  return isa<LambdaExpr>(s) || (isa<DeclRefExpr>(s) && body != nullptr);
 }
 
 // The parameter through which call `c` lets its callee update `v`: a non-const reference
@@ -116,6 +115,33 @@ static const ParmVarDecl* updated_param(const CallExpr* c, const ValueDecl* v,
   return nullptr;
 }
 
+// A call `s` that lets its callee update `v` (updated_param): `callee_kind(body, p, pointer)`
+// says what the callee's body does to its parameter `p` (0: not the form asked for); where
+// not 0, the call's other arguments are visited. None where `s` is no such call. (`open`:
+// the bodies being visited; one is not entered inside itself.)
+static std::optional<int>
+through_call(const Stmt* s, const ValueDecl* v, std::set<const Stmt*>& open,
+             const std::function<int(const Stmt*, const ParmVarDecl*, bool)>& callee_kind,
+             const std::function<void(const Stmt*)>& visit) {
+  const auto* c = dyn_cast<CallExpr>(s);
+  const clang::Expr* arg = nullptr;
+  bool pointer = false;
+  const ParmVarDecl* p = c ? updated_param(c, v, arg, pointer) : nullptr;
+  if (!p)
+    return std::nullopt;
+  const Stmt* callee = c->getDirectCallee()->getBody();
+  int k = 0;
+  if (open.insert(callee).second) {
+    k = callee_kind(callee, p, pointer);
+    open.erase(callee);
+  }
+  if (k != 0)
+    for (const Stmt* ch : c->children())
+      if (ch != arg)
+        visit(ch);
+  return k;
+}
+
 // `e` names `v` (`deref`: is `*v`).
 static bool names(const clang::Expr* e, const ValueDecl* v, bool deref) {
   e = e->IgnoreParenImpCasts();
@@ -140,23 +166,15 @@ static bool accumulates(const Stmt* body, const VarDecl* v, bool deref,
       return;
     if (visit_lambda(s, v, open, visit))
       return;
-    if (const auto* c = dyn_cast<CallExpr>(s)) {
-      const clang::Expr* arg = nullptr;
-      bool pointer = false;
-      if (const ParmVarDecl* p = updated_param(c, v, arg, pointer)) {
-        const Stmt* callee = c->getDirectCallee()->getBody();
-        const bool inside = open.insert(callee).second && accumulates(callee, p, pointer, open);
-        open.erase(callee);
-        if (!inside) {
-          other = true;
-          return;
-        }
-        ++updates; // (each of the callee's updates is one of `v`)
-        for (const Stmt* ch : c->children())
-          if (ch != arg)
-            visit(ch);
-        return;
-      }
+    if (std::optional<int> k = through_call(
+            s, v, open,
+            [&](const Stmt* callee, const ParmVarDecl* p, bool pointer) {
+              return accumulates(callee, p, pointer, open) ? 1 : 0;
+            },
+            visit)) {
+      other = other || *k == 0;
+      ++updates; // (each of the callee's updates is one of `v`)
+      return;
     }
     if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
       if (names(b->getLHS(), v, deref)) {
@@ -416,24 +434,18 @@ int ReductionForms::extremum_kind(const Stmt* body, const ReductionTarget& t,
     if (!t.element && visit_lambda(s, t.decl, open, visit))
       return;
     int k = 0;
-    if (const auto* c = dyn_cast<CallExpr>(s); c && !t.element) {
-      const clang::Expr* arg = nullptr;
-      bool pointer = false;
-      if (const ParmVarDecl* p = updated_param(c, t.decl, arg, pointer)) {
-        const Stmt* callee = c->getDirectCallee()->getBody();
-        k = !pointer && open.insert(callee).second ? extremum_kind(callee, {p, nullptr}, open) : 0;
-        open.erase(callee);
-        if (k == 0 || (kind != 0 && k != kind)) {
-          other = true;
-          return;
-        }
-        kind = k;
-        ++updates;
-        for (const Stmt* ch : c->children())
-          if (ch != arg)
-            visit(ch);
-        return;
-      }
+    if (std::optional<int> called =
+            t.element ? std::nullopt
+                      : through_call(
+                            s, t.decl, open,
+                            [&](const Stmt* callee, const ParmVarDecl* p, bool pointer) {
+                              return pointer ? 0 : extremum_kind(callee, {p, nullptr}, open);
+                            },
+                            visit)) {
+      other = other || *called == 0 || (kind != 0 && *called != kind);
+      kind = *called;
+      ++updates;
+      return;
     }
     if (const auto* i = dyn_cast<IfStmt>(s)) {
       ReductionTarget u;
