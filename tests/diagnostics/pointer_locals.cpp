@@ -103,3 +103,33 @@ void block(const double* p, double* q, int nx, int rows) {
 DPGEN_KERNEL void rows_in_helper(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {
   block(a + 8, b, nx, ny - 1);
 }
+
+// References: a const reference to an input's element is a local of its value
+// (tests/styles/pointer_locals.cpp); a reference to an output's element (which a later
+// store changes), to a local, or a non-const one is refused.
+DPGEN_KERNEL void ref_to_output(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    b[i] = a[i];
+    const double& bi = b[i];
+    // CHECK: pointer_locals.cpp:[[@LINE-1]]:19: error: reference 'bi' is outside the kernel subset but for a const reference to an element of an input ('const double& bi = u[i];'); copy the value ('const double bi = ...;') or index the array where it is used [dpgen-pointer]
+    b[i] = bi * a[i];
+  }
+}
+
+DPGEN_KERNEL void ref_to_local(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    double x = a[i];
+    const double& y = x;
+    // CHECK: pointer_locals.cpp:[[@LINE-1]]:19: error: reference 'y' is outside the kernel subset
+    x = 2.0 * x;
+    b[i] = y;
+  }
+}
+
+DPGEN_KERNEL void ref_writable(DPGEN_IN const double* a, DPGEN_OUT double* b, int n) {
+  for (int i = 0; i < n; ++i) {
+    double& out = b[i];
+    // CHECK: pointer_locals.cpp:[[@LINE-1]]:13: error: reference 'out' is outside the kernel subset
+    out = a[i] * a[i];
+  }
+}

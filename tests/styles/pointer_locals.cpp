@@ -112,3 +112,17 @@ DPGEN_KERNEL void c_casts(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx,
       o[i] = r[i] * r[i] - 0.5 * r[i];
   }
 }
+
+// Const references to the input's elements, as C++ codes name neighbours (also through a
+// row pointer and `const auto&`): locals of their values, the input never changing.
+DPGEN_KERNEL void ref_neighbours(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    const double* row = a + j * nx;
+    for (int i = 1; i < nx - 1; ++i) {
+      const double& w = row[i - 1];
+      const auto& c = a[j * nx + i];
+      const double& e = *(row + i + 1);
+      b[j * nx + i] = (w - 2.0 * c + e) * c;
+    }
+  }
+}

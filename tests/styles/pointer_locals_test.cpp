@@ -30,6 +30,7 @@ TEST_CASE("styles: row pointers (2D)") {
     check_small(DPGEN_TEST_GRID_ENTRY(deref_sums, nx, ny));
     check_small(DPGEN_TEST_GRID_ENTRY(helper_rows, nx, ny));
     check_small(DPGEN_TEST_GRID_ENTRY(c_casts, nx, ny));
+    check_small(DPGEN_TEST_GRID_ENTRY(ref_neighbours, nx, ny));
   }
   const int nx = 128, ny = 80; // 10240 cells: the nests run on every thread
   const double inv_h2 = 1.3;
@@ -38,6 +39,7 @@ TEST_CASE("styles: row pointers (2D)") {
   check_large(DPGEN_TEST_GRID_ENTRY(deref_sums, nx, ny));
   check_large(DPGEN_TEST_GRID_ENTRY(helper_rows, nx, ny));
   check_large(DPGEN_TEST_GRID_ENTRY(c_casts, nx, ny));
+  check_large(DPGEN_TEST_GRID_ENTRY(ref_neighbours, nx, ny));
   // One column: a row's first and last cells are one element, stored twice: the adjoint
   // says so at run time.
   std::vector<double> a(3, 0.5), adj(3, 0.0), seed(3, 1.0);

@@ -184,6 +184,18 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "'{} < hi'",
                        var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
+  // C tests the condition before every iteration: a bound the body assigns (`m = 5;` in the
+  // loop over i < m) changes the count as the loop runs, which a fixed range would not.
+  std::set<const VarDecl*> assigned;
+  L.for_loops_.assigned_vars(f->getBody(), assigned);
+  for (const VarDecl* w : assigned)
+    if (w != var && mentions(f->getCond(), w))
+      L.fail(f->getCond()->getBeginLoc(),
+             fmt::format("the condition of loop '{}' reads '{}', which the loop's body assigns: "
+                         "dpgen needs a loop's bounds fixed before it runs; give the new value "
+                         "a variable of its own, or set '{}' before the loop",
+                         var->getNameAsString(), w->getNameAsString(), w->getNameAsString()),
+             "dpgen-loop");
   init_value = invariant_bound(init_value);
   bound = invariant_bound(bound);
   // inc: ++i, i++, i += 1 (or the decrements for a loop that counts down);

@@ -12,6 +12,8 @@ namespace dpgen::lowering {
 
 bool PointerLocals::declare(const VarDecl* v) {
   const QualType t = v->getType();
+  if (t->isReferenceType() && L.scalar_type(t.getNonReferenceType()))
+    return declare_reference(v);
   if (!t->isPointerType() || !L.scalar_type(t->getPointeeType()))
     return false;
   std::optional<Binding> b = v->getInit() ? pointer_into(v->getInit()) : std::nullopt;
@@ -26,6 +28,32 @@ bool PointerLocals::declare(const VarDecl* v) {
   if (!b->offset) // (`row = a`: a pointer local all the same, fixed)
     b->offset = int_const(0);
   L.env_[v] = *b;
+  return true;
+}
+
+// `const double& x = u[i];` (also through a pointer local, `const auto& x = row[i];`): an
+// element of an array the kernel never writes (an input, a constant array), so the
+// reference reads what a copy made here reads: a local of that value. A reference to
+// anything else (an output's element, which later stores change; a local; a non-const
+// reference, through which the kernel would write) is refused.
+bool PointerLocals::declare_reference(const VarDecl* v) {
+  const QualType t = v->getType().getNonReferenceType();
+  const clang::Expr* init = v->getInit() ? v->getInit()->IgnoreParenImpCasts() : nullptr;
+  std::optional<Access> at = init && t.isConstQualified() ? L.exprs_.element(init) : std::nullopt;
+  if (!at || (at->param->kind != ParamKind::In && at->param->kind != ParamKind::ConstArray) ||
+      L.bufs_.is_buffer(at->param->name) || L.is_hidden(at->param->name))
+    L.fail(v->getLocation(),
+           fmt::format("reference '{}' is outside the kernel subset but for a const reference to "
+                       "an element of an input ('const double& {} = u[i];'); copy the value "
+                       "('const double {} = ...;') or index the array where it is used",
+                       v->getNameAsString(), v->getNameAsString(), v->getNameAsString()),
+           "dpgen-pointer");
+  Binding b;
+  b.kind = Binding::Value;
+  b.kernel_level = L.loops_.empty();
+  b.value = L.stmts_.make_local(v->getNameAsString(), v,
+                                cast(L.exprs_.expr(v->getInit()), *L.scalar_type(t)));
+  L.env_[v] = b;
   return true;
 }
 

@@ -25,8 +25,9 @@ public:
   explicit PointerLocals(Lowerer& lowerer) : L(lowerer) {}
 
   // Binds `v` if it is a pointer to numbers initialised with a pointer into a
-  // flat array parameter (pointer_into); refuses a pointer to numbers made
-  // any other way. False if `v` is no pointer to numbers.
+  // flat array parameter (pointer_into), or a const reference to an input's
+  // element (a local of its value); refuses a pointer or reference to numbers
+  // made any other way. False if `v` is neither.
   bool declare(const clang::VarDecl* v);
 
   // What pointer expression `e` points at, as a binding: `a` (the binding of
@@ -45,6 +46,7 @@ private:
   Lowerer& L;
 
   void check_flat(const Binding& b, const clang::Expr* at);
+  bool declare_reference(const clang::VarDecl* v);
 };
 
 } // namespace dpgen::lowering
