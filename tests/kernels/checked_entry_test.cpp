@@ -6,9 +6,11 @@
 
 #include "laplacian2d_adjoint.hpp"
 #include "semi_lagrangian_adjoint.hpp"
+#include "shifted_read_adjoint.hpp"
 #include "size_checks_adjoint.hpp"
 #include "upwind_step_adjoint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -73,7 +75,7 @@ TEST_CASE("checked adjoint: a short array throws and names it") {
         std::string::npos);
 }
 
-TEST_CASE("checked adjoint: data-dependent reads are left unchecked, the rest is checked") {
+TEST_CASE("checked adjoint: data-dependent reads are checked where the data takes them") {
   const int n = 12;
   auto q = wave(n, 0.4), vel = wave(n, 0.9), seed = wave(n, 0.6);
   std::vector<double> qa(n, 0.0), va(n, 0.0), raw_q(n, 0.0), raw_v(n, 0.0);
@@ -86,4 +88,38 @@ TEST_CASE("checked adjoint: data-dependent reads are left unchecked, the rest is
   CHECK_THROWS_AS(semi_lagrangian_adjoint_checked(q.data(), n, qa.data(), n, vel.data(), n - 1,
                                                   va.data(), n, seed.data(), n, n, 0.3, 0.5),
                   std::invalid_argument);
+  // The departure points (periodic) read q at 0..n-1, each cell's own with zero velocity:
+  // q of n - 1 values throws, naming the element the data reaches; nothing is written.
+  const std::vector<double> rest(n, 0.0), q_short(q.begin(), q.end() - 1);
+  std::vector<double> adj(n, 0.0);
+  std::string m = thrown([&] {
+    semi_lagrangian_adjoint_checked(q_short.data(), n - 1, adj.data(), n, rest.data(), n, nullptr,
+                                    0, seed.data(), n, n, 0.3, 0.5);
+  });
+  CHECK(m.find("semi_lagrangian_adjoint_checked: 'q' has 11 elements, but the kernel touches "
+               "element 11 (n = 12)") != std::string::npos);
+  for (double v : adj)
+    CHECK(v == 0.0);
+}
+
+TEST_CASE("checked adjoint: an index below 0 throws, from either end of the range") {
+  // out[i] = f(a[i + shift], a[i + shift + 1]) for i in 0..n-1
+  const int n = 6;
+  auto a = wave(8, 0.3), seed = wave(size_t(n), 0.7);
+  std::vector<double> adj(8, 0.0), raw(8, 0.0);
+  shifted_read_adjoint(a.data(), raw.data(), seed.data(), n, 1);
+  shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, 1);
+  CHECK(adj == raw);
+  std::fill(adj.begin(), adj.end(), 0.0);
+  std::string m = thrown([&] {
+    shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, -1);
+  });
+  CHECK(m.find("shifted_read_adjoint_checked: 'a' has 8 elements, but the kernel touches "
+               "elements -1 to 5 (n = 6, shift = -1)") != std::string::npos);
+  m = thrown([&] {
+    shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, 2);
+  });
+  CHECK(m.find("'a' has 8 elements, but the kernel touches elements 2 to 8") != std::string::npos);
+  for (double v : adj)
+    CHECK(v == 0.0);
 }

@@ -226,6 +226,21 @@ class OtherShapes(unittest.TestCase):
                                    k.detach(), torch.rand(24, dtype=D), ny, 2.0,
                                    lu_shape=[ny, 6]))
 
+    def test_both_ends_of_a_shifted_read(self):
+        # out[i] = f(a[i + shift], a[i + shift + 1]), i in 0..n-1
+        op = torch.ops.dpgen.shifted_read
+        a = rand(9)
+        self.assertTrue(torch.autograd.gradcheck(lambda x: op(x, 7, 1, out_shape=[7]), (a,)))
+        self.assertTrue(torch.autograd.gradcheck(lambda x: op(x, 8, 0, out_shape=[8]), (a,)))
+        with self.assertRaises(RuntimeError) as cm:  # a[-1] at i = 0
+            op(a.detach(), 8, -1, out_shape=[8])
+        self.assertIn("reaches element -1 of argument 'a'", str(cm.exception))
+        self.assertIn("shift = -1", str(cm.exception))
+        with self.assertRaises(RuntimeError) as cm:  # a[9] at i = 7
+            op(a.detach(), 8, 1, out_shape=[8])
+        self.assertIn("argument 'a' has 9 elements", str(cm.exception))
+        self.assertIn("reaches element 9", str(cm.exception))
+
     def test_c_kernel_with_four_outputs_and_work_arrays(self):
         # fh, fq are written by the first loop and read by the second (work arrays)
         n = 9

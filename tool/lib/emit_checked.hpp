@@ -5,6 +5,7 @@
 
 #include "emit_util.hpp"
 #include "ir.hpp"
+#include "loop_plan.hpp"
 
 #include <string>
 
@@ -14,6 +15,9 @@ namespace dpgen {
 /// check their sizes themselves; arrays of rows have none).
 bool has_checked_entry(const Kernel& k);
 std::string checked_signature(const Kernel& k);
-void emit_checked_entry(Code& code, const Kernel& k);
+/// Whether its checked entry point runs the kernel's loops to check indices that depend on
+/// the data (emit_checked.cpp: the probe, dpgen/checked_probe.hpp).
+bool needs_probe(const ForwardPlan& plan);
+void emit_checked_entry(Code& code, const ForwardPlan& plan);
 
 } // namespace dpgen

@@ -47,9 +47,7 @@ public:
         "{};\n",
         checked_signature(k));
   }
-  void define(Code& c, const LoopPlan& l) const override {
-    emit_checked_entry(c, *l.adjoint->kernel);
-  }
+  void define(Code& c, const LoopPlan& l) const override { emit_checked_entry(c, l.forward); }
 };
 
 // <kernel>_parallel_forward (emit_forward.cpp): the kernel on every thread.
@@ -213,6 +211,9 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
                                       !p->kernel->intermediates.empty());
   if (view_buffers)
     c.raw("#include \"dpgen/view_buffer.hpp\"\n\n");
+  if (std::any_of(loops.begin(), loops.end(),
+                  [](const LoopPlan& l) { return needs_probe(l.forward); }))
+    c.raw("#include \"dpgen/checked_probe.hpp\"\n\n");
   if (std::any_of(plans.begin(), plans.end(), [](const auto& p) { return has_nested(*p->kernel); }))
     c.raw("#include \"dpgen/row_pointers.hpp\"\n\n");
   c.raw(global_declarations(all, "_adj", true));

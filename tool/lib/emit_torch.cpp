@@ -89,9 +89,10 @@ const Param* first_array(const Kernel& k) {
 
 // ---- how far each array is accessed ------------------------------------------------------
 
-// C++ for the largest value of `p` (one past the largest index: the index + 1) over box `b`, or nullopt if a coefficient of a counter
-// depends on another counter. Each counter v contributes max(c lo_v, c (hi_v - 1)).
-std::optional<std::string> box_max(const Poly& p, const Box& b) {
+// C++ for the largest (`largest`) or smallest value of `p` over box `b` (for the largest, the
+// index + 1: one past the largest index), or nullopt if a coefficient of a counter depends on
+// another counter. Each counter v contributes max(c lo_v, c (hi_v - 1)), or the min.
+std::optional<std::string> box_extreme(const Poly& p, const Box& b, bool largest) {
   Poly rest = p;
   std::vector<std::string> terms;
   for (const auto& [v, iv] : b.dims) {
@@ -103,14 +104,15 @@ std::optional<std::string> box_max(const Poly& p, const Box& b) {
     rest = rest.without(Sym::counter(v));
     const std::string lo = print_max(iv.lo, "std::int64_t");
     const std::string last = print_min(iv.hi, "std::int64_t") + " - 1";
-    if (c.is_constant() && c.constant_term() > 0)
-      terms.push_back(c.constant_term() == 1 ? fmt::format("({})", last)
-                                             : fmt::format("{} * ({})", c.code(), last));
-    else if (c.is_constant())
-      terms.push_back(fmt::format("{} * ({})", c.code(), lo));
-    else
-      terms.push_back(fmt::format("std::max<std::int64_t>(({}) * ({}), ({}) * ({}))", c.code(),
-                                  lo, c.code(), last));
+    if (c.is_constant()) {
+      // (a positive coefficient: the largest at the last counter, the smallest at the first)
+      const std::string& at = (c.constant_term() > 0) == largest ? last : lo;
+      terms.push_back(c.constant_term() == 1 ? fmt::format("({})", at)
+                                             : fmt::format("{} * ({})", c.code(), at));
+    } else {
+      terms.push_back(fmt::format("std::{}<std::int64_t>(({}) * ({}), ({}) * ({}))",
+                                  largest ? "max" : "min", c.code(), lo, c.code(), last));
+    }
   }
   if (rest.mentions_any_counter())
     return std::nullopt;
@@ -220,7 +222,13 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
   auto it = m.find(p.name);
   if (it == m.end())
     return;
-  std::vector<std::pair<std::string, std::string>> terms; // (condition, largest index)
+  struct Term {
+    std::string cond, end, least; // one past the largest index, and the smallest
+    bool operator==(const Term& o) const {
+      return cond == o.cond && end == o.end && least == o.least;
+    }
+  };
+  std::vector<Term> terms;
   bool complete = true;
   for (const auto& a : it->second) {
     auto pieces = index_pieces(a.index);
@@ -230,12 +238,13 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
     }
     for (const auto& piece : *pieces)
       for (const auto& b : intersect(a.where, piece.where)) {
-        auto mx = box_max(piece.value + Poly::constant(1), b);
-        if (!mx) {
+        auto end = box_extreme(piece.value + Poly::constant(1), b, true);
+        auto least = box_extreme(piece.value, b, false);
+        if (!end || !least) {
           complete = false;
           continue;
         }
-        std::pair<std::string, std::string> t{box_nonempty(b), *mx};
+        Term t{box_nonempty(b), *end, *least};
         if (std::find(terms.begin(), terms.end(), t) == terms.end())
           terms.push_back(t);
       }
@@ -245,24 +254,29 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
       c.line("// '{}' is read at data-dependent indices: its size is not checked here.", p.name);
     return;
   }
-  c.line("{{ // '{}': one past the largest index the kernel reaches{}", p.name,
+  c.line("{{ // '{}': one past the largest index the kernel reaches, and the smallest{}", p.name,
          complete ? "" : " (some reads are data-dependent and not counted)");
-  const std::string needed = k.fresh("needed"), op = k.fresh("op");
-  c.line("std::int64_t {} = 0;", needed);
-  for (const auto& [cond, mx] : terms) {
-    std::string when = guard.empty() ? cond
-                       : cond == "true" ? guard
-                                        : guard + " && " + cond;
+  const std::string needed = k.fresh("needed"), least = k.fresh("least"), op = k.fresh("op");
+  c.line("std::int64_t {} = 0, {} = 0;", needed, least);
+  for (const auto& t : terms) {
+    std::string when = guard.empty() ? t.cond : t.cond == "true" ? guard : guard + " && " + t.cond;
+    const std::string update = fmt::format(
+        "{{ {} = std::max<std::int64_t>({}, {}); {} = std::min<std::int64_t>({}, {}); }}", needed,
+        needed, t.end, least, least, t.least);
     if (when == "true")
-      c.line("{} = std::max<std::int64_t>({}, {});", needed, needed, mx);
+      c.line("{}", update);
     else
-      c.line("if ({}) {} = std::max<std::int64_t>({}, {});", when, needed, needed, mx);
+      c.line("if ({}) {}", when, update);
   }
   c.line("TORCH_CHECK({}.numel() >= {}, {}, \": {} '{}' has \", {}.numel(), \" elements "
          "(sizes \", {}.sizes(), \") but the kernel reaches element \", {} - 1, \" for \", "
          "{});",
          p.name, needed, op, p.kind == ParamKind::Out ? "output" : "argument", p.name, p.name,
          p.name, needed, sizes_message(k));
+  c.line("TORCH_CHECK({} >= 0, {}, \": the kernel reaches element \", {}, \" of {} '{}' for \", "
+         "{});",
+         least, op, least, p.kind == ParamKind::Out ? "output" : "argument", p.name,
+         sizes_message(k));
   c.line("}}");
 }
 

@@ -38,6 +38,8 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT: #include <stdexcept>
 // CPP-NEXT: #include <string>
 // CPP-EMPTY:
+// CPP-NEXT: #include "dpgen/checked_probe.hpp"
+// CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__)
 // CPP-NEXT: // Each generated function defines the constants and counters its terms may read;
 // CPP-NEXT: // not every one reads all of them.
@@ -174,10 +176,123 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   }
 // CPP-NEXT: }
 // CPP-EMPTY:
-// CPP-NEXT: // c89_private_adjoint with the size of every array, checked against the elements the kernel touches
-// CPP-NEXT: // (not checkable: u, v, read at data-dependent indices or under data-dependent conditions).
+// CPP-NEXT: // c89_private run for c89_private_adjoint_checked where what it touches of u, v depends on the data
+// CPP-NEXT: // (dpgen/checked_probe.hpp): each index into u, v and into the outputs checked before it is used,
+// CPP-NEXT: // nothing of the caller's written.
+// CPP-NEXT: static void c89_private_probe(const dpgen::ProbeInput<double>& u,
+// CPP-NEXT:                               const dpgen::ProbeOutput<double>& v, int n) {
+// CPP-NEXT:   const double w_0 = 0.25;
+// CPP-NEXT:   const double w_1 = 0.5;
+// CPP-NEXT:   const double w_2 = 0.25;
+// CPP-NEXT:   {
+// CPP-NEXT:     if (!(n < 3)) {
+// CPP-NEXT:       v[0] = u[0];
+// CPP-NEXT:     }
+// CPP-NEXT:     if (!(n < 3)) {
+// CPP-NEXT:       v[n - 1] = u[n - 1];
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT:   {
+// CPP-NEXT:     for (std::ptrdiff_t i = 1; i < static_cast<std::ptrdiff_t>(n - 1); ++i) {
+// CPP-NEXT:       if (!(n < 3)) {
+// CPP-NEXT:         const double s = 0.0;
+// CPP-NEXT:         const double s_1 = s + w_0 * u[i - 1];
+// CPP-NEXT:         const double s_2 = s_1 + w_1 * u[i - 1 + 1];
+// CPP-NEXT:         const double s_3 = s_2 + w_2 * u[i - 1 + 2];
+// CPP-NEXT:         v[i] = s_3;
+// CPP-NEXT:       }
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // c89_private_adjoint with the size of every array, checked against the elements the kernel
+// CPP-NEXT: // touches.
 // CPP-NEXT: void c89_private_adjoint_checked(const double* u, size_t u_size, double* u_adj, size_t u_adj_size,
 // CPP-NEXT:                                  const double* v_adj, size_t v_adj_size, int n) {
+// CPP-NEXT:   const std::ptrdiff_t u_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i - 1;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i;
+// CPP-NEXT:                                                               }(),
+// CPP-NEXT:                                                               [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                                                 if (!(1 < n - 1))
+// CPP-NEXT:                                                                   return 0;
+// CPP-NEXT:                                                                 const std::ptrdiff_t i = 1;
+// CPP-NEXT:                                                                 return i + 1;
+// CPP-NEXT:                                                               }()});
+// CPP-NEXT:   const std::ptrdiff_t u_range_hi =
+// CPP-NEXT:       std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i - 1;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i;
+// CPP-NEXT:                                 }(),
+// CPP-NEXT:                                 [&]() -> std::ptrdiff_t {
+// CPP-NEXT:                                   if (!(1 < n - 1))
+// CPP-NEXT:                                     return -1;
+// CPP-NEXT:                                   const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:                                   return i + 1;
+// CPP-NEXT:                                 }()});
+// CPP-NEXT:   if (u_range_hi >= 0 && (u_range_lo < 0 || std::size_t(u_range_hi) >= u_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("c89_private_adjoint_checked: 'u' has ") + std::to_string(u_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(u_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(u_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   if (u_adj != nullptr && u_range_hi >= 0 &&
+// CPP-NEXT:       (u_range_lo < 0 || std::size_t(u_range_hi) >= u_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("c89_private_adjoint_checked: 'u_adj' has ") + std::to_string(u_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(u_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(u_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t u_maybe_lo = std::min<std::ptrdiff_t>({0, n - 1});
+// CPP-NEXT:   const std::ptrdiff_t u_maybe_hi = std::max<std::ptrdiff_t>({0, n - 1});
+// CPP-NEXT:   const std::ptrdiff_t v_range_lo = std::min<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(1 < n - 1))
+// CPP-NEXT:       return 0;
+// CPP-NEXT:     const std::ptrdiff_t i = 1;
+// CPP-NEXT:     return i;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   const std::ptrdiff_t v_range_hi = std::max<std::ptrdiff_t>({[&]() -> std::ptrdiff_t {
+// CPP-NEXT:     if (!(1 < n - 1))
+// CPP-NEXT:       return -1;
+// CPP-NEXT:     const std::ptrdiff_t i = (n - 1) - 1;
+// CPP-NEXT:     return i;
+// CPP-NEXT:   }()});
+// CPP-NEXT:   if (v_range_hi >= 0 && (v_range_lo < 0 || std::size_t(v_range_hi) >= v_adj_size)) {
+// CPP-NEXT:     throw std::invalid_argument(
+// CPP-NEXT:         std::string("c89_private_adjoint_checked: 'v_adj' has ") + std::to_string(v_adj_size) +
+// CPP-NEXT:         " elements, but the kernel touches elements " + std::to_string(v_range_lo) + " to " +
+// CPP-NEXT:         std::to_string(v_range_hi) + " (" + "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   const std::ptrdiff_t v_maybe_lo = std::min<std::ptrdiff_t>({0, n - 1});
+// CPP-NEXT:   const std::ptrdiff_t v_maybe_hi = std::max<std::ptrdiff_t>({0, n - 1});
+// CPP-NEXT:   // u, v: what the kernel touches depends on the data. Where the ranges above do not settle it, its
+// CPP-NEXT:   // loops run once (c89_private_probe), writing nothing, with each index into them and the outputs
+// CPP-NEXT:   // checked before it is used.
+// CPP-NEXT:   if ((u_maybe_hi >= 0 && (u_maybe_lo < 0 || std::size_t(u_maybe_hi) >= u_size)) ||
+// CPP-NEXT:       (u_adj != nullptr && u_maybe_hi >= 0 &&
+// CPP-NEXT:        (u_maybe_lo < 0 || std::size_t(u_maybe_hi) >= u_adj_size)) ||
+// CPP-NEXT:       (v_maybe_hi >= 0 && (v_maybe_lo < 0 || std::size_t(v_maybe_hi) >= v_adj_size))) {
+// CPP-NEXT:     const std::string shown = "n = " + std::to_string(n);
+// CPP-NEXT:     const dpgen::ProbeSite site{"c89_private_adjoint_checked", shown};
+// CPP-NEXT:     c89_private_probe(dpgen::ProbeInput<double>(site, "u", u, u_size, "u_adj", u_adj, u_adj_size),
+// CPP-NEXT:                       dpgen::ProbeOutput<double>(site, "v_adj", v_adj, v_adj_size), n);
+// CPP-NEXT:   }
 // CPP-NEXT:   c89_private_adjoint(u, u_adj, v_adj, n);
 // CPP-NEXT: }
 // CPP-EMPTY:

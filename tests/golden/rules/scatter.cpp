@@ -36,6 +36,8 @@ DPGEN_KERNEL void scatter(DPGEN_IN const double* q, DPGEN_IN const double* vel,
 // CPP-NEXT: #include <stdexcept>
 // CPP-NEXT: #include <string>
 // CPP-EMPTY:
+// CPP-NEXT: #include "dpgen/checked_probe.hpp"
+// CPP-EMPTY:
 // CPP-NEXT: #if defined(__GNUC__)
 // CPP-NEXT: // Each generated function defines the constants and counters its terms may read;
 // CPP-NEXT: // not every one reads all of them.
@@ -136,8 +138,23 @@ DPGEN_KERNEL void scatter(DPGEN_IN const double* q, DPGEN_IN const double* vel,
 // CPP-NEXT:   }
 // CPP-NEXT: }
 // CPP-EMPTY:
-// CPP-NEXT: // scatter_adjoint with the size of every array, checked against the elements the kernel touches
-// CPP-NEXT: // (not checkable: q, read at data-dependent indices or under data-dependent conditions).
+// CPP-NEXT: // scatter run for scatter_adjoint_checked where what it touches of q depends on the data
+// CPP-NEXT: // (dpgen/checked_probe.hpp): each index into q and into the outputs checked before it is used,
+// CPP-NEXT: // nothing of the caller's written.
+// CPP-NEXT: static void scatter_probe(const dpgen::ProbeInput<double>& q, const double* vel,
+// CPP-NEXT:                           const dpgen::ProbeOutput<double>& q_next, int n, double dt) {
+// CPP-NEXT:   {
+// CPP-NEXT:     for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n); ++i) {
+// CPP-NEXT:       const double x = std::fmin(std::fmax(static_cast<double>(i) - dt * vel[i], 0.0),
+// CPP-NEXT:                                  static_cast<double>(n) - 1.001);
+// CPP-NEXT:       const std::ptrdiff_t i0 = static_cast<int>(x);
+// CPP-NEXT:       const double w = x - static_cast<double>(i0);
+// CPP-NEXT:       q_next[i] = (1.0 - w) * q[i0] + w * q[i0 + 1];
+// CPP-NEXT:     }
+// CPP-NEXT:   }
+// CPP-NEXT: }
+// CPP-EMPTY:
+// CPP-NEXT: // scatter_adjoint with the size of every array, checked against the elements the kernel touches.
 // CPP-NEXT: void scatter_adjoint_checked(const double* q, size_t q_size, double* q_adj, size_t q_adj_size,
 // CPP-NEXT:                              const double* vel, size_t vel_size, double* vel_adj,
 // CPP-NEXT:                              size_t vel_adj_size, const double* q_next_adj, size_t q_next_adj_size,
@@ -186,6 +203,16 @@ DPGEN_KERNEL void scatter(DPGEN_IN const double* q, DPGEN_IN const double* vel,
 // CPP-NEXT:         std::to_string(q_next_adj_size) + " elements, but the kernel touches elements " +
 // CPP-NEXT:         std::to_string(q_next_range_lo) + " to " + std::to_string(q_next_range_hi) + " (" +
 // CPP-NEXT:         "n = " + std::to_string(n) + ")");
+// CPP-NEXT:   }
+// CPP-NEXT:   // q: what the kernel touches depends on the data. Where the ranges above do not settle it, its
+// CPP-NEXT:   // loops run once (scatter_probe), writing nothing, with each index into it and the outputs
+// CPP-NEXT:   // checked before it is used.
+// CPP-NEXT:   {
+// CPP-NEXT:     const std::string shown = "n = " + std::to_string(n);
+// CPP-NEXT:     const dpgen::ProbeSite site{"scatter_adjoint_checked", shown};
+// CPP-NEXT:     scatter_probe(dpgen::ProbeInput<double>(site, "q", q, q_size, "q_adj", q_adj, q_adj_size), vel,
+// CPP-NEXT:                   dpgen::ProbeOutput<double>(site, "q_next_adj", q_next_adj, q_next_adj_size), n,
+// CPP-NEXT:                   dt);
 // CPP-NEXT:   }
 // CPP-NEXT:   scatter_adjoint(q, q_adj, vel, vel_adj, q_next_adj, n, dt);
 // CPP-NEXT: }
