@@ -103,23 +103,28 @@ TEST_CASE("checked adjoint: data-dependent reads are checked where the data take
 }
 
 TEST_CASE("checked adjoint: an index below 0 throws, from either end of the range") {
-  // out[i] = f(a[i + shift], a[i + shift + 1]) for i in 0..n-1
+  // out[i] = f(a[i + shift], a[i + shift + 1]) for i in 1..n-1
   const int n = 6;
   auto a = wave(8, 0.3), seed = wave(size_t(n), 0.7);
   std::vector<double> adj(8, 0.0), raw(8, 0.0);
-  shifted_read_adjoint(a.data(), raw.data(), seed.data(), n, 1);
-  shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, 1);
-  CHECK(adj == raw);
+  for (int shift : {-1, 0, 1}) {
+    CAPTURE(shift);
+    std::fill(adj.begin(), adj.end(), 0.0);
+    std::fill(raw.begin(), raw.end(), 0.0);
+    shifted_read_adjoint(a.data(), raw.data(), seed.data(), n, shift);
+    shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, shift);
+    CHECK(adj == raw);
+  }
   std::fill(adj.begin(), adj.end(), 0.0);
   std::string m = thrown([&] {
-    shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, -1);
+    shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, -2);
   });
   CHECK(m.find("shifted_read_adjoint_checked: 'a' has 8 elements, but the kernel touches "
-               "elements -1 to 5 (n = 6, shift = -1)") != std::string::npos);
+               "elements -1 to 4 (n = 6, shift = -2)") != std::string::npos);
   m = thrown([&] {
     shifted_read_adjoint_checked(a.data(), 8, adj.data(), 8, seed.data(), size_t(n), n, 2);
   });
-  CHECK(m.find("'a' has 8 elements, but the kernel touches elements 2 to 8") != std::string::npos);
+  CHECK(m.find("'a' has 8 elements, but the kernel touches elements 3 to 8") != std::string::npos);
   for (double v : adj)
     CHECK(v == 0.0);
 }

@@ -247,3 +247,26 @@ TEST_CASE("checked probe: an accumulator over cells above a threshold") {
   });
   CHECK(has(m, "'s_adj' has 2 elements, but the kernel touches elements 0 to 2"));
 }
+
+TEST_CASE("checked probe: an empty array the data reaches; a global table") {
+  // An empty std::vector's data() is null: still an array of 0 elements.
+  const int n = 3;
+  std::vector<int> idx = {0, 0, 0};
+  const std::vector<double> seed = {1.0, 2.0, 3.0};
+  std::vector<double> adj(3, 0.0);
+  std::string m = thrown([&] {
+    gather_by_index_adjoint_checked(nullptr, 0, adj.data(), 3, idx.data(), 3, seed.data(), 3, n);
+  });
+  CHECK(has(m, "'a' has 0 elements"));
+  CHECK(all_zero(adj));
+  // weights4 has 4 elements (its type says so): n = 5 reads weights4[4].
+  const std::vector<double> a = dpgen_test::wavy(5, 0.1), s5 = dpgen_test::wavy(5, 0.4);
+  std::vector<double> a5(5, 0.0), raw(4, 0.0), checked(4, 0.0);
+  m = thrown([&] { global_weights_adjoint_checked(a.data(), 5, a5.data(), 5, s5.data(), 5, 5); });
+  CHECK(has(m, "global_weights_adjoint_checked: 'weights4' has 4 elements, but the kernel touches "
+               "elements 0 to 4 (n = 5)"));
+  CHECK(all_zero(a5));
+  global_weights_adjoint(a.data(), raw.data(), s5.data(), 4);
+  global_weights_adjoint_checked(a.data(), 4, checked.data(), 4, s5.data(), 4, 4);
+  CHECK(checked == raw);
+}

@@ -199,6 +199,21 @@ class KernelOps(unittest.TestCase):
         self.errors(lambda: lap(torch.rand(28, dtype=D), 6, 5, 1.0, out_shape=[5, 6]),
                     "argument 'a' has 28 elements", "reaches element 28")
 
+    def test_data_dependent_reads_are_checked(self):
+        # flow_advect_marker reads s only at the departure points (data-dependent): at rest, cell
+        # (j, i) reads s[j * nx + i], so an s of nx * ny - 1 values is one short; pushed left
+        # (u = 50: departure points clamp to column 0) the last cell is never read.
+        nx, ny = 4, 3
+        op = torch.ops.dpgen.flow_advect_marker
+        short = rand(nx * ny - 1)
+        u0, v0, inflow = torch.zeros(ny, nx + 1, dtype=D), torch.zeros(ny + 1, nx, dtype=D), rand(ny, nx)
+        self.errors(lambda: op(short, u0, v0, inflow, nx, ny, 0.3, 0, 0, s_out_shape=[ny, nx]),
+                    "dpgen::flow_advect_marker: 's' has 11 elements, but the kernel touches "
+                    "element 11", "nx = 4, ny = 3")
+        u_left = torch.full((ny, nx + 1), 50.0, dtype=D)
+        out = op(short, u_left, v0, inflow, nx, ny, 0.3, 0, 0, s_out_shape=[ny, nx])
+        self.assertEqual(list(out.shape), [ny, nx])
+
     def test_no_double_backward(self):
         n = 6
         d = rand(n)
@@ -227,15 +242,16 @@ class OtherShapes(unittest.TestCase):
                                    lu_shape=[ny, 6]))
 
     def test_both_ends_of_a_shifted_read(self):
-        # out[i] = f(a[i + shift], a[i + shift + 1]), i in 0..n-1
+        # out[i] = f(a[i + shift], a[i + shift + 1]), i in 1..n-1
         op = torch.ops.dpgen.shifted_read
         a = rand(9)
-        self.assertTrue(torch.autograd.gradcheck(lambda x: op(x, 7, 1, out_shape=[7]), (a,)))
         self.assertTrue(torch.autograd.gradcheck(lambda x: op(x, 8, 0, out_shape=[8]), (a,)))
-        with self.assertRaises(RuntimeError) as cm:  # a[-1] at i = 0
-            op(a.detach(), 8, -1, out_shape=[8])
+        # a negative int argument reaches the kernel (narrow<int> refused every one before)
+        self.assertTrue(torch.autograd.gradcheck(lambda x: op(x, 8, -1, out_shape=[8]), (a,)))
+        with self.assertRaises(RuntimeError) as cm:  # a[-1] at i = 1
+            op(a.detach(), 8, -2, out_shape=[8])
         self.assertIn("reaches element -1 of argument 'a'", str(cm.exception))
-        self.assertIn("shift = -1", str(cm.exception))
+        self.assertIn("shift = -2", str(cm.exception))
         with self.assertRaises(RuntimeError) as cm:  # a[9] at i = 7
             op(a.detach(), 8, 1, out_shape=[8])
         self.assertIn("argument 'a' has 9 elements", str(cm.exception))

@@ -179,11 +179,11 @@ std::set<std::string> uncertain_arrays(const Kernel& k, const std::map<std::stri
   const bool probe = can_probe(k);
   for (const auto& p : k.params) {
     auto it = ranges.find(p.name);
-    if (p.kind == ParamKind::Scalar || p.global || it == ranges.end())
+    if (p.kind == ParamKind::Scalar || it == ranges.end())
       continue;
     if (!it->second.dependent && it->second.maybe_highs.empty())
       continue;
-    if (probe)
+    if (probe && !p.global) // (a global keeps its name: no stand-in can take its place)
       probed.insert(p.name);
     else if (unchecked)
       unchecked->push_back(p.name);
@@ -191,8 +191,41 @@ std::set<std::string> uncertain_arrays(const Kernel& k, const std::map<std::stri
   return probed;
 }
 
+// C++ appended to a message: " (" + <the integer arguments> + ")", or nothing where the kernel
+// has none (`sizes` "std::string()").
+std::string sizes_tail(const std::string& sizes) {
+  return sizes == "std::string()" ? "" : fmt::format(" + \" (\" + {} + \")\"", sizes);
+}
+
+// The integer kernel-level locals, which the ranges may use (x_min = *xmin; not the real ones,
+// which would read arrays before their sizes are checked); each array element one of them
+// reads is checked first, against its array's size (`caller`: C++ for the message's start).
+void define_checked_int_locals(Code& code, const Kernel& k, const std::string& caller,
+                               const std::string& sizes) {
+  for (const auto& l : k.kernel_locals) {
+    if (l->def->type != Type::Int)
+      continue;
+    for (const auto& site : reads_in(l->def)) {
+      const Param* p = k.find_param(site.read->name);
+      if (!p || p->global || (p->kind != ParamKind::In && p->kind != ParamKind::ConstArray))
+        continue;
+      const std::string idx = print(site.read->ops[0]), size = size_name(k, p->name);
+      std::string cond = fmt::format("({}) < 0 || std::size_t({}) >= {}", idx, idx, size);
+      if (!site.conds.empty()) // (read where these hold only)
+        cond = fmt::format("({}) && ({})", conjunction(site.conds), cond);
+      code.open(fmt::format("if ({})", cond));
+      code.line("throw std::invalid_argument(std::string({}) + \": '{}' has \" + "
+                "std::to_string({}) + \" elements, but the kernel touches element \" + "
+                "std::to_string({}){});",
+                caller, p->name, size, idx, sizes_tail(sizes));
+      code.close();
+    }
+    code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
+  }
+}
+
 // The name of the probe's function (see the top of this file).
-std::string probe_name(const Kernel& k) { return k.name + "_probe"; }
+std::string probe_name(const Kernel& k) { return k.fresh(k.name + "_probe"); }
 
 // What the probe is given for each of the kernel's parameters, in order: a checking stand-in
 // (dpgen/checked_probe.hpp) for an array in `probed`, an output (which the checked entry point
@@ -239,9 +272,29 @@ void emit_probe_function(Code& code, const ForwardPlan& plan, const std::set<std
   code.raw("\n");
 }
 
-// The call of the probe in the checked entry point, where `needed` (C++) holds.
-void emit_probe_call(Code& code, const Kernel& k, const std::set<std::string>& probed,
-                     const std::string& needed, const std::string& sizes) {
+// The arguments of the checked entry point, by name, in order (checked_params).
+std::vector<std::string> checked_args(const Kernel& k) {
+  std::vector<std::string> out;
+  for (const auto& p : k.params) {
+    if (p.global)
+      continue;
+    const std::string adj = p.name + "_adj";
+    if (p.kind == ParamKind::Scalar)
+      out.push_back(p.name);
+    if (p.kind == ParamKind::In || p.kind == ParamKind::ConstArray)
+      out.insert(out.end(), {p.name, size_name(k, p.name)});
+    if (p.kind == ParamKind::In || p.kind == ParamKind::Out)
+      out.insert(out.end(), {adj, size_name(k, adj)});
+  }
+  return out;
+}
+
+std::string caller_name(const Kernel& k) { return k.fresh("caller"); }
+
+// `void <kernel>_check_reach(const char* caller, <the checked entry point's parameters>)`:
+// the probe's run on those arrays, its messages starting with `caller`.
+void emit_reach_function(Code& code, const Kernel& k, const std::set<std::string>& probed,
+                         const std::string& sizes) {
   const std::string shown = k.fresh("shown"), site = k.fresh("site");
   std::vector<std::string> args;
   std::vector<std::pair<const Param*, std::string>> kept; // (buffers of what later loops read)
@@ -254,9 +307,10 @@ void emit_probe_call(Code& code, const Kernel& k, const std::set<std::string>& p
       const std::string& buf = kept.back().second;
       const std::string seed = hidden ? buf + ".data()" : adj;
       const std::string size = hidden ? buf + ".size()" : size_name(k, adj);
+      // (an array of the kernel's own by the name the kernel gives it: `buf`, `s`)
       args.push_back(fmt::format("dpgen::ProbeOutput<{}>({}, {}, {}, {}, {}.data(), {}.size())",
-                                 p->elem_name, site, literal(hidden ? p->name : adj), seed, size,
-                                 buf, buf));
+                                 p->elem_name, site, literal(hidden ? p->spelling : adj), seed,
+                                 size, buf, buf));
     } else if (p->kind == ParamKind::Out) {
       args.push_back(fmt::format("dpgen::ProbeOutput<{}>({}, {}, {}, {})", p->elem_name, site,
                                  literal(adj), adj, size_name(k, adj)));
@@ -269,27 +323,33 @@ void emit_probe_call(Code& code, const Kernel& k, const std::set<std::string>& p
                                  literal(p->name), p->name, size_name(k, p->name)));
     }
   }
-  std::vector<std::string> what(probed.begin(), probed.end());
-  code.line("// {}: what the kernel touches depends on the data. Where the ranges above do not "
-            "settle it, its loops run once ({}), writing nothing, with each index into {} and "
-            "the outputs checked before it is used.",
-            fmt::join(what, ", "), probe_name(k), what.size() == 1 ? "it" : "them");
-  code.open(needed == "true" ? std::string() : fmt::format("if ({})", needed));
+  code.line("// {}'s loops run once on these arrays ({}), writing nothing: throws "
+            "std::invalid_argument, its message starting with `{}`, at the first index into {} "
+            "or an output that is out of range.",
+            k.name, probe_name(k), caller_name(k), fmt::join(probed, ", "));
+  code.open(reach_signature(k));
+  define_checked_int_locals(code, k, caller_name(k), sizes); // (the buffers' sizes may use them)
   code.line("const std::string {} = {};", shown, sizes);
-  code.line("const dpgen::ProbeSite {}{{{}, {}}};", site, literal(k.name + "_adjoint_checked"),
-            shown);
+  code.line("const dpgen::ProbeSite {}{{{}, {}}};", site, caller_name(k), shown);
   for (const auto& [p, buf] : kept)
     code.line("std::vector<{}> {}(static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, {})));",
               p->elem_name, buf, k.extent.at(p->name).code());
   code.line("{}({});", probe_name(k), fmt::join(args, ", "));
   code.close();
+  code.raw("\n");
 }
 
 } // namespace
 
-bool needs_probe(const ForwardPlan& plan) {
-  return has_checked_entry(*plan.kernel) &&
-         !uncertain_arrays(*plan.kernel, access_ranges(*plan.kernel), nullptr).empty();
+std::string reach_name(const Kernel& k) { return k.fresh(k.name + "_check_reach"); }
+
+bool needs_probe(const Kernel& k) {
+  return has_checked_entry(k) && !uncertain_arrays(k, access_ranges(k), nullptr).empty();
+}
+
+std::string reach_signature(const Kernel& k) {
+  return fmt::format("void {}(const char* {}, {})", reach_name(k), caller_name(k),
+                     checked_params(k));
 }
 
 void emit_checked_entry(Code& code, const ForwardPlan& plan) {
@@ -300,8 +360,16 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
   std::vector<std::string> unchecked;
   const std::set<std::string> probed = uncertain_arrays(k, ranges, &unchecked);
   open_namespaces(code, k);
-  if (!probed.empty())
+  std::vector<std::string> shown;
+  for (const auto& p : k.params)
+    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && !p.synthetic)
+      shown.push_back(shown_value(p));
+  std::string sizes =
+      shown.empty() ? "std::string()" : fmt::format("{}", fmt::join(shown, " + \", \" + "));
+  if (!probed.empty()) {
     emit_probe_function(code, plan, probed);
+    emit_reach_function(code, k, probed, sizes);
+  }
   code.line("// {}_adjoint with the size of every array, checked against the elements the "
             "kernel touches{}.",
             k.name,
@@ -310,21 +378,18 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
                                             "or under data-dependent conditions)",
                                             fmt::join(unchecked, ", ")));
   code.open(checked_signature(k));
-  std::vector<std::string> shown;
-  for (const auto& p : k.params)
-    if (p.kind == ParamKind::Scalar && p.elem == Type::Int && !p.synthetic)
-      shown.push_back(shown_value(p));
-  std::string sizes = shown.empty() ? "std::string()"
-                                    : fmt::format("{}", fmt::join(shown, " + \", \" + "));
-  // The integer locals the bounds may use (x_min = *xmin); not the real ones,
-  // which would read arrays before their sizes are checked.
-  define_kernel_locals(code, k, true);
+  define_checked_int_locals(code, k, literal(k.name + "_adjoint_checked"), sizes);
   // Whether `array` (its adjoint, where `nullable`, only when given) is too short for
   // `range`, as C++.
+  // (a global array's size is its type's: `global_count`)
+  auto size_of = [&](const std::string& array) {
+    const Param* g = k.find_param(array);
+    return g && g->global ? std::to_string(g->global_count) : size_name(k, array);
+  };
   auto short_of = [&](const std::string& array, const std::string& range, bool nullable) {
     const std::string lo = k.fresh(range + "_lo"), hi = k.fresh(range + "_hi");
     return fmt::format("{}{} >= 0 && ({} < 0 || std::size_t({}) >= {})",
-                       nullable ? array + " != nullptr && " : "", hi, lo, hi, size_name(k, array));
+                       nullable ? array + " != nullptr && " : "", hi, lo, hi, size_of(array));
   };
   auto define_range = [&](const std::string& range, const std::vector<std::string>& lows,
                           const std::vector<std::string>& highs) {
@@ -339,14 +404,20 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
     code.open(fmt::format("if ({})", short_of(array, range, nullable)));
     code.line("throw std::invalid_argument(std::string(\"{}_adjoint_checked: '{}' has \") + "
               "std::to_string({}) + \" elements, but the kernel touches elements \" + "
-              "std::to_string({}) + \" to \" + std::to_string({}) + \" (\" + {} + \")\");",
-              k.name, array, size_name(k, array), lo, hi, sizes);
+              "std::to_string({}) + \" to \" + std::to_string({}){});",
+              k.name, array, size_of(array), lo, hi, sizes_tail(sizes));
     code.close();
   };
   std::vector<std::string> args, needed;
   for (const auto& p : k.params) {
-    if (p.global)
+    if (p.global) { // what the kernel surely reads of a global array of a known size
+      auto it = ranges.find(p.name);
+      if (p.global_count >= 0 && it != ranges.end() && !it->second.highs.empty()) {
+        define_range(p.name + "_range", it->second.lows, it->second.highs);
+        check(p.name, p.name + "_range", false);
+      }
       continue;
+    }
     if (p.kind == ParamKind::Scalar) {
       args.push_back(p.name);
       continue;
@@ -382,8 +453,24 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
       args.push_back(p.kind == ParamKind::Out ? p.name + "_adj" : p.name);
     }
   }
-  if (!probed.empty())
-    emit_probe_call(code, k, probed, fmt::format("{}", fmt::join(needed, " || ")), sizes);
+  if (!probed.empty()) {
+    std::vector<std::string> what(probed.begin(), probed.end());
+    code.line("// {}: what the kernel touches depends on the data. Where the ranges above do "
+              "not settle it, its loops run once, writing nothing, with each index into {} and "
+              "the outputs checked before it is used.",
+              fmt::join(what, ", "), what.size() == 1 ? "it" : "them");
+    std::vector<std::string> reach = {literal(k.name + "_adjoint_checked")};
+    for (const auto& a : checked_args(k))
+      reach.push_back(a);
+    const std::string call = fmt::format("{}({});", reach_name(k), fmt::join(reach, ", "));
+    if (needed == std::vector<std::string>{"true"}) {
+      code.line("{}", call);
+    } else {
+      code.open(fmt::format("if ({})", fmt::join(needed, " || ")));
+      code.line("{}", call);
+      code.close();
+    }
+  }
   code.line("{}_adjoint({});", k.name, fmt::join(args, ", "));
   code.close();
   close_namespaces(code, k);

@@ -17,7 +17,13 @@ bool has_checked_entry(const Kernel& k);
 std::string checked_signature(const Kernel& k);
 /// Whether its checked entry point runs the kernel's loops to check indices that depend on
 /// the data (emit_checked.cpp: the probe, dpgen/checked_probe.hpp).
-bool needs_probe(const ForwardPlan& plan);
+bool needs_probe(const Kernel& k);
+/// `void <kernel>_check_reach(const char* caller, <checked_signature's parameters>)`, which
+/// kernels that need the probe have: it runs the probe on those arrays (the PyTorch ops call it
+/// where an index cannot be bounded from the loops).
+std::string reach_signature(const Kernel& k);
+/// Its name: <kernel>_check_reach (unless the kernel uses that name: Kernel::fresh).
+std::string reach_name(const Kernel& k);
 void emit_checked_entry(Code& code, const ForwardPlan& plan);
 
 } // namespace dpgen

@@ -41,11 +41,18 @@ class CheckedForm : public KernelForm {
 public:
   bool applies(const Kernel& k) const override { return has_checked_entry(k); }
   std::string declaration(const Kernel& k) const override {
-    return fmt::format(
-        "/// The same, each array followed by its number of elements: sizes too small\n"
-        "/// for the elements the kernel touches throw std::invalid_argument.\n"
-        "{};\n",
-        checked_signature(k));
+    std::string out =
+        fmt::format("/// The same, each array followed by its number of elements: sizes too small\n"
+                    "/// for the elements the kernel touches throw std::invalid_argument.\n"
+                    "{};\n",
+                    checked_signature(k));
+    if (needs_probe(k))
+      out +=
+          fmt::format("/// Where what the kernel touches depends on the data: its loops run once "
+                      "on these\n/// arrays, writing nothing; an index out of range throws "
+                      "std::invalid_argument\n/// (its message starting with `caller`).\n{};\n",
+                      reach_signature(k));
+    return out;
   }
   void define(Code& c, const LoopPlan& l) const override { emit_checked_entry(c, l.forward); }
 };
@@ -212,7 +219,7 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   if (view_buffers)
     c.raw("#include \"dpgen/view_buffer.hpp\"\n\n");
   if (std::any_of(loops.begin(), loops.end(),
-                  [](const LoopPlan& l) { return needs_probe(l.forward); }))
+                  [](const LoopPlan& l) { return needs_probe(*l.forward.kernel); }))
     c.raw("#include \"dpgen/checked_probe.hpp\"\n\n");
   if (std::any_of(plans.begin(), plans.end(), [](const auto& p) { return has_nested(*p->kernel); }))
     c.raw("#include \"dpgen/row_pointers.hpp\"\n\n");

@@ -10,6 +10,7 @@
 
 #include "accesses.hpp"
 #include "affine.hpp"
+#include "emit_checked.hpp"
 #include "emit_forward.hpp"
 #include "emit_util.hpp"
 #include "ir_walk.hpp"
@@ -217,11 +218,12 @@ std::string sizes_message(const Kernel& k) {
 }
 
 // Checks of one array's size against the largest index the kernel reaches.
-void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap& m,
-                       const std::string& guard) {
+// Returns false where some index into `p` cannot be bounded from the loops (data-dependent).
+bool emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap& m,
+                       const std::string& guard, bool reach) {
   auto it = m.find(p.name);
   if (it == m.end())
-    return;
+    return true;
   struct Term {
     std::string cond, end, least; // one past the largest index, and the smallest
     bool operator==(const Term& o) const {
@@ -249,13 +251,15 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
           terms.push_back(t);
       }
   }
+  const std::string rest = reach ? fmt::format("{}, below", reach_name(k)) : "not checked here";
   if (terms.empty()) {
     if (!complete)
-      c.line("// '{}' is read at data-dependent indices: its size is not checked here.", p.name);
-    return;
+      c.line("// '{}' is read at data-dependent indices: its size is {}.", p.name,
+             reach ? "checked by " + rest : rest);
+    return complete;
   }
   c.line("{{ // '{}': one past the largest index the kernel reaches, and the smallest{}", p.name,
-         complete ? "" : " (some reads are data-dependent and not counted)");
+         complete ? "" : " (some reads are data-dependent: " + rest + ")");
   const std::string needed = k.fresh("needed"), least = k.fresh("least"), op = k.fresh("op");
   c.line("std::int64_t {} = 0, {} = 0;", needed, least);
   for (const auto& t : terms) {
@@ -278,6 +282,7 @@ void emit_extent_check(Code& c, const Kernel& k, const Param& p, const AccessMap
          least, op, least, p.kind == ParamKind::Out ? "output" : "argument", p.name,
          sizes_message(k));
   c.line("}}");
+  return complete;
 }
 
 // C++ for "the kernel writes each element 0 .. numel - 1 of output `p`" (`numel` a C++
@@ -387,9 +392,35 @@ void emit_kernel(Code& c, const Kernel& k) {
     if (p->elem_name != first->elem_name)
       c.line("{} = {}.to(dpgen::torch_ops::dtype_of<{}>());", p->name, p->name, p->elem_name);
   }
+  // Indices that depend on the data: the kernel's loops run once with each checked
+  // (emit_checked.cpp: <kernel>_check_reach), where the adjoint files have that function.
+  const bool reach = needs_probe(k);
+  bool bounded = true;
   for (const auto& p : k.params)
     if (is_array(p))
-      emit_extent_check(c, k, p, m, guard);
+      bounded = emit_extent_check(c, k, p, m, guard, reach) && bounded;
+  if (!bounded && reach) {
+    std::vector<std::string> args = {op};
+    for (const auto& p : k.params) {
+      if (p.global)
+        continue;
+      if (!is_array(p)) {
+        args.push_back(scalar_value(p, op));
+        continue;
+      }
+      const std::string data = fmt::format("{}.data_ptr<{}>()", p.name, p.elem_name),
+                        size = fmt::format("static_cast<std::size_t>({}.numel())", p.name);
+      args.insert(args.end(), {data, size});
+      if (p.kind == ParamKind::In) // (no adjoint yet)
+        args.insert(args.end(), {"nullptr", "0"});
+    }
+    // (its std::invalid_argument as the RuntimeError of the other checks)
+    const std::string e = k.fresh("e");
+    c.line("try {{ {}({}); }} catch (const std::invalid_argument& {}) {{ TORCH_CHECK(false, "
+           "{}.what()); "
+           "}}",
+           qualified(k, reach_name(k)), fmt::join(args, ", "), e, e);
+  }
   std::vector<std::string> call;
   for (const auto& p : k.params)
     call.push_back(!is_array(p) ? scalar_value(p, op)
@@ -644,7 +675,7 @@ TorchFile emit_torch_file(const std::vector<AdjointPlan>& plans, const std::stri
                     "\"{}_kernels.hpp\"\n#include \"dpgen/torch.hpp\"\n\n#include "
                     "<torch/library.h>\n\n",
                     stem, stem, stem));
-  c.raw("#include <algorithm>\n#include <cstdint>\n#include <vector>\n");
+  c.raw("#include <algorithm>\n#include <cstdint>\n#include <stdexcept>\n#include <vector>\n");
   c.raw("\nnamespace {\n\n");
   for (const auto& plan : plans)
     emit_kernel(c, *plan.kernel);

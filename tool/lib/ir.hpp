@@ -261,6 +261,9 @@ struct Param {
   /// (`<name>_dot`), defined by the generated .cpp, declared by its header;
   /// the caller points it at storage (null: not differentiated).
   bool global = false;
+  /// A global array's number of elements where its type gives it (`double table[4]`); -1
+  /// else (a pointer). The checked entry point checks what the kernel reads of it.
+  long long global_count = -1;
   std::string global_declaration;
   std::vector<std::string> global_namespaces;
   /// An array view: a parameter of a class type whose inline operator() is

@@ -6,6 +6,19 @@
 
 namespace dpgen::lowering {
 
+namespace {
+// A conversion of a real to an integer type of `bits` bits: to a 64-bit one
+// (`static_cast<long>(std::floor(x))`) as spelled, since an int would wrap for values
+// past 2^31 that the kernel keeps.
+ExprP spelled_cast(const ExprP& e, uint64_t bits, const std::string& spelling) {
+  if (e->op != Op::Cast || e->type != Type::Int || bits < 64)
+    return e;
+  auto w = std::make_shared<dpgen::Expr>(*e);
+  w->cast_type = spelling;
+  return w;
+}
+} // namespace
+
 ExprP Expressions::cond(const clang::Expr* e) {
   ExprP c = expr(e);
   if (c->type != Type::Bool)
@@ -153,8 +166,7 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   ExprP offset;
   const Param* p = array_base(base, &offset);
   if (offset) // row[i] of a pointer local: the parameter's element offset + i
-    return Access{
-        p, offset->op == Op::IntConst && offset->ival == 0 ? idx : binary(Op::Add, offset, idx)};
+    return Access{p, binary(Op::Add, offset, idx)}; // (an offset 0 folds away)
   if (p->row_pointers)
     L.fail(sub->getBeginLoc(), fmt::format("row '{}[...]' of row-pointer array '{}' is used as a "
                                            "value; index its elements as {}[j][i]",
@@ -410,9 +422,11 @@ ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
     w->cast_type = L.spelled(c->getType());
     return w;
   }
+  case CK_FloatingToIntegral:
+    return spelled_cast(cast(expr(sub), L.type_of(c)), L.ctx_.getTypeSize(c->getType()),
+                        L.spelled(c->getType()));
   case CK_IntegralToFloating:
   case CK_FloatingCast:
-  case CK_FloatingToIntegral:
     return cast(expr(sub), L.type_of(c));
   case CK_IntegralToBoolean:
   case CK_FloatingToBoolean:

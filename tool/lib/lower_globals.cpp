@@ -76,6 +76,8 @@ void Globals::lower(const Stmt* body) {
     } else {
       g.kind = array ? ParamKind::ConstArray : ParamKind::Scalar;
     }
+    if (const auto* ca = L.ctx_.getAsConstantArrayType(q))
+      g.global_count = static_cast<long long>(ca->getSize().getZExtValue());
     std::string decl;
     llvm::raw_string_ostream os(decl);
     q.print(os, policy, g.name);

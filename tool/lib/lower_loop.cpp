@@ -8,7 +8,7 @@ namespace dpgen::lowering {
 // loops inside a cell loop); deeper nests are refused.
 constexpr size_t kMaxLoopDepth = 6;
 
-bool ForLoops::should_unroll(const ForStmt* f, long long lo, long long hi) {
+bool ForLoops::should_unroll(const ForStmt* f, const ForHeader& h, long long lo, long long hi) {
   if (hi - lo > 16 || hi <= lo)
     return false;
   bool touches = false;
@@ -42,9 +42,7 @@ bool ForLoops::should_unroll(const ForStmt* f, long long lo, long long hi) {
       scan(c);
   };
   scan(f->getBody());
-  std::set<const VarDecl*> assigned;
-  assigned_vars(f->getBody(), assigned);
-  for (const VarDecl* v : assigned)
+  for (const VarDecl* v : h.assigned)
     if (L.env_.count(v) && L.env_[v].kind == Binding::Value)
       touches = true;
   return touches;
@@ -70,7 +68,7 @@ bool ForLoops::unroll(const ForStmt* f, const ForHeader& h) {
   {
     auto plo = to_poly(lo), phi = to_poly(hi);
     if (plo->is_constant() && phi->is_constant() && h.triangle.empty() && !h.parity_start &&
-        should_unroll(f, plo->constant_term(), phi->constant_term())) {
+        should_unroll(f, h, plo->constant_term(), phi->constant_term())) {
       check_not_assigned(f->getBody(), var);
       for (const auto& c : h.companions)
         check_not_assigned(f->getBody(), c.var);
@@ -248,8 +246,7 @@ void ForLoops::for_loop(const ForStmt* f) {
   // `private` temporaries) start each iteration without a value: a read
   // before the iteration's own assignment would be a value carried over
   // from the previous iteration.
-  std::set<const VarDecl*> assigned;
-  assigned_vars(f->getBody(), assigned);
+  std::set<const VarDecl*> assigned = h.assigned; // (running indices leave it below)
   auto inductions = running_.begin(f, h, *loop, trip, assigned);
   // Scalar accumulators of this loop (`s += f(...)`, `s` read only after
   // the loop) and its min/max reductions: hidden work arrays (lower_reduce).

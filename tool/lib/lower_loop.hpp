@@ -58,6 +58,9 @@ struct ForHeader {
   };
   std::vector<Companion> companions;
   ExprP first; // the counter's first value, as the body may name it
+  // The variables the body assigns (ForLoops::assigned_vars: helpers' references and lambdas
+  // capturing by reference included), found once for the condition's check and the body.
+  std::set<const clang::VarDecl*> assigned;
 };
 
 class LoopHeaders {
@@ -162,7 +165,7 @@ private:
   // A loop with constant bounds and at most 16 iterations that touches a
   // local array or assigns a variable declared outside it (`s += w[m] *
   // a[i + m]`) is unrolled: its counter is a constant in each copy.
-  bool should_unroll(const clang::ForStmt* f, long long lo, long long hi);
+  bool should_unroll(const clang::ForStmt* f, const ForHeader& h, long long lo, long long hi);
   bool unroll(const clang::ForStmt* f, const ForHeader& h);
   // One copy of an unrolled loop's body (the path back at `depth` after it).
   void lower_copy(const clang::Stmt* body, size_t depth);

@@ -432,7 +432,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                                        [&](const auto& t) { return t.second == (step < 0); });
   ExprP first = step > 0 ? (start_moved ? init_value : lo)
                          : binary(Op::Sub, start_moved ? hi_before_hull : hi, one);
-  return {var, lo, hi, step, triangle, parity_start, parity_step, companions, first};
+  return {var, lo, hi, step, triangle, parity_start, parity_step, companions, first, assigned};
 }
 
 // The bound of a loop condition as `counter op bound` (op returned in `op`):

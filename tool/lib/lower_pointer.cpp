@@ -118,8 +118,7 @@ std::optional<Binding> PointerLocals::pointer_into(const clang::Expr* e) {
     L.fail(amount->getBeginLoc(), "a pointer moves by an integer", "dpgen-pointer");
   if (back)
     k = unary(Op::Neg, k);
-  const bool at_start = !b->offset || ((*b->offset)->op == Op::IntConst && (*b->offset)->ival == 0);
-  b->offset = at_start ? k : binary(Op::Add, *b->offset, k);
+  b->offset = b->offset ? binary(Op::Add, *b->offset, k) : k; // (an offset 0 folds away)
   return b;
 }
 

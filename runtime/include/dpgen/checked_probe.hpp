@@ -25,12 +25,14 @@ struct ProbeSite {
   const std::string& shown;
 };
 
-/// One array the kernel indexes and its size; `data` null where an adjoint
-/// is not given (an inactive input's): then it is not checked.
+/// One array the kernel indexes and its size. An `optional` one is not checked
+/// where `data` is null (an inactive input's adjoint, a buffer not given); any
+/// other is, null or not (an empty std::vector's data() is null).
 struct ProbeBound {
   const char* name;
   const void* data;
   std::size_t size;
+  bool optional = false;
 };
 
 /// Throws unless index `i` is an element of every array of `bounds`.
@@ -38,14 +40,14 @@ template <typename I>
 void probe_index(const ProbeSite& site, I i, std::initializer_list<ProbeBound> bounds) {
   static_assert(std::is_integral<I>::value, "an array index is an integer");
   for (const ProbeBound& b : bounds) {
-    if (b.data == nullptr)
+    if (b.optional && b.data == nullptr)
       continue;
     const bool negative = std::is_signed<I>::value && i < I(0);
     if (negative || static_cast<unsigned long long>(i) >= b.size)
       throw std::invalid_argument(std::string(site.entry) + ": '" + b.name + "' has " +
                                   std::to_string(b.size) +
                                   " elements, but the kernel touches element " + std::to_string(i) +
-                                  " (" + site.shown + ")");
+                                  (site.shown.empty() ? "" : " (" + site.shown + ")"));
   }
 }
 
@@ -55,7 +57,8 @@ template <typename T> class ProbeInput {
 public:
   ProbeInput(const ProbeSite& site, const char* name, const T* data, std::size_t size,
              const char* adj_name = "", const void* adj = nullptr, std::size_t adj_size = 0)
-      : site_(site), data_(data), primal_{name, data, size}, adjoint_{adj_name, adj, adj_size} {}
+      : site_(site),
+        data_(data), primal_{name, data, size}, adjoint_{adj_name, adj, adj_size, true} {}
   template <typename I> T operator[](I i) const {
     probe_index(site_, i, {primal_, adjoint_});
     return data_[i];
@@ -76,7 +79,8 @@ template <typename T> class ProbeOutput {
 public:
   ProbeOutput(const ProbeSite& site, const char* name, const T* seed, std::size_t size,
               T* buffer = nullptr, std::size_t buffer_size = 0)
-      : site_(site), seed_{name, seed, size}, kept_{name, buffer, buffer_size}, buffer_(buffer) {}
+      : site_(site), seed_{name, seed, size}, kept_{name, buffer, buffer_size, true},
+        buffer_(buffer) {}
   template <typename I> T& operator[](I i) const {
     probe_index(site_, i, {seed_, kept_});
     return buffer_ ? buffer_[i] : scratch_;

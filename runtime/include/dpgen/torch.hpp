@@ -49,9 +49,10 @@ template <typename T> T narrow(std::int64_t v, const char* op, const char* arg) 
   if constexpr (std::is_enum_v<T>) { // (an enum parameter: its underlying type's range)
     return static_cast<T>(narrow<std::underlying_type_t<T>>(v, op, arg));
   } else {
+    // (a negative v is below every unsigned T's minimum; compared as unsigned only when >= 0)
     TORCH_CHECK(v >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
-                    static_cast<std::uint64_t>(v) <=
-                        static_cast<std::uint64_t>(std::numeric_limits<T>::max()),
+                    (v < 0 || static_cast<std::uint64_t>(v) <=
+                                  static_cast<std::uint64_t>(std::numeric_limits<T>::max())),
                 op, ": argument '", arg, "' = ", v, " does not fit the kernel's ", sizeof(T) * 8,
                 "-bit ", std::numeric_limits<T>::is_signed ? "signed" : "unsigned", " type");
     return static_cast<T>(v);

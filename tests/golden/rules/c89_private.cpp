@@ -205,6 +205,17 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   }
 // CPP-NEXT: }
 // CPP-EMPTY:
+// CPP-NEXT: // c89_private's loops run once on these arrays (c89_private_probe), writing nothing: throws
+// CPP-NEXT: // std::invalid_argument, its message starting with `caller`, at the first index into u, v or an
+// CPP-NEXT: // output that is out of range.
+// CPP-NEXT: void c89_private_check_reach(const char* caller, const double* u, size_t u_size, double* u_adj,
+// CPP-NEXT:                              size_t u_adj_size, const double* v_adj, size_t v_adj_size, int n) {
+// CPP-NEXT:   const std::string shown = "n = " + std::to_string(n);
+// CPP-NEXT:   const dpgen::ProbeSite site{caller, shown};
+// CPP-NEXT:   c89_private_probe(dpgen::ProbeInput<double>(site, "u", u, u_size, "u_adj", u_adj, u_adj_size),
+// CPP-NEXT:                     dpgen::ProbeOutput<double>(site, "v_adj", v_adj, v_adj_size), n);
+// CPP-NEXT: }
+// CPP-EMPTY:
 // CPP-NEXT: // c89_private_adjoint with the size of every array, checked against the elements the kernel
 // CPP-NEXT: // touches.
 // CPP-NEXT: void c89_private_adjoint_checked(const double* u, size_t u_size, double* u_adj, size_t u_adj_size,
@@ -282,16 +293,14 @@ DPGEN_KERNEL void c89_private(DPGEN_IN const double* u, DPGEN_OUT double* v, int
 // CPP-NEXT:   const std::ptrdiff_t v_maybe_lo = std::min<std::ptrdiff_t>({0, n - 1});
 // CPP-NEXT:   const std::ptrdiff_t v_maybe_hi = std::max<std::ptrdiff_t>({0, n - 1});
 // CPP-NEXT:   // u, v: what the kernel touches depends on the data. Where the ranges above do not settle it, its
-// CPP-NEXT:   // loops run once (c89_private_probe), writing nothing, with each index into them and the outputs
-// CPP-NEXT:   // checked before it is used.
+// CPP-NEXT:   // loops run once, writing nothing, with each index into them and the outputs checked before it is
+// CPP-NEXT:   // used.
 // CPP-NEXT:   if ((u_maybe_hi >= 0 && (u_maybe_lo < 0 || std::size_t(u_maybe_hi) >= u_size)) ||
 // CPP-NEXT:       (u_adj != nullptr && u_maybe_hi >= 0 &&
 // CPP-NEXT:        (u_maybe_lo < 0 || std::size_t(u_maybe_hi) >= u_adj_size)) ||
 // CPP-NEXT:       (v_maybe_hi >= 0 && (v_maybe_lo < 0 || std::size_t(v_maybe_hi) >= v_adj_size))) {
-// CPP-NEXT:     const std::string shown = "n = " + std::to_string(n);
-// CPP-NEXT:     const dpgen::ProbeSite site{"c89_private_adjoint_checked", shown};
-// CPP-NEXT:     c89_private_probe(dpgen::ProbeInput<double>(site, "u", u, u_size, "u_adj", u_adj, u_adj_size),
-// CPP-NEXT:                       dpgen::ProbeOutput<double>(site, "v_adj", v_adj, v_adj_size), n);
+// CPP-NEXT:     c89_private_check_reach("c89_private_adjoint_checked", u, u_size, u_adj, u_adj_size, v_adj,
+// CPP-NEXT:                             v_adj_size, n);
 // CPP-NEXT:   }
 // CPP-NEXT:   c89_private_adjoint(u, u_adj, v_adj, n);
 // CPP-NEXT: }

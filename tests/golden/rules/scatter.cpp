@@ -154,6 +154,19 @@ DPGEN_KERNEL void scatter(DPGEN_IN const double* q, DPGEN_IN const double* vel,
 // CPP-NEXT:   }
 // CPP-NEXT: }
 // CPP-EMPTY:
+// CPP-NEXT: // scatter's loops run once on these arrays (scatter_probe), writing nothing: throws
+// CPP-NEXT: // std::invalid_argument, its message starting with `caller`, at the first index into q or an output
+// CPP-NEXT: // that is out of range.
+// CPP-NEXT: void scatter_check_reach(const char* caller, const double* q, size_t q_size, double* q_adj,
+// CPP-NEXT:                          size_t q_adj_size, const double* vel, size_t vel_size, double* vel_adj,
+// CPP-NEXT:                          size_t vel_adj_size, const double* q_next_adj, size_t q_next_adj_size,
+// CPP-NEXT:                          int n, double dt) {
+// CPP-NEXT:   const std::string shown = "n = " + std::to_string(n);
+// CPP-NEXT:   const dpgen::ProbeSite site{caller, shown};
+// CPP-NEXT:   scatter_probe(dpgen::ProbeInput<double>(site, "q", q, q_size, "q_adj", q_adj, q_adj_size), vel,
+// CPP-NEXT:                 dpgen::ProbeOutput<double>(site, "q_next_adj", q_next_adj, q_next_adj_size), n, dt);
+// CPP-NEXT: }
+// CPP-EMPTY:
 // CPP-NEXT: // scatter_adjoint with the size of every array, checked against the elements the kernel touches.
 // CPP-NEXT: void scatter_adjoint_checked(const double* q, size_t q_size, double* q_adj, size_t q_adj_size,
 // CPP-NEXT:                              const double* vel, size_t vel_size, double* vel_adj,
@@ -205,15 +218,10 @@ DPGEN_KERNEL void scatter(DPGEN_IN const double* q, DPGEN_IN const double* vel,
 // CPP-NEXT:         "n = " + std::to_string(n) + ")");
 // CPP-NEXT:   }
 // CPP-NEXT:   // q: what the kernel touches depends on the data. Where the ranges above do not settle it, its
-// CPP-NEXT:   // loops run once (scatter_probe), writing nothing, with each index into it and the outputs
-// CPP-NEXT:   // checked before it is used.
-// CPP-NEXT:   {
-// CPP-NEXT:     const std::string shown = "n = " + std::to_string(n);
-// CPP-NEXT:     const dpgen::ProbeSite site{"scatter_adjoint_checked", shown};
-// CPP-NEXT:     scatter_probe(dpgen::ProbeInput<double>(site, "q", q, q_size, "q_adj", q_adj, q_adj_size), vel,
-// CPP-NEXT:                   dpgen::ProbeOutput<double>(site, "q_next_adj", q_next_adj, q_next_adj_size), n,
-// CPP-NEXT:                   dt);
-// CPP-NEXT:   }
+// CPP-NEXT:   // loops run once, writing nothing, with each index into it and the outputs checked before it is
+// CPP-NEXT:   // used.
+// CPP-NEXT:   scatter_check_reach("scatter_adjoint_checked", q, q_size, q_adj, q_adj_size, vel, vel_size,
+// CPP-NEXT:                       vel_adj, vel_adj_size, q_next_adj, q_next_adj_size, n, dt);
 // CPP-NEXT:   scatter_adjoint(q, q_adj, vel, vel_adj, q_next_adj, n, dt);
 // CPP-NEXT: }
 // CPP-EMPTY:
