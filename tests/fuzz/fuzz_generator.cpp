@@ -32,6 +32,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -39,15 +40,20 @@
 
 namespace {
 
-std::string read_file(const char* path) {
+std::string read_file(const std::string& path) {
   std::ifstream f(path);
+  if (!f) {
+    std::fprintf(stderr, "fuzz_generator: cannot read %s\n", path.c_str());
+    std::abort();
+  }
   std::stringstream s;
   s << f.rdbuf();
   return s.str();
 }
 
 const std::string& annotate_header() {
-  static const std::string text = read_file(DPGEN_ANNOTATE_HPP);
+  static const std::string text =
+      read_file(std::string(DPGEN_RUNTIME_INCLUDE_DIR) + "/dpgen/annotate.hpp");
   return text;
 }
 
@@ -55,15 +61,19 @@ const std::string& annotate_header() {
 // class headers (array views, member-kernel classes), by the names the seeds
 // use ("include/user_views.hpp") and the names they use among themselves;
 // and the runtime headers generated code includes (view_buffer.hpp: a staged
-// adjoint's view outputs; row_pointers.hpp: rows as nested vectors).
+// adjoint's view outputs; row_pointers.hpp: rows as nested vectors;
+// checked_probe.hpp: the checked entry point's probe of data-dependent
+// accesses). A header missing here makes every seed whose generated code
+// includes it fail to parse.
 const std::vector<std::pair<std::string, std::string>>& headers() {
   static const std::vector<std::pair<std::string, std::string>> h = [] {
     std::vector<std::pair<std::string, std::string>> out = {
-        {"dpgen/annotate.hpp", annotate_header()},
-        {"dpgen/view_buffer.hpp", read_file(DPGEN_VIEW_BUFFER_HPP)},
-        {"dpgen/row_pointers.hpp", read_file(DPGEN_ROW_POINTERS_HPP)}};
+        {"dpgen/annotate.hpp", annotate_header()}};
+    for (const char* name :
+         {"dpgen/view_buffer.hpp", "dpgen/row_pointers.hpp", "dpgen/checked_probe.hpp"})
+      out.push_back({name, read_file(std::string(DPGEN_RUNTIME_INCLUDE_DIR) + "/" + name)});
     for (const char* name : {"user_views.hpp", "member_classes.hpp", "boundary_kinds.hpp"}) {
-      std::string text = read_file((std::string(DPGEN_STYLE_INCLUDE_DIR) + "/" + name).c_str());
+      std::string text = read_file(std::string(DPGEN_STYLE_INCLUDE_DIR) + "/" + name);
       out.push_back({name, text});
       out.push_back({std::string("include/") + name, text});
     }

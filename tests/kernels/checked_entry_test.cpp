@@ -4,6 +4,8 @@
 // and the sizes.
 #include <doctest/doctest.h>
 
+#include "support/thrown.hpp"
+
 #include "laplacian2d_adjoint.hpp"
 #include "semi_lagrangian_adjoint.hpp"
 #include "shifted_read_adjoint.hpp"
@@ -25,14 +27,7 @@ std::vector<double> wave(size_t n, double f) {
   return v;
 }
 
-std::string thrown(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using dpgen_test::thrown;
 } // namespace
 
 TEST_CASE("checked adjoint: right sizes give the raw adjoint") {

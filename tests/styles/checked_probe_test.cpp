@@ -6,6 +6,7 @@
 // naming the array and the element, and writes no adjoint. The adjoints
 // themselves are checked against differences and the tangent.
 #include "support/adjoint_check.hpp"
+#include "support/thrown.hpp"
 
 #include "checked_probe_adjoint.hpp"
 #include "checked_probe_kernels.hpp"
@@ -19,15 +20,7 @@
 
 namespace {
 
-// The message of the std::invalid_argument `f` throws; "" if it throws none.
-std::string thrown(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using dpgen_test::thrown;
 
 bool all_zero(const std::vector<double>& v) {
   for (double x : v)
