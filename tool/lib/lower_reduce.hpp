@@ -93,6 +93,7 @@ public:
   // (ReductionForms::is_accumulator found that they are all it does with `acc`).
   void bind_param(const clang::VarDecl* param, const clang::VarDecl* v) { params_[param] = v; }
   void unbind_param(const clang::VarDecl* param) { params_.erase(param); }
+  const ReductionForms& forms() const { return forms_; }
 
 private:
   Lowerer& L;

@@ -121,6 +121,30 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
                                "time step, carries values from one iteration to the next: "
                                "write the new values to a separate DPGEN_OUT array)"
                              : ""));
+    std::vector<std::pair<const clang::Expr*, bool>> terms;
+    QualType wider;
+    if (op == BO_Assign && !visible_store(current_nest(), p->name, acc->index) &&
+        L.red_.forms().self_update_terms(lhs, rhs, terms, &wider)) {
+      // out[j] = out[j] + e - f where this iteration has not stored out[j] (that is a read
+      // back): the element is summed into, as by `out[j] += e; out[j] -= f;` (C++ adds the
+      // same terms in the same order).
+      for (const auto& [term, negate] : terms) {
+        ExprP r = L.exprs_.expr(term);
+        if (L.bufs_.is_buffer(p->name))
+          L.bufs_.check_buffer_store(p, acc->index, true, lhs);
+        add_store(p->name, acc->index, cast(negate ? unary(Op::Neg, r) : r, p->elem), true,
+                  L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+      }
+      return;
+    }
+    if (!wider.isNull())
+      L.fail(loc, fmt::format("'{}' adds to output '{}' a chain of terms in '{}', wider than its "
+                              "'{}': C++ rounds the sum once, and dpgen sums into an output "
+                              "term by term; write the terms in '{}' (a 0.5f literal, a cast), "
+                              "or sum them into a local first",
+                              L.text(rhs), p->name, wider.getAsString(),
+                              lhs->getType().getUnqualifiedType().getAsString(),
+                              lhs->getType().getUnqualifiedType().getAsString()));
     ExprP value;
     bool accumulate = false;
     if (op == BO_Assign) {

@@ -218,6 +218,80 @@ bool ReductionForms::same_expr(const clang::Expr* a, const clang::Expr* b) const
   return x == y;
 }
 
+namespace {
+
+// `s` may change something as it is evaluated: `++`, `--`, an assignment, or a call of a
+// function that takes a non-const reference or pointer, or of a non-const member function
+// other than an element accessor (`v(j, i)`, `v[i]`).
+bool may_mutate(const Stmt* s) {
+  if (!s)
+    return false;
+  if (const auto* u = dyn_cast<UnaryOperator>(s); u && u->isIncrementDecrementOp())
+    return true;
+  if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp())
+    return true;
+  if (const auto* c = dyn_cast<CallExpr>(s)) {
+    const FunctionDecl* f = c->getDirectCallee();
+    if (!f)
+      return true;
+    const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
+    const bool accessor = oc && (oc->getOperator() == OO_Call || oc->getOperator() == OO_Subscript);
+    if (oc && !accessor)
+      return true;
+    if (const auto* m = dyn_cast<CXXMethodDecl>(f); m && !m->isConst() && !accessor)
+      return true;
+    for (const ParmVarDecl* p : f->parameters()) {
+      const QualType t = p->getType();
+      if ((t->isReferenceType() || t->isPointerType()) && !t->getPointeeType().isConstQualified())
+        return true;
+    }
+  }
+  for (const Stmt* c : s->children())
+    if (may_mutate(c))
+      return true;
+  return false;
+}
+
+} // namespace
+
+bool ReductionForms::self_update_terms(const clang::Expr* lhs, const clang::Expr* rhs,
+                                       std::vector<std::pair<const clang::Expr*, bool>>& terms,
+                                       QualType* wider) const {
+  terms.clear();
+  if (may_mutate(lhs))
+    return false;
+  const QualType type = lhs->getType().getCanonicalType().getUnqualifiedType();
+  QualType other; // a type the chain adds in other than x's
+  const clang::Expr* e = rhs->IgnoreParenImpCasts();
+  while (const auto* b = dyn_cast<BinaryOperator>(e)) {
+    if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
+      break;
+    if (QualType t = b->getType().getCanonicalType().getUnqualifiedType(); t != type)
+      other = t;
+    if (same_expr(b->getLHS(), lhs)) { // x + e, x - e: the chain's start
+      terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
+      std::reverse(terms.begin(), terms.end());
+      if (terms.size() == 1)
+        return true;
+      const ReductionTarget t = target_of(lhs);
+      bool free = t.decl != nullptr;
+      for (const auto& term : terms)
+        free = free && !mentions(term.first, t.decl);
+      if (free && !other.isNull() && wider)
+        *wider = other;
+      return free && other.isNull();
+    }
+    if (terms.empty() && b->getOpcode() == BO_Add && same_expr(b->getRHS(), lhs)) { // e + x
+      terms.push_back({b->getLHS(), false});
+      return true;
+    }
+    terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
+    e = b->getLHS()->IgnoreParenImpCasts();
+  }
+  terms.clear();
+  return false;
+}
+
 bool ReductionForms::is_target(const clang::Expr* e, const ReductionTarget& t) const {
   if (t.element)
     return same_expr(e, t.element);

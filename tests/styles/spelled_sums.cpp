@@ -1,0 +1,85 @@
+// Sums into an output spelled out, as much C and Fortran-ported code writes
+// them: `*acc = *acc + a[i] * b[i]`, `out[j] = out[j] + x - y`, `s[0] = e +
+// s[0]`, through a view and in a void helper. Each is the `+=` of its terms,
+// in C++'s order (a chain adds them one by one, in the output's type); a store
+// to the element earlier in the same iteration makes it a read back instead
+// (compound_scale.cpp). Refused forms: tests/diagnostics/spelled_sums.cpp.
+#include "dpgen/annotate.hpp"
+
+#include "include/user_views.hpp"
+
+#include <cmath>
+
+// A dot product into a scalar output by pointer.
+DPGEN_KERNEL void dot_spelled(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                              DPGEN_OUT double* acc, int n) {
+  *acc = 0.0;
+  for (int i = 0; i < n; ++i)
+    *acc = *acc + a[i] * b[i];
+}
+
+// Row sums with a subtracted term: a chain of two terms.
+DPGEN_KERNEL void rowsum_spelled(DPGEN_IN const double* a, DPGEN_OUT double* out, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    out[j] = 0.0;
+    for (int i = 1; i < nx; ++i)
+      out[j] = out[j] + a[j * nx + i] * a[j * nx + i] - 0.5 * std::sin(a[j * nx + i - 1]);
+  }
+}
+
+// `e + x` and `x - e` into two outputs, C89 counters.
+DPGEN_KERNEL void two_sums_c89(DPGEN_IN const double* a, DPGEN_OUT double* s, DPGEN_OUT double* t,
+                               int n) {
+  int i;
+  s[0] = 1.0;
+  t[0] = 0.0;
+  for (i = 0; i < n; i++) {
+    s[0] = a[i] * a[i] + s[0];
+    t[0] = t[0] - std::exp(0.5 * a[i]);
+  }
+}
+
+// A chain in float: each term a float, as the output.
+DPGEN_KERNEL void column_sums_float(DPGEN_IN const float* a, DPGEN_IN const float* w,
+                                    DPGEN_OUT float* out, int nx, int ny) {
+  for (int i = 0; i < nx; ++i)
+    out[i] = 0.0f;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      out[i] = out[i] + w[j] * a[j * nx + i] - 0.25f * a[j * nx + i] * a[j * nx + i];
+}
+
+// Through views: row j's sum into s(j, 0), beside products of neighbours into r
+// (one column fewer than q).
+DPGEN_KERNEL void view_row_sums(DPGEN_IN grid::View2D<const double> q,
+                                DPGEN_OUT grid::View2D<double> r,
+                                DPGEN_OUT grid::View2D<double> s) {
+  for (int j = 0; j < q.rows(); ++j) {
+    s(j, 0) = q(j, 0);
+    for (int i = 1; i < q.cols(); ++i) {
+      r(j, i - 1) = q(j, i) * q(j, i - 1);
+      s(j, 0) = s(j, 0) + std::cos(q(j, i));
+    }
+  }
+}
+
+// A void helper that adds to an output element.
+static void add_to(double* out, int k, double v) { out[k] = out[k] + v; }
+
+DPGEN_KERNEL void helper_adds(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    out[i] = 0.0;
+  for (int i = 1; i < n - 1; ++i) {
+    add_to(out, i - 1, 0.5 * a[i]);
+    add_to(out, i + 1, 0.5 * a[i] * a[i]);
+  }
+}
+
+// A read back: the element stored earlier in the iteration, then spelled-out added to.
+DPGEN_KERNEL void store_then_add(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                 DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    out[i] = a[i] * a[i];
+    out[i] = out[i] + std::sin(b[i]) + out[i] * b[i];
+  }
+}
