@@ -1,8 +1,9 @@
 // Sums into an output spelled out, as much C and Fortran-ported code writes
 // them: `*acc = *acc + a[i] * b[i]`, `out[j] = out[j] + x - y`, `s[0] = e +
-// s[0]`, through a view and in a void helper. Each is the `+=` of its terms,
-// in C++'s order (a chain adds them one by one, in the output's type); a store
-// to the element earlier in the same iteration makes it a read back instead
+// s[0]`, through a view and in a void helper. Each is the `+=` of its terms
+// to the adjoint; the forward forms add them as C++ does (one by one, a float
+// element and a double term as doubles, rounded once). A store to the element
+// earlier in the same iteration makes it a read back instead
 // (compound_scale.cpp). Refused forms: tests/diagnostics/spelled_sums.cpp.
 #include "dpgen/annotate.hpp"
 
@@ -47,6 +48,26 @@ DPGEN_KERNEL void column_sums_float(DPGEN_IN const float* a, DPGEN_IN const floa
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
       out[i] = out[i] + w[j] * a[j * nx + i] - 0.25f * a[j * nx + i] * a[j * nx + i];
+}
+
+// Float outputs and a float accumulator with double terms (the literals): C++ adds each in
+// double and rounds the sum once to float, and so do the tangent and the parallel forward.
+DPGEN_KERNEL void column_sums_mixed(DPGEN_IN const float* a, DPGEN_OUT float* out,
+                                    DPGEN_OUT float* total, DPGEN_OUT float* mean, int nx, int ny) {
+  for (int i = 0; i < nx; ++i)
+    out[i] = 0.0f;
+  total[0] = 0.0f;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      out[i] = out[i] + a[j * nx + i] - 0.1 * a[j * nx + i] * a[j * nx + i];
+      total[0] += 0.3 * a[j * nx + i];
+    }
+  for (int j = 0; j < ny; ++j) {
+    float s = 0.0f;
+    for (int i = 0; i < nx; ++i)
+      s += 0.7 * a[j * nx + i];
+    mean[j] = s / nx;
+  }
 }
 
 // Through views: row j's sum into s(j, 0), beside products of neighbours into r

@@ -155,3 +155,39 @@ TEST_CASE("styles: view_row_sums") {
     dpgen_test::check_adjoint(p);
   }
 }
+
+TEST_CASE("styles: column_sums_mixed, double terms into float sums rounded once") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {4, 3}, {8, 6}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny), X = size_t(nx), Y = size_t(ny);
+    dpgen_test::Problem<float> p;
+    p.in_sizes = {n};
+    p.out_sizes = {X, 1, Y};
+    p.forward = [&](auto in, auto out) {
+      column_sums_mixed(in[0], out[0], out[1], out[2], nx, ny);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      column_sums_mixed_adjoint(in[0], adj[0], seed[0], seed[1], seed[2], nx, ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      column_sums_mixed_tangent(in[0], d[0], out[0], dout[0], out[1], dout[1], out[2], dout[2], nx,
+                                ny);
+    };
+    dpgen_test::check_adjoint(p);
+
+    // The tangent's values are the kernel's, bit for bit (with each term rounded to float
+    // before it is added, as the generator did before, `total` and `mean` differ here).
+    const std::vector<double> wave = dpgen_test::wavy(n, 0.9, 2.0);
+    std::vector<float> a(n), da(n, 1.0f);
+    for (size_t k = 0; k < n; ++k)
+      a[k] = float(wave[k]);
+    std::vector<float> out(X), total(1), mean(Y), tout(X), ttotal(1), tmean(Y), d1(X), d2(1), d3(Y);
+    column_sums_mixed(a.data(), out.data(), total.data(), mean.data(), nx, ny);
+    column_sums_mixed_tangent(a.data(), da.data(), tout.data(), d1.data(), ttotal.data(), d2.data(),
+                              tmean.data(), d3.data(), nx, ny);
+    CHECK(std::memcmp(out.data(), tout.data(), sizeof(float) * X) == 0);
+    CHECK(std::memcmp(total.data(), ttotal.data(), sizeof(float)) == 0);
+    CHECK(std::memcmp(mean.data(), tmean.data(), sizeof(float) * Y) == 0);
+  }
+}

@@ -119,8 +119,8 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
     L.fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
                             var->getNameAsString()));
   ExprP e = L.exprs_.expr(term);
-  L.stores_.add_store(acc->second.array, acc->second.index, cast(negate ? unary(Op::Neg, e) : e, t),
-                      true, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+  L.stores_.add_sum(acc->second.array, acc->second.index, {negate ? unary(Op::Neg, e) : e}, t,
+                    L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
   return true;
 }
 

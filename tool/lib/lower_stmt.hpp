@@ -104,7 +104,16 @@ public:
 
   // `extremum` (with accumulate): a min/max scan's store (Store::extremum).
   void add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
-                 clang::SourceLocation loc, int extremum = 0);
+                 clang::SourceLocation loc, int extremum = 0) {
+    put(array, std::move(idx), std::move(value), accumulate, p, loc, extremum, nullptr);
+  }
+  // `x += t` (`x = x + t1 - t2`, `s += t` of an accumulator): the terms, signed and as the
+  // kernel computes them, before their conversion to `elem`, the element's type. The adjoint
+  // sees `x += (elem)(t1 + t2)`; the forward forms get the element's new value as C++ computes
+  // it (Store::chain) where that rounds otherwise: a float element plus a double term is
+  // rounded once, as a double sum, and a chain's terms are added one by one.
+  void add_sum(const std::string& array, ExprP idx, const std::vector<ExprP>& terms, Type elem,
+               SourcePos p, clang::SourceLocation loc);
 
   // The value u[k] of an in-place array has here: what this iteration stored
   // at k, or the value before the call (a read of the input).
@@ -129,6 +138,10 @@ public:
 
 private:
   Lowerer& L;
+
+  // add_store, and add_sum with its `terms`.
+  void put(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
+           clang::SourceLocation loc, int extremum, const std::vector<ExprP>* terms);
 
   // var = rhs, var += rhs, ... for a scalar local (or what a helper's `*p`
   // stands for).

@@ -122,37 +122,30 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
                                "write the new values to a separate DPGEN_OUT array)"
                              : ""));
     std::vector<std::pair<const clang::Expr*, bool>> terms;
-    QualType wider;
     if (op == BO_Assign && !visible_store(current_nest(), p->name, acc->index) &&
-        L.red_.forms().self_update_terms(lhs, rhs, terms, &wider)) {
+        L.red_.forms().self_update_terms(lhs, rhs, terms)) {
       // out[j] = out[j] + e - f where this iteration has not stored out[j] (that is a read
-      // back): the element is summed into, as by `out[j] += e; out[j] -= f;` (C++ adds the
-      // same terms in the same order).
+      // back): the element is summed into, as C++ adds the terms.
+      std::vector<ExprP> lowered;
       for (const auto& [term, negate] : terms) {
         ExprP r = L.exprs_.expr(term);
-        if (L.bufs_.is_buffer(p->name))
-          L.bufs_.check_buffer_store(p, acc->index, true, lhs);
-        add_store(p->name, acc->index, cast(negate ? unary(Op::Neg, r) : r, p->elem), true,
-                  L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+        lowered.push_back(negate ? unary(Op::Neg, r) : r);
       }
+      if (L.bufs_.is_buffer(p->name))
+        L.bufs_.check_buffer_store(p, acc->index, true, lhs);
+      add_sum(p->name, acc->index, lowered, p->elem, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
       return;
     }
-    if (!wider.isNull())
-      L.fail(loc, fmt::format("'{}' adds to output '{}' a chain of terms in '{}', wider than its "
-                              "'{}': C++ rounds the sum once, and dpgen sums into an output "
-                              "term by term; write the terms in '{}' (a 0.5f literal, a cast), "
-                              "or sum them into a local first",
-                              L.text(rhs), p->name, wider.getAsString(),
-                              lhs->getType().getUnqualifiedType().getAsString(),
-                              lhs->getType().getUnqualifiedType().getAsString()));
     ExprP value;
-    bool accumulate = false;
     if (op == BO_Assign) {
       value = L.exprs_.expr(rhs);
     } else if (op == BO_AddAssign || op == BO_SubAssign) {
       ExprP r = rhs ? L.exprs_.expr(rhs) : int_const(1);
-      value = op == BO_AddAssign ? r : unary(Op::Neg, r);
-      accumulate = true;
+      if (L.bufs_.is_buffer(p->name))
+        L.bufs_.check_buffer_store(p, acc->index, true, lhs);
+      add_sum(p->name, acc->index, {op == BO_AddAssign ? r : unary(Op::Neg, r)}, p->elem,
+              L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+      return;
     } else if ((op == BO_MulAssign || op == BO_DivAssign) &&
                visible_store(current_nest(), p->name, acc->index)) {
       // b[i] = t; ... b[i] *= s;: the element's value is this iteration's store (a read back),
@@ -167,8 +160,8 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
                               BinaryOperator::getOpcodeStr(op).str(), p->name));
     }
     if (L.bufs_.is_buffer(p->name)) // a line buffer: in bounds, no value carried (lower_buffer.cpp)
-      L.bufs_.check_buffer_store(p, acc->index, accumulate, lhs);
-    add_store(p->name, acc->index, cast(value, p->elem), accumulate, L.pos(lhs->getBeginLoc()),
+      L.bufs_.check_buffer_store(p, acc->index, false, lhs);
+    add_store(p->name, acc->index, cast(value, p->elem), false, L.pos(lhs->getBeginLoc()),
               lhs->getBeginLoc());
     return;
   }
@@ -285,8 +278,28 @@ bool Stores::is_prefix(const std::vector<PathCond>& prefix, const std::vector<Pa
   return true;
 }
 
-void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool accumulate,
-                       SourcePos p, SourceLocation loc, int extremum) {
+namespace {
+
+// `base + t1 + t2 ...` as C++ adds it (each sum in the wider of its operands' types), converted
+// to `elem`.
+ExprP added_onto(ExprP base, const std::vector<ExprP>& terms, Type elem) {
+  for (const ExprP& t : terms)
+    base = binary(Op::Add, base, t);
+  return cast(base, elem);
+}
+
+} // namespace
+
+void Stores::add_sum(const std::string& array, ExprP idx, const std::vector<ExprP>& terms,
+                     Type elem, SourcePos p, SourceLocation loc) {
+  ExprP sum = terms.at(0);
+  for (size_t k = 1; k < terms.size(); ++k)
+    sum = binary(Op::Add, sum, terms[k]);
+  put(array, std::move(idx), cast(sum, elem), true, p, loc, 0, &terms);
+}
+
+void Stores::put(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,
+                 SourceLocation loc, int extremum, const std::vector<ExprP>* terms) {
   for (const auto& [depth, where] : L.cond_operands_)
     if (depth < L.frames_.size())
       L.fail(loc, fmt::format("a call in an operand that C++ evaluates only under a condition "
@@ -333,17 +346,27 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
     // (the value is evaluated past the arm, in a select on the arm's
     // conditions, which may read the arm's values too: `if (d > 0.0)`)
     ExprP cond = path_condition(L.path_, prev->path.size());
+    std::vector<ExprP> guarded_terms;
+    if (terms)
+      guarded_terms = *terms;
     if (cond) {
       cond = L.guards_.guarded(cond, prev->path.size());
       value = L.guards_.guarded(value, prev->path.size());
+      for (ExprP& t : guarded_terms)
+        t = L.guards_.guarded(t, prev->path.size());
       if (accumulate || extremum) // (the earlier value is in both arms of the select below)
         shared_value(*prev, local_base(array));
     }
+    // (`x[k] = a; x[k] += b;`: a + b as C++ adds it, also where b is wider than x)
+    auto add_to = [&](const ExprP& before) {
+      return terms ? added_onto(before, guarded_terms, before->type)
+                   : binary(Op::Add, before, value);
+    };
     ExprP updated =
         extremum     ? call("dpgen_nograd",
                             {call(extremum > 0 ? "max" : "min", {prev->value, value}, value->type)},
                             value->type)
-        : accumulate ? binary(Op::Add, prev->value, value)
+        : accumulate ? add_to(prev->value)
                      : value;
     if (prev->accumulate && !prev->extremum && !accumulate && !extremum) {
       // `x[k] += a; x[k] = b;`: the element holds b, what it held is gone
@@ -368,7 +391,7 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
                        prev->value);
       // (in both arms of the select: one local, `x_1 = x[k] + a`)
       const ExprP shared = cond ? local_at(*prev, local_base(array), before) : before;
-      const ExprP after = binary(Op::Add, shared, value);
+      const ExprP after = add_to(shared);
       prev->chain = cond ? select(cond, after, shared) : after;
     } else {
       prev->chain = nullptr;
@@ -418,6 +441,14 @@ void Stores::add_store(const std::string& array, ExprP idx, ExprP value, bool ac
   Store st{array, idx, value, L.path_, p};
   st.accumulate = accumulate;
   st.extremum = extremum;
+  // (`x += t` where x + t rounds otherwise than x + (elem)t, or a chain: the element's new value
+  // for the forward forms)
+  if (terms &&
+      (terms->size() > 1 || (value->type == Type::Float && terms->front()->type == Type::Double))) {
+    const Param* a = L.k_.find_param(array);
+    st.chain = added_onto(read(array, idx, value->type, p, a ? shape_of(*a) : Shape{}), *terms,
+                          value->type);
+  }
   st.seq = L.next_store_seq_++;
   nest.stores.push_back(st);
 }

@@ -254,32 +254,26 @@ bool may_mutate(const Stmt* s) {
 
 } // namespace
 
-bool ReductionForms::self_update_terms(const clang::Expr* lhs, const clang::Expr* rhs,
-                                       std::vector<std::pair<const clang::Expr*, bool>>& terms,
-                                       QualType* wider) const {
+bool ReductionForms::self_update_terms(
+    const clang::Expr* lhs, const clang::Expr* rhs,
+    std::vector<std::pair<const clang::Expr*, bool>>& terms) const {
   terms.clear();
   if (may_mutate(lhs))
     return false;
-  const QualType type = lhs->getType().getCanonicalType().getUnqualifiedType();
-  QualType other; // a type the chain adds in other than x's
   const clang::Expr* e = rhs->IgnoreParenImpCasts();
   while (const auto* b = dyn_cast<BinaryOperator>(e)) {
     if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
       break;
-    if (QualType t = b->getType().getCanonicalType().getUnqualifiedType(); t != type)
-      other = t;
     if (same_expr(b->getLHS(), lhs)) { // x + e, x - e: the chain's start
       terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
       std::reverse(terms.begin(), terms.end());
       if (terms.size() == 1)
         return true;
       const ReductionTarget t = target_of(lhs);
-      bool free = t.decl != nullptr;
       for (const auto& term : terms)
-        free = free && !mentions(term.first, t.decl);
-      if (free && !other.isNull() && wider)
-        *wider = other;
-      return free && other.isNull();
+        if (!t.decl || mentions(term.first, t.decl))
+          return false;
+      return true;
     }
     if (terms.empty() && b->getOpcode() == BO_Add && same_expr(b->getRHS(), lhs)) { // e + x
       terms.push_back({b->getLHS(), false});

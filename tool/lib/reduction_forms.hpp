@@ -44,14 +44,11 @@ public:
                                              bool& negate);
   // The terms of `x = x + e`, `x = x - e`, `x = e + x` and of a chain `x = x + e - f + ...`
   // (x the leftmost operand), each with its sign (negate), in the order C++ adds them; false
-  // for any other form, for an `x` that may change something as it is evaluated (`out[k++]`), and
-  // for a chain whose terms mention x's variable or that adds in a type other than x's (added one
-  // by one, the terms would be rounded where C++ rounds once; `wider` is then set to the type it
-  // adds in). One term is `x += e` exactly; a chain is its terms added one by one, in order: the
-  // same operations.
+  // for any other form, for an `x` that may change something as it is evaluated
+  // (`out[k++]`), and for a chain whose terms mention x's variable (they would see x as it
+  // was before the statement, not as the sum so far).
   bool self_update_terms(const clang::Expr* lhs, const clang::Expr* rhs,
-                         std::vector<std::pair<const clang::Expr*, bool>>& terms,
-                         clang::QualType* wider = nullptr) const;
+                         std::vector<std::pair<const clang::Expr*, bool>>& terms) const;
   // `s` mentions `v`.
   static bool mentions(const clang::Stmt* s, const clang::ValueDecl* v);
   // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
