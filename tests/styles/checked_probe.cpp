@@ -66,3 +66,14 @@ DPGEN_KERNEL void global_weights(DPGEN_IN const double* a, DPGEN_OUT double* out
   for (int i = 0; i < n; ++i)
     out[i] = a[i] * weights4[i];
 }
+
+// A shift in cells computed from a real value (a distance over a spacing), read from a
+// parameter array: the checked entry point defines `c` (reading `shift[0]` only once its size is
+// checked) to compute `m` and the range of `a` it reaches.
+DPGEN_KERNEL void shift_by_distance(DPGEN_IN const double* a, const double* shift,
+                                    DPGEN_OUT double* out, int n, double h) {
+  double c = shift[0] / h;
+  int m = (int)c;
+  for (int i = 0; i < n; ++i)
+    out[i] = 2.0 * a[i + m];
+}

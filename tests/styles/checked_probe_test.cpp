@@ -263,3 +263,30 @@ TEST_CASE("checked probe: an empty array the data reaches; a global table") {
   global_weights_adjoint_checked(a.data(), 4, checked.data(), 4, s5.data(), 4, 4);
   CHECK(checked == raw);
 }
+
+TEST_CASE("checked probe: a shift in cells computed from a real local") {
+  const int n = 4;
+  const double h = 0.5;
+  const std::vector<double> shift = {1.0}; // 2 cells: a[2] .. a[5]
+  const std::vector<double> a = dpgen_test::wavy(6, 0.1), seed = dpgen_test::wavy(n, 0.4);
+  std::vector<double> raw(6, 0.0), checked(6, 0.0);
+  shift_by_distance_adjoint(a.data(), raw.data(), shift.data(), seed.data(), n, h);
+  shift_by_distance_adjoint_checked(a.data(), 6, checked.data(), 6, shift.data(), 1, seed.data(), n,
+                                    n, h);
+  CHECK(checked == raw);
+  CHECK(raw[5] == 2.0 * seed[3]);
+  // a has 5 elements: the kernel reads a[5].
+  std::vector<double> a5(5, 0.0);
+  std::string m = thrown([&] {
+    shift_by_distance_adjoint_checked(a.data(), 5, a5.data(), 5, shift.data(), 1, seed.data(), n, n,
+                                      h);
+  });
+  CHECK(has(m, "'a' has 5 elements, but the kernel touches elements 2 to 5"));
+  CHECK(all_zero(a5));
+  // shift is empty: its element 0 is not read.
+  m = thrown([&] {
+    shift_by_distance_adjoint_checked(a.data(), 6, checked.data(), 6, shift.data(), 0, seed.data(),
+                                      n, n, h);
+  });
+  CHECK(has(m, "'shift' has 0 elements, but the kernel touches element 0"));
+}

@@ -16,6 +16,7 @@
 #include "derive.hpp"
 #include "emit_forward.hpp"
 #include "emit_util.hpp"
+#include "ir_walk.hpp"
 #include "print.hpp"
 #include "prove.hpp"
 #include "schedule.hpp"
@@ -197,13 +198,28 @@ std::string sizes_tail(const std::string& sizes) {
   return sizes == "std::string()" ? "" : fmt::format(" + \" (\" + {} + \")\"", sizes);
 }
 
-// The integer kernel-level locals, which the ranges may use (x_min = *xmin; not the real ones,
-// which would read arrays before their sizes are checked); each array element one of them
-// reads is checked first, against its array's size (`caller`: C++ for the message's start).
+// The integer kernel-level locals, which the ranges may use (x_min = *xmin), and the real ones
+// they are computed from (`const int m = (int)s;`), not the others, which might read arrays
+// before their sizes are checked; each array element one of them reads is checked first,
+// against its array's size (`caller`: C++ for the message's start).
 void define_checked_int_locals(Code& code, const Kernel& k, const std::string& caller,
                                const std::string& sizes) {
+  std::set<const LocalVar*> needed, seen;
+  for (const auto& l : k.kernel_locals)
+    if (l->def->type == Type::Int) {
+      needed.insert(l.get());
+      walk(
+          l->def,
+          [&](const ExprP& x) {
+            if (x->op == Op::Local)
+              needed.insert(x->local.get());
+            return true;
+          },
+          [](const ExprP&) { return true; }, seen);
+    }
+  std::set<std::string> checked; // (an element read by two of them: checked once)
   for (const auto& l : k.kernel_locals) {
-    if (l->def->type != Type::Int)
+    if (!needed.count(l.get()))
       continue;
     for (const auto& site : reads_in(l->def)) {
       const Param* p = k.find_param(site.read->name);
@@ -213,6 +229,8 @@ void define_checked_int_locals(Code& code, const Kernel& k, const std::string& c
       std::string cond = fmt::format("({}) < 0 || std::size_t({}) >= {}", idx, idx, size);
       if (!site.conds.empty()) // (read where these hold only)
         cond = fmt::format("({}) && ({})", conjunction(site.conds), cond);
+      if (!checked.insert(cond).second)
+        continue;
       code.open(fmt::format("if ({})", cond));
       code.line("throw std::invalid_argument(std::string({}) + \": '{}' has \" + "
                 "std::to_string({}) + \" elements, but the kernel touches element \" + "
