@@ -77,3 +77,15 @@ DPGEN_KERNEL void shift_by_distance(DPGEN_IN const double* a, const double* shif
   for (int i = 0; i < n; ++i)
     out[i] = 2.0 * a[i + m];
 }
+
+// Rates by material, a global the gradient reaches (DPGEN_IN), and a constant table of
+// weights, both read at a material index per cell: a material index past 2 (3) reads past
+// the global's (the table's) end; the checked entry point's probe takes each global's place.
+DPGEN_IN double g_rate[3] = {0.5, 1.0, 2.0};
+static const double kind_weight[4] = {1.0, 0.75, 0.5, 0.25};
+
+DPGEN_KERNEL void rate_by_material(DPGEN_IN const double* a, const int* material,
+                                   DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    out[i] = g_rate[material[i]] * a[i] * kind_weight[material[i] + 1];
+}

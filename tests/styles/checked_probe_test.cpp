@@ -290,3 +290,38 @@ TEST_CASE("checked probe: a shift in cells computed from a real local") {
   });
   CHECK(has(m, "'shift' has 0 elements, but the kernel touches element 0"));
 }
+
+TEST_CASE("checked probe: global arrays read at a material index") {
+  const int n = 5;
+  const std::vector<double> a = dpgen_test::wavy(n, 0.1), seed = dpgen_test::wavy(n, 0.4);
+  std::vector<int> material = {0, 2, 1, 2, 0};
+  std::vector<double> raw(n, 0.0), checked(n, 0.0), rate_raw(3, 0.0), rate_checked(3, 0.0);
+  g_rate_adj = rate_raw.data();
+  rate_by_material_adjoint(a.data(), raw.data(), material.data(), seed.data(), n);
+  g_rate_adj = rate_checked.data();
+  rate_by_material_adjoint_checked(a.data(), n, checked.data(), n, material.data(), n, seed.data(),
+                                   n, n);
+  CHECK(checked == raw);
+  CHECK(rate_checked == rate_raw);
+  CHECK(rate_raw[1] == doctest::Approx(a[2] * 0.5 * seed[2]));
+  // material 3: g_rate[3] (3 elements) and kind_weight[4] (4 elements).
+  material[3] = 3;
+  std::vector<double> zero(n, 0.0), rate_zero(3, 0.0);
+  g_rate_adj = rate_zero.data();
+  std::string m = thrown([&] {
+    rate_by_material_adjoint_checked(a.data(), n, zero.data(), n, material.data(), n, seed.data(),
+                                     n, n);
+  });
+  CHECK(has(m, "rate_by_material_adjoint_checked: 'g_rate' has 3 elements, but the kernel touches "
+               "element 3 (n = 5)"));
+  CHECK(all_zero(zero));
+  CHECK(all_zero(rate_zero));
+  // material -1 reads g_rate[-1] first.
+  material[3] = -1;
+  m = thrown([&] {
+    rate_by_material_adjoint_checked(a.data(), n, zero.data(), n, material.data(), n, seed.data(),
+                                     n, n);
+  });
+  CHECK(has(m, "'g_rate' has 3 elements, but the kernel touches element -1"));
+  g_rate_adj = nullptr;
+}

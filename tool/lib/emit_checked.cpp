@@ -184,7 +184,9 @@ std::set<std::string> uncertain_arrays(const Kernel& k, const std::map<std::stri
       continue;
     if (!it->second.dependent && it->second.maybe_highs.empty())
       continue;
-    if (probe && !p.global) // (a global keeps its name: no stand-in can take its place)
+    // (a global pointer has no size to check against; a global array of known size has a
+    // stand-in by its name in the probe, a parameter of the probe function)
+    if (probe && (!p.global || (p.global_count >= 0 && p.kind != ParamKind::Out)))
       probed.insert(p.name);
     else if (unchecked)
       unchecked->push_back(p.name);
@@ -256,7 +258,7 @@ struct ProbeArg {
 std::vector<ProbeArg> probe_args(const Kernel& k, const std::set<std::string>& probed) {
   std::vector<ProbeArg> out;
   for (const auto& p : k.params)
-    if (!p.global)
+    if (!p.global || probed.count(p.name))
       out.push_back({&p, p.kind == ParamKind::Out || probed.count(p.name) > 0});
   for (const auto& h : k.hidden)
     out.push_back({&h, true, true});
@@ -281,12 +283,22 @@ void emit_probe_function(Code& code, const ForwardPlan& plan, const std::set<std
             "(dpgen/checked_probe.hpp): each index into {} and into the outputs checked "
             "before it is used, nothing of the caller's written.",
             k.name, k.name, fmt::join(what, ", "), fmt::join(what, ", "));
+  // (a global's stand-in takes its name: the loops, printed as the kernel's, index it)
+  const bool globals = std::any_of(k.params.begin(), k.params.end(), [&](const Param& p) {
+    return p.global && probed.count(p.name);
+  });
+  if (globals) {
+    code.raw("#pragma GCC diagnostic push\n");
+    code.raw("#pragma GCC diagnostic ignored \"-Wshadow\"\n");
+  }
   code.open(fmt::format("static void {}({})", probe_name(k), fmt::join(ps, ", ")));
   define_kernel_locals(code, k);
   ForwardOptions serial;
   serial.threads = false;
   emit_forward_nests(code, plan, serial, false);
   code.close();
+  if (globals)
+    code.raw("#pragma GCC diagnostic pop\n");
   code.raw("\n");
 }
 
@@ -332,13 +344,18 @@ void emit_reach_function(Code& code, const Kernel& k, const std::set<std::string
     } else if (p->kind == ParamKind::Out) {
       args.push_back(fmt::format("dpgen::ProbeOutput<{}>({}, {}, {}, {})", p->elem_name, site,
                                  literal(adj), adj, size_name(k, adj)));
-    } else if (p->kind == ParamKind::In) {
-      args.push_back(fmt::format("dpgen::ProbeInput<{}>({}, {}, {}, {}, {}, {}, {})", p->elem_name,
-                                 site, literal(p->name), p->name, size_name(k, p->name),
-                                 literal(adj), adj, size_name(k, adj)));
     } else {
-      args.push_back(fmt::format("dpgen::ProbeInput<{}>({}, {}, {}, {})", p->elem_name, site,
-                                 literal(p->name), p->name, size_name(k, p->name)));
+      // (a global array: its type's size, and its adjoint's, the global `<name>_adj`)
+      auto size = [&](const std::string& a) {
+        return p->global ? std::to_string(p->global_count) : size_name(k, a);
+      };
+      if (p->kind == ParamKind::In)
+        args.push_back(fmt::format("dpgen::ProbeInput<{}>({}, {}, {}, {}, {}, {}, {})",
+                                   p->elem_name, site, literal(p->name), p->name, size(p->name),
+                                   literal(adj), adj, size(adj)));
+      else
+        args.push_back(fmt::format("dpgen::ProbeInput<{}>({}, {}, {}, {})", p->elem_name, site,
+                                   literal(p->name), p->name, size(p->name)));
     }
   }
   code.line("// {}'s loops run once on these arrays ({}), writing nothing: throws "
@@ -427,6 +444,21 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
     code.close();
   };
   std::vector<std::string> args, needed;
+  // Where the probe must run for `p`, a probed array (`needed`, or'ed; "true": always).
+  auto need_probe = [&](const Param& p, const Range& r) {
+    if (r.dependent) {
+      needed = {"true"};
+    } else if (needed != std::vector<std::string>{"true"}) {
+      // (where the range over every iteration fits, what the kernel touches does)
+      std::string range = p.name + "_maybe";
+      define_range(range, r.maybe_lows, r.maybe_highs);
+      if (p.kind != ParamKind::Out)
+        needed.push_back("(" + short_of(p.name, range, false) + ")");
+      // (a global's adjoint has the global's size: its own check is the global's)
+      if (p.kind != ParamKind::ConstArray && !p.global)
+        needed.push_back("(" + short_of(p.name + "_adj", range, p.kind == ParamKind::In) + ")");
+    }
+  };
   for (const auto& p : k.params) {
     if (p.global) { // what the kernel surely reads of a global array of a known size
       auto it = ranges.find(p.name);
@@ -434,6 +466,8 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
         define_range(p.name + "_range", it->second.lows, it->second.highs);
         check(p.name, p.name + "_range", false);
       }
+      if (probed.count(p.name))
+        need_probe(p, it->second);
       continue;
     }
     if (p.kind == ParamKind::Scalar) {
@@ -450,20 +484,8 @@ void emit_checked_entry(Code& code, const ForwardPlan& plan) {
       if (p.kind != ParamKind::ConstArray)
         check(p.name + "_adj", range, p.kind == ParamKind::In);
     }
-    if (probed.count(p.name)) {
-      const Range& r = it->second;
-      if (r.dependent) {
-        needed = {"true"};
-      } else if (needed != std::vector<std::string>{"true"}) {
-        // (where the range over every iteration fits, what the kernel touches does)
-        std::string range = p.name + "_maybe";
-        define_range(range, r.maybe_lows, r.maybe_highs);
-        if (p.kind != ParamKind::Out)
-          needed.push_back("(" + short_of(p.name, range, false) + ")");
-        if (p.kind != ParamKind::ConstArray)
-          needed.push_back("(" + short_of(p.name + "_adj", range, p.kind == ParamKind::In) + ")");
-      }
-    }
+    if (probed.count(p.name))
+      need_probe(p, it->second);
     if (p.kind == ParamKind::In) {
       args.push_back(p.name);
       args.push_back(p.name + "_adj");
