@@ -36,18 +36,6 @@ DPGEN_KERNEL void row_incremented(DPGEN_IN const double* a, DPGEN_OUT double* b,
   }
 }
 
-DPGEN_KERNEL void c89_declared_first(DPGEN_IN const double* a, DPGEN_OUT double* b, int nx,
-                                     int ny) {
-  int i, j;
-  const double* row;
-  // CHECK: pointer_locals.cpp:[[@LINE-1]]:17: error: pointer 'row' must be initialised where it is declared with a pointer into an array parameter of the kernel
-  for (j = 0; j < ny; j++) {
-    row = a + j * nx;
-    for (i = 0; i < nx; i++)
-      b[j * nx + i] = row[i];
-  }
-}
-
 DPGEN_KERNEL void into_row_pointers(DPGEN_IN double** a, DPGEN_OUT double* b, int n) {
   const double* first = &a[0][1];
   // CHECK: pointer_locals.cpp:[[@LINE-1]]:17: error: pointer 'first' must be initialised

@@ -194,8 +194,7 @@ const Param* Expressions::array_base(const clang::Expr* base, ExprP* offset) {
                                         "1; p[i])");
     L.fail(base->getBeginLoc(), "array access must index a pointer parameter of the kernel");
   }
-  if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && L.poisoned_.count(v))
-    throw Rejected{}; // its declaration's error is reported already
+  L.ptrs_.check_usable(dyn_cast<VarDecl>(ref->getDecl()), base->getBeginLoc());
   auto it = L.env_.find(dyn_cast<VarDecl>(ref->getDecl()));
   if (it == L.env_.end() || it->second.kind != Binding::ArrayParam) {
     if (const auto* v = dyn_cast<VarDecl>(ref->getDecl()); v && v->hasGlobalStorage())
@@ -448,8 +447,7 @@ ExprP Expressions::decl_ref(const DeclRefExpr* r) {
   if (!v)
     L.fail(r->getLocation(),
            fmt::format("'{}' is outside the kernel subset", r->getDecl()->getNameAsString()));
-  if (L.poisoned_.count(v))
-    throw Rejected{}; // its declaration's error is reported already
+  L.ptrs_.check_usable(v, r->getLocation());
   auto it = L.env_.find(v);
   if (it == L.env_.end()) {
     // A global constant with a known value is a constant.

@@ -1,9 +1,10 @@
 // Lowering, pointer locals (lower_pointer.hpp): `const double* row = a + j *
 // nx;` bound as array `a` at element offset j * nx. The pointer is fixed at
-// its declaration (an assignment to it, `++row`, `row += nx`, is refused where
-// assignments are lowered), so the offset is the value its initialiser has
-// there, counters and locals included; `row[i]` is then `a[j * nx + i]`, as if
-// the kernel had written that. A pointer into anything but a flat array
+// its declaration (an assignment to it, `++row`, `row += nx`, is refused), or,
+// declared with no value (C89), at each assignment at the top of a loop's body
+// before its uses; the offset is the value its initialiser has there, counters
+// and locals included; `row[i]` is then `a[j * nx + i]`, as if the kernel had
+// written that. A pointer into anything but a flat array
 // parameter (a line buffer, a view, row pointers, a std::vector, a scalar by
 // reference, a local) is refused.
 #include "lower_impl.hpp"
@@ -16,12 +17,20 @@ bool PointerLocals::declare(const VarDecl* v) {
     return declare_reference(v);
   if (!t->isPointerType() || !L.scalar_type(t->getPointeeType()))
     return false;
-  std::optional<Binding> b = v->getInit() ? pointer_into(v->getInit()) : std::nullopt;
+  const clang::Expr* init = v->getInit();
+  if (!init || init->IgnoreParenImpCasts()->isNullPointerConstant(
+                   L.ctx_, clang::Expr::NPC_ValueDependentIsNotNull) != clang::Expr::NPCK_NotNull) {
+    deferred_.insert(v); // (`double* row;`, `= NULL`: assigned before it is used, or refused)
+    L.env_.erase(v);     // (a helper's, inlined again: what the last call left is gone)
+    return true;
+  }
+  std::optional<Binding> b = pointer_into(init);
   if (!b)
     L.fail(v->getLocation(),
            fmt::format("pointer '{}' must be initialised where it is declared with a pointer "
                        "into an array parameter of the kernel ('const double* {} = a + j * nx;', "
-                       "'&a[k]'), and is not changed after (declare another for another row)",
+                       "'&a[k]') and not changed after, or declared with no value and assigned "
+                       "in each iteration before it is used ('row = a + j * nx;')",
                        v->getNameAsString(), v->getNameAsString()),
            "dpgen-pointer");
   check_flat(*b, v->getInit());
@@ -69,6 +78,114 @@ void PointerLocals::check_flat(const Binding& b, const clang::Expr* at) {
                        "pointers into flat array parameters ('const double* row = a + j * nx;'); "
                        "index '{}' itself",
                        p->name, p->name),
+           "dpgen-pointer");
+}
+
+bool PointerLocals::assign(const clang::BinaryOperator* b) {
+  const auto* ref = dyn_cast<DeclRefExpr>(b->getLHS()->IgnoreParenImpCasts());
+  const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+  if (!v || !v->getType()->isPointerType() || !L.scalar_type(v->getType()->getPointeeType()))
+    return false;
+  const std::string name = v->getNameAsString();
+  auto refuse = [&](const std::string& why) {
+    L.poisoned_.insert(v); // (its uses are not reported again)
+    L.fail(b->getOperatorLoc(),
+           fmt::format("pointer '{}' is changed here{}; dpgen follows a pointer fixed where it "
+                       "is declared ('const double* {} = a + j * nx;'), or one declared with no "
+                       "value and assigned at the top of each iteration of a loop, before it is "
+                       "used ('{} = a + j * nx;')",
+                       name, why, name, name),
+           "dpgen-pointer");
+  };
+  if (!deferred_.count(v))
+    return false; // (refused as a change of a fixed pointer: Stores::assign)
+  if (L.poisoned_.count(v))
+    throw Rejected{}; // (refused once)
+  if (b->getOpcode() != BO_Assign)
+    refuse(fmt::format(" by '{}' (its value carries from one iteration to the next)",
+                       b->getOpcodeStr().str()));
+  // A statement of a loop's body or of the function's: not in an arm of a condition.
+  const clang::Stmt* stmt = b;
+  auto ps = L.ctx_.getParents(*stmt);
+  if (!ps.empty())
+    if (const auto* w = ps[0].get<clang::ExprWithCleanups>()) {
+      stmt = w;
+      ps = L.ctx_.getParents(*stmt);
+    }
+  bool top = false;
+  if (!ps.empty()) {
+    const clang::Stmt* parent = ps[0].get<clang::Stmt>();
+    const auto is_loop = [](const clang::Stmt* s) {
+      return s &&
+             (isa<ForStmt>(s) || isa<WhileStmt>(s) || isa<DoStmt>(s) || isa<CXXForRangeStmt>(s));
+    };
+    if (parent && isa<CompoundStmt>(parent)) {
+      auto pp = L.ctx_.getParents(*parent);
+      top = !pp.empty() && (is_loop(pp[0].get<clang::Stmt>()) ||
+                            pp[0].get<clang::FunctionDecl>() == v->getDeclContext());
+    } else {
+      top = is_loop(parent);
+    }
+  }
+  if (!top)
+    refuse(" in an arm of a condition or a block of its own (what it points at after the "
+           "block would depend on the path taken)");
+  // The value it holds here must be one this iteration gave it (or none).
+  if (L.env_.count(v)) {
+    auto it = assigned_in_.find(v);
+    if (it == assigned_in_.end() || it->second != L.loop_ids_)
+      refuse(" in a loop, holding a value from before the loop's iteration (in the next "
+             "iteration it would point where this one left it)");
+  }
+  std::optional<Binding> bound = pointer_into(b->getRHS());
+  if (!bound) {
+    L.poisoned_.insert(v);
+    if (const auto* from = dyn_cast<DeclRefExpr>(b->getRHS()->IgnoreParenImpCasts());
+        from && L.poisoned_.count(from->getDecl()))
+      throw Rejected{}; // (`row = plane;`, plane's error reported already)
+    if (const auto* sum = dyn_cast<BinaryOperator>(b->getRHS()->IgnoreParenImpCasts()))
+      for (const clang::Expr* side : {sum->getLHS(), sum->getRHS()})
+        if (const auto* from = dyn_cast<DeclRefExpr>(side->IgnoreParenImpCasts());
+            from && L.poisoned_.count(from->getDecl()))
+          throw Rejected{}; // (`row = plane + j * nx;`)
+    L.fail(b->getRHS()->getBeginLoc(),
+           fmt::format("pointer '{}' must be assigned a pointer into an array parameter of the "
+                       "kernel ('{} = a + j * nx;', '&a[k]')",
+                       name, name),
+           "dpgen-pointer");
+  }
+  check_flat(*bound, b->getRHS());
+  if (!bound->offset)
+    bound->offset = int_const(0);
+  L.env_[v] = *bound;
+  assigned_in_[v] = L.loop_ids_;
+  return true;
+}
+
+void PointerLocals::check_not_stepped(const clang::UnaryOperator* u) {
+  const auto* ref = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
+  const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
+  if (!v || !deferred_.count(v))
+    return;
+  L.poisoned_.insert(v);
+  L.fail(u->getOperatorLoc(),
+         fmt::format("pointer '{}' is stepped by '{}' (its value carries from one iteration to "
+                     "the next); name the row it points at in each iteration ('{} = a + j * "
+                     "nx;')",
+                     v->getNameAsString(), clang::UnaryOperator::getOpcodeStr(u->getOpcode()).str(),
+                     v->getNameAsString()),
+         "dpgen-pointer");
+}
+
+void PointerLocals::check_usable(const VarDecl* v, clang::SourceLocation at) {
+  if (v && L.poisoned_.count(v))
+    throw Rejected{}; // its declaration's (assignment's) error is reported already
+  if (v && deferred_.count(v) && !L.env_.count(v))
+    L.fail(at,
+           fmt::format("pointer '{}' is used before it is assigned (in this iteration: a value "
+                       "from an earlier one, or from before the loop, is not followed); assign "
+                       "it ('{} = a + j * nx;') before its uses, in the same loop body",
+                       v->getNameAsString(), v->getNameAsString()),
            "dpgen-pointer");
 }
 

@@ -9,10 +9,16 @@
 
 #include "lower_common.hpp"
 
+#include <map>
 #include <optional>
+#include <set>
+#include <vector>
 
 namespace clang {
+class BinaryOperator;
 class Expr;
+class SourceLocation;
+class UnaryOperator;
 class VarDecl;
 } // namespace clang
 
@@ -42,8 +48,24 @@ public:
   // refused, never read at the wrong elements.
   const Param* param_of(const Binding& b, const clang::Expr* base, ExprP* offset);
 
+  // `row = a + j * nx;` of a pointer declared with no value (C89: `const double* row;` or
+  // `= NULL` before the loops): bound as a declaration there would bind it, where the
+  // assignment is a statement of a loop's body or of its function's body (no arm of a
+  // condition) and the pointer holds no value from an earlier iteration of that loop (it
+  // would carry one iteration's row into the next). True if `b` assigns a pointer local
+  // (refused otherwise: a pointer declared with its value stays fixed).
+  bool assign(const clang::BinaryOperator* b);
+  // Before a use of `v` at `at`: throws Rejected where `v`'s error is reported already
+  // (Lowerer::poisoned_), fails where it is a pointer declared with no value and not
+  // assigned here; returns otherwise.
+  void check_usable(const clang::VarDecl* v, clang::SourceLocation at);
+  // Fails where `u` steps (`++row`, `row--`) a pointer declared with no value.
+  void check_not_stepped(const clang::UnaryOperator* u);
+
 private:
   Lowerer& L;
+  std::set<const clang::VarDecl*> deferred_;                      // declared with no value
+  std::map<const clang::VarDecl*, std::vector<int>> assigned_in_; // loop_ids_ then
 
   void check_flat(const Binding& b, const clang::Expr* at);
   bool declare_reference(const clang::VarDecl* v);

@@ -598,6 +598,7 @@ void Statements::expr_stmt(const clang::Expr* e) {
   if (const auto* w = dyn_cast<ExprWithCleanups>(e)) // temporaries: std::max(a, 0.0)
     e = w->getSubExpr()->IgnoreParens();
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->isIncrementDecrementOp()) {
+    L.ptrs_.check_not_stepped(u);
     L.stores_.assign(u->getSubExpr(), u->isIncrementOp() ? BO_AddAssign : BO_SubAssign, nullptr,
                      u->getOperatorLoc());
     return;
@@ -610,16 +611,16 @@ void Statements::expr_stmt(const clang::Expr* e) {
     return;
   const auto* b = dyn_cast<BinaryOperator>(e);
   if (!b || !b->isAssignmentOp()) {
-    if (const auto* c = dyn_cast<CallExpr>(e); c && c->getType()->isVoidType()) {
-      (void)L.exprs_.expr(e); // a void helper: its out-parameters and stores (or the unknown call)
-      return;
+    if (isa<CallExpr>(e)) { // a void helper: its out-parameters and stores (or the unknown call)
+      (void)L.exprs_.expr(e);
+      if (e->getType()->isVoidType())
+        return;
     }
-    if (isa<CallExpr>(e))
-      (void)L.exprs_.expr(e); // reports the unknown call
     L.fail(e->getExprLoc(), "expression statement has no effect on an output; only "
                             "assignments are in the kernel subset");
   }
-  L.stores_.assign(b->getLHS(), b->getOpcode(), b->getRHS(), b->getOperatorLoc());
+  if (!L.ptrs_.assign(b)) // (`row = a + j * nx;` of a C89 row pointer: PointerLocals)
+    L.stores_.assign(b->getLHS(), b->getOpcode(), b->getRHS(), b->getOperatorLoc());
 }
 
 } // namespace dpgen::lowering
