@@ -33,7 +33,7 @@ DPGEN_KERNEL void chosen_in_arm(DPGEN_IN const double* a, DPGEN_IN const double*
   const double* src = 0;
   if (k > 0)
     src = a;
-  // CHECK-DAG: c89_row_pointers.cpp:[[@LINE-1]]:9: error: pointer 'src' is changed here in an arm of a condition or a block of its own{{.*}} [dpgen-pointer]
+  // CHECK-DAG: c89_row_pointers.cpp:[[@LINE-1]]:9: error: pointer 'src' is changed here in an arm of a condition, a block of its own or a lambda{{.*}} [dpgen-pointer]
   else
     src = b;
   for (int i = 0; i < n; i++)
@@ -66,6 +66,17 @@ DPGEN_KERNEL void advanced(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx
     row = u;
     row += j * nx;
     // CHECK-DAG: c89_row_pointers.cpp:[[@LINE-1]]:9: error: pointer 'row' is changed here by '+=' (its value carries from one iteration to the next){{.*}} [dpgen-pointer]
+    v[j] = row[0];
+  }
+}
+
+DPGEN_KERNEL void set_by_lambda(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx,
+                                int ny) {
+  const double* row;
+  auto point_at = [&](int j) { row = u + j * nx; };
+  // CHECK-DAG: c89_row_pointers.cpp:[[@LINE-1]]:36: error: pointer 'row' is changed here in an arm of a condition, a block of its own or a lambda{{.*}} [dpgen-pointer]
+  for (int j = 0; j < ny; j++) {
+    point_at(j);
     v[j] = row[0];
   }
 }

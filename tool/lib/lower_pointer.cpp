@@ -128,8 +128,8 @@ bool PointerLocals::assign(const clang::BinaryOperator* b) {
     }
   }
   if (!top)
-    refuse(" in an arm of a condition or a block of its own (what it points at after the "
-           "block would depend on the path taken)");
+    refuse(" in an arm of a condition, a block of its own or a lambda (what it points at "
+           "after it would depend on the path taken, or on the calls)");
   // The value it holds here must be one this iteration gave it (or none).
   if (L.env_.count(v)) {
     auto it = assigned_in_.find(v);
