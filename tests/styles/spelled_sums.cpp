@@ -104,3 +104,21 @@ DPGEN_KERNEL void store_then_add(DPGEN_IN const double* a, DPGEN_IN const double
     out[i] = out[i] + std::sin(b[i]) + out[i] * b[i];
   }
 }
+
+// Local sums spelled out as chains: a double total over the grid (stored to a float) and a
+// float sum per row with double terms (the literals: C++ adds each in double and rounds the
+// row's sum once).
+DPGEN_KERNEL void local_chains(DPGEN_IN const float* a, DPGEN_OUT float* energy,
+                               DPGEN_OUT float* rows, int nx, int ny) {
+  double s = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    float r = 1.0f;
+    for (int i = 0; i < nx; ++i) {
+      const float v = a[j * nx + i];
+      s = s + v - 0.5 * v * v;
+      r = r - 0.25 * std::sin(v) + v * v;
+    }
+    rows[j] = r * r;
+  }
+  energy[0] = s;
+}

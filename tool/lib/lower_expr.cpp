@@ -17,6 +17,33 @@ ExprP spelled_cast(const ExprP& e, uint64_t bits, const std::string& spelling) {
   w->cast_type = spelling;
   return w;
 }
+
+// What a node that only wraps an expression wraps: a temporary, a constant, a template's
+// argument (Dir of template <int Dir>); null for any other node.
+const clang::Expr* wrapped(const clang::Expr* e) {
+  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
+    return m->getSubExpr();
+  if (const auto* w = dyn_cast<ExprWithCleanups>(e))
+    return w->getSubExpr();
+  if (const auto* c = dyn_cast<ConstantExpr>(e))
+    return c->getSubExpr();
+  if (const auto* t = dyn_cast<SubstNonTypeTemplateParmExpr>(e))
+    return t->getReplacement();
+  return nullptr;
+}
+
+// The operands of a call: its arguments, or for `std::min({a, b, c})` and `std::max({...})`
+// the elements of its one initializer list (`list` set).
+std::vector<const clang::Expr*> operands(const CallExpr* c, const std::string& fn, bool& list) {
+  const auto* l = c->getNumArgs() == 1 && (fn == "min" || fn == "max")
+                      ? dyn_cast<CXXStdInitializerListExpr>(c->getArg(0)->IgnoreImplicit())
+                      : nullptr;
+  const auto* init = l ? dyn_cast<InitListExpr>(l->getSubExpr()->IgnoreImplicit()) : nullptr;
+  list = init != nullptr;
+  if (init)
+    return {init->inits().begin(), init->inits().end()};
+  return {c->arg_begin(), c->arg_end()};
+}
 } // namespace
 
 ExprP Expressions::cond(const clang::Expr* e) {
@@ -220,17 +247,11 @@ ExprP Expressions::expr(const clang::Expr* e) {
     return cast_expr(c, c->getSubExpr());
   if (const auto* c = dyn_cast<ExplicitCastExpr>(e))
     return cast_expr(c, c->getSubExpr());
-  if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
-    return expr(m->getSubExpr());
-  if (const auto* w = dyn_cast<ExprWithCleanups>(e))
-    return expr(w->getSubExpr());
-  if (const auto* c = dyn_cast<ConstantExpr>(e))
-    return expr(c->getSubExpr());
-  if (const auto* t = dyn_cast<SubstNonTypeTemplateParmExpr>(e)) // Dir of template <int Dir>
-    return expr(t->getReplacement());
-  if (const auto* l = dyn_cast<IntegerLiteral>(e)) // (3000000000u is positive)
-    return int_const(L.ints_.constant(
-        llvm::APSInt(l->getValue(), l->getType()->isUnsignedIntegerType()), l->getBeginLoc()));
+  if (const clang::Expr* inner = wrapped(e))
+    return expr(inner);
+  clang::Expr::EvalResult n; // 3000000000u (positive), sizeof(w) / sizeof(w[0]): the value
+  if (isa<IntegerLiteral, UnaryExprOrTypeTraitExpr>(e) && e->EvaluateAsInt(n, L.ctx_))
+    return int_const(L.ints_.constant(n.Val.getInt(), e->getBeginLoc()));
   if (const auto* l = dyn_cast<FloatingLiteral>(e)) {
     Type t = L.type_of(e);
     // The literal as written; from a macro (`#define C 0.5` in a header the
@@ -350,8 +371,8 @@ ExprP Expressions::expr(const clang::Expr* e) {
   if (const auto* c = dyn_cast<ConditionalOperator>(e)) {
     ExprP cc = cond(c->getCond());
     Type t = L.type_of(c);
-    // (the false arm first: the order in which GCC evaluated the arguments of
-    // the select this was before, so that locals keep their names)
+    // (the false arm first: the order in which GCC evaluated the arguments of the select this
+    // was before, so that locals keep their names)
     ExprP no = L.guards_.conditional(c->getFalseExpr(), PathCond{cc, false},
                                      [&] { return cast(expr(c->getFalseExpr()), t); });
     ExprP yes = L.guards_.conditional(c->getTrueExpr(), PathCond{cc, true},
@@ -366,8 +387,8 @@ ExprP Expressions::expr(const clang::Expr* e) {
         !it->second.param->container.empty() && md && md->getName() == "size" &&
         m->getNumArgs() == 0)
       return L.scalar_param(it->second.param->name + "_size", Type::Int);
-    // a method of the member kernel's (or the running functor's) object,
-    // on the same object: inlined like a helper, reading the same members
+    // a method of the member kernel's (or the running functor's) object, on the same object:
+    // inlined like a helper, reading the same members
     if (L.this_call(m) && md && md->hasBody() && !md->isVirtual())
       return L.inl_.inline_call(m, md);
     if (const auto* row =
@@ -381,8 +402,8 @@ ExprP Expressions::expr(const clang::Expr* e) {
   }
   if (const auto* c = dyn_cast<CallExpr>(e))
     return call_expr(c);
-  L.fail(e->getExprLoc(),
-         fmt::format("expression '{}' is outside the kernel subset", e->getStmtClassName()));
+  L.fail(e->getExprLoc(), fmt::format("expression '{}' ({}) is outside the kernel subset",
+                                      L.text(e), e->getStmtClassName()));
 }
 
 ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
@@ -545,9 +566,8 @@ ExprP Expressions::call_expr(const CallExpr* c) {
     return L.inl_.inline_call(c, f);
   if (!from_library)
     L.fail(c->getBeginLoc(),
-           fmt::format("call to '{}', whose body dpgen cannot see: helper "
-                       "functions are inlined, so define '{}' in the kernel's "
-                       "file or a header it includes",
+           fmt::format("call to '{}', whose body dpgen cannot see: helper functions are inlined, "
+                       "so define '{}' in the kernel's file or a header it includes",
                        f->getQualifiedNameAsString(), f->getNameAsString()),
            "dpgen-call");
   if (!math) {
@@ -570,9 +590,8 @@ ExprP Expressions::call_expr(const CallExpr* c) {
     }
   }
   if (!math && f->isInStdNamespace() && f->getName() == "clamp" && c->getNumArgs() == 3) {
-    // std::clamp(v, lo, hi) is v < lo ? lo : hi < v ? hi : v, which for lo <= hi (its
-    // precondition) is min(max(v, lo), hi) with std::max's and std::min's ties: the same
-    // value, the same derivatives.
+    // std::clamp(v, lo, hi) is v < lo ? lo : hi < v ? hi : v, which for lo <= hi (its precondition)
+    // is min(max(v, lo), hi) with their ties: the same value, the same derivatives.
     Type t = L.type_of(c);
     auto arg = [&](unsigned i) { return cast(expr(c->getArg(i)), t); };
     ExprP v = arg(0), lo = arg(1), hi = arg(2);
@@ -580,15 +599,21 @@ ExprP Expressions::call_expr(const CallExpr* c) {
   }
   if (!math)
     L.fail(c->getBeginLoc(),
-           fmt::format("call to '{}', which dpgen cannot differentiate; the "
-                       "kernel subset calls only {}",
+           fmt::format("call to '{}', which dpgen cannot differentiate; the kernel subset calls "
+                       "only {}",
                        f->getQualifiedNameAsString(), supported_calls()),
            "dpgen-call");
   Type t = L.type_of(c);
+  bool list = false;
   std::vector<ExprP> args;
-  for (const clang::Expr* a : c->arguments())
+  for (const clang::Expr* a : operands(c, math->name, list))
     args.push_back(cast(expr(a), t == Type::Int ? L.type_of(a) : t));
   std::string fnname = math->name;
+  for (; list && args.size() > 2;
+       args.erase(args.begin() + 1)) // the first least: min(min(a, b), c)
+    args[0] = call(fnname, {args[0], args[1]}, t);
+  if (list && args.size() == 1) // std::min({a})
+    return args[0];
   if (args.size() != math->arity)
     L.fail(c->getBeginLoc(),
            fmt::format("'{}' takes {} argument(s) in the kernel subset", fnname, math->arity),

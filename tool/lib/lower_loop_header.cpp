@@ -174,9 +174,9 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       if (const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
           r && r->getDecl() == var)
         post_decrement = true;
-  ExprP bound = post_decrement             ? L.exprs_.expr(c->getRHS())
-                : c && c->isRelationalOp() ? loop_bound(c, var, cond_op)
-                                           : nullptr;
+  ExprP bound = post_decrement                                   ? L.exprs_.expr(c->getRHS())
+                : c && (c->isRelationalOp() || cond_op == BO_NE) ? loop_bound(c, var, cond_op)
+                                                                 : nullptr;
   L.in_loop_bounds_ = false;
   if (!bound)
     L.fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
@@ -267,6 +267,10 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
            "loop increment must be ++i, i++ or i += s for a constant s (or --i, i -= s for "
            "a loop counting down)",
            "dpgen-loop");
+  // `i != n` stepping by one is `i < n` (counting down, `i > n`); from a start past the bound
+  // the user's loop would run until the counter wraps.
+  if (cond_op == BO_NE && (step == 1 || step == -1))
+    cond_op = step > 0 ? BO_LT : BO_GT;
   ExprP lo, hi;
   ExprP one = int_const(1);
   switch (cond_op) {
@@ -286,7 +290,9 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
     lo = bound, hi = binary(Op::Add, init_value, one);
     break;
   default:
-    L.fail(c->getOperatorLoc(), "loop condition must be <, <=, > or >=", "dpgen-loop");
+    L.fail(c->getOperatorLoc(),
+           "loop condition must be <, <=, > or >= ('!=' where the counter steps by one)",
+           "dpgen-loop");
   }
   const ExprP hi_before_hull = hi; // (a count down's start + 1)
   if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
@@ -469,22 +475,7 @@ ExprP LoopHeaders::loop_bound(const BinaryOperator* c, const VarDecl* var, Binar
     return nullptr;
   op = c->getOpcode();
   if (k.constant_term() == -1) { // -i + rest op 0  <=>  i (flipped op) rest
-    switch (op) {
-    case BO_LT:
-      op = BO_GT;
-      break;
-    case BO_LE:
-      op = BO_GE;
-      break;
-    case BO_GT:
-      op = BO_LT;
-      break;
-    case BO_GE:
-      op = BO_LE;
-      break;
-    default:
-      break;
-    }
+    op = BinaryOperator::reverseComparisonOp(op);
     return poly_expr(rest);
   }
   return poly_expr(-rest); // i + rest op 0  <=>  i op -rest

@@ -109,18 +109,16 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
     extremum_update(acc->second, term, t, lhs->getBeginLoc());
     return true;
   }
-  // s += e, s -= e, s = s + e, s = s - e, s = e + s: the hidden array's
-  // element for this iteration of the outer loops gets += (-)e.
-  const clang::Expr* term = rhs;
-  bool negate = op == BO_SubAssign;
+  // s += e, s -= e, s = s + e, s = e + s, s = s + e - f: the hidden array's element for this
+  // iteration of the outer loops gets += (-)e, the terms added as C++ adds them.
+  std::vector<std::pair<const clang::Expr*, bool>> terms{{rhs, op == BO_SubAssign}};
   if (op == BO_Assign)
-    term = forms_.accumulated_term(rhs, var, negate);
-  if (!term)
+    terms = forms_.accumulated_terms(rhs, var);
+  if (terms.empty())
     L.fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
                             var->getNameAsString()));
-  ExprP e = L.exprs_.expr(term);
-  L.stores_.add_sum(acc->second.array, acc->second.index, {negate ? unary(Op::Neg, e) : e}, t,
-                    L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+  L.stores_.add_sum(acc->second.array, acc->second.index, terms, t, L.pos(lhs->getBeginLoc()),
+                    lhs->getBeginLoc());
   return true;
 }
 

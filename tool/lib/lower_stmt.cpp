@@ -19,6 +19,13 @@ void Statements::body(const Stmt* s) {
     L.fail(s->getBeginLoc(), "unreachable");
 }
 
+// `what` (continue, return) met in a loop dpgen unrolls.
+static std::string in_unrolled_loop(const char* what) {
+  return fmt::format("'{}' in a small constant loop that dpgen unrolls (it reads or writes a "
+                     "local array, or sums into a variable); use an if/else",
+                     what);
+}
+
 Escape Statements::lower(const Stmt* s) {
   if (const auto* c = dyn_cast<CompoundStmt>(s))
     return sequence(std::vector<const Stmt*>(c->body_begin(), c->body_end()));
@@ -43,9 +50,7 @@ Escape Statements::lower(const Stmt* s) {
     return if_stmt(i);
   if (isa<ContinueStmt>(s)) {
     if (L.unrolling_ > 0)
-      L.fail(s->getBeginLoc(), "'continue' in a small constant loop that dpgen unrolls (it "
-                               "reads or writes a local array, or sums into a variable); use "
-                               "an if/else");
+      L.fail(s->getBeginLoc(), in_unrolled_loop("continue"));
     if (L.loops_.empty())
       L.fail(s->getBeginLoc(), "'continue' outside a loop");
     return Escape::Always;
@@ -55,9 +60,7 @@ Escape Statements::lower(const Stmt* s) {
       // `return v;` in a helper being inlined: v where this path holds.
       // (An unrolled loop's copies would not see that it escaped.)
       if (L.unrolling_ > L.frames_.back().unrolling)
-        L.fail(s->getBeginLoc(), "'return' in a small constant loop that dpgen unrolls (it "
-                                 "reads or writes a local array, or sums into a variable); use "
-                                 "an if/else");
+        L.fail(s->getBeginLoc(), in_unrolled_loop("return"));
       ExprP v;
       if (!L.frames_.back().is_void) {
         if (!r->getRetValue())
@@ -487,10 +490,12 @@ void Statements::declare(const Decl* d) {
   }
   auto t = L.scalar_type(v->getType());
   if (!t || v->getType()->isReferenceType())
-    L.fail(v->getLocation(), fmt::format("local '{}' of type '{}' is outside the kernel subset "
-                                         "(int, float, double or bool values, and small arrays "
-                                         "of them)",
-                                         v->getNameAsString(), v->getType().getAsString()));
+    L.fail(v->getLocation(),
+           fmt::format("{} of type '{}' is outside the kernel subset (int, float, double or bool "
+                       "values, and small arrays of them)",
+                       isa<DecompositionDecl>(v) ? "a structured binding (auto [x, y] = ...)"
+                                                 : fmt::format("local '{}'", v->getNameAsString()),
+                       v->getType().getAsString()));
   Binding b;
   b.kind = Binding::Value;
   b.kernel_level = L.loops_.empty();

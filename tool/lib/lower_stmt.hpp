@@ -114,6 +114,10 @@ public:
   // rounded once, as a double sum, and a chain's terms are added one by one.
   void add_sum(const std::string& array, ExprP idx, const std::vector<ExprP>& terms, Type elem,
                SourcePos p, clang::SourceLocation loc);
+  // add_sum of the kernel's terms (each with its sign: true, subtracted), lowered in order.
+  void add_sum(const std::string& array, ExprP idx,
+               const std::vector<std::pair<const clang::Expr*, bool>>& terms, Type elem,
+               SourcePos p, clang::SourceLocation loc);
 
   // The value u[k] of an in-place array has here: what this iteration stored
   // at k, or the value before the call (a read of the input).

@@ -126,14 +126,9 @@ void Stores::assign(const clang::Expr* lhs, BinaryOperatorKind op, const clang::
         L.red_.forms().self_update_terms(lhs, rhs, terms)) {
       // out[j] = out[j] + e - f where this iteration has not stored out[j] (that is a read
       // back): the element is summed into, as C++ adds the terms.
-      std::vector<ExprP> lowered;
-      for (const auto& [term, negate] : terms) {
-        ExprP r = L.exprs_.expr(term);
-        lowered.push_back(negate ? unary(Op::Neg, r) : r);
-      }
       if (L.bufs_.is_buffer(p->name))
         L.bufs_.check_buffer_store(p, acc->index, true, lhs);
-      add_sum(p->name, acc->index, lowered, p->elem, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
+      add_sum(p->name, acc->index, terms, p->elem, L.pos(lhs->getBeginLoc()), lhs->getBeginLoc());
       return;
     }
     ExprP value;
@@ -296,6 +291,17 @@ void Stores::add_sum(const std::string& array, ExprP idx, const std::vector<Expr
   for (size_t k = 1; k < terms.size(); ++k)
     sum = binary(Op::Add, sum, terms[k]);
   put(array, std::move(idx), cast(sum, elem), true, p, loc, 0, &terms);
+}
+
+void Stores::add_sum(const std::string& array, ExprP idx,
+                     const std::vector<std::pair<const clang::Expr*, bool>>& terms, Type elem,
+                     SourcePos p, SourceLocation loc) {
+  std::vector<ExprP> lowered;
+  for (const auto& [term, negate] : terms) {
+    ExprP r = L.exprs_.expr(term);
+    lowered.push_back(negate ? unary(Op::Neg, r) : r);
+  }
+  add_sum(array, std::move(idx), lowered, elem, p, loc);
 }
 
 void Stores::put(const std::string& array, ExprP idx, ExprP value, bool accumulate, SourcePos p,

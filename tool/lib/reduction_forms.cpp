@@ -5,25 +5,33 @@
 
 namespace dpgen::lowering {
 
-// The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
-// where `e` does not mention v; null for any other form.
-const clang::Expr* ReductionForms::accumulated_term(const clang::Expr* rhs, const VarDecl* v, bool& negate) {
-  const auto* b = dyn_cast<BinaryOperator>(rhs->IgnoreParenImpCasts());
-  if (!b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
-    return nullptr;
+// The terms of `v = v + e`, `v = v - e`, `v = e + v` and of a chain `v = v + e - f + ...`
+// (v the leftmost operand), each with its sign, in the order C++ adds them; empty for any
+// other form and where a term mentions v (it would see v as it was, not the sum so far).
+std::vector<std::pair<const clang::Expr*, bool>>
+ReductionForms::accumulated_terms(const clang::Expr* rhs, const VarDecl* v) {
   auto is_v = [&](const clang::Expr* e) {
     const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
     return r && r->getDecl() == v;
   };
-  const clang::Expr* term = nullptr;
-  if (is_v(b->getLHS()))
-    term = b->getRHS();
-  else if (b->getOpcode() == BO_Add && is_v(b->getRHS()))
-    term = b->getLHS();
-  if (!term || mentions(term, v))
-    return nullptr;
-  negate = b->getOpcode() == BO_Sub;
-  return term;
+  std::vector<std::pair<const clang::Expr*, bool>> terms;
+  const clang::Expr* e = rhs->IgnoreParenImpCasts();
+  while (const auto* b = dyn_cast<BinaryOperator>(e)) {
+    if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
+      break;
+    const bool start = is_v(b->getLHS()); // v + e, v - e: the chain's start
+    if (start || (terms.empty() && b->getOpcode() == BO_Add && is_v(b->getRHS()))) { // or e + v
+      terms.push_back({start ? b->getRHS() : b->getLHS(), b->getOpcode() == BO_Sub});
+      std::reverse(terms.begin(), terms.end());
+      for (const auto& term : terms)
+        if (mentions(term.first, v))
+          return {};
+      return terms;
+    }
+    terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
+    e = b->getLHS()->IgnoreParenImpCasts();
+  }
+  return {};
 }
 
 bool ReductionForms::mentions(const Stmt* s, const ValueDecl* v) {
@@ -178,11 +186,10 @@ static bool accumulates(const Stmt* body, const VarDecl* v, bool deref,
     }
     if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp()) {
       if (names(b->getLHS(), v, deref)) {
-        bool negate = false;
         bool ok = b->getOpcode() == BO_AddAssign || b->getOpcode() == BO_SubAssign
                       ? !ReductionForms::mentions(b->getRHS(), v)
                       : !deref && b->getOpcode() == BO_Assign &&
-                            ReductionForms::accumulated_term(b->getRHS(), v, negate) != nullptr;
+                            !ReductionForms::accumulated_terms(b->getRHS(), v).empty();
         if (!ok)
           other = true;
         ++updates;

@@ -38,10 +38,11 @@ class ReductionForms {
 public:
   ReductionForms(clang::ASTContext& ctx, clang::SourceManager& sm) : ctx_(ctx), sm_(sm) {}
 
-  // The term `e` of `v = v + e`, `v = v - e` (negate set) or `v = e + v`,
-  // where `e` does not mention v; null for any other form.
-  static const clang::Expr* accumulated_term(const clang::Expr* rhs, const clang::VarDecl* v,
-                                             bool& negate);
+  // The terms of `v = v + e`, `v = v - e`, `v = e + v` and of a chain `v = v + e - f`
+  // (v the leftmost operand), each with its sign (negate) in the order C++ adds them, none
+  // mentioning v; empty for any other form.
+  static std::vector<std::pair<const clang::Expr*, bool>>
+  accumulated_terms(const clang::Expr* rhs, const clang::VarDecl* v);
   // The terms of `x = x + e`, `x = x - e`, `x = e + x` and of a chain `x = x + e - f + ...`
   // (x the leftmost operand), each with its sign (negate), in the order C++ adds them; false
   // for any other form, for an `x` that may change something as it is evaluated
@@ -52,7 +53,8 @@ public:
   // `s` mentions `v`.
   static bool mentions(const clang::Stmt* s, const clang::ValueDecl* v);
   // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
-  // `v = v + e` (and its `v`), with `e` free of v, and there is at least one.
+  // `v = v + e` (`v = v + e - f`: accumulated_terms; and its `v`), with `e`
+  // free of v, and there is at least one.
   static bool is_accumulator(const clang::Stmt* body, const clang::VarDecl* v);
 
   // The same expression, up to parentheses and implicit conversions.

@@ -1,0 +1,49 @@
+// The limits of the everyday C++ idioms dpgen accepts (tests/styles/cpp_idioms.cpp,
+// spelled_sums.cpp): `!=` ends only a loop stepping by one (a stride could step over the
+// bound), sizeof only of what has a size before the kernel runs, a sum spelled out only
+// where no term reads the sum, and structured bindings and members of returned pairs are
+// named as written. Each in one run.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+#include <utility>
+
+DPGEN_KERNEL void strided_ne(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i != n; i += 2)
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:21: error: loop condition must be <, <=, > or >= ('!=' where the counter steps by one)
+    out[i] = a[i];
+}
+
+DPGEN_KERNEL void vla_sizeof(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double tmp[n];
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:21: error: expression 'sizeof(tmp)' (UnaryExprOrTypeTraitExpr) is outside the kernel subset
+    out[i] = a[i] * sizeof(tmp);
+  }
+}
+
+DPGEN_KERNEL void sum_reads_itself(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    s = s + a[i] + 0.5 * s;
+  // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:9: error: 's' is declared outside the loop and assigned inside it
+  out[0] = s;
+}
+
+static std::pair<double, double> split(double x) { return {x * x, 2.0 * x}; }
+
+DPGEN_KERNEL void bound_pair(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    auto [p, q] = split(a[i]);
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:10: error: a structured binding (auto [x, y] = ...) of type 'std::pair<double, double>' is outside the kernel subset
+    out[i] = p + q;
+  }
+}
+
+DPGEN_KERNEL void pair_member(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    out[i] = split(a[i]).first;
+  // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:26: error: expression 'split(a[i]).first' (MemberExpr) is outside the kernel subset
+}
