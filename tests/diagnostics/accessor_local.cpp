@@ -53,3 +53,39 @@ DPGEN_KERNEL void non_const_call(DPGEN_IN const double* u, DPGEN_OUT double* out
       // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:25: error: 'U' is called through a non-const operator() of 'Counting': an object that may change itself from call to call is outside the kernel subset; declare the operator() const
       out[j * nx + i] = U(i, j);
 }
+
+// Written through: an accessor's reference-returning operator() is followed where its body is
+// `return p[<index>];`, and what it writes must be an output.
+struct TwoStep {
+  double* p;
+  int nx;
+  double& operator()(int i, int j) const {
+    const int k = j * nx + i;
+    return p[k];
+  }
+};
+
+struct Cells {
+  double* p;
+  int nx;
+  double& operator()(int i, int j) const { return p[j * nx + i]; }
+};
+
+DPGEN_KERNEL void two_step_reference(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                     int ny) {
+  const TwoStep Out{out, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:7: error: 'operator()' of 'TwoStep' returns a reference: dpgen follows one whose body is the one statement 'return p[<index>];', the element of an array it holds
+      Out(i, j) = u[j * nx + i];
+}
+
+DPGEN_KERNEL void writes_input(DPGEN_IN double* u, DPGEN_OUT double* out, int nx, int ny) {
+  const Cells U{u, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      out[j * nx + i] = U(i, j);
+      // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:7: error: 'u' is written but is not a DPGEN_OUT parameter
+      U(i, j) = 0.0;
+    }
+}

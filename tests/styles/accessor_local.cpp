@@ -2,7 +2,11 @@
 // pointer and a row length to write U(i, j) (operator() returns the element
 // by value): an aggregate (`Grid2 U{u, nx}`) and a class whose constructor
 // copies its parameters into private members (`Field2 U(u, nx)`); a
-// variable-coefficient Laplacian with face averages, and a nonlinear update.
+// variable-coefficient Laplacian with face averages, and a nonlinear update;
+// accessors whose operator() returns a reference, written through as well as
+// read: fluxes added to both cells of a face (`R(i, j) += f; R(i + 1, j) -=
+// f;`), an element stored then scaled (`V(i, j) *= ...`), and a class with a
+// const and a non-const overload, as containers write them.
 #include "dpgen/annotate.hpp"
 
 struct Grid2 {
@@ -38,4 +42,61 @@ DPGEN_KERNEL void accessor_ctor(DPGEN_IN const double* u, DPGEN_OUT double* out,
   for (int j = 1; j < ny - 1; ++j)
     for (int i = 1; i < nx - 1; ++i)
       out[j * nx + i] = U(i, j) * (U(i + 1, j) + U(i - 1, j) + U(i, j + 1) + U(i, j - 1));
+}
+
+// An aggregate whose operator() returns the element by reference (const: the pointer is
+// not changed, the element may be).
+struct Cells {
+  double* p;
+  int nx;
+  double& operator()(int i, int j) const { return p[j * nx + i]; }
+};
+
+struct ConstCells {
+  const double* p;
+  int nx;
+  const double& operator()(int i, int j) const { return p[j * nx + i]; }
+};
+
+// x-fluxes between neighbours added to both cells, then a second output stored and scaled.
+DPGEN_KERNEL void accessor_writes(DPGEN_IN const double* u, DPGEN_OUT double* res,
+                                  DPGEN_OUT double* v, int nx, int ny) {
+  const ConstCells U{u, nx};
+  const Cells R{res, nx}, V{v, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      R(i, j) = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx - 1; ++i) {
+      const double f = 0.5 * (U(i + 1, j) * U(i + 1, j) - U(i, j) * U(i, j));
+      R(i, j) += f;
+      R(i + 1, j) -= f;
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      V(i, j) = U(i, j) + 1.0;
+      V(i, j) *= U(i, j);
+    }
+}
+
+// A grid class with private members, a constructor, and both overloads: the const object
+// reads through `const double& operator() const`, the other writes through `double&
+// operator()`.
+class Grid {
+public:
+  Grid(double* data, int stride) : data_(data), stride_(stride) {}
+  double& operator()(int i, int j) { return data_[j * stride_ + i]; }
+  const double& operator()(int i, int j) const { return data_[j * stride_ + i]; }
+
+private:
+  double* data_;
+  int stride_;
+};
+
+DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, int nx, int ny) {
+  const Grid U(u, nx);
+  Grid Out(out, nx);
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i)
+      Out(i, j) = U(i, j) * (U(i + 1, j) - 2.0 * U(i, j) + U(i - 1, j)) + U(i, j + 1) * U(i, j - 1);
 }

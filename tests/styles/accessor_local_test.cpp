@@ -1,7 +1,10 @@
 // accessor_local (tests/styles/): `const Grid2 U{u, nx}` made in the kernel
 // over a DPGEN_IN array, read as U(i, j), bilinear in (u, k); accessor_ctor:
 // `const Field2 U(u, nx)` through a constructor, quadratic. (What is refused:
-// tests/diagnostics/accessor_local.cpp.)
+// tests/diagnostics/accessor_local.cpp.) accessor_writes: fluxes added through a
+// reference-returning accessor, an element stored and scaled; accessor_overloads: a class
+// with a const and a non-const operator(), nonlinear; both by differences, the dot-product
+// test and a cell by hand.
 #include "support/adjoint_check.hpp"
 
 #include "accessor_local_adjoint.hpp"
@@ -11,6 +14,9 @@
 DPGEN_KERNEL void accessor_local(DPGEN_IN const double* u, DPGEN_IN const double* k,
                                  DPGEN_OUT double* out, int nx, int ny);
 DPGEN_KERNEL void accessor_ctor(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny);
+DPGEN_KERNEL void accessor_writes(DPGEN_IN const double* u, DPGEN_OUT double* res,
+                                  DPGEN_OUT double* v, int nx, int ny);
+DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, int nx, int ny);
 
 TEST_CASE("styles: accessor_local") {
   for (auto [nx, ny] : {std::pair{1, 1}, {3, 3}, {4, 6}, {9, 5}}) {
@@ -48,4 +54,49 @@ TEST_CASE("styles: accessor_ctor") {
     };
     dpgen_test::check_adjoint(p);
   }
+}
+
+TEST_CASE("styles: accessor_writes, accessor_overloads") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {2, 1}, {3, 3}, {4, 6}, {9, 5}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> w;
+    w.in_sizes = {n};
+    w.out_sizes = {n, n};
+    w.forward = [&](auto in, auto out) { accessor_writes(in[0], out[0], out[1], nx, ny); };
+    w.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_writes_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny);
+    };
+    w.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_writes_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], nx, ny);
+    };
+    dpgen_test::check_adjoint(w);
+
+    dpgen_test::Problem<double> o;
+    o.in_sizes = {n};
+    o.out_sizes = {n};
+    o.forward = [&](auto in, auto out) {
+      accessor_overloads(const_cast<double*>(in[0]), out[0], nx, ny);
+    };
+    o.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_overloads_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    o.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_overloads_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(o);
+  }
+  // By hand, one row of three: res = (f, -f + g, -g) with f = (u1^2 - u0^2) / 2, g = (u2^2 -
+  // u1^2) / 2; v = (u + 1) u. A seed on res[1] gives u0 to u0, -2 u1 to u1, u2 to u2; one on
+  // v[2], 2 u2 + 1 to u2.
+  const double u[3] = {0.5, -1.5, 2.0}, seed_r[3] = {0.0, 1.0, 0.0}, seed_v[3] = {0.0, 0.0, 1.0};
+  double res[3], v[3], adj[3] = {0.0, 0.0, 0.0};
+  accessor_writes(u, res, v, 3, 1);
+  CHECK(res[1] == doctest::Approx(-0.5 * (1.5 * 1.5 - 0.25) + 0.5 * (4.0 - 1.5 * 1.5)));
+  CHECK(v[2] == doctest::Approx(3.0 * 2.0));
+  accessor_writes_adjoint(u, adj, seed_r, seed_v, 3, 1);
+  CHECK(adj[0] == doctest::Approx(0.5));
+  CHECK(adj[1] == doctest::Approx(3.0));
+  CHECK(adj[2] == doctest::Approx(2.0 + (2.0 * 2.0 + 1.0)));
 }

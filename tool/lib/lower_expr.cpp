@@ -76,8 +76,8 @@ auto Expressions::nested_element(const CXXOperatorCallExpr* oc, const CXXOperato
 
 auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   e = e->IgnoreParens();
-  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of an array view
-    if (auto a = L.views_.view_element(oc))
+  if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e)) // v(k, j, i) of a view, U(i, j) of an
+    if (auto a = L.views_.view_element(oc); a || (a = L.inl_.accessor_element(oc))) // accessor
       return a;
   if (const Param* p = L.scalar_ref_param(e)) // `mass` of `DPGEN_OUT double& mass`: mass[0]
     return Access{p, int_const(0)};

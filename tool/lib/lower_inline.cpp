@@ -19,6 +19,67 @@ bool Inliner::made_accessor(const CallExpr* c) const {
          it->second.fields;
 }
 
+// (lower_inline.hpp) The operator()'s parameters bound to the arguments' values and the
+// object's members to what the kernel made it over, while its returned element is found.
+std::optional<Access> Inliner::accessor_element(const CallExpr* c) {
+  if (!made_accessor(c))
+    return std::nullopt;
+  const auto* m = dyn_cast_or_null<CXXMethodDecl>(c->getDirectCallee());
+  const FunctionDecl* def = nullptr;
+  if (!m || !m->hasBody(def) || !m->getReturnType()->isLValueReferenceType())
+    return std::nullopt;
+  const auto* body = dyn_cast<CompoundStmt>(def->getBody());
+  const auto* ret = body && body->size() == 1 ? dyn_cast<ReturnStmt>(body->body_front()) : nullptr;
+  if (!ret || !ret->getRetValue())
+    L.fail(c->getBeginLoc(),
+           fmt::format("'{}' of '{}' returns a reference: dpgen follows one whose body is the "
+                       "one statement 'return p[<index>];', the element of an array it holds",
+                       def->getNameAsString(), m->getParent()->getNameAsString()));
+  const auto* ref = dyn_cast<DeclRefExpr>(c->getArg(0)->IgnoreParenImpCasts());
+  const Binding& object = L.env_.at(llvm::cast<VarDecl>(ref->getDecl()));
+  std::vector<std::pair<const VarDecl*, std::optional<Binding>>> saved;
+  for (unsigned i = 0; i < def->getNumParams(); ++i) {
+    const ParmVarDecl* pd = def->getParamDecl(i);
+    auto t = L.scalar_type(pd->getType().getNonReferenceType());
+    if (!t || (pd->getType()->isReferenceType() &&
+               !pd->getType().getNonReferenceType().isConstQualified()))
+      L.fail(pd->getLocation(), fmt::format("parameter '{}' of '{}' has type '{}', outside the "
+                                            "kernel subset",
+                                            pd->getNameAsString(), def->getNameAsString(),
+                                            pd->getType().getAsString()));
+    Binding b;
+    b.kind = Binding::Value;
+    b.value = cast(L.exprs_.expr(c->getArg(i + 1)), *t);
+    auto it = L.env_.find(pd);
+    saved.push_back({pd, it == L.env_.end() ? std::nullopt : std::optional<Binding>(it->second)});
+    L.env_[pd] = b;
+  }
+  const std::map<const FieldDecl*, Binding> outer_fields = L.fields_;
+  L.fields_ = *object.fields;
+  auto restore = [&] {
+    L.fields_ = outer_fields;
+    for (const auto& [pd, b] : saved)
+      if (b)
+        L.env_[pd] = *b;
+      else
+        L.env_.erase(pd);
+  };
+  std::optional<Access> a;
+  try {
+    a = L.exprs_.element(ret->getRetValue()->IgnoreParenImpCasts()); // (const: a no-op cast)
+  } catch (const Rejected&) {
+    restore();
+    throw;
+  }
+  restore();
+  if (!a)
+    L.fail(ret->getBeginLoc(),
+           fmt::format("'{}' of '{}' returns a reference to something other than an element of "
+                       "an array it holds, outside the kernel subset",
+                       def->getNameAsString(), m->getParent()->getNameAsString()));
+  return a;
+}
+
 ExprP Inliner::inline_call(const CallExpr* c, const FunctionDecl* f) {
   const FunctionDecl* def = nullptr;
   f->hasBody(def);

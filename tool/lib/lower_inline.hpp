@@ -10,6 +10,7 @@
 
 #include "lower_common.hpp"
 
+#include <optional>
 #include <set>
 #include <string>
 
@@ -34,6 +35,10 @@ public:
   ExprP inline_call(const clang::CallExpr* c, const clang::FunctionDecl* f);
   // `c` calls the operator() of an accessor the kernel made over its arrays.
   bool made_accessor(const clang::CallExpr* c) const;
+  // `U(i, j)` of such an accessor whose operator() returns a reference, its body `return
+  // p[j * nx + i];`: that element of the kernel's array (written to, or read); nullopt for any
+  // other call.
+  std::optional<Access> accessor_element(const clang::CallExpr* c);
   // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
   // variable captured by copy must still have the value it had here when the
   // lambda is called; init-captures and `this` are outside the subset.
