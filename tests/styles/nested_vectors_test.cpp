@@ -84,6 +84,48 @@ TEST_CASE("styles: vv_stencil, vv_weighted") {
   }
 }
 
+TEST_CASE("styles: vv_row_refs, rows by reference") {
+  for (auto [nx, ny] : {std::tuple{1, 1}, {3, 3}, {4, 5}, {7, 6}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t N = size_t(nx) * size_t(ny);
+    dpgen_test::check_one_to_one(
+        N, N,
+        [&](const double* u, double* v) {
+          Rows vr = rows_of(v, nx, ny);
+          vv_row_refs(rows_of(u, nx, ny), vr, nx, ny);
+          copy_back(vr, v);
+        },
+        [&](const double* u, double* u_adj, const double* seed) {
+          Rows ar = rows_of(u_adj, nx, ny);
+          vv_row_refs_adjoint(rows_of(u, nx, ny), ar, rows_of(seed, nx, ny), nx, ny);
+          copy_back(ar, u_adj);
+        },
+        [&](const double* u, const double* d, double* v, double* vd) {
+          Rows vr = rows_of(v, nx, ny), vdr = rows_of(vd, nx, ny);
+          vv_row_refs_tangent(rows_of(u, nx, ny), rows_of(d, nx, ny), vr, vdr, nx, ny);
+          copy_back(vr, v);
+          copy_back(vdr, vd);
+        });
+  }
+  // By hand, 3 x 3 with u = 1 but u[1][1] = 2: v[1][1] = 2 (1 + 1 + 1 + 1 - 8) = -8; a seed
+  // there gives (4 - 16) + 2 * (-4) ... = d/du11 of u11 (4 - 4 u11) = 4 - 8 u11 = -12, and 2
+  // to each of the four neighbours.
+  Rows u(3, std::vector<double>(3, 1.0)), v(3, std::vector<double>(3, 0.0));
+  u[1][1] = 2.0;
+  vv_row_refs(u, v, 3, 3);
+  CHECK(v[1][1] == doctest::Approx(-8.0));
+  Rows seed(3, std::vector<double>(3, 0.0)), adj(3, std::vector<double>(3, 0.0));
+  seed[1][1] = 1.0;
+  vv_row_refs_adjoint(u, adj, seed, 3, 3);
+  CHECK(adj[1][1] == doctest::Approx(-12.0));
+  CHECK(adj[0][1] == doctest::Approx(2.0));
+  CHECK(adj[2][1] == doctest::Approx(2.0));
+  CHECK(adj[1][0] == doctest::Approx(2.0));
+  CHECK(adj[1][2] == doctest::Approx(2.0));
+  CHECK(adj[0][0] == doctest::Approx(0.0));
+}
+
 TEST_CASE("styles: vv_rows_to_flat") {
   for (auto [nx, ny] : {std::tuple{1, 2}, {2, 1}, {5, 4}}) {
     CAPTURE(nx);

@@ -107,10 +107,13 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
       return nested_element(oc, row);
     if (!isa<DeclRefExpr>(base))
       L.fail(base->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
-    const Param* p = array_base(base);
+    ExprP offset; // (of a row `const auto& up = u[j - 1];`: up[i])
+    const Param* p = array_base(base, &offset);
     ExprP idx = expr(oc->getArg(1));
     if (idx->type != Type::Int)
       L.fail(oc->getArg(1)->getBeginLoc(), "array index must be an integer");
+    if (offset)
+      return L.ptrs_.row_element(p, offset, idx, e);
     if (L.bufs_.is_buffer(p->name)) // t[i] of a std::array line buffer
       return Access{p, L.bufs_.buffer_index(p, idx, e)};
     return Access{p, idx};
@@ -141,9 +144,8 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
                                   "a[k][j][i]");
     if (outer.size() != (p->plane_pointers ? 2u : 1u))
       L.fail(sub->getBeginLoc(),
-             fmt::format("'{}' is indexed with {} subscripts; index its "
-                         "elements as {}",
-                         p->name, outer.size() + 1, p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
+             fmt::format("'{}' is indexed with {} subscripts; index its elements as {}", p->name,
+                         outer.size() + 1, p->plane_pointers ? "a[k][j][i]" : "a[j][i]"));
     ExprP flat = idx;
     std::vector<ExprP> symbols = {L.row_lengths_.at(p->name)};
     if (p->plane_pointers)
@@ -383,7 +385,7 @@ ExprP Expressions::expr(const clang::Expr* e) {
     const auto* obj = dyn_cast<DeclRefExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
     auto it = obj ? L.env_.find(dyn_cast<VarDecl>(obj->getDecl())) : L.env_.end();
     const CXXMethodDecl* md = m->getMethodDecl();
-    if (it != L.env_.end() && it->second.kind == Binding::ArrayParam &&
+    if (it != L.env_.end() && it->second.kind == Binding::ArrayParam && !it->second.offset &&
         !it->second.param->container.empty() && md && md->getName() == "size" &&
         m->getNumArgs() == 0)
       return L.scalar_param(it->second.param->name + "_size", Type::Int);
@@ -391,9 +393,10 @@ ExprP Expressions::expr(const clang::Expr* e) {
     // inlined like a helper, reading the same members
     if (L.this_call(m) && md && md->hasBody() && !md->isVirtual())
       return L.inl_.inline_call(m, md);
-    if (const auto* row =
-            dyn_cast<CXXOperatorCallExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
-        row && row->getOperator() == OO_Subscript && md && md->getName() == "size")
+    const auto* row =
+        dyn_cast<CXXOperatorCallExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
+    if (md && md->getName() == "size" &&
+        ((row && row->getOperator() == OO_Subscript) || (it != L.env_.end() && it->second.offset)))
       L.fail(e->getExprLoc(), "the length of a row (u[j].size()) is outside the kernel subset: "
                               "dpgen assumes each row holds the columns the kernel touches; "
                               "pass the number of columns as a parameter");

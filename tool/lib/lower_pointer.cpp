@@ -15,6 +15,8 @@ bool PointerLocals::declare(const VarDecl* v) {
   const QualType t = v->getType();
   if (t->isReferenceType() && L.scalar_type(t.getNonReferenceType()))
     return declare_reference(v);
+  if (t->isReferenceType() && declare_row(v))
+    return true;
   if (!t->isPointerType() || !L.scalar_type(t->getPointeeType()))
     return false;
   const clang::Expr* init = v->getInit();
@@ -64,6 +66,49 @@ bool PointerLocals::declare_reference(const VarDecl* v) {
                                 cast(L.exprs_.expr(v->getInit()), *L.scalar_type(t)));
   L.env_[v] = b;
   return true;
+}
+
+// `const auto& up = u[j - 1];`, `auto& row = v[j];` of a std::vector<std::vector<T>>
+// parameter: a reference is bound once, so the row is the one its index names here (a
+// counter changed later does not move it), and `up[i]` is u[j - 1][i] (row_element).
+bool PointerLocals::declare_row(const VarDecl* v) {
+  const auto* oc =
+      v->getInit() ? dyn_cast<CXXOperatorCallExpr>(v->getInit()->IgnoreParenImpCasts()) : nullptr;
+  if (!oc || oc->getOperator() != OO_Subscript || oc->getNumArgs() != 2)
+    return false;
+  const auto* base = dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts());
+  const auto* bv = base ? dyn_cast<VarDecl>(base->getDecl()) : nullptr;
+  auto it = bv ? L.env_.find(bv) : L.env_.end();
+  if (it == L.env_.end() || it->second.kind != Binding::ArrayParam || it->second.offset ||
+      !it->second.param->nested)
+    return false;
+  const Param* p = it->second.param;
+  ExprP row = L.exprs_.expr(oc->getArg(1));
+  if (row->type != Type::Int || !to_poly(row))
+    L.fail(oc->getArg(1)->getBeginLoc(),
+           fmt::format("row '{}' of '{}' is taken at a data-dependent index; dpgen needs both "
+                       "indices of {}[j][i] affine in the loop counters and sizes",
+                       v->getNameAsString(), p->name, p->name),
+           "dpgen-pointer");
+  Binding b;
+  b.kind = Binding::ArrayParam;
+  b.param = p;
+  b.offset = binary(Op::Mul, row, L.row_lengths_.at(p->name));
+  L.env_[v] = b;
+  return true;
+}
+
+Access PointerLocals::row_element(const Param* p, const ExprP& offset, const ExprP& idx,
+                                  const clang::Expr* at) {
+  if (!p->nested)
+    L.fail(at->getBeginLoc(), "operator[] must index a std::vector parameter of the kernel");
+  if (!to_poly(idx))
+    L.fail(at->getBeginLoc(), fmt::format("'{}' is indexed at a data-dependent column; dpgen "
+                                          "needs both indices of {}[j][i] affine in the loop "
+                                          "counters and sizes (pass a flat array for "
+                                          "interpolation)",
+                                          L.text(at), p->name));
+  return Access{p, binary(Op::Add, offset, idx)};
 }
 
 // A pointer into anything but a flat array parameter (or a table of namespace scope) is

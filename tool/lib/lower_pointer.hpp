@@ -33,7 +33,8 @@ public:
   // Binds `v` if it is a pointer to numbers initialised with a pointer into a
   // flat array parameter (pointer_into), or a const reference to an input's
   // element (a local of its value); refuses a pointer or reference to numbers
-  // made any other way. False if `v` is neither.
+  // made any other way; or a reference to a row of a std::vector<std::vector<T>>
+  // parameter (declare_row). False if `v` is none of these.
   bool declare(const clang::VarDecl* v);
 
   // What pointer expression `e` points at, as a binding: `a` (the binding of
@@ -61,6 +62,10 @@ public:
   void check_usable(const clang::VarDecl* v, clang::SourceLocation at);
   // Fails where `u` steps (`++row`, `row--`) a pointer declared with no value.
   void check_not_stepped(const clang::UnaryOperator* u);
+  // `up[i]` of a row reference (`const auto& up = u[j - 1];` of a std::vector<std::vector<T>>
+  // parameter `p`, bound with the row's first element at `offset`): u[j - 1][i], its column
+  // affine as in u[j][i].
+  Access row_element(const Param* p, const ExprP& offset, const ExprP& idx, const clang::Expr* at);
 
 private:
   Lowerer& L;
@@ -69,6 +74,7 @@ private:
 
   void check_flat(const Binding& b, const clang::Expr* at);
   bool declare_reference(const clang::VarDecl* v);
+  bool declare_row(const clang::VarDecl* v);
 };
 
 } // namespace dpgen::lowering

@@ -1,0 +1,50 @@
+// Rows of a std::vector<std::vector<double>> taken by reference (accepted:
+// tests/styles/nested_vectors.cpp, vv_row_refs): a row or a column named by
+// data is refused (first as an index that may go below zero, which the
+// unsigned index of std::vector wraps; else as data-dependent), its length is
+// not known to dpgen, and a row copied whole is no element store. Each in one
+// run.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+#include <vector>
+
+using Rows = std::vector<std::vector<double>>;
+
+DPGEN_KERNEL void row_length(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    const auto& r = u[j];
+    // CHECK-DAG: row_references.cpp:[[@LINE+1]]:32: error: the length of a row (u[j].size()) is outside the kernel subset
+    for (int i = 0; i < (int)r.size(); ++i)
+      v[j][i] = r[i];
+  }
+}
+
+DPGEN_KERNEL void data_row(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    // CHECK-DAG: row_references.cpp:[[@LINE+1]]:23: error: '(int)u[0][j]', converted to unsigned 'unsigned long', may go below zero here
+    const auto& r = u[(int)u[0][j]];
+    for (int i = 0; i < nx; ++i)
+      v[j][i] = r[i];
+  }
+}
+
+DPGEN_KERNEL void data_column(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    const auto& r = u[j];
+    for (int i = 0; i < nx; ++i)
+      // CHECK-DAG: row_references.cpp:[[@LINE+1]]:19: error: '(int)u[0][i]', converted to unsigned 'unsigned long', may go below zero here
+      v[j][i] = r[(int)u[0][i]];
+  }
+}
+
+DPGEN_KERNEL void whole_row(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    const auto& r = u[j];
+    auto& w = v[j];
+    // CHECK-DAG: row_references.cpp:[[@LINE+1]]:5: error: call to 'std::vector<double>::operator=', which dpgen cannot differentiate
+    w = r;
+  }
+}
