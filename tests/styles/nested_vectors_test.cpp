@@ -34,6 +34,32 @@ void copy_back(const Rows& r, double* flat) {
       flat[k++] = x;
 }
 
+// check_one_to_one of a kernel from rows of nx by ny to rows of the same shape, called as
+// fwd(u, v), adj(u, u_adj, seed), tan(u, u_dot, v, v_dot) on rows copied from the
+// checker's flat arrays (and copied back).
+template <typename F, typename A, typename T>
+void check_rows_to_rows(int nx, int ny, F fwd, A adj, T tan) {
+  const size_t n = size_t(nx) * size_t(ny);
+  dpgen_test::check_one_to_one(
+      n, n,
+      [&](const double* u, double* v) {
+        Rows vr = rows_of(v, nx, ny);
+        fwd(rows_of(u, nx, ny), vr);
+        copy_back(vr, v);
+      },
+      [&](const double* u, double* u_adj, const double* seed) {
+        Rows ar = rows_of(u_adj, nx, ny);
+        adj(rows_of(u, nx, ny), ar, rows_of(seed, nx, ny));
+        copy_back(ar, u_adj);
+      },
+      [&](const double* u, const double* d, double* v, double* vd) {
+        Rows vr = rows_of(v, nx, ny), vdr = rows_of(vd, nx, ny);
+        tan(rows_of(u, nx, ny), rows_of(d, nx, ny), vr, vdr);
+        copy_back(vr, v);
+        copy_back(vdr, vd);
+      });
+}
+
 } // namespace
 
 TEST_CASE("styles: vv_stencil, vv_weighted") {
@@ -41,23 +67,13 @@ TEST_CASE("styles: vv_stencil, vv_weighted") {
     CAPTURE(nx);
     CAPTURE(ny);
     const size_t N = size_t(nx) * size_t(ny);
-    dpgen_test::check_one_to_one(
-        N, N,
-        [&](const double* u, double* v) {
-          Rows vr = rows_of(v, nx, ny);
-          vv_stencil(rows_of(u, nx, ny), vr, nx, ny, 0.3);
-          copy_back(vr, v);
+    check_rows_to_rows(
+        nx, ny, [&](const Rows& u, Rows& v) { vv_stencil(u, v, nx, ny, 0.3); },
+        [&](const Rows& u, Rows& u_adj, const Rows& seed) {
+          vv_stencil_adjoint(u, u_adj, seed, nx, ny, 0.3);
         },
-        [&](const double* u, double* u_adj, const double* seed) {
-          Rows ar = rows_of(u_adj, nx, ny);
-          vv_stencil_adjoint(rows_of(u, nx, ny), ar, rows_of(seed, nx, ny), nx, ny, 0.3);
-          copy_back(ar, u_adj);
-        },
-        [&](const double* u, const double* d, double* v, double* vd) {
-          Rows vr = rows_of(v, nx, ny), vdr = rows_of(vd, nx, ny);
-          vv_stencil_tangent(rows_of(u, nx, ny), rows_of(d, nx, ny), vr, vdr, nx, ny, 0.3);
-          copy_back(vr, v);
-          copy_back(vdr, vd);
+        [&](const Rows& u, const Rows& d, Rows& v, Rows& vd) {
+          vv_stencil_tangent(u, d, v, vd, nx, ny, 0.3);
         });
     dpgen_test::Problem<double> p;
     p.in_sizes = {N, N};
@@ -88,24 +104,13 @@ TEST_CASE("styles: vv_row_refs, rows by reference") {
   for (auto [nx, ny] : {std::tuple{1, 1}, {3, 3}, {4, 5}, {7, 6}}) {
     CAPTURE(nx);
     CAPTURE(ny);
-    const size_t N = size_t(nx) * size_t(ny);
-    dpgen_test::check_one_to_one(
-        N, N,
-        [&](const double* u, double* v) {
-          Rows vr = rows_of(v, nx, ny);
-          vv_row_refs(rows_of(u, nx, ny), vr, nx, ny);
-          copy_back(vr, v);
+    check_rows_to_rows(
+        nx, ny, [&](const Rows& u, Rows& v) { vv_row_refs(u, v, nx, ny); },
+        [&](const Rows& u, Rows& u_adj, const Rows& seed) {
+          vv_row_refs_adjoint(u, u_adj, seed, nx, ny);
         },
-        [&](const double* u, double* u_adj, const double* seed) {
-          Rows ar = rows_of(u_adj, nx, ny);
-          vv_row_refs_adjoint(rows_of(u, nx, ny), ar, rows_of(seed, nx, ny), nx, ny);
-          copy_back(ar, u_adj);
-        },
-        [&](const double* u, const double* d, double* v, double* vd) {
-          Rows vr = rows_of(v, nx, ny), vdr = rows_of(vd, nx, ny);
-          vv_row_refs_tangent(rows_of(u, nx, ny), rows_of(d, nx, ny), vr, vdr, nx, ny);
-          copy_back(vr, v);
-          copy_back(vdr, vd);
+        [&](const Rows& u, const Rows& d, Rows& v, Rows& vd) {
+          vv_row_refs_tangent(u, d, v, vd, nx, ny);
         });
   }
   // By hand, 3 x 3 with u = 1 but u[1][1] = 2: v[1][1] = 2 (1 + 1 + 1 + 1 - 8) = -8; a seed
