@@ -1,8 +1,9 @@
 // The limits of the everyday C++ idioms dpgen accepts (tests/styles/cpp_idioms.cpp,
 // spelled_sums.cpp): `!=` ends only a loop stepping by one (a stride could step over the
 // bound), sizeof only of what has a size before the kernel runs, a sum spelled out only
-// where no term reads the sum, and structured bindings and members of returned pairs are
-// named as written. Each in one run.
+// where no term reads the sum, std::swap only of two scalar locals (and as a recurrence
+// where it carries values between iterations), and structured bindings and members of
+// returned pairs are named as written. Each in one run.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
@@ -46,4 +47,34 @@ DPGEN_KERNEL void pair_member(DPGEN_IN const double* a, DPGEN_OUT double* out, i
   for (int i = 0; i < n; ++i)
     out[i] = split(a[i]).first;
   // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:26: error: expression 'split(a[i]).first' (MemberExpr) is outside the kernel subset
+}
+
+// std::swap: of two scalar locals only, and a swap that carries values from one iteration to
+// the next is a recurrence like any other.
+DPGEN_KERNEL void swap_carried(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double x = 0.0, y = 1.0;
+  for (int i = 0; i < n; ++i) {
+    std::swap(x, y);
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:15: error: 'x' is declared outside the loop and assigned inside it, and read here before it is assigned in this iteration
+    out[i] = x * a[i];
+  }
+}
+
+DPGEN_KERNEL void swap_pointers(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                DPGEN_OUT double* out, int n) {
+  const double* p = a;
+  const double* q = b;
+  // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:13: error: std::swap of 'p': dpgen swaps two scalar locals (std::swap(a, b))
+  std::swap(p, q);
+  for (int i = 0; i < n; ++i)
+    out[i] = p[i] - q[i];
+}
+
+DPGEN_KERNEL void swap_elements(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    double w[2] = {a[i], 2.0 * a[i]};
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:15: error: std::swap of 'w[0]'
+    std::swap(w[0], w[1]);
+    out[i] = w[0] - w[1];
+  }
 }

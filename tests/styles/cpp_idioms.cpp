@@ -1,12 +1,14 @@
 // Idioms of everyday C++ in stencil code: loops that stop at `i != n` (counting
 // up, and down to zero with an unsigned counter), a weight table's length as
-// `sizeof(w) / sizeof(w[0])`, and the MC limiter written with std::min and
+// `sizeof(w) / sizeof(w[0])`, the MC limiter written with std::min and
 // std::max of initializer lists (the first least or greatest of the list,
-// which is what dpgen differentiates: min(min(a, b), c)).
+// which is what dpgen differentiates: min(min(a, b), c)), and a median filter
+// by a sorting network of std::swap.
 #include "dpgen/annotate.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 // A smoothing filter from a binomial table; the table's length from sizeof.
 DPGEN_KERNEL void binomial_smooth(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
@@ -38,4 +40,18 @@ DPGEN_KERNEL void mc_slopes(DPGEN_IN const double* q, DPGEN_OUT double* slope,
 DPGEN_KERNEL void backward_diff(DPGEN_IN const float* u, DPGEN_OUT float* d, unsigned n) {
   for (unsigned i = n - 1; i != 0; --i)
     d[i] = u[i] * u[i] - u[i - 1];
+}
+
+// A median-of-three filter, sorted by a network of conditional swaps.
+DPGEN_KERNEL void median3(DPGEN_IN const double* u, DPGEN_OUT double* m, int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    double a = u[i - 1], b = u[i], c = u[i + 1];
+    if (a > b)
+      std::swap(a, b);
+    if (b > c)
+      std::swap(b, c);
+    if (a > b)
+      std::swap(a, b);
+    m[i] = b * std::fabs(b);
+  }
 }

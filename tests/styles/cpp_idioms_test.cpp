@@ -2,7 +2,7 @@
 // length, std::min/std::max of initializer lists. Adjoints and tangents
 // against differences and the dot-product test (the sizes start where the
 // kernels' own loops end: `i != n - 2` from 2 needs n >= 4); the MC limiter's
-// arms and its ties by hand.
+// arms and its ties by hand; the median filter's every order of three values.
 #include "support/adjoint_check.hpp"
 
 #include "cpp_idioms_adjoint.hpp"
@@ -89,5 +89,32 @@ TEST_CASE("styles: backward_diff") {
       backward_diff_tangent(in[0], d[0], out[0], dout[0], n);
     };
     dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: median3") {
+  for (int n : {1, 2, 3, 8, 31}) {
+    CAPTURE(n);
+    const size_t sn = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {sn};
+    p.out_sizes = {sn};
+    p.forward = [&](auto in, auto out) { median3(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) { median3_adjoint(in[0], adj[0], seed[0], n); };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      median3_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // Each of the six orders of (1, 2, 3): the median, 2, gets the whole derivative 2 |2| = 4.
+  const double perms[6][3] = {{1, 2, 3}, {1, 3, 2}, {2, 1, 3}, {2, 3, 1}, {3, 1, 2}, {3, 2, 1}};
+  for (const auto& q : perms) {
+    const double seed[3] = {0.0, 1.0, 0.0};
+    double m[3] = {0, 0, 0}, adj[3] = {0, 0, 0};
+    median3(q, m, 3);
+    median3_adjoint(q, adj, seed, 3);
+    CHECK(m[1] == 4.0);
+    for (int k = 0; k < 3; ++k)
+      CHECK(adj[k] == (q[k] == 2.0 ? 4.0 : 0.0));
   }
 }

@@ -616,6 +616,8 @@ void Statements::expr_stmt(const clang::Expr* e) {
     return;
   const auto* b = dyn_cast<BinaryOperator>(e);
   if (!b || !b->isAssignmentOp()) {
+    if (L.stores_.swap(e)) // std::swap(a, b)
+      return;
     if (isa<CallExpr>(e)) { // a void helper: its out-parameters and stores (or the unknown call)
       (void)L.exprs_.expr(e);
       if (e->getType()->isVoidType())

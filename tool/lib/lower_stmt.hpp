@@ -137,6 +137,10 @@ public:
 
   bool written_by_other_nest(const std::string& array) const;
 
+  // `std::swap(a, b)` of two scalar locals (a sorting network: `if (a > b) std::swap(a, b);`)
+  // is `t = a; a = b; b = t;`; any other std::swap is refused. False for any other statement.
+  bool swap(const clang::Expr* e);
+
   // `prefix` holds wherever `path` holds: its conditions open `path`.
   static bool is_prefix(const std::vector<PathCond>& prefix, const std::vector<PathCond>& path);
 

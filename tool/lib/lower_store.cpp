@@ -243,6 +243,34 @@ void Stores::assign_value(const VarDecl* var, Type t, const clang::Expr* lhs, Bi
   b.value = L.stmts_.make_local(var->getNameAsString(), var, cast(value, t));
 }
 
+bool Stores::swap(const clang::Expr* e) {
+  const auto* c = dyn_cast<CallExpr>(e);
+  const FunctionDecl* f = c ? c->getDirectCallee() : nullptr;
+  if (!f || !f->isInStdNamespace() || f->getName() != "swap" || c->getNumArgs() != 2)
+    return false;
+  const VarDecl* v[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto* r = dyn_cast<DeclRefExpr>(c->getArg(k)->IgnoreParenImpCasts());
+    v[k] = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+    auto it = v[k] ? L.env_.find(v[k]) : L.env_.end();
+    if (it == L.env_.end() || it->second.kind != Binding::Value ||
+        !L.scalar_type(v[k]->getType().getNonReferenceType()))
+      L.fail(c->getArg(k)->getBeginLoc(),
+             fmt::format("std::swap of '{}': dpgen swaps two scalar locals (std::swap(a, b)); "
+                         "pointers, arrays and their elements are swapped by assignments of "
+                         "their own, or not at all (index the other array instead)",
+                         L.text(c->getArg(k))));
+  }
+  // Both values as they are before the call (a read before either has one is refused as
+  // any read would be), then each variable gets the other's.
+  const ExprP x = L.exprs_.expr(c->getArg(0)), y = L.exprs_.expr(c->getArg(1));
+  for (int k = 0; k < 2; ++k)
+    check_caller_write(v[k], c->getBeginLoc());
+  L.env_[v[0]].value = L.stmts_.make_local(v[0]->getNameAsString(), v[0], y);
+  L.env_[v[1]].value = L.stmts_.make_local(v[1]->getNameAsString(), v[1], x);
+  return true;
+}
+
 Store* Stores::visible_store(Nest& nest, const std::string& array, const ExprP& idx) {
   for (auto it = nest.stores.rbegin(); it != nest.stores.rend(); ++it)
     if (it->array == array && same_index(it->index, idx) && is_prefix(it->path, L.path_))
