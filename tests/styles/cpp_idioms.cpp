@@ -55,3 +55,19 @@ DPGEN_KERNEL void median3(DPGEN_IN const double* u, DPGEN_OUT double* m, int n) 
     m[i] = b * std::fabs(b);
   }
 }
+
+// The same network through a helper that orders two values in place (by reference).
+static void order2(double& lo, double& hi) {
+  if (lo > hi)
+    std::swap(lo, hi);
+}
+
+DPGEN_KERNEL void median3_helper(DPGEN_IN const double* u, DPGEN_OUT double* m, int n) {
+  for (int i = 1; i < n - 1; ++i) {
+    double a = u[i - 1], b = u[i], c = u[i + 1];
+    order2(a, b);
+    order2(b, c);
+    order2(a, b);
+    m[i] = b * b * a - c; // (the least and the greatest too)
+  }
+}

@@ -92,7 +92,7 @@ TEST_CASE("styles: backward_diff") {
   }
 }
 
-TEST_CASE("styles: median3") {
+TEST_CASE("styles: median3, median3_helper") {
   for (int n : {1, 2, 3, 8, 31}) {
     CAPTURE(n);
     const size_t sn = size_t(n);
@@ -103,6 +103,21 @@ TEST_CASE("styles: median3") {
     p.adjoint = [&](auto in, auto adj, auto seed) { median3_adjoint(in[0], adj[0], seed[0], n); };
     p.tangent = [&](auto in, auto d, auto out, auto dout) {
       median3_tangent(in[0], d[0], out[0], dout[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  for (int n : {1, 3, 9, 30}) {
+    CAPTURE(n);
+    const size_t sn = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {sn};
+    p.out_sizes = {sn};
+    p.forward = [&](auto in, auto out) { median3_helper(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      median3_helper_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      median3_helper_tangent(in[0], d[0], out[0], dout[0], n);
     };
     dpgen_test::check_adjoint(p);
   }
