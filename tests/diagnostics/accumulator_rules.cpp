@@ -70,3 +70,30 @@ DPGEN_KERNEL void pointer_read(DPGEN_IN const double* a, DPGEN_OUT double* out, 
   out[0] = s + t;
   // CHECK: accumulator_rules.cpp:[[@LINE-1]]:12: error: 's' is read after the loop that assigns it
 }
+
+// A sum added to at two loop depths: dpgen would add all of one nest's terms before the
+// other's, which rounds otherwise than the kernel's order (with b = {1e16, -1e16} and a = 1
+// the kernel's total is 3, the reordered one 6); a sum of the inner loop of its own is fine.
+DPGEN_KERNEL void two_depths(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                             DPGEN_OUT double* out, int nx, int ny) {
+  double s = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    s = s + b[j];
+    for (int i = 0; i < nx; ++i)
+      s += a[j * nx + i];
+    // CHECK: accumulator_rules.cpp:[[@LINE-1]]:7: error: 's' is added to here and on line [[@LINE-3]], in loops nested otherwise
+  }
+  out[0] = s * s;
+}
+
+DPGEN_KERNEL void two_depths_split(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                   DPGEN_OUT double* out, int nx, int ny) {
+  double s = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    double t = 0.0;
+    for (int i = 0; i < nx; ++i)
+      t += a[j * nx + i];
+    s += b[j] + t;
+  }
+  out[0] = s * s;
+}

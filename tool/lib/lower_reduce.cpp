@@ -117,6 +117,19 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
   if (terms.empty())
     L.fail(loc, fmt::format("internal error: accumulator '{}' assigned in an unexpected form",
                             var->getNameAsString()));
+  // The sums of two loop nests (`for (j) { s += b[j]; for (i) s += a[j * nx + i]; }`) would be
+  // added nest by nest, all of one before the other: otherwise rounded than the kernel's order.
+  auto& first = acc->second.first_update;
+  if (!first)
+    first = {L.cur_key(), L.pos(lhs->getBeginLoc()).line};
+  else if (first->first != L.cur_key())
+    L.fail(lhs->getBeginLoc(),
+           fmt::format("'{}' is added to here and on line {}, in loops nested otherwise: dpgen "
+                       "splits them into two loop nests and would add all the terms of one "
+                       "before the other's, which rounds otherwise than the kernel does; sum "
+                       "the inner loop into a local of its own and add that "
+                       "(`double t = 0; for (...) t += ...; {} += ... + t;`)",
+                       var->getNameAsString(), first->second, var->getNameAsString()));
   L.stores_.add_sum(acc->second.array, acc->second.index, terms, t, L.pos(lhs->getBeginLoc()),
                     lhs->getBeginLoc());
   return true;

@@ -112,6 +112,9 @@ private:
     std::string start, ties, result; // a min/max reduction's S, T, R
     size_t depth = 0;                // loops_.size() outside the reducing loop
     std::vector<ExtremumUpdate> updates;
+    // A sum's first update: its loop nest and line (updates in two nests would be added
+    // nest by nest, not in the kernel's order: refused).
+    std::optional<std::pair<std::vector<int>, unsigned>> first_update;
   };
   std::map<const clang::VarDecl*, Accumulator> accumulators_;
   std::map<const clang::VarDecl*, const clang::VarDecl*> params_; // (bind_param)
