@@ -89,3 +89,17 @@ DPGEN_KERNEL void writes_input(DPGEN_IN double* u, DPGEN_OUT double* out, int nx
       U(i, j) = 0.0;
     }
 }
+
+// A sum spelled out through an accessor whose term reads the element it adds to (its value
+// before the statement, which the adjoint does not have).
+DPGEN_KERNEL void chain_reads_itself(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                     int ny) {
+  const Cells Out{out, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      Out(i, j) = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:53: error: output 'out' is read here after line [[@LINE-3]] wrote it, and written again on line [[@LINE+1]]
+      Out(i, j) = Out(i, j) + u[j * nx + i] - 0.5 * out[j * nx + i];
+}

@@ -100,3 +100,15 @@ DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, 
     for (int i = 1; i < nx - 1; ++i)
       Out(i, j) = U(i, j) * (U(i + 1, j) - 2.0 * U(i, j) + U(i - 1, j)) + U(i, j + 1) * U(i, j - 1);
 }
+
+// A sum spelled out through the accessor (`R(i, j) = R(i, j) + x - y`), in a later loop nest.
+DPGEN_KERNEL void accessor_chain(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                 DPGEN_OUT double* res, int nx, int ny) {
+  const Cells R{res, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      R(i, j) = b[j * nx + i];
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      R(i, j) = R(i, j) + a[j * nx + i] * a[j * nx + i] - b[j * nx + i] * a[j * nx + i];
+}

@@ -17,6 +17,8 @@ DPGEN_KERNEL void accessor_ctor(DPGEN_IN const double* u, DPGEN_OUT double* out,
 DPGEN_KERNEL void accessor_writes(DPGEN_IN const double* u, DPGEN_OUT double* res,
                                   DPGEN_OUT double* v, int nx, int ny);
 DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, int nx, int ny);
+DPGEN_KERNEL void accessor_chain(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                 DPGEN_OUT double* res, int nx, int ny);
 
 TEST_CASE("styles: accessor_local") {
   for (auto [nx, ny] : {std::pair{1, 1}, {3, 3}, {4, 6}, {9, 5}}) {
@@ -56,7 +58,7 @@ TEST_CASE("styles: accessor_ctor") {
   }
 }
 
-TEST_CASE("styles: accessor_writes, accessor_overloads") {
+TEST_CASE("styles: accessor_writes, accessor_overloads, accessor_chain") {
   for (auto [nx, ny] : {std::pair{1, 1}, {2, 1}, {3, 3}, {4, 6}, {9, 5}}) {
     CAPTURE(nx);
     CAPTURE(ny);
@@ -86,6 +88,18 @@ TEST_CASE("styles: accessor_writes, accessor_overloads") {
       accessor_overloads_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
     };
     dpgen_test::check_adjoint(o);
+
+    dpgen_test::Problem<double> c;
+    c.in_sizes = {n, n};
+    c.out_sizes = {n};
+    c.forward = [&](auto in, auto out) { accessor_chain(in[0], in[1], out[0], nx, ny); };
+    c.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_chain_adjoint(in[0], adj[0], in[1], adj[1], seed[0], nx, ny);
+    };
+    c.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_chain_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(c);
   }
   // By hand, one row of three: res = (f, -f + g, -g) with f = (u1^2 - u0^2) / 2, g = (u2^2 -
   // u1^2) / 2; v = (u + 1) u. A seed on res[1] gives u0 to u0, -2 u1 to u1, u2 to u2; one on

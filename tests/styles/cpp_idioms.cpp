@@ -71,3 +71,21 @@ DPGEN_KERNEL void median3_helper(DPGEN_IN const double* u, DPGEN_OUT double* m, 
     m[i] = b * b * a - c; // (the least and the greatest too)
   }
 }
+
+// Helpers and an accessor called with arguments left to their defaults.
+static double soft_clip(double x, double cap = 2.0, double width = 0.5) {
+  return cap * std::tanh(x / (cap * width));
+}
+
+struct Column {
+  const double* p;
+  int nx;
+  const double& operator()(int j, int i = 0) const { return p[j * nx + i]; }
+};
+
+DPGEN_KERNEL void default_args(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx, int ny) {
+  const Column U{u, nx};
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      v[j * nx + i] = soft_clip(u[j * nx + i]) + soft_clip(u[j * nx + i], 1.0) * U(j);
+}

@@ -9,6 +9,8 @@
 #include "cpp_idioms_kernels.hpp"
 #include "cpp_idioms_tangent.hpp"
 
+#include <utility>
+
 TEST_CASE("styles: binomial_smooth") {
   for (int n : {4, 5, 6, 17}) {
     CAPTURE(n);
@@ -131,5 +133,24 @@ TEST_CASE("styles: median3, median3_helper") {
     CHECK(m[1] == 4.0);
     for (int k = 0; k < 3; ++k)
       CHECK(adj[k] == (q[k] == 2.0 ? 4.0 : 0.0));
+  }
+}
+
+TEST_CASE("styles: default_args") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {3, 2}, {5, 4}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n};
+    p.out_sizes = {n};
+    p.forward = [&](auto in, auto out) { default_args(in[0], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      default_args_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      default_args_tangent(in[0], d[0], out[0], dout[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
   }
 }

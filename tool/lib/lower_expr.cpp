@@ -19,7 +19,7 @@ ExprP spelled_cast(const ExprP& e, uint64_t bits, const std::string& spelling) {
 }
 
 // What a node that only wraps an expression wraps: a temporary, a constant, a template's
-// argument (Dir of template <int Dir>); null for any other node.
+// argument (Dir of template <int Dir>), a default argument; null for any other node.
 const clang::Expr* wrapped(const clang::Expr* e) {
   if (const auto* m = dyn_cast<MaterializeTemporaryExpr>(e))
     return m->getSubExpr();
@@ -29,6 +29,8 @@ const clang::Expr* wrapped(const clang::Expr* e) {
     return c->getSubExpr();
   if (const auto* t = dyn_cast<SubstNonTypeTemplateParmExpr>(e))
     return t->getReplacement();
+  if (const auto* d = dyn_cast<CXXDefaultArgExpr>(e)) // an argument left to its default
+    return d->getExpr();
   return nullptr;
 }
 

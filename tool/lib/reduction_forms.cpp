@@ -276,9 +276,11 @@ bool ReductionForms::self_update_terms(
       std::reverse(terms.begin(), terms.end());
       if (terms.size() == 1)
         return true;
+      // (a target through an accessor or a view, R(i, j): a term that reads the output is
+      // refused where it reads it, as any read of an output summed into)
       const ReductionTarget t = target_of(lhs);
       for (const auto& term : terms)
-        if (!t.decl || mentions(term.first, t.decl))
+        if (t.decl && mentions(term.first, t.decl))
           return false;
       return true;
     }
