@@ -1,7 +1,9 @@
 // minmax_reductions (tests/styles/): min/max reductions written as solver
 // codes write them (issue 20): the residual's max norm (into a local and into
 // `*error`), a CFL time step, row maxima with a MAX macro, if-updates (C89
-// counters), two updates in one iteration, column minima into an output row.
+// counters), two updates in one iteration, column minima into an output row,
+// and updates with initializer lists of several terms (`m = std::max({m, x,
+// y})`).
 #include "dpgen/annotate.hpp"
 
 #include <algorithm>
@@ -135,4 +137,17 @@ DPGEN_KERNEL void red_user_helpers(DPGEN_IN const double* u, DPGEN_OUT double* o
   }
   out[0] = hi;
   out[1] = lo;
+}
+
+// A max reduction into a local and a min reduction into an output element, each updated with
+// an initializer list of terms (each term an update of its own).
+DPGEN_KERNEL void red_list_updates(DPGEN_IN const double* a, DPGEN_IN const double* b,
+                                   DPGEN_OUT double* hi, DPGEN_OUT double* lo, int n) {
+  double m = -1.0e300;
+  lo[0] = 1.0e300;
+  for (int i = 0; i < n; ++i) {
+    m = std::max({m, a[i] * b[i], a[i] + b[i]});
+    lo[0] = std::min({a[i] - b[i], lo[0], std::sin(a[i])});
+  }
+  hi[0] = m * m;
 }

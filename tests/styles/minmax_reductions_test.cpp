@@ -174,3 +174,30 @@ TEST_CASE("styles: red_user_helpers") {
         });
   }
 }
+
+TEST_CASE("styles: red_list_updates") {
+  for (int n : {1, 2, 6, 31}) {
+    CAPTURE(n);
+    const size_t sn = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {sn, sn};
+    p.out_sizes = {1, 1};
+    p.forward = [&](auto in, auto out) { red_list_updates(in[0], in[1], out[0], out[1], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      red_list_updates_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], n);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      red_list_updates_tangent(in[0], d[0], in[1], d[1], out[0], dout[0], out[1], dout[1], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // A tie inside one list: a = 2, b = 2 gives a b = a + b = 4 = m; the derivative of m^2 = 16
+  // (2 m = 8) is split between the two terms: 4 (b + 1) = 12 to a, 4 (a + 1) = 12 to b.
+  const double a[1] = {2.0}, b[1] = {2.0}, seed_hi = 1.0, seed_lo = 0.0;
+  double hi = 0.0, lo = 0.0, a_adj[1] = {0.0}, b_adj[1] = {0.0};
+  red_list_updates(a, b, &hi, &lo, 1);
+  CHECK(hi == 16.0);
+  red_list_updates_adjoint(a, a_adj, b, b_adj, &seed_hi, &seed_lo, 1);
+  CHECK(a_adj[0] == doctest::Approx(12.0));
+  CHECK(b_adj[0] == doctest::Approx(12.0));
+}

@@ -37,13 +37,12 @@ const clang::Expr* wrapped(const clang::Expr* e) {
 // The operands of a call: its arguments, or for `std::min({a, b, c})` and `std::max({...})`
 // the elements of its one initializer list (`list` set).
 std::vector<const clang::Expr*> operands(const CallExpr* c, const std::string& fn, bool& list) {
-  const auto* l = c->getNumArgs() == 1 && (fn == "min" || fn == "max")
-                      ? dyn_cast<CXXStdInitializerListExpr>(c->getArg(0)->IgnoreImplicit())
-                      : nullptr;
-  const auto* init = l ? dyn_cast<InitListExpr>(l->getSubExpr()->IgnoreImplicit()) : nullptr;
-  list = init != nullptr;
-  if (init)
-    return {init->inits().begin(), init->inits().end()};
+  std::vector<const clang::Expr*> elements;
+  if (fn == "min" || fn == "max")
+    elements = ReductionForms::list_elements(c);
+  list = !elements.empty();
+  if (list)
+    return elements;
   return {c->arg_begin(), c->arg_end()};
 }
 } // namespace

@@ -83,10 +83,14 @@ bool Reductions::element_update(const clang::Expr* lhs, BinaryOperatorKind op,
   for (auto& r : element_reductions_)
     if (forms_.is_target(lhs, r.target)) { // *err = fmax(*err, e): the reduction's update
       int kind = 0;
-      const clang::Expr* term = op == BO_Assign ? forms_.extremum_term(rhs, r.target, kind) : nullptr;
+      std::vector<const clang::Expr*> more; // (std::max({*err, e1, e2}): e2)
+      const clang::Expr* term =
+          op == BO_Assign ? forms_.extremum_term(rhs, r.target, kind, &more) : nullptr;
       if (!term || kind != r.acc.extremum)
         L.fail(loc, "internal error: an element reduction assigned in an unexpected form");
-      extremum_update(r.acc, term, L.k_.find_param(r.acc.array)->elem, lhs->getBeginLoc());
+      more.insert(more.begin(), term);
+      for (const clang::Expr* e : more) // (each term an update of its own: max(max(v, e1), e2))
+        extremum_update(r.acc, e, L.k_.find_param(r.acc.array)->elem, lhs->getBeginLoc());
       return true;
     }
   return false;
@@ -101,12 +105,15 @@ bool Reductions::local_update(const VarDecl* var, Type t, const clang::Expr* lhs
   if (acc->second.extremum) {
     // m = std::max(m, e), fmin(e, m), m > e ? m : e, ...: the scan's update.
     int kind = 0;
+    std::vector<const clang::Expr*> more; // (m = std::max({m, e1, e2}): e2)
     const clang::Expr* term =
-        op == BO_Assign ? forms_.extremum_term(rhs, {var, nullptr}, kind) : nullptr;
+        op == BO_Assign ? forms_.extremum_term(rhs, {var, nullptr}, kind, &more) : nullptr;
     if (!term || kind != acc->second.extremum)
       L.fail(loc, fmt::format("internal error: reduction '{}' assigned in an unexpected form",
                               var->getNameAsString()));
-    extremum_update(acc->second, term, t, lhs->getBeginLoc());
+    more.insert(more.begin(), term);
+    for (const clang::Expr* e : more) // (each term an update of its own: max(max(m, e1), e2))
+      extremum_update(acc->second, e, t, lhs->getBeginLoc());
     return true;
   }
   // s += e, s -= e, s = s + e, s = e + s, s = s + e - f: the hidden array's element for this

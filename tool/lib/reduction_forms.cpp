@@ -34,6 +34,16 @@ ReductionForms::accumulated_terms(const clang::Expr* rhs, const VarDecl* v) {
   return {};
 }
 
+std::vector<const clang::Expr*> ReductionForms::list_elements(const CallExpr* c) {
+  const auto* l = c->getNumArgs() == 1
+                      ? dyn_cast<CXXStdInitializerListExpr>(c->getArg(0)->IgnoreImplicit())
+                      : nullptr;
+  const auto* init = l ? dyn_cast<InitListExpr>(l->getSubExpr()->IgnoreImplicit()) : nullptr;
+  if (!init)
+    return {};
+  return {init->inits().begin(), init->inits().end()};
+}
+
 bool ReductionForms::mentions(const Stmt* s, const ValueDecl* v) {
   if (!s)
     return false;
@@ -369,11 +379,18 @@ int ReductionForms::helper_extremum(const FunctionDecl* f) const {
 }
 
 const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
-                                          int& extremum) const {
+                                                 int& extremum,
+                                                 std::vector<const clang::Expr*>* more) const {
   auto is_t = [&](const clang::Expr* e) { return is_target(e, t); };
   rhs = rhs->IgnoreParenImpCasts();
-  // std::max(v, e), fmax(e, v), fminf(v, e), ...
-  if (const auto* c = dyn_cast<CallExpr>(rhs); c && c->getNumArgs() == 2) {
+  // std::max(v, e), fmax(e, v), fminf(v, e), ...; std::max({v, e1, e2}) (its terms e1, e2)
+  if (const auto* c = dyn_cast<CallExpr>(rhs)) {
+    std::vector<const clang::Expr*> args = list_elements(c);
+    const bool list = !args.empty();
+    if (!list)
+      args.assign(c->arg_begin(), c->arg_end());
+    if (args.size() != 2 && !list)
+      return nullptr;
     const FunctionDecl* f = c->getDirectCallee();
     const MathFn* m =
         f && !isa<CXXMethodDecl>(f) ? find_math_function(f->getNameAsString()) : nullptr;
@@ -383,16 +400,24 @@ const clang::Expr* ReductionForms::extremum_term(const clang::Expr* rhs, const R
     if (m && from_library &&
         (m->name == "max" || m->name == "min" || m->name == "fmax" || m->name == "fmin"))
       kind = m->name == "max" || m->name == "fmax" ? 1 : -1;
-    else if (f && !from_library && same_type(c->getType(), t))
+    else if (f && !from_library && !list && same_type(c->getType(), t))
       kind = helper_extremum(f); // the user's own `dmax(a, b)`, in the target's type
     if (kind == 0)
       return nullptr;
-    const clang::Expr *a = c->getArg(0), *b = c->getArg(1);
-    const clang::Expr* term = is_t(a) ? b : is_t(b) ? a : nullptr;
-    if (!term || mentions(term, t.decl))
+    // v once among the operands; the terms the others, none of which mentions v
+    std::vector<const clang::Expr*> terms;
+    for (const clang::Expr* a : args)
+      if (!is_t(a))
+        terms.push_back(a);
+    if (terms.size() + 1 != args.size() || terms.empty())
       return nullptr;
+    for (const clang::Expr* term : terms)
+      if (mentions(term, t.decl))
+        return nullptr;
     extremum = kind;
-    return term;
+    if (more)
+      more->assign(terms.begin() + 1, terms.end());
+    return terms[0];
   }
   // v > e ? v : e, e < v ? v : e, v < e ? v : e (min), ... (a MAX macro)
   const auto* co = dyn_cast<ConditionalOperator>(rhs);

@@ -15,6 +15,7 @@
 
 namespace clang {
 class ASTContext;
+class CallExpr;
 class Expr;
 class FunctionDecl;
 class IfStmt;
@@ -50,6 +51,9 @@ public:
   // was before the statement, not as the sum so far).
   bool self_update_terms(const clang::Expr* lhs, const clang::Expr* rhs,
                          std::vector<std::pair<const clang::Expr*, bool>>& terms) const;
+  // The elements of call `c`'s one argument where it is an initializer list (`std::max({a, b,
+  // c})`: a, b, c); empty for any other call.
+  static std::vector<const clang::Expr*> list_elements(const clang::CallExpr* c);
   // `s` mentions `v`.
   static bool mentions(const clang::Stmt* s, const clang::ValueDecl* v);
   // Every mention of `v` in `body` is the target of `v += e`, `v -= e` or
@@ -66,8 +70,9 @@ public:
   // The term `e` of a min/max update of `t` (`v = std::max(v, e)`, `v =
   // fmin(e, v)`, `v = v > e ? v : e`, ...), with `extremum` +1 for max and
   // -1 for min; null for any other form.
-  const clang::Expr* extremum_term(const clang::Expr* rhs, const ReductionTarget& t,
-                                   int& extremum) const;
+  // `v = std::max({v, e1, e2})`: e1, its further terms (e2) in `more` where given.
+  const clang::Expr* extremum_term(const clang::Expr* rhs, const ReductionTarget& t, int& extremum,
+                                   std::vector<const clang::Expr*>* more = nullptr) const;
   // `if (e > v) v = e;` (no else; the body the one assignment): its `e`,
   // target and kind; null for any other if.
   // `extra`: where the if's condition is `<comparison> && rest` (`if (e > m
