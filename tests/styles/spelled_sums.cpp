@@ -108,7 +108,7 @@ DPGEN_KERNEL void store_then_add(DPGEN_IN const double* a, DPGEN_IN const double
 // Local sums spelled out as chains: a double total over the grid (stored to a float) and a
 // float sum per row with double terms (the literals: C++ adds each in double and rounds the
 // row's sum once).
-DPGEN_KERNEL void local_chains(DPGEN_IN const float* a, DPGEN_OUT float* energy,
+DPGEN_KERNEL void local_sum_chains(DPGEN_IN const float* a, DPGEN_OUT float* energy,
                                DPGEN_OUT float* rows, int nx, int ny) {
   double s = 0.0;
   for (int j = 0; j < ny; ++j) {

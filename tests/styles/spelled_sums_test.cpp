@@ -192,7 +192,7 @@ TEST_CASE("styles: column_sums_mixed, double terms into float sums rounded once"
   }
 }
 
-TEST_CASE("styles: local_chains, local sums spelled as chains") {
+TEST_CASE("styles: local_sum_chains, local sums spelled as chains") {
   for (auto [nx, ny] : {std::pair{1, 1}, {4, 3}, {9, 5}}) {
     CAPTURE(nx);
     CAPTURE(ny);
@@ -200,12 +200,12 @@ TEST_CASE("styles: local_chains, local sums spelled as chains") {
     dpgen_test::Problem<float> p;
     p.in_sizes = {n};
     p.out_sizes = {1, Y};
-    p.forward = [&](auto in, auto out) { local_chains(in[0], out[0], out[1], nx, ny); };
+    p.forward = [&](auto in, auto out) { local_sum_chains(in[0], out[0], out[1], nx, ny); };
     p.adjoint = [&](auto in, auto adj, auto seed) {
-      local_chains_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny);
+      local_sum_chains_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny);
     };
     p.tangent = [&](auto in, auto d, auto out, auto dout) {
-      local_chains_tangent(in[0], d[0], out[0], dout[0], out[1], dout[1], nx, ny);
+      local_sum_chains_tangent(in[0], d[0], out[0], dout[0], out[1], dout[1], nx, ny);
     };
     dpgen_test::check_adjoint(p);
 
@@ -217,8 +217,8 @@ TEST_CASE("styles: local_chains, local sums spelled as chains") {
       a[k] = float(wave[k]);
     float e = 0.0f, te = 0.0f, de = 0.0f;
     std::vector<float> rows(Y), trows(Y), drows(Y);
-    local_chains(a.data(), &e, rows.data(), nx, ny);
-    local_chains_tangent(a.data(), da.data(), &te, &de, trows.data(), drows.data(), nx, ny);
+    local_sum_chains(a.data(), &e, rows.data(), nx, ny);
+    local_sum_chains_tangent(a.data(), da.data(), &te, &de, trows.data(), drows.data(), nx, ny);
     CHECK(std::memcmp(&e, &te, sizeof(float)) == 0);
     CHECK(std::memcmp(rows.data(), trows.data(), sizeof(float) * Y) == 0);
   }
