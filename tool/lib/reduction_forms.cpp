@@ -5,33 +5,44 @@
 
 namespace dpgen::lowering {
 
-// The terms of `v = v + e`, `v = v - e`, `v = e + v` and of a chain `v = v + e - f + ...`
-// (v the leftmost operand), each with its sign, in the order C++ adds them; empty for any
-// other form and where a term mentions v (it would see v as it was, not the sum so far).
-std::vector<std::pair<const clang::Expr*, bool>>
-ReductionForms::accumulated_terms(const clang::Expr* rhs, const VarDecl* v) {
-  auto is_v = [&](const clang::Expr* e) {
-    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
-    return r && r->getDecl() == v;
-  };
+namespace {
+
+// The terms of `x = x + e`, `x = x - e`, `x = e + x` and of a chain `x = x + e - f + ...` (x,
+// which `is_x` recognises, the leftmost operand), each with its sign (true: subtracted), in
+// the order C++ adds them; empty for any other form. (What the terms may mention is the
+// caller's to check.)
+template <typename IsX>
+std::vector<std::pair<const clang::Expr*, bool>> chain_terms(const clang::Expr* rhs, IsX is_x) {
   std::vector<std::pair<const clang::Expr*, bool>> terms;
   const clang::Expr* e = rhs->IgnoreParenImpCasts();
   while (const auto* b = dyn_cast<BinaryOperator>(e)) {
     if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
       break;
-    const bool start = is_v(b->getLHS()); // v + e, v - e: the chain's start
-    if (start || (terms.empty() && b->getOpcode() == BO_Add && is_v(b->getRHS()))) { // or e + v
+    const bool start = is_x(b->getLHS()); // x + e, x - e: the chain's start
+    if (start || (terms.empty() && b->getOpcode() == BO_Add && is_x(b->getRHS()))) { // or e + x
       terms.push_back({start ? b->getRHS() : b->getLHS(), b->getOpcode() == BO_Sub});
       std::reverse(terms.begin(), terms.end());
-      for (const auto& term : terms)
-        if (mentions(term.first, v))
-          return {};
       return terms;
     }
     terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
     e = b->getLHS()->IgnoreParenImpCasts();
   }
   return {};
+}
+
+} // namespace
+
+// The chain's terms where none mentions v (it would see v as it was, not the sum so far).
+std::vector<std::pair<const clang::Expr*, bool>>
+ReductionForms::accumulated_terms(const clang::Expr* rhs, const VarDecl* v) {
+  auto terms = chain_terms(rhs, [&](const clang::Expr* e) {
+    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+    return r && r->getDecl() == v;
+  });
+  for (const auto& term : terms)
+    if (mentions(term.first, v))
+      return {};
+  return terms;
 }
 
 std::vector<const clang::Expr*> ReductionForms::list_elements(const CallExpr* c) {
@@ -277,32 +288,15 @@ bool ReductionForms::self_update_terms(
   terms.clear();
   if (may_mutate(lhs))
     return false;
-  const clang::Expr* e = rhs->IgnoreParenImpCasts();
-  while (const auto* b = dyn_cast<BinaryOperator>(e)) {
-    if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
-      break;
-    if (same_expr(b->getLHS(), lhs)) { // x + e, x - e: the chain's start
-      terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
-      std::reverse(terms.begin(), terms.end());
-      if (terms.size() == 1)
-        return true;
-      // (a target through an accessor or a view, R(i, j): a term that reads the output is
-      // refused where it reads it, as any read of an output summed into)
-      const ReductionTarget t = target_of(lhs);
-      for (const auto& term : terms)
-        if (t.decl && mentions(term.first, t.decl))
-          return false;
-      return true;
-    }
-    if (terms.empty() && b->getOpcode() == BO_Add && same_expr(b->getRHS(), lhs)) { // e + x
-      terms.push_back({b->getLHS(), false});
-      return true;
-    }
-    terms.push_back({b->getRHS(), b->getOpcode() == BO_Sub});
-    e = b->getLHS()->IgnoreParenImpCasts();
-  }
-  terms.clear();
-  return false;
+  terms = chain_terms(rhs, [&](const clang::Expr* e) { return same_expr(e, lhs); });
+  // (a target through an accessor or a view, R(i, j): a term that reads the output is refused
+  // where it reads it, as any read of an output summed into)
+  const ReductionTarget t = target_of(lhs);
+  if (terms.size() > 1 && t.decl)
+    for (const auto& term : terms)
+      if (mentions(term.first, t.decl))
+        terms.clear();
+  return !terms.empty();
 }
 
 bool ReductionForms::is_target(const clang::Expr* e, const ReductionTarget& t) const {
