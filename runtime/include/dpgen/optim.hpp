@@ -18,6 +18,15 @@
 #include <stdexcept>
 #include <string>
 
+// Eigen's BDCSVD (hig_update's and hig_minimize's default SVD) costs each file that calls them
+// about 30 s of compile time with g++ -O3. A program with several such files can compile it
+// once: define DPGEN_EXTERN_BDCSVD in all of them and put the explicit instantiation
+// `template class Eigen::BDCSVD<Eigen::MatrixXd>;` in one file (dpgen's own tests and examples
+// link runtime/src/bdcsvd.cpp, target dpgen_bdcsvd).
+#ifdef DPGEN_EXTERN_BDCSVD
+extern template class Eigen::BDCSVD<Eigen::MatrixXd>;
+#endif
+
 namespace dpgen {
 
 /// A loss with its gradient: returns L(x) and overwrites `grad` with dL/dx (sized like x).
