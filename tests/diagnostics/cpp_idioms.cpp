@@ -33,6 +33,25 @@ DPGEN_KERNEL void sum_reads_itself(DPGEN_IN const double* a, DPGEN_OUT double* o
   out[0] = s;
 }
 
+// `a - s` is no sum of s (s changes sign each time), and a cast to a narrower type than the
+// sum's rounds the sum at each step: both recurrences. (`e + s - f` and a cast to the sum's
+// own type are sums: tests/styles/spelled_sums.cpp, mid_chain_sums.)
+DPGEN_KERNEL void sum_subtracted(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    s = a[i] - s;
+  // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:16: error: 's' is declared outside the loop and assigned inside it
+  out[0] = s;
+}
+
+DPGEN_KERNEL void sum_cast_narrower(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i)
+    s = (float)(s + a[i]);
+  // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:17: error: 's' is declared outside the loop and assigned inside it
+  out[0] = s;
+}
+
 static std::pair<double, double> split(double x) { return {x * x, 2.0 * x}; }
 
 DPGEN_KERNEL void bound_pair(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {

@@ -122,3 +122,22 @@ DPGEN_KERNEL void local_sum_chains(DPGEN_IN const float* a, DPGEN_OUT float* ene
   }
   energy[0] = s;
 }
+
+// The sum in the middle of its chain, `s = e + s - f`: C++ adds e first, and e + s is s + e
+// bit for bit; a compound e (`x * x + 0.5 * y + s`) is one term, added whole. A chain cast to
+// the sum's own type, `(float)(...)`, is the assignment's own conversion.
+DPGEN_KERNEL void mid_chain_sums(DPGEN_IN const float* a, DPGEN_IN const float* b,
+                                 DPGEN_OUT float* total, DPGEN_OUT float* cols, int nx, int ny) {
+  float s = 0.0f;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const float x = a[j * nx + i], y = b[j * nx + i];
+      s = x * x + 0.5 * y + s - x * y;
+    }
+  total[0] = s;
+  for (int i = 0; i < nx; ++i) {
+    cols[i] = 0.0f;
+    for (int j = 0; j < ny; ++j)
+      cols[i] = (float)(a[j * nx + i] * b[j * nx + i] + cols[i] - 0.25 * a[j * nx + i]);
+  }
+}

@@ -223,3 +223,39 @@ TEST_CASE("styles: local_sum_chains, local sums spelled as chains") {
     CHECK(std::memcmp(rows.data(), trows.data(), sizeof(float) * Y) == 0);
   }
 }
+
+TEST_CASE("styles: mid_chain_sums, the sum in the middle of its chain, and cast") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {4, 3}, {7, 5}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny), X = size_t(nx);
+    dpgen_test::Problem<float> p;
+    p.in_sizes = {n, n};
+    p.out_sizes = {1, X};
+    p.forward = [&](auto in, auto out) { mid_chain_sums(in[0], in[1], out[0], out[1], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      mid_chain_sums_adjoint(in[0], adj[0], in[1], adj[1], seed[0], seed[1], nx, ny);
+    };
+    p.tangent = [&](auto in, auto d, auto out, auto dout) {
+      mid_chain_sums_tangent(in[0], d[0], in[1], d[1], out[0], dout[0], out[1], dout[1], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+
+    // The tangent's values are the kernel's, bit for bit: each chain added in C++'s order, in
+    // double, and rounded to float once per update.
+    const std::vector<double> wa = dpgen_test::wavy(n, 0.8, 1.5),
+                              wb = dpgen_test::wavy(n, 1.3, 0.7);
+    std::vector<float> a(n), b(n), d(n, 1.0f);
+    for (size_t k = 0; k < n; ++k) {
+      a[k] = float(wa[k]);
+      b[k] = float(wb[k]);
+    }
+    float t = 0.0f, tt = 0.0f, dt = 0.0f;
+    std::vector<float> cols(X), tcols(X), dcols(X);
+    mid_chain_sums(a.data(), b.data(), &t, cols.data(), nx, ny);
+    mid_chain_sums_tangent(a.data(), d.data(), b.data(), d.data(), &tt, &dt, tcols.data(),
+                           dcols.data(), nx, ny);
+    CHECK(std::memcmp(&t, &tt, sizeof(float)) == 0);
+    CHECK(std::memcmp(cols.data(), tcols.data(), sizeof(float) * X) == 0);
+  }
+}

@@ -7,19 +7,26 @@ namespace dpgen::lowering {
 
 namespace {
 
-// The terms of `x = x + e`, `x = x - e`, `x = e + x` and of a chain `x = x + e - f + ...` (x,
-// which `is_x` recognises, the leftmost operand), each with its sign (true: subtracted), in
-// the order C++ adds them; empty for any other form. (What the terms may mention is the
-// caller's to check.)
+// The terms of `x = x + e`, `x = x - e`, `x = e + x` and of a chain `x = x + e - f + ...` or
+// `x = e + x - f + ...` (x, which `is_x` recognises, the leftmost operand or the right one of
+// the innermost +, whose left operand e is then one term: e + x is x + e, bit for bit), each
+// with its sign (true: subtracted), in the order C++ adds them; empty for any other form. A
+// cast of the whole chain to the type it is assigned to, `x = (double)(x + e)`, is the
+// assignment's own conversion. (What the terms may mention is the caller's to check.)
 template <typename IsX>
 std::vector<std::pair<const clang::Expr*, bool>> chain_terms(const clang::Expr* rhs, IsX is_x) {
   std::vector<std::pair<const clang::Expr*, bool>> terms;
   const clang::Expr* e = rhs->IgnoreParenImpCasts();
+  if (const auto* c = dyn_cast<ExplicitCastExpr>(e);
+      c && rhs->getType()->isRealFloatingType() &&
+      c->getType().getCanonicalType().getUnqualifiedType() ==
+          rhs->getType().getCanonicalType().getUnqualifiedType())
+    e = c->getSubExpr()->IgnoreParenImpCasts();
   while (const auto* b = dyn_cast<BinaryOperator>(e)) {
     if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub)
       break;
     const bool start = is_x(b->getLHS()); // x + e, x - e: the chain's start
-    if (start || (terms.empty() && b->getOpcode() == BO_Add && is_x(b->getRHS()))) { // or e + x
+    if (start || (b->getOpcode() == BO_Add && is_x(b->getRHS()))) { // or e + x
       terms.push_back({start ? b->getRHS() : b->getLHS(), b->getOpcode() == BO_Sub});
       std::reverse(terms.begin(), terms.end());
       return terms;
