@@ -103,3 +103,20 @@ DPGEN_KERNEL void chain_reads_itself(DPGEN_IN const double* u, DPGEN_OUT double*
       // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:53: error: output 'out' is read here after line [[@LINE-3]] wrote it, and written again on line [[@LINE+1]]
       Out(i, j) = Out(i, j) + u[j * nx + i] - 0.5 * out[j * nx + i];
 }
+
+// The same through operator[] (a span-like row): its body must be the one return.
+struct CheckedSpan {
+  double* p;
+  int n;
+  double& operator[](int i) const {
+    const int k = i < n ? i : n - 1;
+    return p[k];
+  }
+};
+
+DPGEN_KERNEL void checked_subscript(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  const CheckedSpan O{out, n};
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:5: error: 'operator[]' of 'CheckedSpan' returns a reference: dpgen follows one whose body is the one statement 'return p[<index>];'
+    O[i] = 2.0 * u[i];
+}

@@ -2,13 +2,16 @@
 // spelled_sums.cpp): `!=` ends only a loop stepping by one (a stride could step over the
 // bound), sizeof only of what has a size before the kernel runs, a sum spelled out only
 // where no term reads the sum, std::swap only of two scalar locals (and as a recurrence
-// where it carries values between iterations), and structured bindings and members of
-// returned pairs are named as written. Each in one run.
+// where it carries values between iterations), std::min and std::max without a comparator,
+// and structured bindings and members of returned pairs are named as written. Each in one
+// run.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <utility>
 
 DPGEN_KERNEL void strided_ne(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
@@ -50,6 +53,16 @@ DPGEN_KERNEL void sum_cast_narrower(DPGEN_IN const double* a, DPGEN_OUT double* 
     s = (float)(s + a[i]);
   // CHECK-DAG: cpp_idioms.cpp:[[@LINE-1]]:17: error: 's' is declared outside the loop and assigned inside it
   out[0] = s;
+}
+
+// std::max and std::min with a comparator: refused at the comparator, not at the list.
+DPGEN_KERNEL void max_comparator(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:41: error: 'std::max' with a comparator is outside the kernel subset: dpgen differentiates std::max by the order of its values
+    out[i] = std::max({a[i], 0.0, 1.0}, std::greater<>());
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:34: error: 'std::min' with a comparator
+    out[i] = std::min(a[i], 0.5, [](double x, double y) { return x * x < y * y; });
 }
 
 static std::pair<double, double> split(double x) { return {x * x, 2.0 * x}; }

@@ -6,7 +6,8 @@
 // accessors whose operator() returns a reference, written through as well as
 // read: fluxes added to both cells of a face (`R(i, j) += f; R(i + 1, j) -=
 // f;`), an element stored then scaled (`V(i, j) *= ...`), and a class with a
-// const and a non-const overload, as containers write them.
+// const and a non-const overload, as containers write them; a span-like row whose
+// operator[] returns a reference or a value.
 #include "dpgen/annotate.hpp"
 
 struct Grid2 {
@@ -111,4 +112,32 @@ DPGEN_KERNEL void accessor_chain(DPGEN_IN const double* a, DPGEN_IN const double
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
       R(i, j) = R(i, j) + a[j * nx + i] * a[j * nx + i] - b[j * nx + i] * a[j * nx + i];
+}
+
+// A span-like row with operator[]: by reference (written through, fluxes added to both cells
+// of a face) and by value (read), as containers and span classes spell it.
+struct Span {
+  double* p;
+  double& operator[](int i) const { return p[i]; }
+};
+
+class ConstSpan {
+public:
+  explicit ConstSpan(const double* p) : p_(p) {}
+  double operator[](int i) const { return p_[i]; }
+
+private:
+  const double* p_;
+};
+
+DPGEN_KERNEL void accessor_subscript(DPGEN_IN const double* u, DPGEN_OUT double* res, int n) {
+  const ConstSpan U(u);
+  const Span R{res};
+  for (int i = 0; i < n; ++i)
+    R[i] = U[i];
+  for (int i = 0; i < n - 1; ++i) {
+    const double f = U[i] * U[i + 1];
+    R[i] -= f;
+    R[i + 1] += f;
+  }
 }

@@ -3,8 +3,9 @@
 // `const Field2 U(u, nx)` through a constructor, quadratic. (What is refused:
 // tests/diagnostics/accessor_local.cpp.) accessor_writes: fluxes added through a
 // reference-returning accessor, an element stored and scaled; accessor_overloads: a class
-// with a const and a non-const operator(), nonlinear; both by differences, the dot-product
-// test and a cell by hand.
+// with a const and a non-const operator(), nonlinear; accessor_subscript: a span-like row's
+// operator[], by reference and by value; each by differences, the dot-product test and a
+// cell by hand.
 #include "support/adjoint_check.hpp"
 
 #include "accessor_local_adjoint.hpp"
@@ -19,6 +20,7 @@ DPGEN_KERNEL void accessor_writes(DPGEN_IN const double* u, DPGEN_OUT double* re
 DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, int nx, int ny);
 DPGEN_KERNEL void accessor_chain(DPGEN_IN const double* a, DPGEN_IN const double* b,
                                  DPGEN_OUT double* res, int nx, int ny);
+DPGEN_KERNEL void accessor_subscript(DPGEN_IN const double* u, DPGEN_OUT double* res, int n);
 
 TEST_CASE("styles: accessor_local") {
   for (auto [nx, ny] : {std::pair{1, 1}, {3, 3}, {4, 6}, {9, 5}}) {
@@ -113,4 +115,31 @@ TEST_CASE("styles: accessor_writes, accessor_overloads, accessor_chain") {
   CHECK(adj[0] == doctest::Approx(0.5));
   CHECK(adj[1] == doctest::Approx(3.0));
   CHECK(adj[2] == doctest::Approx(2.0 + (2.0 * 2.0 + 1.0)));
+}
+
+TEST_CASE("styles: accessor_subscript") {
+  for (int n : {1, 2, 5, 12}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { accessor_subscript(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_subscript_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_subscript_tangent(in[0], dir[0], out[0], outd[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // By hand, n = 3: res = (u0 - u0 u1, u1 + u0 u1 - u1 u2, u2 + u1 u2). A seed on res[1] gives
+  // u1 to u0, 1 + u0 - u2 to u1, -u1 to u2.
+  const double u[3] = {0.5, -1.5, 2.0}, seed[3] = {0.0, 1.0, 0.0};
+  double res[3], adj[3] = {0.0, 0.0, 0.0};
+  accessor_subscript(u, res, 3);
+  CHECK(res[1] == doctest::Approx(-1.5 + 0.5 * -1.5 - (-1.5 * 2.0)));
+  accessor_subscript_adjoint(u, adj, seed, 3);
+  CHECK(adj[0] == doctest::Approx(-1.5));
+  CHECK(adj[1] == doctest::Approx(1.0 + 0.5 - 2.0));
+  CHECK(adj[2] == doctest::Approx(1.5));
 }

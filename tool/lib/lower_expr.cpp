@@ -101,6 +101,8 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
   }
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
       oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
+    if (L.inl_.made_accessor(oc)) // an accessor's operator[] returning a value: a call
+      return std::nullopt;
     // v[i] of a std::vector parameter
     const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
     if (const auto* row = dyn_cast<CXXOperatorCallExpr>(base);
@@ -607,6 +609,15 @@ ExprP Expressions::call_expr(const CallExpr* c) {
                        "only {}",
                        f->getQualifiedNameAsString(), supported_calls()),
            "dpgen-call");
+  if ((math->name == "min" || math->name == "max") && c->getNumArgs() >= 2 &&
+      c->getArg(c->getNumArgs() - 1)->getType()->isRecordType()) // std::max(a, b, comp)
+    L.fail(
+        c->getArg(c->getNumArgs() - 1)->getBeginLoc(),
+        fmt::format("'{}' with a comparator is outside the kernel subset: dpgen "
+                    "differentiates std::{} by the order of its values; write the choice out as a "
+                    "conditional on what the comparator compares",
+                    f->getQualifiedNameAsString(), math->name),
+        "dpgen-call");
   Type t = L.type_of(c);
   bool list = false;
   std::vector<ExprP> args;

@@ -6,11 +6,11 @@
 
 namespace dpgen::lowering {
 
-// `U(i, j)` where U is a local the kernel made over its arrays (`const Grid2 U{u, nx};`): a
-// view class's object bound as a functor's is (lower_stmt.cpp), its members known.
+// `U(i, j)` or `U[i]` where U is a local the kernel made over its arrays (`const Grid2 U{u, nx};`):
+// a view class's object bound as a functor's is (lower_stmt.cpp), its members known.
 bool Inliner::made_accessor(const CallExpr* c) const {
   const auto* oc = dyn_cast<CXXOperatorCallExpr>(c);
-  if (!oc || oc->getOperator() != OO_Call)
+  if (!oc || (oc->getOperator() != OO_Call && oc->getOperator() != OO_Subscript))
     return false;
   const auto* ref = dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts());
   const auto* lv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;

@@ -33,11 +33,11 @@ public:
   // The value of call `c` of helper `f` (void helpers: their stores and
   // out-parameters, and a null value).
   ExprP inline_call(const clang::CallExpr* c, const clang::FunctionDecl* f);
-  // `c` calls the operator() of an accessor the kernel made over its arrays.
+  // `c` calls the operator() or operator[] of an accessor the kernel made over its arrays.
   bool made_accessor(const clang::CallExpr* c) const;
-  // `U(i, j)` of such an accessor whose operator() returns a reference, its body `return
-  // p[j * nx + i];`: that element of the kernel's array (written to, or read); nullopt for any
-  // other call.
+  // `U(i, j)` (or `U[k]`) of such an accessor whose operator returns a reference, its body
+  // `return p[j * nx + i];`: that element of the kernel's array (written to, or read); nullopt for
+  // any other call.
   std::optional<Access> accessor_element(const clang::CallExpr* c);
   // `auto f = [&](int i) { ... };`: called later, inlined like a helper. A
   // variable captured by copy must still have the value it had here when the
