@@ -34,6 +34,16 @@ const clang::Expr* wrapped(const clang::Expr* e) {
   return nullptr;
 }
 
+// An integer explicitly widened to 64 bits, `(long)(e)`, kept as spelled.
+ExprP widened(const ExprP& e, std::string spelling) {
+  auto w = std::make_shared<dpgen::Expr>();
+  w->op = Op::Cast;
+  w->type = Type::Int;
+  w->ops = {e};
+  w->cast_type = std::move(spelling);
+  return w;
+}
+
 // The operands of a call: its arguments, or for `std::min({a, b, c})` and `std::max({...})`
 // the elements of its one initializer list (`list` set).
 std::vector<const clang::Expr*> operands(const CallExpr* c, const std::string& fn, bool& list) {
@@ -44,6 +54,21 @@ std::vector<const clang::Expr*> operands(const CallExpr* c, const std::string& f
   if (list)
     return elements;
   return {c->arg_begin(), c->arg_end()};
+}
+
+// The comparator of `std::max(a, b, comp)` or `std::min({...}, comp)`; null for none.
+const clang::Expr* comparator(const CallExpr* c, const std::string& fn) {
+  if ((fn != "min" && fn != "max") || c->getNumArgs() < 2)
+    return nullptr;
+  const clang::Expr* last = c->getArg(c->getNumArgs() - 1);
+  return last->getType()->isRecordType() ? last : nullptr;
+}
+
+std::string comparator_message(const FunctionDecl* f, const std::string& fn) {
+  return fmt::format("'{}' with a comparator is outside the kernel subset: dpgen differentiates "
+                     "std::{} by the order of its values; write the choice out as a conditional "
+                     "on what the comparator compares",
+                     f->getQualifiedNameAsString(), fn);
 }
 } // namespace
 
@@ -100,9 +125,8 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
                                 "parameter directly: a[i + 1]");
   }
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e);
-      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
-    if (L.inl_.made_accessor(oc)) // an accessor's operator[] returning a value: a call
-      return std::nullopt;
+      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2 &&
+      !L.inl_.made_accessor(oc)) { // (an accessor's operator[] returning a value: a call)
     // v[i] of a std::vector parameter
     const clang::Expr* base = oc->getArg(0)->IgnoreParenImpCasts();
     if (const auto* row = dyn_cast<CXXOperatorCallExpr>(base);
@@ -441,12 +465,7 @@ ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
     if (!explicit_cast || L.ctx_.getTypeSize(c->getType()) < 64 ||
         L.ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
       return inner;
-    auto w = std::make_shared<dpgen::Expr>();
-    w->op = Op::Cast;
-    w->type = Type::Int;
-    w->ops = {inner};
-    w->cast_type = L.spelled(c->getType());
-    return w;
+    return widened(inner, L.spelled(c->getType()));
   }
   case CK_FloatingToIntegral:
     return spelled_cast(cast(expr(sub), L.type_of(c)), L.ctx_.getTypeSize(c->getType()),
@@ -609,15 +628,8 @@ ExprP Expressions::call_expr(const CallExpr* c) {
                        "only {}",
                        f->getQualifiedNameAsString(), supported_calls()),
            "dpgen-call");
-  if ((math->name == "min" || math->name == "max") && c->getNumArgs() >= 2 &&
-      c->getArg(c->getNumArgs() - 1)->getType()->isRecordType()) // std::max(a, b, comp)
-    L.fail(
-        c->getArg(c->getNumArgs() - 1)->getBeginLoc(),
-        fmt::format("'{}' with a comparator is outside the kernel subset: dpgen "
-                    "differentiates std::{} by the order of its values; write the choice out as a "
-                    "conditional on what the comparator compares",
-                    f->getQualifiedNameAsString(), math->name),
-        "dpgen-call");
+  if (const clang::Expr* comp = comparator(c, math->name)) // std::max(a, b, comp)
+    L.fail(comp->getBeginLoc(), comparator_message(f, math->name), "dpgen-call");
   Type t = L.type_of(c);
   bool list = false;
   std::vector<ExprP> args;
