@@ -23,12 +23,15 @@ private:
   int stride_;
 };
 
-DPGEN_KERNEL void offset_pointer(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+// (over the kernel's array at an offset, `Grid2 U{u + nx, nx}`, it is accepted:
+// tests/styles/accessor_local.cpp, accessor_offset)
+DPGEN_KERNEL void local_array(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+  double tmp[4] = {0.0, 1.0, 2.0, 3.0};
   // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:17: error: member 'p' of functor 'Grid2' must be made from an array or view parameter of the kernel [dpgen-lambda]
-  const Grid2 U{u + nx, nx};
-  for (int j = 0; j < ny - 1; ++j)
+  const Grid2 U{tmp, 2};
+  for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      out[j * nx + i] = U(i, j);
+      out[j * nx + i] = u[j * nx + i] * U(i % 2, j % 2);
 }
 
 DPGEN_KERNEL void computing_constructor(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
@@ -119,4 +122,15 @@ DPGEN_KERNEL void checked_subscript(DPGEN_IN const double* u, DPGEN_OUT double* 
   for (int i = 0; i < n; ++i)
     // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:5: error: 'operator[]' of 'CheckedSpan' returns a reference: dpgen follows one whose body is the one statement 'return p[<index>];'
     O[i] = 2.0 * u[i];
+}
+
+// Passed to a helper: an accessor the kernel made over its arrays (a local), not a temporary.
+static double centre(const Grid2& U, int i, int j) { return U(i, j); }
+
+DPGEN_KERNEL void temporary_argument(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                     int ny) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      // CHECK-DAG: accessor_local.cpp:[[@LINE+1]]:32: error: argument for view parameter 'U' of helper 'centre' must be a view parameter of the kernel or an accessor it made over its arrays
+      out[j * nx + i] = centre(Grid2{u, nx}, i, j);
 }

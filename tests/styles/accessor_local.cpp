@@ -7,7 +7,8 @@
 // read: fluxes added to both cells of a face (`R(i, j) += f; R(i + 1, j) -=
 // f;`), an element stored then scaled (`V(i, j) *= ...`), and a class with a
 // const and a non-const overload, as containers write them; a span-like row whose
-// operator[] returns a reference or a value.
+// operator[] returns a reference or a value; accessors passed to helpers and lambdas, made
+// over a row (`ConstSpan row(u + j * nx)`) or at an offset (`Grid2 U{u + nx, nx}`).
 #include "dpgen/annotate.hpp"
 
 struct Grid2 {
@@ -140,4 +141,37 @@ DPGEN_KERNEL void accessor_subscript(DPGEN_IN const double* u, DPGEN_OUT double*
     R[i] -= f;
     R[i + 1] += f;
   }
+}
+
+// Accessors passed to helpers and lambdas, by const reference and by value: a Laplacian of a
+// helper, a store through a helper's reference-returning accessor, a lambda's difference.
+static double laplacian_at(const Grid2& U, int i, int j) {
+  return U(i + 1, j) + U(i - 1, j) + U(i, j + 1) + U(i, j - 1) - 4.0 * U(i, j);
+}
+
+static void store_at(const Cells& R, int i, int j, double v) { R(i, j) = v; }
+
+static double second_difference(ConstSpan s, int i) { return s[i + 1] - 2.0 * s[i] + s[i - 1]; }
+
+DPGEN_KERNEL void accessor_helpers(DPGEN_IN const double* u, DPGEN_OUT double* lap,
+                                   DPGEN_OUT double* dxx, int nx, int ny) {
+  const Grid2 U{u, nx};
+  const Cells L{lap, nx};
+  auto dx = [](const Grid2& G, int i, int j) { return 0.5 * (G(i + 1, j) - G(i - 1, j)); };
+  for (int j = 1; j < ny - 1; ++j)
+    for (int i = 1; i < nx - 1; ++i)
+      store_at(L, i, j, laplacian_at(U, i, j) * dx(U, i, j));
+  for (int j = 0; j < ny; ++j) {
+    const ConstSpan row(u + j * nx);
+    for (int i = 1; i < nx - 1; ++i)
+      dxx[j * nx + i] = second_difference(row, i);
+  }
+}
+
+// An accessor made over the kernel's array at an offset (`u + nx`: its row 1 is U's row 0).
+DPGEN_KERNEL void accessor_offset(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+  const Grid2 U{u + nx, nx};
+  for (int j = 0; j < ny - 1; ++j)
+    for (int i = 0; i < nx; ++i)
+      out[j * nx + i] = U(i, j) * u[j * nx + i];
 }

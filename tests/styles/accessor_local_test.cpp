@@ -4,8 +4,9 @@
 // tests/diagnostics/accessor_local.cpp.) accessor_writes: fluxes added through a
 // reference-returning accessor, an element stored and scaled; accessor_overloads: a class
 // with a const and a non-const operator(), nonlinear; accessor_subscript: a span-like row's
-// operator[], by reference and by value; each by differences, the dot-product test and a
-// cell by hand.
+// operator[], by reference and by value; accessor_helpers: accessors passed to helpers and a
+// lambda, and a span made over a row (u + j * nx); accessor_offset: a grid accessor over
+// u + nx; each by differences, the dot-product test and a cell by hand.
 #include "support/adjoint_check.hpp"
 
 #include "accessor_local_adjoint.hpp"
@@ -21,6 +22,9 @@ DPGEN_KERNEL void accessor_overloads(DPGEN_IN double* u, DPGEN_OUT double* out, 
 DPGEN_KERNEL void accessor_chain(DPGEN_IN const double* a, DPGEN_IN const double* b,
                                  DPGEN_OUT double* res, int nx, int ny);
 DPGEN_KERNEL void accessor_subscript(DPGEN_IN const double* u, DPGEN_OUT double* res, int n);
+DPGEN_KERNEL void accessor_helpers(DPGEN_IN const double* u, DPGEN_OUT double* lap,
+                                   DPGEN_OUT double* dxx, int nx, int ny);
+DPGEN_KERNEL void accessor_offset(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny);
 
 TEST_CASE("styles: accessor_local") {
   for (auto [nx, ny] : {std::pair{1, 1}, {3, 3}, {4, 6}, {9, 5}}) {
@@ -142,4 +146,67 @@ TEST_CASE("styles: accessor_subscript") {
   CHECK(adj[0] == doctest::Approx(-1.5));
   CHECK(adj[1] == doctest::Approx(1.0 + 0.5 - 2.0));
   CHECK(adj[2] == doctest::Approx(1.5));
+}
+
+TEST_CASE("styles: accessor_helpers") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {3, 3}, {4, 6}, {9, 5}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n};
+    p.out_sizes = {n, n};
+    p.forward = [&](auto in, auto out) { accessor_helpers(in[0], out[0], out[1], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_helpers_adjoint(in[0], adj[0], seed[0], seed[1], nx, ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_helpers_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // By hand, 3 x 3, the centre: lap = (u5 + u3 + u7 + u1 - 4 u4) (u5 - u3) / 2 and dxx[4] =
+  // u5 - 2 u4 + u3 (row 1). A seed on lap[4] gives (u5 - u3) / 2 to u1 and u7, -2 (u5 - u3) to u4,
+  // (L + (u5 - u3)) / 2 to u5 and (-L + (u5 - u3)) / 2 to u3, L the Laplacian.
+  const double u[9] = {0.3, -0.5, 1.1, 0.7, 2.0, -1.3, 0.4, 0.9, -0.2};
+  double lap[9] = {}, dxx[9] = {}, adj[9] = {}, seed_l[9] = {}, seed_d[9] = {};
+  seed_l[4] = 1.0;
+  accessor_helpers(u, lap, dxx, 3, 3);
+  const double L = u[5] + u[3] + u[7] + u[1] - 4.0 * u[4], D = u[5] - u[3];
+  CHECK(lap[4] == doctest::Approx(L * 0.5 * D));
+  CHECK(dxx[4] == doctest::Approx(u[5] - 2.0 * u[4] + u[3]));
+  accessor_helpers_adjoint(u, adj, seed_l, seed_d, 3, 3);
+  CHECK(adj[1] == doctest::Approx(0.5 * D));
+  CHECK(adj[4] == doctest::Approx(-2.0 * D));
+  CHECK(adj[5] == doctest::Approx(0.5 * (D + L)));
+  CHECK(adj[3] == doctest::Approx(0.5 * (D - L)));
+}
+
+TEST_CASE("styles: accessor_offset") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {1, 2}, {3, 3}, {5, 4}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t n = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {n};
+    p.out_sizes = {size_t(nx) * size_t(ny - 1)};
+    p.forward = [&](auto in, auto out) { accessor_offset(in[0], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      accessor_offset_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      accessor_offset_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // By hand, 2 x 2: out = (u2 u0, u3 u1); a seed on out[1] gives u3 to u1 and u1 to u3.
+  const double u[4] = {0.5, -1.5, 2.0, 3.0}, seed[2] = {0.0, 1.0};
+  double out[2], adj[4] = {};
+  accessor_offset(u, out, 2, 2);
+  CHECK(out[1] == doctest::Approx(3.0 * -1.5));
+  accessor_offset_adjoint(u, adj, seed, 2, 2);
+  CHECK(adj[0] == 0.0);
+  CHECK(adj[1] == doctest::Approx(3.0));
+  CHECK(adj[2] == 0.0);
+  CHECK(adj[3] == doctest::Approx(-1.5));
 }

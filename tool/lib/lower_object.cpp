@@ -239,10 +239,14 @@ std::optional<Binding> Objects::class_argument(const ParmVarDecl* pd, const clan
     return std::nullopt; // (an out-parameter: not a class the kernel can pass)
   if (L.views_.is_view_class(rd)) {
     const Binding* b = L.bound(a);
+    if (b && b->kind == Binding::Lambda && b->functor && b->fields)
+      return *b; // an accessor the kernel made over its arrays (`const Grid2 U{u, nx}`)
     if (!b || b->kind != Binding::ArrayParam || !b->param->view)
-      L.fail(arg->getBeginLoc(), fmt::format("argument for view parameter '{}' of helper '{}' "
-                                           "must be a view parameter of the kernel",
-                                           pd->getNameAsString(), helper->getNameAsString()));
+      L.fail(arg->getBeginLoc(),
+             fmt::format("argument for view parameter '{}' of helper '{}' "
+                         "must be a view parameter of the kernel or an accessor it made over its "
+                         "arrays",
+                         pd->getNameAsString(), helper->getNameAsString()));
     return *b;
   }
   auto text = object_text(a);
@@ -442,6 +446,9 @@ Binding Objects::functor_binding(const clang::Expr* init, const CXXRecordDecl* r
       if (const auto* cc = dyn_cast<CXXConstructExpr>(src); cc && cc->getNumArgs() == 1)
         src = cc->getArg(0);
       const Binding* a = L.bound(src);
+      std::optional<Binding> moved; // `u + j * nx`: a row of the kernel's array, at its offset
+      if (!a && t->isPointerType() && (moved = L.ptrs_.pointer_into(src)) && moved->offset)
+        a = &*moved;
       if (!a || a->kind != Binding::ArrayParam)
         L.fail(v->getBeginLoc(), fmt::format("member '{}' of functor '{}' must be made from an "
                                            "array or view parameter of the kernel",
