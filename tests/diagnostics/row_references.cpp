@@ -2,8 +2,8 @@
 // tests/styles/nested_vectors.cpp, vv_row_refs): a row or a column named by
 // data is refused (first as an index that may go below zero, which the
 // unsigned index of std::vector wraps; else as data-dependent), its length is
-// not known to dpgen, and a row copied whole is no element store. Each in one
-// run.
+// not known to dpgen, a row copied whole is no element store, and a sum read after its
+// loop needs flat arrays. Each in one run.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
@@ -47,4 +47,17 @@ DPGEN_KERNEL void whole_row(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int ny) {
     // CHECK-DAG: row_references.cpp:[[@LINE+1]]:5: error: call to 'std::vector<double>::operator=', which dpgen cannot differentiate
     w = r;
   }
+}
+
+// A sum read after its loop (a work array of the adjoint's) beside rows of their own: the
+// adjoint's buffers are flat (flat std::vector parameters: tests/styles/vector_sums.cpp).
+// CHECK-DAG: row_references.cpp:[[@LINE+1]]:19: error: the sum in 's' (read after the loop that adds to it) in a kernel with rows of their own ('u', a std::vector<std::vector<double>>): pass the arrays as flat std::vector or pointers [dpgen-work-array]
+DPGEN_KERNEL void normalized_rows(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int nx, int ny) {
+  double s = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      s += u[j][i] * u[j][i];
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      v[j][i] = u[j][i] / s;
 }

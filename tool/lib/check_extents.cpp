@@ -207,11 +207,18 @@ void Extents::output_extents() {
   // run must not depend on what the kernel writes.
   if (!k_.intermediates.empty())
     view_outputs_located();
+  // (a flat std::vector's work arrays are buffers of its size; rows of their own have none)
+  bool nested = false;
   for (const auto& p : k_.params)
-    if (!k_.intermediates.empty() && !p.container.empty())
-      fail(k_.pos, "dpgen-work-array", fmt::format("{} in a kernel with std::vector parameter '{}': pass the "
-                               "arrays as pointers",
-                               work_name(*k_.intermediates.begin()), p.name));
+    if (!k_.intermediates.empty() && p.nested) {
+      fail(k_.pos, "dpgen-work-array",
+           fmt::format("{} in a kernel with rows of their own ('{}', a {}): pass the arrays "
+                       "as flat std::vector or pointers",
+                       work_name(*k_.intermediates.begin()), p.name, p.container));
+      nested = true;
+    }
+  if (nested)
+    return;
   std::map<std::string, Extent> ends;
   for (const auto& n : k_.nests)
     for (const auto& st : n.stores) {

@@ -185,9 +185,12 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   // recomputed by the forward as the IR says, into buffers.
   // A view output, too: the user's kernel could only write it through a
   // view, and dpgen cannot make one over a buffer (dpgen/view_buffer.hpp).
+  // And every array of a kernel with std::vector parameters: the user's kernel takes the
+  // containers, the adjoint's flat part their data.
   const bool own_forward = !k.hidden.empty() || has_inout(k) ||
-                           std::any_of(k.params.begin(), k.params.end(),
-                                       [](const Param& p) { return p.view && !p.global; });
+                           std::any_of(k.params.begin(), k.params.end(), [](const Param& p) {
+                             return (p.view && !p.global) || !p.container.empty();
+                           });
   if (own_forward)
     emit_recompute(code, plan.forward, recompute);
   code.raw("} // namespace\n\n");
@@ -221,6 +224,16 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       flat.push_back(p.name + "_adj"); // (its shape, for what the kernel reads of it)
     } else if (p.kind == ParamKind::Out) {
       code.line("const std::ptrdiff_t {} = {};", n_of(p.name), k.extent.at(p.name).code());
+      if (!p.container.empty()) { // (its seed is read up to there)
+        code.open(
+            fmt::format("if (static_cast<std::ptrdiff_t>({}_size) < {})", p.name, n_of(p.name)));
+        code.line("throw std::invalid_argument(\"{}_adjoint: '{}_adj' has \" + "
+                  "std::to_string({}_size) + \" elements, but '{}' needs \" + "
+                  "std::to_string({}) + \" (the kernel writes up to index \" + "
+                  "std::to_string({} - 1) + \")\");",
+                  k.name, p.name, p.name, p.name, n_of(p.name), n_of(p.name));
+        code.close();
+      }
       code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
                 "std::numeric_limits<{}>::quiet_NaN());",
                 p.elem_name, v_of(p.name), n_of(p.name), p.elem_name);

@@ -1,0 +1,93 @@
+// vector_sums (tests/styles/): std::vector kernels with work arrays (a local sum read after
+// its loop; an output vector a later loop reads), adjoint and tangent against differences
+// and the dot-product test, the normalisation's adjoint by hand, and a seed shorter than
+// the output refused. The checker's flat arrays are copied into vectors and back.
+#include "support/adjoint_check.hpp"
+
+#include "dpgen/annotate.hpp"
+#include "styles_support.hpp"
+#include "vector_sums_adjoint.hpp"
+#include "vector_sums_kernels.hpp"
+#include "vector_sums_tangent.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+TEST_CASE("styles: vector_normalize") {
+  for (int n : {1, 2, 7, 30}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N};
+    p.forward = [&](auto in, auto out) {
+      std::vector<double> a = styles::to_vec(in[0], N), u = styles::to_vec(out[0], N);
+      vector_normalize(a, u);
+      styles::from_vec(u, out[0]);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      std::vector<double> a = styles::to_vec(in[0], N), aa = styles::to_vec(adj[0], N),
+                          s = styles::to_vec(seed[0], N);
+      vector_normalize_adjoint(a, aa, s);
+      styles::from_vec(aa, adj[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      std::vector<double> a = styles::to_vec(in[0], N), da = styles::to_vec(dir[0], N),
+                          u = styles::to_vec(out[0], N), du = styles::to_vec(outd[0], N);
+      vector_normalize_tangent(a, da, u, du);
+      styles::from_vec(u, out[0]);
+      styles::from_vec(du, outd[0]);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // By hand: u = a / |a|, so J^T s = (s - u (u . s)) / |a|. a = (3, 4), s = (1, 0):
+  // u = (0.6, 0.8), u . s = 0.6, J^T s = ((1 - 0.36) / 5, -0.48 / 5).
+  const std::vector<double> a = {3.0, 4.0}, s = {1.0, 0.0};
+  std::vector<double> adj = {0.0, 0.0};
+  vector_normalize_adjoint(a, adj, s);
+  CHECK(adj[0] == doctest::Approx(0.64 / 5.0));
+  CHECK(adj[1] == doctest::Approx(-0.48 / 5.0));
+}
+
+TEST_CASE("styles: vector_fluxes") {
+  for (int n : {0, 1, 2, 3, 11}) {
+    CAPTURE(n);
+    const size_t N = size_t(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N, N};
+    p.forward = [&](auto in, auto out) {
+      std::vector<double> u = styles::to_vec(in[0], N), f = styles::to_vec(out[0], N),
+                          d = styles::to_vec(out[1], N);
+      vector_fluxes(u, f, d, 0.3);
+      styles::from_vec(f, out[0]);
+      styles::from_vec(d, out[1]);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      std::vector<double> u = styles::to_vec(in[0], N), ua = styles::to_vec(adj[0], N),
+                          fs = styles::to_vec(seed[0], N), ds = styles::to_vec(seed[1], N);
+      vector_fluxes_adjoint(u, ua, fs, ds, 0.3);
+      styles::from_vec(ua, adj[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      std::vector<double> u = styles::to_vec(in[0], N), du = styles::to_vec(dir[0], N),
+                          f = styles::to_vec(out[0], N), df = styles::to_vec(outd[0], N),
+                          d = styles::to_vec(out[1], N), dd = styles::to_vec(outd[1], N);
+      vector_fluxes_tangent(u, du, f, df, d, dd, 0.3);
+      styles::from_vec(f, out[0]);
+      styles::from_vec(df, outd[0]);
+      styles::from_vec(d, out[1]);
+      styles::from_vec(dd, outd[1]);
+    };
+    dpgen_test::check_adjoint(p);
+  } // A seed shorter than the output the kernel writes: refused before anything is read.
+  const std::vector<double> u(6, 1.0), short_seed(4, 1.0), seed(6, 1.0);
+  std::vector<double> adj(6, 0.0);
+  CHECK_THROWS_WITH_AS(vector_fluxes_adjoint(u, adj, short_seed, seed, 0.3),
+                       "vector_fluxes_adjoint: 'flux_adj' has 4 elements, but 'flux' needs 5 (the "
+                       "kernel writes up to index 4)",
+                       std::invalid_argument);
+  CHECK_THROWS_AS(vector_fluxes_adjoint(u, adj, seed, short_seed, 0.3), std::invalid_argument);
+  CHECK(adj == std::vector<double>(6, 0.0));
+}
