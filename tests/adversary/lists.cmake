@@ -36,7 +36,9 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     r5_min_helper_ptr_accum r5_mm_helper_ref_update r5_mm_lambda_ref_capture
     # refused until pointer locals and pointer arguments were in the subset (2026-12-01):
     # `put(&o[i + 1], x)`, `lap(u + 1, i - 1)` in a helper, `const double* ap = a + 1;`
-    r3_helper_ptr_elem helper_ptr_offset ptr_arith)
+    r3_helper_ptr_elem helper_ptr_offset ptr_arith
+    # refused until std::vector kernels could have work arrays (2026-12-02)
+    r3_vector_work)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after

@@ -1,7 +1,8 @@
 // std::vector kernels with work arrays: a vector normalised by its norm (a local sum read
 // after its loop, in a later loop) and fluxes stored to one output vector and differenced
-// into another (an output a later loop reads). The adjoint recomputes both into buffers of
-// its own, from the containers' data.
+// into another (an output a later loop reads), and a prefix of n elements scaled by its mean
+// square (an int bound). The adjoint recomputes the work arrays into buffers of its own, from
+// the containers' data.
 #include "dpgen/annotate.hpp"
 
 #include <cmath>
@@ -28,4 +29,15 @@ DPGEN_KERNEL void vector_fluxes(DPGEN_IN const std::vector<double>& u,
   }
   for (int i = 1; i + 1 < n; ++i)
     du[i] = u[i] - dt * (flux[i] - flux[i - 1]);
+}
+
+// The first n elements scaled by their mean square (n an int parameter, no larger than the
+// vectors: the adjoint and tangent check it against their sizes).
+DPGEN_KERNEL void vector_scaled_prefix(DPGEN_IN const std::vector<double>& a,
+                                       DPGEN_OUT std::vector<double>& w, int n) {
+  double ms = 0.0;
+  for (int i = 0; i < n; ++i)
+    ms = a[i] * a[i] / n + ms;
+  for (int i = 0; i < n; ++i)
+    w[i] = a[i] * ms;
 }

@@ -1,7 +1,8 @@
 // vector_sums (tests/styles/): std::vector kernels with work arrays (a local sum read after
 // its loop; an output vector a later loop reads), adjoint and tangent against differences
 // and the dot-product test, the normalisation's adjoint by hand, and a seed shorter than
-// the output refused. The checker's flat arrays are copied into vectors and back.
+// the output refused; vector_scaled_prefix: an int bound past a vector's size refused by the
+// adjoint and the tangent. The checker's flat arrays are copied into vectors and back.
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
@@ -85,9 +86,51 @@ TEST_CASE("styles: vector_fluxes") {
   const std::vector<double> u(6, 1.0), short_seed(4, 1.0), seed(6, 1.0);
   std::vector<double> adj(6, 0.0);
   CHECK_THROWS_WITH_AS(vector_fluxes_adjoint(u, adj, short_seed, seed, 0.3),
-                       "vector_fluxes_adjoint: 'flux_adj' has 4 elements, but 'flux' needs 5 (the "
-                       "kernel writes up to index 4)",
+                       "vector_fluxes_adjoint: 'flux_adj' has 4 elements, but the kernel touches "
+                       "elements 0 to 4",
                        std::invalid_argument);
   CHECK_THROWS_AS(vector_fluxes_adjoint(u, adj, seed, short_seed, 0.3), std::invalid_argument);
   CHECK(adj == std::vector<double>(6, 0.0));
+}
+
+TEST_CASE("styles: vector_scaled_prefix, an int bound checked against the vectors' sizes") {
+  for (int n : {0, 1, 4}) {
+    CAPTURE(n);
+    const size_t N = 6;
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {N};
+    p.forward = [&](auto in, auto out) {
+      std::vector<double> a = styles::to_vec(in[0], N), w = styles::to_vec(out[0], N);
+      vector_scaled_prefix(a, w, n);
+      styles::from_vec(w, out[0]);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      std::vector<double> a = styles::to_vec(in[0], N), aa = styles::to_vec(adj[0], N),
+                          s = styles::to_vec(seed[0], N);
+      vector_scaled_prefix_adjoint(a, aa, s, n);
+      styles::from_vec(aa, adj[0]);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // n past a's size: the forward would read beyond it; the adjoint and tangent say so.
+  const std::vector<double> a(5, 1.0), seed(8, 1.0);
+  std::vector<double> adj(5, 0.0), w(8), dw(8);
+  CHECK_THROWS_WITH_AS(vector_scaled_prefix_adjoint(a, adj, seed, 8),
+                       "vector_scaled_prefix_adjoint: 'a' has 5 elements, but the kernel touches "
+                       "elements 0 to 7",
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vector_scaled_prefix_tangent(a, a, w, dw, 8),
+                       "vector_scaled_prefix_tangent: 'a' has 5 elements, but the kernel touches "
+                       "elements 0 to 7",
+                       std::invalid_argument);
+  // and a seed shorter than what the kernel writes
+  const std::vector<double> a8(8, 1.0), seed4(4, 1.0);
+  std::vector<double> adj8(8, 0.0);
+  CHECK_THROWS_WITH_AS(vector_scaled_prefix_adjoint(a8, adj8, seed4, 8),
+                       "vector_scaled_prefix_adjoint: 'w_adj' has 4 elements, but the kernel "
+                       "touches elements 0 to 7",
+                       std::invalid_argument);
+  CHECK(adj == std::vector<double>(5, 0.0));
+  CHECK(adj8 == std::vector<double>(8, 0.0));
 }

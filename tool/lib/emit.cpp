@@ -730,6 +730,7 @@ void emit_body(Code& out, const LoopPlan& plan) {
   const Kernel& k = *plan.adjoint->kernel;
   define_kernel_locals(out, k);
   emit_size_checks(out, k, k.name + "_adjoint");
+  emit_container_reach_checks(out, k, k.name + "_adjoint");
   emit_hoisted(out, plan.hoisted);
   for (const auto& in : plan.inputs) {
     for (const auto& step : in.gathers) {

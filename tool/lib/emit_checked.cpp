@@ -155,6 +155,32 @@ bool has_checked_entry(const Kernel& k) {
   return !has_rows(k) && !has_inout(k) && !row_pointers;
 }
 
+void emit_container_reach_checks(Code& code, const Kernel& k, const std::string& fn) {
+  if (std::none_of(k.params.begin(), k.params.end(),
+                   [](const Param& p) { return !p.container.empty() && !p.nested; }))
+    return;
+  const auto ranges = access_ranges(k);
+  for (const auto& p : k.params) {
+    auto it = ranges.find(p.name);
+    if (p.container.empty() || p.nested || p.global || it == ranges.end() ||
+        it->second.highs.empty())
+      continue;
+    const std::string lo = k.fresh(p.name + "_reach_lo"), hi = k.fresh(p.name + "_reach_hi");
+    code.line("const {} {} = std::min<{}>({{{}}});", kCellType, lo, kCellType,
+              fmt::join(it->second.lows, ", "));
+    code.line("const {} {} = std::max<{}>({{{}}});", kCellType, hi, kCellType,
+              fmt::join(it->second.highs, ", "));
+    const std::string shown = p.kind == ParamKind::Out ? p.name + "_adj" : p.name;
+    code.open(fmt::format("if ({} >= 0 && ({} < 0 || {} >= static_cast<{}>({}_size)))", hi, lo, hi,
+                          kCellType, p.name));
+    code.line("throw std::invalid_argument(\"{}: '{}' has \" + std::to_string({}_size) + "
+              "\" elements, but the kernel touches elements \" + std::to_string({}) + \" to \" "
+              "+ std::to_string({}));",
+              fn, shown, p.name, lo, hi);
+    code.close();
+  }
+}
+
 std::string checked_signature(const Kernel& k) {
   return fmt::format("void {}_adjoint_checked({})", k.name, checked_params(k));
 }

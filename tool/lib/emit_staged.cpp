@@ -4,6 +4,7 @@
 // or a forward printed from the IR: emit_forward.cpp), in flat buffers or,
 // for view outputs, in dpgen::ViewBuffers laid out like their seeds; and the
 // prologue of an in-place array's adjoint.
+#include "emit_checked.hpp"
 #include "emit_forward.hpp"
 #include "emit_impl.hpp"
 #include "ir_walk.hpp"
@@ -206,6 +207,7 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
   code.open(fmt::format("void {}({})", fn_name, param_list(k, false)));
   define_kernel_locals(code, k);
   emit_size_checks(code, k, k.name + "_adjoint");
+  emit_container_reach_checks(code, k, k.name + "_adjoint");
   // Buffers of the outputs' recomputed values (<out>_v) and of the work
   // arrays' adjoints (<out>_b), <out>_n elements each (Kernel::fresh names).
   auto n_of = [&](const std::string& a) { return k.fresh(a + "_n"); };

@@ -8,6 +8,7 @@
 #include "ir_walk.hpp"
 
 #include "derive.hpp"
+#include "emit_checked.hpp"
 #include "emit_forward.hpp"
 #include "emit_util.hpp"
 #include "hoist.hpp"
@@ -162,6 +163,7 @@ void emit_kernel(Code& code, const TangentPlan& tp) {
       code.line("const {} {} = {};", l->type_name, l->name, print(l->def));
     }
   emit_size_checks(code, k, k.name + "_tangent");
+  emit_container_reach_checks(code, k, k.name + "_tangent");
   // In-place arrays (DPGEN_INOUT): the IR reads their old values everywhere, also after the
   // iteration's own store to the element (`u[i] = 2 * u[i]; v[i] += u[i];` reads the old u[i]
   // times 2, and an else-branch tests the old u[i]). So the stores go to buffers, each

@@ -64,6 +64,14 @@ const clang::Expr* comparator(const CallExpr* c, const std::string& fn) {
   return last->getType()->isRecordType() ? last : nullptr;
 }
 
+// `w.size()` of a DPGEN_OUT container.
+std::string output_size_message(const std::string& w) {
+  return fmt::format("the size of output '{}' is outside the kernel subset: its adjoint receives "
+                     "only the seed '{}_adj', whose size it cannot check against '{}'; take the "
+                     "size from an input (u.size()) or a parameter",
+                     w, w, w);
+}
+
 std::string comparator_message(const FunctionDecl* f, const std::string& fn) {
   return fmt::format("'{}' with a comparator is outside the kernel subset: dpgen differentiates "
                      "std::{} by the order of its values; write the choice out as a conditional "
@@ -414,8 +422,11 @@ ExprP Expressions::expr(const clang::Expr* e) {
     const CXXMethodDecl* md = m->getMethodDecl();
     if (it != L.env_.end() && it->second.kind == Binding::ArrayParam && !it->second.offset &&
         !it->second.param->container.empty() && md && md->getName() == "size" &&
-        m->getNumArgs() == 0)
+        m->getNumArgs() == 0) {
+      if (it->second.param->kind == ParamKind::Out) // (its seed's size would stand in for it)
+        L.fail(m->getBeginLoc(), output_size_message(it->second.param->name));
       return L.scalar_param(it->second.param->name + "_size", Type::Int);
+    }
     // a method of the member kernel's (or the running functor's) object, on the same object:
     // inlined like a helper, reading the same members
     if (L.this_call(m) && md && md->hasBody() && !md->isVirtual())
