@@ -55,7 +55,10 @@ DPGEN_KERNEL void sum_cast_narrower(DPGEN_IN const double* a, DPGEN_OUT double* 
   out[0] = s;
 }
 
-// std::max and std::min with a comparator: refused at the comparator, not at the list.
+// std::max, std::min and std::clamp with a comparator (a function object, a lambda or a
+// function): refused at the comparator, not at the list.
+static bool abs_less(double x, double y) { return x * x < y * y; }
+
 DPGEN_KERNEL void max_comparator(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   for (int i = 0; i < n; ++i)
     // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:41: error: 'std::max' with a comparator is outside the kernel subset: dpgen differentiates std::max by the order of its values
@@ -63,6 +66,12 @@ DPGEN_KERNEL void max_comparator(DPGEN_IN const double* a, DPGEN_OUT double* out
   for (int i = 0; i < n; ++i)
     // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:34: error: 'std::min' with a comparator
     out[i] = std::min(a[i], 0.5, [](double x, double y) { return x * x < y * y; });
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:41: error: 'std::max' with a comparator
+    out[i] = std::max(a[i], 0.5 * a[i], abs_less);
+  for (int i = 0; i < n; ++i)
+    // CHECK-DAG: cpp_idioms.cpp:[[@LINE+1]]:42: error: 'std::clamp' with a comparator
+    out[i] = std::clamp(a[i], -0.5, 0.5, std::greater<>());
 }
 
 static std::pair<double, double> split(double x) { return {x * x, 2.0 * x}; }

@@ -56,12 +56,16 @@ std::vector<const clang::Expr*> operands(const CallExpr* c, const std::string& f
   return {c->arg_begin(), c->arg_end()};
 }
 
-// The comparator of `std::max(a, b, comp)` or `std::min({...}, comp)`; null for none.
-const clang::Expr* comparator(const CallExpr* c, const std::string& fn) {
-  if ((fn != "min" && fn != "max") || c->getNumArgs() < 2)
+// The comparator of `std::max(a, b, comp)`, `std::min({...}, comp)` or `std::clamp(v, lo, hi,
+// comp)` (a function object, a lambda or a function); null for none.
+const clang::Expr* comparator(const CallExpr* c, const FunctionDecl* f) {
+  const std::string fn = f->getNameAsString();
+  const unsigned plain = fn == "clamp" ? 3 : (fn == "min" || fn == "max") ? 1 : 0;
+  if (!f->isInStdNamespace() || plain == 0 || c->getNumArgs() <= plain)
     return nullptr;
   const clang::Expr* last = c->getArg(c->getNumArgs() - 1);
-  return last->getType()->isRecordType() ? last : nullptr;
+  const QualType t = last->getType();
+  return t->isRecordType() || t->isFunctionPointerType() || t->isFunctionType() ? last : nullptr;
 }
 
 // `w.size()` of a DPGEN_OUT container.
@@ -72,11 +76,11 @@ std::string output_size_message(const std::string& w) {
                      w, w, w);
 }
 
-std::string comparator_message(const FunctionDecl* f, const std::string& fn) {
+std::string comparator_message(const FunctionDecl* f) {
   return fmt::format("'{}' with a comparator is outside the kernel subset: dpgen differentiates "
                      "std::{} by the order of its values; write the choice out as a conditional "
                      "on what the comparator compares",
-                     f->getQualifiedNameAsString(), fn);
+                     f->getQualifiedNameAsString(), f->getNameAsString());
 }
 } // namespace
 
@@ -625,6 +629,8 @@ ExprP Expressions::call_expr(const CallExpr* c) {
       }
     }
   }
+  if (const clang::Expr* comp = comparator(c, f)) // std::max(a, b, comp)
+    L.fail(comp->getBeginLoc(), comparator_message(f), "dpgen-call");
   if (!math && f->isInStdNamespace() && f->getName() == "clamp" && c->getNumArgs() == 3) {
     // std::clamp(v, lo, hi) is v < lo ? lo : hi < v ? hi : v, which for lo <= hi (its precondition)
     // is min(max(v, lo), hi) with their ties: the same value, the same derivatives.
@@ -639,8 +645,6 @@ ExprP Expressions::call_expr(const CallExpr* c) {
                        "only {}",
                        f->getQualifiedNameAsString(), supported_calls()),
            "dpgen-call");
-  if (const clang::Expr* comp = comparator(c, math->name)) // std::max(a, b, comp)
-    L.fail(comp->getBeginLoc(), comparator_message(f, math->name), "dpgen-call");
   Type t = L.type_of(c);
   bool list = false;
   std::vector<ExprP> args;
