@@ -131,6 +131,11 @@ TEST_CASE("styles: vector_scaled_prefix, an int bound checked against the vector
                        "vector_scaled_prefix_adjoint: 'w_adj' has 4 elements, but the kernel "
                        "touches elements 0 to 7",
                        std::invalid_argument);
+  std::vector<double> w4(4), dw4(4);
+  CHECK_THROWS_WITH_AS(vector_scaled_prefix_tangent(a8, a8, w4, dw4, 8),
+                       "vector_scaled_prefix_tangent: 'w' has 4 elements, but the kernel touches "
+                       "elements 0 to 7",
+                       std::invalid_argument);
   CHECK(adj == std::vector<double>(5, 0.0));
   CHECK(adj8 == std::vector<double>(8, 0.0));
 }

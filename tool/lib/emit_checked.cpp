@@ -170,7 +170,8 @@ void emit_container_reach_checks(Code& code, const Kernel& k, const std::string&
               fmt::join(it->second.lows, ", "));
     code.line("const {} {} = std::max<{}>({{{}}});", kCellType, hi, kCellType,
               fmt::join(it->second.highs, ", "));
-    const std::string shown = p.kind == ParamKind::Out ? p.name + "_adj" : p.name;
+    const bool tangent = fn.size() > 8 && fn.compare(fn.size() - 8, 8, "_tangent") == 0;
+    const std::string shown = p.kind == ParamKind::Out && !tangent ? p.name + "_adj" : p.name;
     code.open(fmt::format("if ({} >= 0 && ({} < 0 || {} >= static_cast<{}>({}_size)))", hi, lo, hi,
                           kCellType, p.name));
     code.line("throw std::invalid_argument(\"{}: '{}' has \" + std::to_string({}_size) + "
