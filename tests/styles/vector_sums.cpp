@@ -41,3 +41,16 @@ DPGEN_KERNEL void vector_scaled_prefix(DPGEN_IN const std::vector<double>& a,
   for (int i = 0; i < n; ++i)
     w[i] = a[i] * ms;
 }
+
+// Products of neighbours stored under a condition (the last element is not written), then
+// read by a later loop: the outputs may be one shorter than the input.
+DPGEN_KERNEL void vector_guarded_pairs(DPGEN_IN const std::vector<double>& u,
+                                       DPGEN_OUT std::vector<double>& f,
+                                       DPGEN_OUT std::vector<double>& g) {
+  const int n = static_cast<int>(u.size());
+  for (int i = 0; i < n; ++i)
+    if (i + 1 < n)
+      f[i] = u[i] * u[i + 1];
+  for (int i = 0; i + 1 < n; ++i)
+    g[i] = 2.0 * f[i] * u[i];
+}

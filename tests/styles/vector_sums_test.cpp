@@ -2,7 +2,9 @@
 // its loop; an output vector a later loop reads), adjoint and tangent against differences
 // and the dot-product test, the normalisation's adjoint by hand, and a seed shorter than
 // the output refused; vector_scaled_prefix: an int bound past a vector's size refused by the
-// adjoint and the tangent. The checker's flat arrays are copied into vectors and back.
+// adjoint and the tangent; vector_guarded_pairs: outputs shorter than the input, written under
+// a condition, and vector_fluxes with outputs as long as what it writes. The checker's flat
+// arrays are copied into vectors and back.
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
@@ -138,4 +140,48 @@ TEST_CASE("styles: vector_scaled_prefix, an int bound checked against the vector
                        std::invalid_argument);
   CHECK(adj == std::vector<double>(5, 0.0));
   CHECK(adj8 == std::vector<double>(8, 0.0));
+}
+
+TEST_CASE("styles: vector_guarded_pairs, outputs one shorter than the input") {
+  for (int n : {1, 2, 5}) {
+    CAPTURE(n);
+    const size_t N = size_t(n), M = N - 1;
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {N};
+    p.out_sizes = {M, M};
+    p.forward = [&](auto in, auto out) {
+      std::vector<double> u = styles::to_vec(in[0], N), f = styles::to_vec(out[0], M),
+                          g = styles::to_vec(out[1], M);
+      vector_guarded_pairs(u, f, g);
+      styles::from_vec(f, out[0]);
+      styles::from_vec(g, out[1]);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      std::vector<double> u = styles::to_vec(in[0], N), ua = styles::to_vec(adj[0], N),
+                          fs = styles::to_vec(seed[0], M), gs = styles::to_vec(seed[1], M);
+      vector_guarded_pairs_adjoint(u, ua, fs, gs);
+      styles::from_vec(ua, adj[0]);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      std::vector<double> u = styles::to_vec(in[0], N), du = styles::to_vec(dir[0], N),
+                          f = styles::to_vec(out[0], M), df = styles::to_vec(outd[0], M),
+                          g = styles::to_vec(out[1], M), dg = styles::to_vec(outd[1], M);
+      vector_guarded_pairs_tangent(u, du, f, df, g, dg);
+      styles::from_vec(f, out[0]);
+      styles::from_vec(df, outd[0]);
+      styles::from_vec(g, out[1]);
+      styles::from_vec(dg, outd[1]);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+  // vector_fluxes with the outputs as long as what it writes: u of 2, flux of 1, du empty
+  // (its loop runs no iteration), the same gradient as with full-length seeds.
+  const std::vector<double> u = {0.7, -0.4}, flux_seed = {1.0}, du_seed = {};
+  std::vector<double> adj(2, 0.0), full(2, 0.0);
+  vector_fluxes_adjoint(u, adj, flux_seed, du_seed, 0.3);
+  vector_fluxes_adjoint(u, full, {1.0, 0.0}, {0.0, 0.0}, 0.3);
+  CHECK(adj == full);
+  const double m = 0.5 * (u[0] + u[1]); // flux[0] = m^2 / 2: d/du0 = d/du1 = m / 2
+  CHECK(adj[0] == doctest::Approx(0.5 * m));
+  CHECK(adj[1] == doctest::Approx(0.5 * m));
 }
