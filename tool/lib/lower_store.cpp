@@ -472,9 +472,7 @@ void Stores::put(const std::string& array, ExprP idx, ExprP value, bool accumula
                                                       : "output '" + array + "'",
                        s.pos.line));
   }
-  Store st{array, idx, value, L.path_, p};
-  st.accumulate = accumulate;
-  st.extremum = extremum;
+  Store st{array, idx, value, L.path_, p, accumulate, extremum, nullptr, 0};
   // (`x += t` where x + t rounds otherwise than x + (elem)t, or a chain: the element's new value
   // for the forward forms)
   if (terms &&
