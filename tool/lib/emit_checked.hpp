@@ -15,10 +15,10 @@ namespace dpgen {
 /// check their sizes themselves; arrays of rows have none).
 bool has_checked_entry(const Kernel& k);
 
-// In the flat form of a kernel with flat std::vector (or std::span) parameters, at its start:
-// a container the kernel surely touches beyond its size (`int n` larger than u.size(), a seed
-// shorter than its output) throws std::invalid_argument ("<fn>: 'u' has ... elements, but the
-// kernel touches elements 0 to 7") before anything is read or written.
+/// In the flat form of a kernel with flat std::vector (or std::span) parameters, at its start:
+/// a container the kernel surely touches beyond its size (`int n` larger than u.size(), a seed
+/// shorter than its output) throws std::invalid_argument ("<fn>: 'u' has ... elements, but the
+/// kernel touches elements 0 to 7") before anything is read or written.
 void emit_container_reach_checks(Code& code, const Kernel& k, const std::string& fn);
 std::string checked_signature(const Kernel& k);
 /// Whether its checked entry point runs the kernel's loops to check indices that depend on

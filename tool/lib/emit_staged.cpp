@@ -229,10 +229,10 @@ void emit_staged(Code& code, const LoopPlan& plan, const std::string& fn_name) {
       code.line("std::vector<{}> {}(static_cast<std::size_t>({}), "
                 "std::numeric_limits<{}>::quiet_NaN());",
                 p.elem_name, v_of(p.name), n_of(p.name), p.elem_name);
-      if (k.intermediates.count(p.name) && p.container.empty())
+      if (k.intermediates.count(p.name) && p.container.empty()) {
         code.line("std::vector<{}> {}({}_adj, {}_adj + {}); // its seed, then more", p.elem_name,
                   b_of(p.name), p.name, p.name, n_of(p.name));
-      if (k.intermediates.count(p.name) && !p.container.empty()) {
+      } else if (k.intermediates.count(p.name)) {
         // (a vector's seed as long as it is: the buffer's extent may pass the vector where
         // the kernel's writes are conditional, and the kernel writes nothing there)
         code.line("std::vector<{}> {}(static_cast<std::size_t>({})); // its seed, then more",
