@@ -364,7 +364,34 @@ Box box_intersect(const Box& a, const Box& b) {
   Box r = a;
   for (const auto& [v, iv] : b.dims)
     add_bounds(r.dims[v], iv);
-  return simplify(r);
+  return simplify(std::move(r));
+}
+
+// box_empty(box_intersect(a, b)) without building the box: pruning a dominated bound never
+// hides an empty interval (a pair lo < hi that is empty stays empty with the bound that wins),
+// so the pairs of the unpruned bounds decide. Most pieces subtract() intersects are empty.
+bool intersection_empty(const Box& a, const Box& b) {
+  auto empty_pair = [](const std::vector<Poly>& los, const std::vector<Poly>& his) {
+    for (const auto& lo : los)
+      for (const auto& hi : his) {
+        auto d = const_diff(hi, lo);
+        if (d && *d <= 0)
+          return true;
+      }
+    return false;
+  };
+  for (const auto& [v, ia] : a.dims) {
+    auto it = b.dims.find(v);
+    if (empty_pair(ia.lo, ia.hi))
+      return true;
+    if (it != b.dims.end() &&
+        (empty_pair(ia.lo, it->second.hi) || empty_pair(it->second.lo, ia.hi)))
+      return true;
+  }
+  for (const auto& [v, ib] : b.dims)
+    if (empty_pair(ib.lo, ib.hi))
+      return true;
+  return false;
 }
 
 // v not in [max(lo), min(hi)), as disjoint intervals:
@@ -454,11 +481,9 @@ Domain universe() { return {Box{}}; }
 Domain intersect(const Domain& a, const Domain& b) {
   Domain out;
   for (const auto& x : a)
-    for (const auto& y : b) {
-      Box r = box_intersect(x, y);
-      if (!box_empty(r))
-        out.push_back(r);
-    }
+    for (const auto& y : b)
+      if (!intersection_empty(x, y))
+        out.push_back(box_intersect(x, y));
   return out;
 }
 
