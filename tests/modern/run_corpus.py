@@ -202,7 +202,8 @@ def one_file(ctx, kpath):
             srcs.append(g)
     incs = (["-I" + SELFCHECK_INC] if ctx.selfcheck else []) + [
         "-I" + HDIR, "-I" + IDIR, "-I" + KDIR, "-I" + gen, "-I" + RUNTIME_INC, "-I" + TESTS]
-    flags = [ctx.cxx, "-std=c++17", "-O1", "-fopenmp"] + incs
+    # (the checker's one compiled copy is in main.o: tests/kernels/main.cpp)
+    flags = [ctx.cxx, "-std=c++17", "-O1", "-fopenmp", "-DDPGEN_TEST_CHECKER_COMPILED_ONCE"] + incs
     if ctx.selfcheck:
         flags.append("-DCORPUS_SELFCHECK=1")
     # What dpgen writes must build in a user's strict build (-Wall -Wextra
@@ -286,8 +287,8 @@ def main():
             continue
         files.append(os.path.join(KDIR, f))
     ctx.main_o = os.path.join(ctx.work, "main.o")
-    rc, out = run([ctx.cxx, "-std=c++17", "-O1", "-c", os.path.join(TESTS, "kernels", "main.cpp"),
-                   "-o", ctx.main_o], 300)
+    rc, out = run([ctx.cxx, "-std=c++17", "-O1", "-DDPGEN_TEST_CHECKER_COMPILED_ONCE", "-I" + TESTS,
+                   "-c", os.path.join(TESTS, "kernels", "main.cpp"), "-o", ctx.main_o], 300)
     if rc != 0:
         sys.exit("cannot build the doctest main:\n" + out)
 
