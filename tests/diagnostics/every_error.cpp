@@ -19,7 +19,7 @@ DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
     out[i] = a[i] * bad;
     while (n > 0) {
     }
-    // CHECK: every_error.cpp:[[@LINE-2]]:5: error: while/do loops are outside the kernel subset
+    // CHECK: every_error.cpp:[[@LINE-2]]:5: error: a while loop is in the kernel subset as the for loop it is
   }
 }
 

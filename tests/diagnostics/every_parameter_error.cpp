@@ -16,7 +16,7 @@ DPGEN_KERNEL void k(DPGEN_INOUT double*** u, DPGEN_IN const double* a, DPGEN_OUT
     out[i] = a[i] * a[i - 1];
     while (n > 0) {
     }
-    // CHECK: every_parameter_error.cpp:[[@LINE-2]]:5: error: while/do loops are outside the kernel subset
+    // CHECK: every_parameter_error.cpp:[[@LINE-2]]:5: error: a while loop is in the kernel subset as the for loop it is
   }
   goto done;
   // CHECK: every_parameter_error.cpp:[[@LINE-1]]:3: error: 'goto' is outside the kernel subset

@@ -1,14 +1,83 @@
-// A while loop whose trip count depends on the data.
+// While loops: one that counts (its counter stepped by the body's last statement, or counted
+// down by the condition) is read as its for loop (tests/styles/while_loops.cpp); every other
+// one is refused at the loop, with the for loop's rules where it is read as one.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
 
-DPGEN_KERNEL void k(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+// The trip count depends on the data: not a bound.
+DPGEN_KERNEL void data_bound(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
   int i = 0;
   while (a[i] > 0.0 && i < n) {
-    // CHECK: while_loop.cpp:[[@LINE-1]]:3: error: while/do loops are outside the kernel subset
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:10: error: loop condition must compare the counter 'i' with a bound
     out[i] = a[i];
     ++i;
   }
+}
+
+// A `continue` would skip the step at the end of the body, which a for loop runs.
+DPGEN_KERNEL void skips_step(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  while (i < n) {
+    if (a[i] < 0.0)
+      continue;
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:7: error: 'continue' in a while loop skips the step of its counter 'i'
+    out[i] = a[i];
+    ++i;
+  }
+}
+
+// The step inside a branch, not the body's last statement: no counter.
+DPGEN_KERNEL void step_in_branch(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  while (i < n) {
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:3: error: a while loop is in the kernel subset as the for loop it is
+    out[i] = a[i];
+    if (n > 2) {
+      ++i;
+    }
+  }
+}
+
+// The counter also stepped in the middle of the body: the for loop's rule.
+DPGEN_KERNEL void stepped_twice(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  while (i < n) {
+    out[i] = a[i];
+    i += 1;
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:7: error: loop counter 'i' is modified in the loop body
+    ++i;
+  }
+}
+
+// The counter read after its loop (C leaves it at n): the for loop's rule.
+DPGEN_KERNEL void read_after(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  while (i < n - 1) {
+    out[i] = a[i] * a[i];
+    i++;
+  }
+  out[i] = a[i];
+  // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:7: error: loop counter 'i' is read after its loop
+}
+
+// A counter without a value when the loop starts.
+DPGEN_KERNEL void no_start(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i;
+  while (i < n) {
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:3: error: 'i' may be used before it has a value
+    out[i] = a[i];
+    ++i;
+  }
+}
+
+// do/while runs its body before the first test: refused.
+DPGEN_KERNEL void do_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  do {
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:3: error: do/while loops are outside the kernel subset
+    out[i] = a[i];
+    ++i;
+  } while (i < n);
 }

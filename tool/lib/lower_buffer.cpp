@@ -11,6 +11,7 @@
 // the row loops; a read of an element no earlier loop of that iteration
 // wrote is an error (or, where only the sizes decide, a run-time check).
 #include "lower_impl.hpp"
+#include "lower_while.hpp"
 #include "print.hpp"
 
 namespace dpgen::lowering {
@@ -139,7 +140,9 @@ void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length) 
     }
     for (size_t i = 0; i < common; ++i)
       if (const auto* f = dyn_cast<ForStmt>(chains[0][i]))
-        b.row_fors.push_back(f);
+        b.row_counters.push_back(counter_of(f));
+      else if (const auto* w = dyn_cast<WhileStmt>(chains[0][i]))
+        b.row_counters.push_back(while_counter(w)); // (lowered as a for loop: lower_while.cpp)
   }
   buffers_[h.name] = b;
   Binding bind;
@@ -167,9 +170,8 @@ ExprP LineBuffers::buffer_index(const Param* p, const ExprP& local, const clang:
     L.fail(loc, fmt::format("line buffer '{}' is used outside the loops it is declared in",
                           name));
   // Each loop around all the uses is a loop of the kernel here, in order.
-  for (size_t k = 0; k < b.row_fors.size(); ++k) {
-    const ForStmt* f = b.row_fors[k];
-    const VarDecl* c = counter_of(f);
+  for (size_t k = 0; k < b.row_counters.size(); ++k) {
+    const VarDecl* c = b.row_counters[k];
     auto it = c ? L.env_.find(c) : L.env_.end();
     if (it != L.env_.end() && it->second.kind == Binding::Value)
       L.fail(loc, fmt::format("line buffer '{}' is used in every iteration of loop '{}', which "
@@ -187,7 +189,7 @@ ExprP LineBuffers::buffer_index(const Param* p, const ExprP& local, const clang:
                             "its declaration)",
                             name));
   }
-  const size_t depth = decl_depth + b.row_fors.size();
+  const size_t depth = decl_depth + b.row_counters.size();
   std::vector<int> ids(L.loop_ids_.begin(), L.loop_ids_.begin() + depth);
   if (!b.placed) {
     // One row per iteration of the row loops: (outer - lo) * extent of the

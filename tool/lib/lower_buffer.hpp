@@ -70,9 +70,10 @@ private:
     std::string array;  // the hidden array
     ExprP length;       // elements per row
     std::vector<int> decl_loop_ids; // the loops around the declaration
-    // The `for` statements between the declaration and the innermost
-    // statement that holds every use, outermost first.
-    std::vector<const clang::ForStmt*> row_fors;
+    // The counters of the loops (`for`, and `while` loops that count) between the
+    // declaration and the innermost statement that holds every use, outermost first (null:
+    // a loop with no counter, which no use can be placed in).
+    std::vector<const clang::VarDecl*> row_counters;
     bool placed = false; // row loops fixed (at the first use)
     size_t depth = 0;    // how many loops of the kernel are row loops
     std::vector<int> row_ids;

@@ -1,6 +1,7 @@
 // Lowering, statements: blocks, branches, returns, declarations of locals
 // and local arrays and lambdas (lower_stmt.hpp).
 #include "lower_impl.hpp"
+#include "lower_while.hpp"
 
 namespace dpgen::lowering {
 
@@ -42,6 +43,8 @@ Escape Statements::lower(const Stmt* s) {
       declare(decl);
     return Escape::None;
   }
+  if (const auto* w = dyn_cast<WhileStmt>(s)) // one that counts: as the for loop it is
+    s = while_as_for(L.ctx_, w, [&](auto at, auto& why) { L.fail(at, why, "dpgen-loop"); });
   if (const auto* f = dyn_cast<ForStmt>(s)) {
     L.for_loops_.for_loop(f);
     return Escape::None;
@@ -101,8 +104,8 @@ Escape Statements::lower(const Stmt* s) {
     expr_stmt(e);
     return Escape::None;
   }
-  if (isa<WhileStmt>(s) || isa<DoStmt>(s))
-    L.fail(s->getBeginLoc(), "while/do loops are outside the kernel subset: write a for loop "
+  if (isa<DoStmt>(s))
+    L.fail(s->getBeginLoc(), "do/while loops are outside the kernel subset: write a for loop "
                              "with an integer counter and bounds that depend on parameters only");
   if (isa<GotoStmt>(s) || isa<IndirectGotoStmt>(s) || isa<LabelStmt>(s))
     L.fail(s->getBeginLoc(), "'goto' is outside the kernel subset");
@@ -421,8 +424,7 @@ ExprP Statements::make_local(const std::string& base, const VarDecl* decl, ExprP
     QualType t = decl ? decl->getType().getNonReferenceType().getUnqualifiedType() : L.ctx_.IntTy;
     bool widen = !t->isIntegerType() || L.ctx_.getTypeSize(t) <= 64;
     l->type_name = widen ? "std::ptrdiff_t" : L.spelled(t);
-  }
-  else
+  } else
     l->type_name = type_spelling(def->type);
   if (l->kernel_level)
     L.k_.kernel_locals.push_back(l);
@@ -576,25 +578,23 @@ size_t Statements::local_index(const clang::Expr* idx_expr, const VarDecl* v, si
 
 // `a[k]` of a local array: its binding and element, if that is what `e` is.
 std::optional<std::pair<const VarDecl*, size_t>> Statements::local_element(const clang::Expr* e) {
+  const clang::Expr *base = nullptr, *idx = nullptr;
   if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(e->IgnoreParens());
-      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) {
-    // t[m] of a std::array local
-    const auto* ref = dyn_cast<DeclRefExpr>(oc->getArg(0)->IgnoreParenImpCasts());
-    const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
-    auto it = v ? L.env_.find(v) : L.env_.end();
-    if (it == L.env_.end() || it->second.kind != Binding::LocalArray)
-      return std::nullopt;
-    return std::pair{v, local_index(oc->getArg(1), v, it->second.elems.size())};
-  }
-  const auto* sub = dyn_cast<ArraySubscriptExpr>(e->IgnoreParens());
-  if (!sub)
+      oc && oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2) { // t[m] of a std::array
+    base = oc->getArg(0);
+    idx = oc->getArg(1);
+  } else if (const auto* sub = dyn_cast<ArraySubscriptExpr>(e->IgnoreParens())) {
+    base = sub->getBase();
+    idx = sub->getIdx();
+  } else {
     return std::nullopt;
-  const auto* ref = dyn_cast<DeclRefExpr>(sub->getBase()->IgnoreParenImpCasts());
+  }
+  const auto* ref = dyn_cast<DeclRefExpr>(base->IgnoreParenImpCasts());
   const auto* v = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
   auto it = v ? L.env_.find(v) : L.env_.end();
   if (it == L.env_.end() || it->second.kind != Binding::LocalArray)
     return std::nullopt;
-  return std::pair{v, local_index(sub->getIdx(), v, it->second.elems.size())};
+  return std::pair{v, local_index(idx, v, it->second.elems.size())};
 }
 
 // An expression statement: an assignment to an output element or a local.

@@ -1,0 +1,87 @@
+// Loops written as `while` loops that count, the way C codes often do: the counter set before
+// the loop and stepped by the last statement of the body, or counted down by the condition
+// (`while (i-- > 0)`). dpgen reads each as the for loop it is (tool/lib/lower_while.cpp).
+#include "dpgen/annotate.hpp"
+
+#include <cstddef>
+
+// FTCS heat step; the counter stepped by `i++` at the end of the body.
+DPGEN_KERNEL void while_heat1d(DPGEN_IN const double* u, DPGEN_OUT double* u_new, int n, double r) {
+  int i = 1;
+  while (i < n - 1) {
+    u_new[i] = u[i] + r * (u[i - 1] - 2.0 * u[i] + u[i + 1]);
+    i++;
+  }
+}
+
+// Counted down by the condition: an unsigned counter, a body of one statement.
+DPGEN_KERNEL void while_countdown(DPGEN_IN const double* u, DPGEN_OUT double* v, std::size_t n,
+                                  double s) {
+  std::size_t i = n;
+  while (i-- > 1)
+    v[i] = s * u[i] * u[i - 1];
+}
+
+// Two cells per iteration (`i += 2`); the counter declared C89 style and assigned its start.
+DPGEN_KERNEL void while_pairs(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
+  int i;
+  i = 0;
+  while (i + 1 < n) {
+    const double a = u[i], b = u[i + 1];
+    v[i] = a * b;
+    v[i + 1] = a - b * b;
+    i += 2;
+  }
+}
+
+// A 2D five-point stencil with both loops `while` loops, the inner counter declared in the
+// outer loop's body.
+DPGEN_KERNEL void while_laplace2d(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny,
+                                  double h) {
+  int j = 1;
+  while (j < ny - 1) {
+    int i = 1;
+    while (i < nx - 1) {
+      const int c = j * nx + i;
+      out[c] = (u[c - 1] + u[c + 1] + u[c - nx] + u[c + nx] - 4.0 * u[c]) / (h * h) + u[c] * u[c];
+      ++i;
+    }
+    ++j;
+  }
+}
+
+// A sum read after its loop; the counter counts down by `--k` from n - 1 to 0.
+DPGEN_KERNEL void while_energy(DPGEN_IN const double* u, DPGEN_OUT double* e, int n) {
+  double s = 0.0;
+  int k = n - 1;
+  while (k >= 0) {
+    s += u[k] * u[k];
+    --k;
+  }
+  e[0] = 0.5 * s;
+}
+
+// NAS MG's resid (tests/styles/line_buffers.cpp, mg_resid) with `while` loops over the planes
+// and rows and a nonlinear operator: the line buffers, declared before the loops, get one row
+// per iteration of both `while` loops around their uses.
+#define WHILE_LINE 130
+DPGEN_KERNEL void while_resid(DPGEN_IN const double* u, DPGEN_IN const double* v,
+                              DPGEN_OUT double* r, int n1, int n2, int n3) {
+  double u1[WHILE_LINE], u2[WHILE_LINE];
+  int i3 = 1;
+  while (i3 < n3 - 1) {
+    int i2 = 1;
+    while (i2 < n2 - 1) {
+      for (int i1 = 0; i1 < n1; i1++) {
+        u1[i1] = u[(i3 * n2 + i2 - 1) * n1 + i1] + u[(i3 * n2 + i2 + 1) * n1 + i1];
+        u2[i1] = u[((i3 - 1) * n2 + i2) * n1 + i1] * u[((i3 + 1) * n2 + i2) * n1 + i1];
+      }
+      for (int i1 = 1; i1 < n1 - 1; i1++)
+        r[(i3 * n2 + i2) * n1 + i1] = v[(i3 * n2 + i2) * n1 + i1] -
+                                      u1[i1] * (u2[i1 - 1] + u2[i1 + 1]) -
+                                      0.5 * u[(i3 * n2 + i2) * n1 + i1] * u1[i1 + 1];
+      ++i2;
+    }
+    ++i3;
+  }
+}

@@ -1,0 +1,122 @@
+// Lowering, `while` loops that count (lower_loop.hpp): a `while` whose body ends by stepping
+// one integer counter, or whose condition counts it down, is the `for` loop C would run:
+//
+//   int i = lo;                              for (i = i; i < hi; ++i) {
+//   while (i < hi) { body; ++i; }      <=>     body;
+//                                            }
+//   size_t i = n;
+//   while (i-- > lo) { body; }         <=>   for (i = i; i-- > lo;) { body; }
+//
+// (the counter keeps the value it has when the loop starts, which `i = i` reads). dpgen
+// builds that `for` statement out of the `while`'s own parts and lowers it as any other, so
+// every rule of a `for` loop applies: a counter the body assigns, a bound the body changes,
+// a counter read after the loop are refused there. What only a `while` can do is refused
+// here: a `continue` (it skips the step at the end of the body, which a `for` would run).
+#include "lower_while.hpp"
+
+#include "lower_impl.hpp"
+
+namespace dpgen::lowering {
+
+namespace {
+
+// The local that `e` steps by a constant or a size: `++i`, `i++`, `--i`, `i--`, `i += s`,
+// `i -= s` (the for header checks the step itself); null for anything else.
+const VarDecl* stepped(const Stmt* e) {
+  const clang::Expr* target = nullptr;
+  if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->isIncrementDecrementOp())
+    target = u->getSubExpr();
+  else if (const auto* c = dyn_cast<CompoundAssignOperator>(e);
+           c && (c->getOpcode() == BO_AddAssign || c->getOpcode() == BO_SubAssign))
+    target = c->getLHS();
+  const auto* r = target ? dyn_cast<DeclRefExpr>(target->IgnoreParenImpCasts()) : nullptr;
+  const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
+  return v && v->getType()->isIntegerType() && !v->getType()->isBooleanType() ? v : nullptr;
+}
+
+// `i-- > lo`: the counter it counts down, else null.
+const VarDecl* counted_down(const clang::Expr* cond) {
+  const auto* c = cond ? dyn_cast<BinaryOperator>(cond->IgnoreParenImpCasts()) : nullptr;
+  const auto* u = c && c->getOpcode() == BO_GT
+                      ? dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts())
+                      : nullptr;
+  return u && u->getOpcode() == UO_PostDec ? stepped(u) : nullptr;
+}
+
+// A `continue` of the loop whose body is `s` (not one of a loop inside it, nor a lambda's).
+const ContinueStmt* own_continue(const Stmt* s) {
+  if (!s || isa<ForStmt>(s) || isa<WhileStmt>(s) || isa<DoStmt>(s) || isa<CXXForRangeStmt>(s) ||
+      isa<LambdaExpr>(s))
+    return nullptr;
+  if (const auto* c = dyn_cast<ContinueStmt>(s))
+    return c;
+  for (const Stmt* child : s->children())
+    if (const ContinueStmt* c = own_continue(child))
+      return c;
+  return nullptr;
+}
+
+const char* const kForm = "a while loop is in the kernel subset as the for loop it is: one "
+                          "integer counter, stepped by the body's last statement "
+                          "(`while (i < n) { ...; ++i; }`) or counted down by the condition "
+                          "(`while (i-- > 0) { ... }`)";
+
+} // namespace
+
+const VarDecl* while_counter(const WhileStmt* w) {
+  if (const VarDecl* v = counted_down(w->getCond()))
+    return v;
+  const auto* body = dyn_cast_or_null<CompoundStmt>(w->getBody());
+  return body && !body->body_empty() ? stepped(body->body_back()) : nullptr;
+}
+
+const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail& fail) {
+  const auto refuse = [&](SourceLocation at, const std::string& msg) {
+    fail(at, msg);
+    throw Rejected{}; // (fail does not return)
+  };
+  if (w->getConditionVariable())
+    refuse(w->getBeginLoc(),
+           fmt::format("{}; not one that declares a variable in its condition", kForm));
+  const VarDecl* v = while_counter(w);
+  if (!v)
+    refuse(w->getBeginLoc(), kForm);
+  // The body without its last statement, which becomes the for loop's increment; or, counted
+  // down by the condition, the body as it is (a `continue` there runs the same in both).
+  Stmt* body = const_cast<Stmt*>(w->getBody());
+  Stmt* step = nullptr;
+  if (counted_down(w->getCond()) != v) {
+    // (a compound statement: while_counter found its last statement)
+    const auto* c = llvm::cast<CompoundStmt>(w->getBody());
+    std::vector<Stmt*> stmts;
+    for (const Stmt* s : c->body())
+      stmts.push_back(const_cast<Stmt*>(s));
+    step = stmts.back();
+    stmts.pop_back();
+    for (Stmt* s : stmts)
+      if (const ContinueStmt* k = own_continue(s))
+        refuse(k->getBeginLoc(),
+               fmt::format("'continue' in a while loop skips the step of its counter '{}' at "
+                           "the end of the body (a for loop would still run it): write the loop "
+                           "as a for loop, or the skipped part as an if/else",
+                           v->getNameAsString()));
+    body =
+        CompoundStmt::Create(ctx, stmts, FPOptionsOverride(), c->getLBracLoc(), c->getRBracLoc());
+  }
+  const SourceLocation at = w->getBeginLoc();
+  QualType type = v->getType().getNonReferenceType();
+  auto* lhs = DeclRefExpr::Create(ctx, NestedNameSpecifierLoc(), SourceLocation(),
+                                  const_cast<VarDecl*>(v), false, at, type, VK_LValue);
+  auto* rhs = ImplicitCastExpr::Create(
+      ctx, type.getUnqualifiedType(), CK_LValueToRValue,
+      DeclRefExpr::Create(ctx, NestedNameSpecifierLoc(), SourceLocation(), const_cast<VarDecl*>(v),
+                          false, at, type, VK_LValue),
+      nullptr, VK_PRValue, FPOptionsOverride());
+  auto* init = BinaryOperator::Create(ctx, lhs, rhs, BO_Assign, type, VK_LValue, OK_Ordinary, at,
+                                      FPOptionsOverride());
+  return new (ctx) ForStmt(ctx, init, const_cast<clang::Expr*>(w->getCond()), nullptr,
+                           step ? llvm::cast<clang::Expr>(step) : nullptr, body, w->getWhileLoc(),
+                           w->getLParenLoc(), w->getRParenLoc());
+}
+
+} // namespace dpgen::lowering
