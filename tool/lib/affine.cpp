@@ -121,9 +121,8 @@ std::string Poly::str() const {
     return "0";
   // Highest degree first, the constant last: "j * nx + i - 1".
   std::vector<std::pair<Monomial, long long>> ts(terms_.begin(), terms_.end());
-  std::stable_sort(ts.begin(), ts.end(), [](const auto& a, const auto& b) {
-    return a.first.size() > b.first.size();
-  });
+  std::stable_sort(ts.begin(), ts.end(),
+                   [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
   std::string out;
   for (const auto& [m, c] : ts) {
     long long mag = c < 0 ? -c : c;
@@ -146,9 +145,8 @@ std::string Poly::code() const {
     return "0";
   auto wide = [](const Sym& s) { return !s.is_counter() && s.name.rfind("c_", 0) == 0; };
   std::vector<std::pair<Monomial, long long>> ts(terms_.begin(), terms_.end());
-  std::stable_sort(ts.begin(), ts.end(), [](const auto& a, const auto& b) {
-    return a.first.size() > b.first.size();
-  });
+  std::stable_sort(ts.begin(), ts.end(),
+                   [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
   std::string out;
   for (const auto& [m, c] : ts) {
     long long mag = c < 0 ? -c : c;
@@ -614,29 +612,32 @@ std::optional<Domain> condition_domain(const ExprP& c) {
     auto r = to_poly(c->ops[1]);
     if (!l || !r)
       return std::nullopt;
-    Poly p = *l - *r; // condition: p op 0
-    std::optional<Sym> var;
-    for (const auto& [m, coef] : p.terms())
-      for (const auto& s : m)
-        if (s.is_counter()) {
-          if (var && *var != s)
-            return std::nullopt; // two loop counters: not a box
-          var = s;
-        }
-    if (!var)
-      return std::nullopt; // sizes only: a run-time guard
-    Poly coef = p.coefficient(*var);
-    if (!coef.is_constant() || (coef.constant_term() != 1 && coef.constant_term() != -1))
-      return std::nullopt;
-    Poly rest = p.without(*var);
-    if (coef.constant_term() == 1) // v + rest op 0  <=>  v op -rest
-      return compare_domain(var->name, c->op, -rest);
-    return compare_domain(var->name, op_info(c->op).mirror, rest); // -v + rest op 0 <=> v op' rest
+    return zero_compare_domain(*l - *r, c->op);
   }
   default:
     return std::nullopt;
   }
   unknown_op("condition_domain");
+}
+
+std::optional<Domain> zero_compare_domain(const Poly& p, Op op) { // p op 0
+  std::optional<Sym> var;
+  for (const auto& [m, coef] : p.terms())
+    for (const auto& s : m)
+      if (s.is_counter()) {
+        if (var && *var != s)
+          return std::nullopt; // two loop counters: not a box
+        var = s;
+      }
+  if (!var)
+    return std::nullopt; // sizes only: a run-time guard
+  Poly coef = p.coefficient(*var);
+  if (!coef.is_constant() || (coef.constant_term() != 1 && coef.constant_term() != -1))
+    return std::nullopt;
+  Poly rest = p.without(*var);
+  if (coef.constant_term() == 1) // v + rest op 0  <=>  v op -rest
+    return compare_domain(var->name, op, -rest);
+  return compare_domain(var->name, op_info(op).mirror, rest); // -v + rest op 0 <=> v op' rest
 }
 
 std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
@@ -671,6 +672,35 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
       if (!d.empty())
         out.push_back({p.value, d});
     }
+    return out;
+  }
+  case Op::Call: {
+    // std::max / std::min of integers (a clamped neighbour, `u[std::max(i - 1, 0)]`): the
+    // choice the generated code makes, dpgen_max(a, b) = a < b ? b : a and dpgen_min(a, b) =
+    // b < a ? b : a (either on a tie: the same value), piece by piece of a and b, where each
+    // comparison is one of a loop counter (else nullopt: a clamp of sizes against sizes).
+    if ((e->name != "max" && e->name != "min") || e->ops.size() != 2)
+      return std::nullopt;
+    auto a = index_pieces(e->ops[0]);
+    auto b = index_pieces(e->ops[1]);
+    if (!a || !b)
+      return std::nullopt;
+    Pieces out;
+    for (const auto& x : *a)
+      for (const auto& y : *b) {
+        Domain both = intersect(x.where, y.where);
+        if (both.empty())
+          continue;
+        auto y_wins =
+            zero_compare_domain(e->name == "max" ? x.value - y.value : y.value - x.value, Op::Lt);
+        if (!y_wins)
+          return std::nullopt;
+        Domain dy = intersect(both, *y_wins), dx = subtract(both, *y_wins);
+        if (!dy.empty())
+          out.push_back({y.value, dy});
+        if (!dx.empty())
+          out.push_back({x.value, dx});
+      }
     return out;
   }
   case Op::Neg: {

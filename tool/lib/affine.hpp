@@ -75,6 +75,9 @@ Box simplify(Box b);
 /// coefficient +-1, against parameters, combined by && || !); nullopt for any
 /// other condition, which then stays a run-time guard.
 std::optional<Domain> condition_domain(const ExprP& cond);
+/// The domain of `p op 0` (op a comparison) where p moves with one loop counter by +-1;
+/// nullopt for any other p.
+std::optional<Domain> zero_compare_domain(const Poly& p, Op op);
 
 /// True when box `b` certainly lies inside `d` / certainly misses `d`,
 /// deciding only comparisons that differ by a constant.
