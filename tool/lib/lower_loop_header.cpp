@@ -6,6 +6,26 @@
 
 namespace dpgen::lowering {
 
+namespace {
+
+// C compares in the operands' common type. Where that is unsigned, a value below zero (a
+// signed start or bound converted, `for (int i = start; i < v.size(); ++i)` with start < 0,
+// `size_t i = n; while (i-- > lo)` with `int lo = -1`; or unsigned arithmetic that wrapped,
+// `lo - 1` with lo = 0) compares as a huge number, and the user's loop runs other iterations
+// than dpgen's, which counts with the values as numbers: the lowest value the condition
+// tests must provably be >= 0 (for_header), else this is the error. (A bound below zero that
+// a count up never reaches makes the user's loop run until it leaves its arrays: no gradient
+// to differ from.)
+std::string unsigned_compare(const std::string& var, const std::string& type, const ExprP& lowest) {
+  return fmt::format("the condition of loop '{}' compares in the unsigned type '{}', where a "
+                     "value below zero is a huge number, and dpgen cannot prove that the values "
+                     "it compares stay >= 0 (the lowest is '{}'); compare signed values "
+                     "(`std::ptrdiff_t(n)`), or start and bound the loop at or above zero",
+                     var, type, print(lowest));
+}
+
+} // namespace
+
 // The operands of comma expression `e` (`++i, --j`), or `e` itself.
 std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
   e = e->IgnoreParens();
@@ -317,23 +337,12 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
-  // C compares in the operands' common type. Where that is unsigned, a value below zero (a
-  // signed start or bound converted, `for (int i = start; i < v.size(); ++i)` with start < 0,
-  // `size_t i = n; while (i-- > lo)` with `int lo = -1`; or unsigned arithmetic that wrapped,
-  // `lo - 1` with lo = 0) compares as a huge number, and the user's loop runs other
-  // iterations than dpgen's, which counts with the values as numbers: the lowest value the
-  // condition tests must provably be >= 0. (A bound below zero that a count up never reaches
-  // makes the user's loop run until it leaves its arrays: no gradient to differ from.)
   if (const ExprP lowest = step > 0           ? init_value
                            : cond_op == BO_GE ? binary(Op::Sub, bound, one)
                                               : bound;
       c->getLHS()->getType()->isUnsignedIntegerType() && !L.provably_nonneg(lowest))
     L.fail(c->getOperatorLoc(),
-           fmt::format("the condition of loop '{}' compares in the unsigned type '{}', where a "
-                       "value below zero is a huge number, and dpgen cannot prove that the "
-                       "values it compares stay >= 0 (the lowest is '{}'); compare signed values "
-                       "(`std::ptrdiff_t(n)`), or start and bound the loop at or above zero",
-                       var->getNameAsString(), L.spelled(c->getLHS()->getType()), print(lowest)),
+           unsigned_compare(var->getNameAsString(), L.spelled(c->getLHS()->getType()), lowest),
            "dpgen-loop");
   // A strided loop whose start moves with outer counters (red-black:
   // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`;
