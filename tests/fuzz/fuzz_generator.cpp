@@ -20,7 +20,7 @@
 //   DPGEN_FUZZ_MAX_BYTES  larger inputs are skipped (default 8192: mutations);
 //   DPGEN_FUZZ_COMPILE    0: no parse of the generated files (run_seeds.py, for
 //                         the seeds whose generated code the test build compiles
-//                         with -Werror anyway, but a sample; default 1).
+//                         anyway, but a sample; default 1).
 #include "lib/derive.hpp"
 #include "lib/emit_file.hpp"
 #include "lib/emit_tangent.hpp"

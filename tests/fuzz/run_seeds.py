@@ -13,10 +13,10 @@ fails instead of passing as "rejected: fine".
 
 EXPECT is accept or reject, STD the C++ standard (c++17, c++20); files ending
 in .c are lowered as C. `built`: the test build compiles these kernels' generated
-adjoint and tangent itself (g++, -Werror), so the fuzzer's parse of its own output
-(two Clang parses with the standard headers, about two thirds of a seed's time)
-is done only for the seeds generated twice (DPGEN_FUZZ_COMPILE=0 for the others). The files of all groups, in order, are dealt to the
-N parts; this run takes part K (0-based). Every M-th seed of the part (by
+adjoint and tangent itself (g++), so the fuzzer's parse of its own output (two
+Clang parses with the standard headers, about two thirds of a seed's time) is
+done only for the seeds generated twice (DPGEN_FUZZ_COMPILE=0 for the others).
+The files of all groups, in order, are dealt to the N parts; this run takes part K (0-based). Every M-th seed of the part (by
 position, from its first; default 1: all) is generated twice in the same
 process, and the two outputs must be the same (DPGEN_FUZZ_RECHECK); the fuzz
 run checks that on all its inputs.
@@ -72,7 +72,8 @@ def main():
     if not 0 <= args.part < args.parts:
         sys.exit(f"run_seeds.py: --part {args.part} is not in [0, {args.parts})")
 
-    # Deal every seed to a part; each (expect, std, language, recheck) batch is one fuzzer run.
+    # Deal every seed to a part; each (expect, std, language, recheck, parse) batch is one
+    # fuzzer run.
     dealt = [(i, e, s, b, f) for i, (e, s, b, f) in
              enumerate((e, s, b, f) for e, s, b, files in groups for f in files)]
     if not dealt:
@@ -115,7 +116,7 @@ def main():
         cmd = [args.fuzzer, f"-timeout={args.timeout}", "-rss_limit_mb=6000"] + files
         print(f"== {len(files)} seeds, expected to be {expect}ed ({lang}, {std})"
               + (", each generated twice" if recheck else "")
-            + ("" if compile else ", output not parsed (the build compiles it)"), flush=True)
+              + ("" if compile else ", output not parsed (the build compiles it)"), flush=True)
         start = time.time()
         proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               text=True, errors="replace")
