@@ -640,6 +640,29 @@ std::optional<Domain> zero_compare_domain(const Poly& p, Op op) { // p op 0
   return compare_domain(var->name, op_info(op).mirror, rest); // -v + rest op 0 <=> v op' rest
 }
 
+namespace {
+
+// The pieces of a binary integer operation `e`: each pair of its operands' pieces (x, y) on
+// the domain where both hold, handed to `combine`, which adds what it makes to `out`; where
+// `combine` returns false (a pair it cannot split into boxes), nullopt.
+template <typename Combine>
+std::optional<std::vector<IndexPiece>> pairwise(const ExprP& e, Combine combine) {
+  auto a = index_pieces(e->ops[0]);
+  auto b = index_pieces(e->ops[1]);
+  if (!a || !b)
+    return std::nullopt;
+  std::vector<IndexPiece> out;
+  for (const auto& x : *a)
+    for (const auto& y : *b) {
+      Domain both = intersect(x.where, y.where);
+      if (!both.empty() && !combine(x, y, both, out))
+        return std::nullopt;
+    }
+  return out;
+}
+
+} // namespace
+
 std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
   using Pieces = std::vector<IndexPiece>;
   if (e->type != Type::Int)
@@ -681,27 +704,19 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
     // comparison is one of a loop counter (else nullopt: a clamp of sizes against sizes).
     if ((e->name != "max" && e->name != "min") || e->ops.size() != 2)
       return std::nullopt;
-    auto a = index_pieces(e->ops[0]);
-    auto b = index_pieces(e->ops[1]);
-    if (!a || !b)
-      return std::nullopt;
-    Pieces out;
-    for (const auto& x : *a)
-      for (const auto& y : *b) {
-        Domain both = intersect(x.where, y.where);
-        if (both.empty())
-          continue;
-        auto y_wins =
-            zero_compare_domain(e->name == "max" ? x.value - y.value : y.value - x.value, Op::Lt);
-        if (!y_wins)
-          return std::nullopt;
-        Domain dy = intersect(both, *y_wins), dx = subtract(both, *y_wins);
-        if (!dy.empty())
-          out.push_back({y.value, dy});
-        if (!dx.empty())
-          out.push_back({x.value, dx});
-      }
-    return out;
+    return pairwise(
+        e, [&](const IndexPiece& x, const IndexPiece& y, const Domain& both, Pieces& out) {
+          auto y_wins =
+              zero_compare_domain(e->name == "max" ? x.value - y.value : y.value - x.value, Op::Lt);
+          if (!y_wins)
+            return false;
+          Domain dy = intersect(both, *y_wins), dx = subtract(both, *y_wins);
+          if (!dy.empty())
+            out.push_back({y.value, dy});
+          if (!dx.empty())
+            out.push_back({x.value, dx});
+          return true;
+        });
   }
   case Op::Neg: {
     auto a = index_pieces(e->ops[0]);
@@ -713,24 +728,15 @@ std::optional<std::vector<IndexPiece>> index_pieces(const ExprP& e) {
   }
   case Op::Add:
   case Op::Sub:
-  case Op::Mul: {
-    auto a = index_pieces(e->ops[0]);
-    auto b = index_pieces(e->ops[1]);
-    if (!a || !b)
-      return std::nullopt;
-    Pieces out;
-    for (const auto& x : *a)
-      for (const auto& y : *b) {
-        Domain d = intersect(x.where, y.where);
-        if (d.empty())
-          continue;
-        Poly v = e->op == Op::Add   ? x.value + y.value
-                 : e->op == Op::Sub ? x.value - y.value
-                                    : x.value * y.value;
-        out.push_back({v, d});
-      }
-    return out;
-  }
+  case Op::Mul:
+    return pairwise(e,
+                    [&](const IndexPiece& x, const IndexPiece& y, const Domain& both, Pieces& out) {
+                      out.push_back({e->op == Op::Add   ? x.value + y.value
+                                     : e->op == Op::Sub ? x.value - y.value
+                                                        : x.value * y.value,
+                                     both});
+                      return true;
+                    });
   default: {
     auto p = to_poly(e);
     if (!p)
