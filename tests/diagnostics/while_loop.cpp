@@ -81,3 +81,32 @@ DPGEN_KERNEL void do_loop(DPGEN_IN const double* a, DPGEN_OUT double* out, int n
     ++i;
   } while (i < n);
 }
+
+// The counter stepped first, then read: the for loop steps after the body.
+DPGEN_KERNEL void step_first(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = -1;
+  while (i < n - 1) {
+    ++i;
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:5: error: a while loop is in the kernel subset as the for loop it is{{.*}}this statement steps the counter 'i' before the end of the body
+    out[i] = a[i];
+  }
+}
+
+// A parameter counted down: the loop would change the kernel's argument.
+DPGEN_KERNEL void parameter_counter(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  while (n-- > 0)
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:3: error: the counter 'n' of this while loop is a parameter of the kernel
+    out[n] = 2.0 * a[n];
+}
+
+// An early return: it leaves the kernel, not the iteration.
+DPGEN_KERNEL void early_return(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
+  int i = 0;
+  while (i < n) {
+    if (a[0] < 0.0)
+      return;
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:7: error: 'return' inside a loop is outside the kernel subset (it would leave every loop and the kernel); to skip the rest of an iteration, use an if/else
+    out[i] = a[i];
+    ++i;
+  }
+}

@@ -85,3 +85,47 @@ DPGEN_KERNEL void while_resid(DPGEN_IN const double* u, DPGEN_IN const double* v
     ++i3;
   }
 }
+
+// The step in parentheses, and by a macro that parenthesizes (`((c) += 1)`).
+#define WHILE_ADVANCE(c) ((c) += 1)
+DPGEN_KERNEL void while_paren_steps(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                    DPGEN_OUT double* w, int n) {
+  int i = 0;
+  while (i < n - 1) {
+    v[i] = u[i + 1] * u[i];
+    (++i);
+  }
+  int k = 1;
+  while (k < n) {
+    w[k] = u[k - 1] - u[k] * u[k];
+    WHILE_ADVANCE(k);
+  }
+}
+
+// A flat index carried through a nest of `while` loops (C codes' `idx++` in the inner loop),
+// skipping the ghost cells of each row (`k += 2` after the inner loop).
+DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                      int ny) {
+  int k = nx + 1;
+  int j = 1;
+  while (j < ny - 1) {
+    int i = 1;
+    while (i < nx - 1) {
+      out[k] = u[k + 1] - 2.0 * u[k] + u[k - 1] + u[k] * u[k + nx];
+      ++k;
+      ++i;
+    }
+    k += 2;
+    ++j;
+  }
+}
+
+// Two counters stepped at the end of the body, the one the condition tests last.
+DPGEN_KERNEL void while_two_counters(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
+  int i = 0, j = 1;
+  while (i < n - 1) {
+    v[i] = u[j] * u[j] - u[i];
+    ++j;
+    ++i;
+  }
+}

@@ -19,6 +19,11 @@ DPGEN_KERNEL void while_laplace2d(DPGEN_IN const double* u, DPGEN_OUT double* ou
 DPGEN_KERNEL void while_energy(DPGEN_IN const double* u, DPGEN_OUT double* e, int n);
 DPGEN_KERNEL void while_resid(DPGEN_IN const double* u, DPGEN_IN const double* v,
                               DPGEN_OUT double* r, int n1, int n2, int n3);
+DPGEN_KERNEL void while_paren_steps(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                    DPGEN_OUT double* w, int n);
+DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                      int ny);
+DPGEN_KERNEL void while_two_counters(DPGEN_IN const double* u, DPGEN_OUT double* v, int n);
 
 TEST_CASE("styles: while_loops, heat1d") {
   for (int n : {1, 2, 3, 4, 17, 8300}) {
@@ -130,6 +135,59 @@ TEST_CASE("styles: while_loops, resid with line buffers") {
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       while_resid_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n1, n2, n3);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: while_loops, steps in parentheses and by a macro") {
+  for (int n : {0, 1, 2, 5, 64}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { while_paren_steps(in[0], out[0], out[1], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      while_paren_steps_adjoint(in[0], adj[0], seed[0], seed[1], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      while_paren_steps_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: while_loops, a running index through a nest of while loops") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {3, 3}, {5, 4}, {70, 9}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t cells = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {cells};
+    p.out_sizes = {cells};
+    p.forward = [&](auto in, auto out) { while_running_index(in[0], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      while_running_index_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      while_running_index_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: while_loops, two counters stepped at the end") {
+  for (int n : {0, 1, 2, 3, 40}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { while_two_counters(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      while_two_counters_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      while_two_counters_tangent(in[0], dir[0], out[0], outd[0], n);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -6,6 +6,7 @@
 // per iteration, so each iteration can run alone as the adjoint's gather and
 // the parallel forward need (lower_loop.hpp: RunningIndices).
 #include "lower_impl.hpp"
+#include "lower_while.hpp"
 
 namespace dpgen::lowering {
 
@@ -14,6 +15,8 @@ namespace {
 // `s` steps `v` by itself: `v++`, `++v`, `v--`, `--v`, `v += e`, `v -= e`
 // with `e` free of `v`. `up`: the step adds (++ or +=).
 bool is_step(const Stmt* s, const VarDecl* v, bool& up) {
+  if (const auto* e = dyn_cast<clang::Expr>(s)) // (`(k++);`, a macro's `((k) += 2)`)
+    s = e->IgnoreParens();
   auto names_v = [&](const clang::Expr* e) {
     const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
     return r && r->getDecl() == v;
@@ -122,15 +125,14 @@ void top_level(const Stmt* s, std::vector<const Stmt*>& out) {
 
 // Whether loop body `body` steps `v` as a running index: every assignment of
 // `v` is a step at the body's top level (blocks aside) or inside one `for`
-// loop of that level whose body does the same; no jump may skip a step; and
-// where such an inner loop is there, `v` is read only inside it (where that
-// loop runs, so its number of iterations, which the closed form counts, is
-// the one it makes). `read`: `v` is read somewhere besides its steps. `up`:
-// every step adds.
+// loop (or `while` loop that counts) of that level whose body does the same; no jump may skip a
+// step; and where such an inner loop is there, `v` is read only inside it (where that loop runs, so
+// its number of iterations, which the closed form counts, is the one it makes). `read`: `v` is read
+// somewhere besides its steps. `up`: every step adds.
 bool RunningIndices::steps_only(const Stmt* body, const VarDecl* v, bool& read, bool& up) {
   std::vector<const Stmt*> stmts;
   top_level(body, stmts);
-  const ForStmt* inner = nullptr;
+  const Stmt* inner = nullptr; // (a for loop, or a while loop that counts)
   bool read_here = false;
   for (const Stmt* s : stmts) {
     bool adds = true;
@@ -149,16 +151,27 @@ bool RunningIndices::steps_only(const Stmt* body, const VarDecl* v, bool& read, 
       read_here = read_here || LoopHeaders::mentions(s, v);
       continue;
     }
-    const auto* g = dyn_cast<ForStmt>(s);
-    if (!g || inner)
+    if (inner)
       return false;
-    for (const Stmt* part : {g->getInit(), static_cast<const Stmt*>(g->getCond()),
-                             static_cast<const Stmt*>(g->getInc())})
-      if (part && LoopHeaders::mentions(part, v))
+    if (const auto* g = dyn_cast<ForStmt>(s)) {
+      for (const Stmt* part : {g->getInit(), static_cast<const Stmt*>(g->getCond()),
+                               static_cast<const Stmt*>(g->getInc())})
+        if (part && LoopHeaders::mentions(part, v))
+          return false;
+    } else if (const auto* w = dyn_cast<WhileStmt>(s)) {
+      // A `while` that counts is the for loop it is (lower_while.hpp): its condition and its
+      // counter's step, the body's last statement, are its header.
+      const VarDecl* counter = while_counter(w);
+      if (!counter || counter == v || LoopHeaders::mentions(w->getCond(), v))
         return false;
-    if (!steps_only(g->getBody(), v, read, up))
+    } else {
       return false;
-    inner = g;
+    }
+    const Stmt* loop_body =
+        isa<ForStmt>(s) ? llvm::cast<ForStmt>(s)->getBody() : llvm::cast<WhileStmt>(s)->getBody();
+    if (!steps_only(loop_body, v, read, up))
+      return false;
+    inner = s;
   }
   read = read || read_here;
   return !(inner && read_here) && !may_skip(body, false, false);

@@ -5,6 +5,12 @@
 
 namespace dpgen::lowering {
 
+namespace {
+const char* const kReturnInLoop =
+    "'return' inside a loop is outside the kernel subset (it would leave every loop and the "
+    "kernel); to skip the rest of an iteration, use an if/else (or 'continue' in a for loop)";
+} // namespace
+
 void Statements::body(const Stmt* s) {
   if (!s)
     L.fail(L.fn_->getLocation(), "kernel has no body");
@@ -81,8 +87,7 @@ Escape Statements::lower(const Stmt* s) {
       return Escape::Always;
     }
     if (!L.loops_.empty() || L.unrolling_ > 0)
-      L.fail(s->getBeginLoc(), "'return' inside a loop is outside the kernel subset; use "
-                               "'continue' or an if/else");
+      L.fail(s->getBeginLoc(), kReturnInLoop);
     if (const clang::Expr* v = r->getRetValue()) {
       // `return s;` of a kernel returning a value: a store to its output
       // `<kernel>_return` (Param::returned), as the kernel's last statement.

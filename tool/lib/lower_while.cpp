@@ -22,7 +22,9 @@ namespace {
 
 // The local that `e` steps by a constant or a size: `++i`, `i++`, `--i`, `i--`, `i += s`,
 // `i -= s` (the for header checks the step itself); null for anything else.
-const VarDecl* stepped(const Stmt* e) {
+const VarDecl* stepped(const Stmt* s) {
+  // (`(++i);`, and a macro's `((i) += 1)`)
+  const Stmt* e = isa<clang::Expr>(s) ? llvm::cast<clang::Expr>(s)->IgnoreParens() : s;
   const clang::Expr* target = nullptr;
   if (const auto* u = dyn_cast<UnaryOperator>(e); u && u->isIncrementDecrementOp())
     target = u->getSubExpr();
@@ -79,8 +81,24 @@ const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail
     refuse(w->getBeginLoc(),
            fmt::format("{}; not one that declares a variable in its condition", kForm));
   const VarDecl* v = while_counter(w);
-  if (!v)
+  if (!v) {
+    // A counter of the condition stepped by another statement than the last: say which.
+    if (const auto* c = dyn_cast_or_null<CompoundStmt>(w->getBody()))
+      for (const Stmt* s : c->body())
+        if (const VarDecl* u = stepped(s); u && LoopHeaders::mentions(w->getCond(), u))
+          refuse(s->getBeginLoc(),
+                 fmt::format("{}; this statement steps the counter '{}' before the end of the "
+                             "body: move the step to the end (adjusting the start and the uses "
+                             "of '{}'), or write the loop as a for loop",
+                             kForm, u->getNameAsString(), u->getNameAsString()));
     refuse(w->getBeginLoc(), kForm);
+  }
+  if (isa<ParmVarDecl>(v))
+    refuse(w->getBeginLoc(),
+           fmt::format("the counter '{}' of this while loop is a parameter of the kernel, which "
+                       "the loop would change: count a local copy (`int i = {}; while (i-- > "
+                       "0) ...`)",
+                       v->getNameAsString(), v->getNameAsString()));
   // The body without its last statement, which becomes the for loop's increment; or, counted
   // down by the condition, the body as it is (a `continue` there runs the same in both).
   Stmt* body = const_cast<Stmt*>(w->getBody());
@@ -115,8 +133,8 @@ const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail
   auto* init = BinaryOperator::Create(ctx, lhs, rhs, BO_Assign, type, VK_LValue, OK_Ordinary, at,
                                       FPOptionsOverride());
   return new (ctx) ForStmt(ctx, init, const_cast<clang::Expr*>(w->getCond()), nullptr,
-                           step ? llvm::cast<clang::Expr>(step) : nullptr, body, w->getWhileLoc(),
-                           w->getLParenLoc(), w->getRParenLoc());
+                           step ? llvm::cast<clang::Expr>(step)->IgnoreParens() : nullptr, body,
+                           w->getWhileLoc(), w->getLParenLoc(), w->getRParenLoc());
 }
 
 } // namespace dpgen::lowering
