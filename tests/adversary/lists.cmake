@@ -38,7 +38,10 @@ set(DPGEN_ADVERSARY_REGRESSIONS
     # `put(&o[i + 1], x)`, `lap(u + 1, i - 1)` in a helper, `const double* ap = a + 1;`
     r3_helper_ptr_elem helper_ptr_offset ptr_arith
     # refused until std::vector kernels could have work arrays (2026-12-02)
-    r3_vector_work)
+    r3_vector_work
+    # refused by a conversion check that missed a std::array subscript (`b[m % 2]` of an
+    # unrolled counter: "may go below zero") until 2026-12-02
+    r4_arr_accum_buffer)
 # Rejected with a diagnostic (they were accepted with wrong adjoints).
 set(DPGEN_ADVERSARY_REJECTED
     scale_after_reduce reduce_sqrt reduce_ptr_star reduce_then_assign nest_scale_after

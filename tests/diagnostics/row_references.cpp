@@ -24,7 +24,7 @@ DPGEN_KERNEL void row_length(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int ny) 
 
 DPGEN_KERNEL void data_row(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int nx, int ny) {
   for (int j = 0; j < ny; ++j) {
-    // CHECK-DAG: row_references.cpp:[[@LINE+1]]:23: error: '(int)u[0][j]', converted to unsigned 'unsigned long', may go below zero here
+    // CHECK-DAG: row_references.cpp:[[@LINE+1]]:23: error: row 'r' of 'u' is taken at a data-dependent index
     const auto& r = u[(int)u[0][j]];
     for (int i = 0; i < nx; ++i)
       v[j][i] = r[i];
@@ -35,7 +35,7 @@ DPGEN_KERNEL void data_column(DPGEN_IN const Rows& u, DPGEN_OUT Rows& v, int nx,
   for (int j = 0; j < ny; ++j) {
     const auto& r = u[j];
     for (int i = 0; i < nx; ++i)
-      // CHECK-DAG: row_references.cpp:[[@LINE+1]]:19: error: '(int)u[0][i]', converted to unsigned 'unsigned long', may go below zero here
+      // CHECK-DAG: row_references.cpp:[[@LINE+1]]:17: error: 'r[(int)u[0][i]]' is indexed at a data-dependent column
       v[j][i] = r[(int)u[0][i]];
   }
 }

@@ -22,7 +22,7 @@ if(NOT DEFINED DPGEN_STYLE_KERNELS)
       enum_params running_index flux_sums view_branches guarded_reads arm_locals
       member_inplace local_chains cond_operand_calls early_returns scatter_reads
       lambda_accumulators loop_local_bounds pointer_locals checked_probe c89_row_pointers
-      cpp_idioms vector_sums while_loops clamped_indices)
+      cpp_idioms vector_sums while_loops clamped_indices vector_buffers)
 endif()
 # Style kernels written in C (<name>.c, parsed as C: VLAs, C99 pointer casts),
 # each with a <name>_test.cpp like the others.

@@ -50,6 +50,41 @@ std::string loop_var_in(const ExprP& e) {
   return name;
 }
 
+// `std::vector<T> v(count)` or `(count, value)` (the allocator defaulted): count, as written
+// (its conversion to size_type aside); null for any other way of making it.
+const clang::Expr* vector_count(const VarDecl* v) {
+  const auto* ctor =
+      dyn_cast_or_null<CXXConstructExpr>(v->getInit() ? v->getInit()->IgnoreImplicit() : nullptr);
+  if (!ctor || ctor->isListInitialization())
+    return nullptr;
+  unsigned given = ctor->getNumArgs();
+  while (given > 0 && isa<CXXDefaultArgExpr>(ctor->getArg(given - 1)))
+    --given;
+  if (given < 1 || given > 2 || !ctor->getArg(0)->getType()->isIntegerType() ||
+      (given == 2 && !ctor->getArg(1)->getType()->isRealFloatingType()))
+    return nullptr;
+  return ctor->getArg(0)->IgnoreImpCasts();
+}
+
+std::string vector_form(const std::string& name) {
+  return fmt::format("local std::vector '{}' is in the kernel subset as a line buffer made with "
+                     "its length (`std::vector<double> {}(n + 1);` or `(n + 1, 0.0)`), filled "
+                     "and read by the kernel's loops; not made from a list, a copy or another "
+                     "vector (a table of constants is an array: `const double {}[3] = {{...}};`)",
+                     name, name, name);
+}
+
+// For a buffer that is a std::vector: the value it is made with does not count as written.
+std::string vector_read_hint(const VarDecl* v) {
+  const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(
+      v->getType().getCanonicalType()->getAsCXXRecordDecl());
+  if (!spec || spec->getName() != "vector" || !spec->isInStdNamespace())
+    return "";
+  return fmt::format(" (the value a std::vector is made with is not a write: assign the elements "
+                     "the loops leave out, `{}[0] = 0.0;`)",
+                     v->getNameAsString());
+}
+
 } // namespace
 
 const LineBuffers::Buffer* LineBuffers::buffer_of(const std::string& array) const {
@@ -58,7 +93,7 @@ const LineBuffers::Buffer* LineBuffers::buffer_of(const std::string& array) cons
 }
 
 // `double u1[M]` (M > 64), `double tmp[nx]`, `std::array<double, 200> t`.
-void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length) {
+void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length, bool sized) {
   const std::string name = v->getNameAsString();
   auto t = L.scalar_type(elem);
   if (!t || !is_real(*t) || L.ctx_.getAsArrayType(elem))
@@ -67,7 +102,7 @@ void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length) 
                                        "elements, or of a run-time length) holds float or "
                                        "double values, one dimension",
                                        name, v->getType().getAsString()));
-  if (const clang::Expr* init = v->getInit()) {
+  if (const clang::Expr* init = sized ? nullptr : v->getInit()) {
     const auto* ctor = dyn_cast<CXXConstructExpr>(init);
     if (!ctor || ctor->getNumArgs() != 0 || ctor->requiresZeroInitialization())
       L.fail(init->getBeginLoc(),
@@ -522,16 +557,30 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
   std::vector<std::string> ws;
   for (const auto& w : written)
     ws.push_back(fmt::format("{} to {} (line {})", w.lo.str(), w.hi.str(), w.line));
-  L.fail(loc, fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
-                        "earlier loops of {} wrote every element read (they write elements {}): "
-                        "a read of an element not written in this iteration (a value carried "
-                        "over from an earlier one, or uninitialised) is outside the kernel "
-                        "subset; read only elements the filling loop writes",
-                        name, L.text(e),
-                        r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str())
-                          : "",
-                        rows, fmt::join(ws, ", ")),
-       "dpgen-buffer");
+  L.fail(loc,
+         fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
+                     "earlier loops of {} wrote every element read (they write elements {}): "
+                     "a read of an element not written in this iteration (a value carried "
+                     "over from an earlier one, or uninitialised) is outside the kernel "
+                     "subset; read only elements the filling loop writes{}",
+                     name, L.text(e),
+                     r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str()) : "",
+                     rows, fmt::join(ws, ", "), vector_read_hint(b.decl)),
+         "dpgen-buffer");
+}
+
+// `std::vector<double> flux(n + 1);`, `std::vector<float> t(nx, 0.0f);`: the vector's values
+// are the line buffer's. Its constructor's value (zero, or the one given) is never read: a
+// line buffer's element is read only where its row wrote it first (checked as for any buffer).
+bool LineBuffers::declare_vector(const VarDecl* v) {
+  QualType elem = L.vector_element(v->getType(), "vector");
+  if (elem.isNull() || v->getType()->isReferenceType())
+    return false;
+  const clang::Expr* count = vector_count(v);
+  if (!count && elem->isRealFloatingType()) // (other elements: declare_buffer's message)
+    L.fail(v->getLocation(), vector_form(v->getNameAsString()), "dpgen-buffer");
+  declare_buffer(v, elem, count ? L.exprs_.expr(count) : int_const(0), /*sized=*/true);
+  return true;
 }
 
 // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`: `u[k][j][i]` is the flat

@@ -43,7 +43,13 @@ public:
   bool is_buffer(const std::string& array) const { return buffers_.count(array) != 0; }
   // `double u1[M]` (M > 64), `double tmp[nx]`, `std::array<double, 200> t`:
   // its hidden array (Kernel::hidden) and the local's binding to it.
-  void declare_buffer(const clang::VarDecl* v, clang::QualType elem, ExprP length);
+  // `sized`: a std::vector's (count) or (count, value) constructor, whose values no read sees
+  // (each element read is written first in its row).
+  void declare_buffer(const clang::VarDecl* v, clang::QualType elem, ExprP length,
+                      bool sized = false);
+  // `std::vector<double> flux(n + 1);` (or `(n + 1, 0.0)`), a local: a line buffer of that
+  // length. False if `v` is no such vector.
+  bool declare_vector(const clang::VarDecl* v);
   // The flat element of index `local` of buffer `p` in this iteration.
   ExprP buffer_index(const Param* p, const ExprP& local, const clang::Expr* at);
   // A store at / read of buffer `p`'s flat element `flat`: in bounds, written

@@ -23,7 +23,8 @@ bool IntegerChecks::feeds_index_only(const clang::Expr* e) {
              sub->getIdx() == child;
     if (const auto* oc = dyn_cast<CXXOperatorCallExpr>(up))
       return oc->getOperator() == OO_Subscript && oc->getNumArgs() == 2 &&
-             oc->getArg(1)->IgnoreParenImpCasts() == static_cast<const clang::Expr*>(child)->IgnoreParens();
+             oc->getArg(1)->IgnoreParenImpCasts() ==
+                 static_cast<const clang::Expr*>(child)->IgnoreParenImpCasts();
     if (const auto* b = dyn_cast<BinaryOperator>(up)) {
       if (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub && b->getOpcode() != BO_Mul)
         return false;

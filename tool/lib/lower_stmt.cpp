@@ -9,6 +9,15 @@ namespace {
 const char* const kReturnInLoop =
     "'return' inside a loop is outside the kernel subset (it would leave every loop and the "
     "kernel); to skip the rest of an iteration, use an if/else (or 'continue' in a for loop)";
+// A small local array indexed by a counter that is not unrolled.
+std::string small_array_index(const std::string& name) {
+  return fmt::format("index of local array '{}' must be a constant (or the counter of a small "
+                     "loop with constant bounds, which dpgen unrolls): an array of up to 64 "
+                     "elements is kept in registers; a work array that loops fill and read is a "
+                     "line buffer, of more than 64 elements or a run-time length (`double "
+                     "{}[n];`, `std::vector<double> {}(n);`)",
+                     name, name, name);
+}
 } // namespace
 
 void Statements::body(const Stmt* s) {
@@ -468,7 +477,8 @@ void Statements::declare(const Decl* d) {
     L.bufs_.declare_buffer(v, vat->getElementType(), L.exprs_.expr(vat->getSizeExpr()));
     return;
   }
-  if (L.bufs_.declare_array_pointer(v) || L.ptrs_.declare(v)) // `double (*u)[n][n]`, `double* row`
+  if (L.bufs_.declare_array_pointer(v) || L.bufs_.declare_vector(v) || // a std::vector local
+      L.ptrs_.declare(v)) // `double (*u)[n][n]`, `double* row`
     return;
   if (const auto* rd = v->getType().getNonReferenceType()->getAsCXXRecordDecl();
       rd && rd->isLambda()) {
@@ -569,10 +579,7 @@ size_t Statements::local_index(const clang::Expr* idx_expr, const VarDecl* v, si
   std::optional<long long> value =
       p && p->is_constant() ? std::optional<long long>(p->constant_term()) : int_value(idx);
   if (!value)
-    L.fail(idx_expr->getBeginLoc(),
-           fmt::format("index of local array '{}' must be a constant (or the counter of a small "
-                       "loop with constant bounds, which dpgen unrolls)",
-                       v->getNameAsString()));
+    L.fail(idx_expr->getBeginLoc(), small_array_index(v->getNameAsString()));
   long long k = *value;
   if (k < 0 || k >= static_cast<long long>(n))
     L.fail(idx_expr->getBeginLoc(), fmt::format("index {} is outside local array '{}' of {} "

@@ -1,0 +1,54 @@
+// Local std::vector work arrays: one made with its length (and a value) is a line buffer
+// (tests/styles/vector_buffers.cpp); every other way of making one is refused at the
+// declaration, and a read of an element no loop wrote says that the vector's value is no write.
+// RUN: rm -rf %t && mkdir -p %t
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: ls %t | %count 0
+#include "dpgen/annotate.hpp"
+
+#include <vector>
+
+// The wall faces keep the vector's 0.0, which the kernel reads: not a write.
+DPGEN_KERNEL void unset_walls(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::vector<double> flux(n + 1, 0.0);
+  for (int i = 1; i < n; ++i)
+    flux[i] = u[i] - u[i - 1];
+  for (int i = 0; i < n; ++i)
+    out[i] = flux[i + 1] - flux[i];
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:14: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}(the value a std::vector is made with is not a write: assign the elements the loops leave out, `flux[0] = 0.0;`)
+}
+
+// Made from a list: refused.
+DPGEN_KERNEL void from_list(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::vector<double> w = {0.25, 0.5, 0.25};
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:23: error: local std::vector 'w' is in the kernel subset as a line buffer made with its length
+  for (int i = 1; i < n - 1; ++i)
+    out[i] = w[0] * u[i - 1] + w[1] * u[i] + w[2] * u[i + 1];
+}
+
+// A copy of the input: refused.
+DPGEN_KERNEL void from_copy(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::vector<double> c(u, u + n);
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:23: error: local std::vector 'c' is in the kernel subset as a line buffer made with its length
+  for (int i = 0; i < n; ++i)
+    out[i] = c[i] * c[i];
+}
+
+// Two dimensions: refused.
+DPGEN_KERNEL void nested(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx, int ny) {
+  std::vector<std::vector<double>> t(ny, std::vector<double>(nx));
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:36: error: local array 't' of type 'std::vector<std::vector<double> >' is outside the kernel subset: a line buffer (a local array of more than 64 elements, or of a run-time length) holds float or double values, one dimension
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      out[j * nx + i] = u[j * nx + i];
+}
+
+// A small array indexed by a counter that is not unrolled: the message names line buffers.
+DPGEN_KERNEL void small_work(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  double f[32];
+  for (int i = 0; i < n; ++i)
+    f[i] = u[i] * u[i];
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:7: error: index of local array 'f' must be a constant{{.*}}a work array that loops fill and read is a line buffer, of more than 64 elements or a run-time length (`double f[n];`, `std::vector<double> f(n);`)
+  for (int i = 0; i < n; ++i)
+    out[i] = f[i];
+}

@@ -1,0 +1,55 @@
+// Local std::vector work arrays, the way C++ codes write temporaries: a vector made with its
+// length (and a value), filled by one loop and read by a later one. dpgen reads each as a line
+// buffer (tool/lib/lower_buffer.cpp): one row per iteration of the loops around its uses.
+#include "dpgen/annotate.hpp"
+
+#include <cmath>
+#include <vector>
+
+// Conservative flux form: face fluxes into a vector of n + 1 faces (upwind by the face speed),
+// the walls' faces set by hand, then the update from the flux differences.
+DPGEN_KERNEL void vector_flux_form(DPGEN_IN const double* q, DPGEN_IN const double* c,
+                                   DPGEN_OUT double* q_next, int n, double dt_dx) {
+  std::vector<double> flux(n + 1, 0.0);
+  flux[0] = 0.0;
+  for (int f = 1; f < n; ++f) {
+    const double a = 0.5 * (c[f - 1] + c[f]);
+    flux[f] = a > 0.0 ? a * q[f - 1] : a * q[f];
+  }
+  flux[n] = 0.0;
+  for (int i = 0; i < n; ++i)
+    q_next[i] = q[i] - dt_dx * (flux[i + 1] - flux[i]);
+}
+
+// A per-row temporary made inside the row loop (its length only), a nonlinear row filter.
+DPGEN_KERNEL void vector_row_filter(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx, int ny) {
+  for (int j = 0; j < ny; ++j) {
+    std::vector<double> row(nx);
+    for (int i = 0; i < nx; ++i)
+      row[i] = std::tanh(u[j * nx + i]);
+    for (int i = 1; i < nx - 1; ++i)
+      v[j * nx + i] = 0.25 * row[i - 1] + 0.5 * row[i] * row[i] + 0.25 * row[i + 1];
+  }
+}
+
+// Single precision: two vectors, gradient then a product of its neighbours.
+DPGEN_KERNEL void vector_float_grad(DPGEN_IN const float* p, DPGEN_OUT float* e, int n, float h) {
+  std::vector<float> gx(n), w(n, 1.0f);
+  for (int i = 0; i < n - 1; ++i)
+    gx[i] = (p[i + 1] - p[i]) / h;
+  for (int i = 0; i < n - 1; ++i)
+    w[i] = gx[i] * gx[i];
+  for (int i = 1; i < n - 1; ++i)
+    e[i] = w[i - 1] + gx[i] * w[i];
+}
+
+// A gather at a data-dependent index from a std::vector parameter (`a[k]` with k from the
+// data; operator[] takes size_type, which k only indexes): the adjoint's scatter form.
+DPGEN_KERNEL void vector_gather(DPGEN_IN const std::vector<double>& a,
+                                const std::vector<double>& pos, DPGEN_OUT std::vector<double>& out,
+                                int n) {
+  for (int i = 0; i < n; ++i) {
+    const int k = static_cast<int>(std::floor(pos[i]));
+    out[i] = a[k] * a[k] + a[k + 1];
+  }
+}
