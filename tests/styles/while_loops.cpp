@@ -129,3 +129,22 @@ DPGEN_KERNEL void while_two_counters(DPGEN_IN const double* u, DPGEN_OUT double*
     ++i;
   }
 }
+
+// Steps written out: the condition's counter stepped before another counter (`++i; ++j;`),
+// `k = k + 1`, and a for loop stepping by `m = m + 2`.
+DPGEN_KERNEL void while_assign_steps(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                     DPGEN_OUT double* w, DPGEN_OUT double* x, int n) {
+  int i = 0, j = 1;
+  while (i < n - 1) {
+    v[i] = u[j] - u[i] * u[i];
+    ++i;
+    ++j;
+  }
+  int k = 0;
+  while (k < n) {
+    w[k] = u[k] * u[n - 1 - k];
+    k = k + 1;
+  }
+  for (int m = 0; m + 1 < n; m = m + 2)
+    x[m] = u[m] + u[m + 1] * u[m];
+}

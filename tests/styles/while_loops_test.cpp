@@ -24,6 +24,8 @@ DPGEN_KERNEL void while_paren_steps(DPGEN_IN const double* u, DPGEN_OUT double* 
 DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
                                       int ny);
 DPGEN_KERNEL void while_two_counters(DPGEN_IN const double* u, DPGEN_OUT double* v, int n);
+DPGEN_KERNEL void while_assign_steps(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                     DPGEN_OUT double* w, DPGEN_OUT double* x, int n);
 
 TEST_CASE("styles: while_loops, heat1d") {
   for (int n : {1, 2, 3, 4, 17, 8300}) {
@@ -188,6 +190,24 @@ TEST_CASE("styles: while_loops, two counters stepped at the end") {
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       while_two_counters_tangent(in[0], dir[0], out[0], outd[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: while_loops, steps written out (`++i; ++j;`, `k = k + 1`, `m = m + 2`)") {
+  for (int n : {0, 1, 2, 3, 8, 41}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) { while_assign_steps(in[0], out[0], out[1], out[2], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      while_assign_steps_adjoint(in[0], adj[0], seed[0], seed[1], seed[2], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      while_assign_steps_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], out[2], outd[2],
+                                 n);
     };
     dpgen_test::check_adjoint(p);
   }

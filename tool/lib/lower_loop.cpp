@@ -276,9 +276,14 @@ void ForLoops::for_loop(const ForStmt* f) {
         "its min/max (`m = std::max(m, ...)`) in the loop and read it after the loop{}",
         v->getNameAsString(),
         v->getType()->isIntegerType()
-            ? "; a running index is in the subset too: stepped (`k++`, `k += s`) by the same "
-              "amount in every iteration, outside any `if`, in a loop with no `continue`, `break` "
-              "or `return`, and read inside the innermost loop that steps it"
+            ? fmt::format("; a running index is in the subset too: stepped (`k++`, `k += s`) by "
+                          "the same amount in every iteration, outside any `if`, in a loop with "
+                          "no `continue`, `break` or `return`, and read inside the innermost loop "
+                          "that steps it{}",
+                          v->getType()->isUnsignedIntegerType()
+                              ? ", and, being unsigned, only stepping up (down it may wrap below "
+                                "zero: make it signed)"
+                              : "")
             : "");
   }
   // (after the accumulators' initial stores, which are outside the loop)

@@ -24,6 +24,35 @@ std::string unsigned_compare(const std::string& var, const std::string& type, co
                      var, type, print(lowest));
 }
 
+// `i = i + s`, `i = s + i`, `i = i - s` (s a constant from 1 to 1024): +s or -s; 0 otherwise.
+int assigned_step(const BinaryOperator* a, const VarDecl* var, ASTContext& ctx) {
+  const auto is_var = [&](const clang::Expr* e) {
+    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
+    return r && r->getDecl() == var;
+  };
+  const auto* b = dyn_cast<BinaryOperator>(a->getRHS()->IgnoreParenImpCasts());
+  if (!is_var(a->getLHS()) || !b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
+    return 0;
+  const clang::Expr* k = is_var(b->getLHS())                               ? b->getRHS()
+                         : b->getOpcode() == BO_Add && is_var(b->getRHS()) ? b->getLHS()
+                                                                           : nullptr;
+  clang::Expr::EvalResult r;
+  if (!k || !k->EvaluateAsInt(r, ctx) || r.Val.getInt().getSExtValue() < 1 ||
+      r.Val.getInt().getSExtValue() > 1024)
+    return 0;
+  const int step = static_cast<int>(r.Val.getInt().getSExtValue());
+  return b->getOpcode() == BO_Add ? step : -step;
+}
+
+// A loop whose step and condition go opposite ways.
+std::string direction_mismatch(const VarDecl* var, int step) {
+  return var->getType()->isUnsignedIntegerType() && step < 0
+             ? "loop direction does not match its condition: an unsigned counter counting down "
+               "to 0 under `i < n` ends by wrapping around, which dpgen does not follow; count "
+               "down with `for (size_t i = n; i-- > 0;)`"
+             : "loop direction does not match its condition";
+}
+
 } // namespace
 
 // The operands of comma expression `e` (`++i, --j`), or `e` itself.
@@ -110,7 +139,11 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
     for (const Decl* d : ds->decls()) {
       const auto* v = dyn_cast<VarDecl>(d);
       if (!v || !v->getInit())
-        L.fail(f->getBeginLoc(), "loop counter needs an initial value", "dpgen-loop");
+        L.fail(f->getBeginLoc(),
+               fmt::format("loop counter '{}' needs an initial value (declare other variables "
+                           "before the loop)",
+                           v ? v->getNameAsString() : "?"),
+               "dpgen-loop");
       inits.push_back({v, v->getInit()});
     }
   } else if (const auto* e = dyn_cast_or_null<clang::Expr>(f->getInit())) {
@@ -285,8 +318,8 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   int step = post_decrement ? -1 : loop_step(inc, var);
   if (step == 0)
     L.fail(f->getInc() ? f->getInc()->getBeginLoc() : f->getBeginLoc(),
-           "loop increment must be ++i, i++ or i += s for a constant s (or --i, i -= s for "
-           "a loop counting down)",
+           "loop increment must be ++i, i++, i += s or i = i + s for a constant s > 0 (or --i, "
+           "i -= s for a loop counting down)",
            "dpgen-loop");
   // `i != n` stepping by one is `i < n` (counting down, `i > n`); from a start past the bound
   // the user's loop would run until the counter wraps.
@@ -317,7 +350,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   }
   const ExprP hi_before_hull = hi; // (a count down's start + 1)
   if ((step > 0) != (cond_op == BO_LT || cond_op == BO_LE))
-    L.fail(f->getInc()->getBeginLoc(), "loop direction does not match its condition", "dpgen-loop");
+    L.fail(f->getInc()->getBeginLoc(), direction_mismatch(var, step), "dpgen-loop");
   // Counting an unsigned counter down is safe when the counter stays above
   // zero: `i > b` (b >= 0), or `i >= b` with b >= 1; `i >= 0` wraps.
   // (a strided count down `i -= s` stays at or above zero where lo - s does)
@@ -614,6 +647,8 @@ int LoopHeaders::loop_step(const clang::Expr* inc, const VarDecl* var) {
       return 0;
     return b->getOpcode() == BO_AddAssign ? int(k) : b->getOpcode() == BO_SubAssign ? -int(k) : 0;
   }
+  if (const auto* a = dyn_cast<BinaryOperator>(inc); a && a->getOpcode() == BO_Assign)
+    return assigned_step(a, var, L.ctx_);
   return 0;
 }
 

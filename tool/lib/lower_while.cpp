@@ -20,8 +20,22 @@ namespace dpgen::lowering {
 
 namespace {
 
+// `i = i + s`, `i = s + i`, `i = i - s`: the assigned `i`; null for any other assignment.
+const clang::Expr* self_plus(const BinaryOperator* a) {
+  const auto* lhs = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
+  const auto* b = dyn_cast<BinaryOperator>(a->getRHS()->IgnoreParenImpCasts());
+  if (!lhs || !b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
+    return nullptr;
+  const auto same = [&](const clang::Expr* x) {
+    const auto* r = dyn_cast<DeclRefExpr>(x->IgnoreParenImpCasts());
+    return r && r->getDecl() == lhs->getDecl();
+  };
+  return same(b->getLHS()) || (b->getOpcode() == BO_Add && same(b->getRHS())) ? a->getLHS()
+                                                                              : nullptr;
+}
+
 // The local that `e` steps by a constant or a size: `++i`, `i++`, `--i`, `i--`, `i += s`,
-// `i -= s` (the for header checks the step itself); null for anything else.
+// `i -= s`, `i = i + s` (the for header checks the step itself); null for anything else.
 const VarDecl* stepped(const Stmt* s) {
   // (`(++i);`, and a macro's `((i) += 1)`)
   const Stmt* e = isa<clang::Expr>(s) ? llvm::cast<clang::Expr>(s)->IgnoreParens() : s;
@@ -31,6 +45,8 @@ const VarDecl* stepped(const Stmt* s) {
   else if (const auto* c = dyn_cast<CompoundAssignOperator>(e);
            c && (c->getOpcode() == BO_AddAssign || c->getOpcode() == BO_SubAssign))
     target = c->getLHS();
+  else if (const auto* a = dyn_cast<BinaryOperator>(e); a && a->getOpcode() == BO_Assign)
+    target = self_plus(a); // `i = i + 1`
   const auto* r = target ? dyn_cast<DeclRefExpr>(target->IgnoreParenImpCasts()) : nullptr;
   const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
   return v && v->getType()->isIntegerType() && !v->getType()->isBooleanType() ? v : nullptr;
@@ -65,11 +81,33 @@ const char* const kForm = "a while loop is in the kernel subset as the for loop 
 
 } // namespace
 
+// Which statement of the body steps the counter: the last one, or, in a run of steps that
+// ends the body (`++i; ++j;`), the one that steps a counter of the condition, where the steps
+// after it neither read that counter nor are read by its step (so it may run last). -1: none.
+static int step_statement(const WhileStmt* w) {
+  const auto* body = dyn_cast_or_null<CompoundStmt>(w->getBody());
+  if (!body || body->body_empty())
+    return -1;
+  const std::vector<const Stmt*> stmts(body->body_begin(), body->body_end());
+  const int last = static_cast<int>(stmts.size()) - 1;
+  for (int k = last; k >= 0 && stepped(stmts[k]); --k) {
+    const VarDecl* v = stepped(stmts[k]);
+    if (!LoopHeaders::mentions(w->getCond(), v))
+      continue;
+    bool commutes = true;
+    for (int later = k + 1; later <= last; ++later)
+      commutes = commutes && !LoopHeaders::mentions(stmts[later], v) &&
+                 !LoopHeaders::mentions(stmts[k], stepped(stmts[later]));
+    return commutes ? k : last;
+  }
+  return stepped(stmts[last]) ? last : -1;
+}
+
 const VarDecl* while_counter(const WhileStmt* w) {
   if (const VarDecl* v = counted_down(w->getCond()))
     return v;
-  const auto* body = dyn_cast_or_null<CompoundStmt>(w->getBody());
-  return body && !body->body_empty() ? stepped(body->body_back()) : nullptr;
+  const int k = step_statement(w);
+  return k < 0 ? nullptr : stepped(*(llvm::cast<CompoundStmt>(w->getBody())->body_begin() + k));
 }
 
 const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail& fail) {
@@ -104,13 +142,14 @@ const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail
   Stmt* body = const_cast<Stmt*>(w->getBody());
   Stmt* step = nullptr;
   if (counted_down(w->getCond()) != v) {
-    // (a compound statement: while_counter found its last statement)
+    // (a compound statement: while_counter found the step in it)
     const auto* c = llvm::cast<CompoundStmt>(w->getBody());
     std::vector<Stmt*> stmts;
     for (const Stmt* s : c->body())
       stmts.push_back(const_cast<Stmt*>(s));
-    step = stmts.back();
-    stmts.pop_back();
+    const int k = step_statement(w);
+    step = stmts[static_cast<std::size_t>(k)];
+    stmts.erase(stmts.begin() + k);
     for (Stmt* s : stmts)
       if (const ContinueStmt* k = own_continue(s))
         refuse(k->getBeginLoc(),
