@@ -52,3 +52,14 @@ DPGEN_KERNEL void small_work(DPGEN_IN const double* u, DPGEN_OUT double* out, in
   for (int i = 0; i < n; ++i)
     out[i] = f[i];
 }
+
+// A pointer into the buffer: refused where it is taken.
+DPGEN_KERNEL void pointer_into(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::vector<double> w(n);
+  double* wp = w.data();
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:16: error: line buffer 'w' is used here other than by its elements ('w[i]'): a pointer into it, or a call that takes it, is outside the kernel subset
+  for (int i = 0; i < n; ++i)
+    wp[i] = u[i];
+  for (int i = 0; i < n; ++i)
+    out[i] = w[i];
+}

@@ -53,3 +53,12 @@ DPGEN_KERNEL void vector_gather(DPGEN_IN const std::vector<double>& a,
     out[i] = a[k] * a[k] + a[k + 1];
   }
 }
+
+// The faces counted by the vector's size(), the walls chosen by a ternary.
+DPGEN_KERNEL void vector_size_faces(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+  std::vector<double> flux(n + 1);
+  for (std::size_t f = 0; f < flux.size(); ++f)
+    flux[f] = f == 0 || f == std::size_t(n) ? 0.0 : u[f] * u[f] - u[f - 1];
+  for (int i = 0; i < n; ++i)
+    out[i] = flux[i + 1] - flux[i];
+}

@@ -13,6 +13,7 @@ DPGEN_KERNEL void vector_flux_form(DPGEN_IN const double* q, DPGEN_IN const doub
                                    DPGEN_OUT double* q_next, int n, double dt_dx);
 DPGEN_KERNEL void vector_row_filter(DPGEN_IN const double* u, DPGEN_OUT double* v, int nx, int ny);
 DPGEN_KERNEL void vector_float_grad(DPGEN_IN const float* p, DPGEN_OUT float* e, int n, float h);
+DPGEN_KERNEL void vector_size_faces(DPGEN_IN const double* u, DPGEN_OUT double* out, int n);
 DPGEN_KERNEL void vector_gather(DPGEN_IN const std::vector<double>& a,
                                 const std::vector<double>& pos, DPGEN_OUT std::vector<double>& out,
                                 int n);
@@ -90,6 +91,23 @@ TEST_CASE("styles: vector_buffers, a data-dependent gather from a std::vector pa
       std::vector<double> a_adj = vec(adj[0], m); // (adds to what the adjoint holds)
       vector_gather_adjoint(vec(in[0], m), a_adj, pos, vec(seed[0], size_t(n)), n);
       std::copy(a_adj.begin(), a_adj.end(), adj[0]);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: vector_buffers, faces counted by size()") {
+  for (int n : {0, 1, 2, 9, 100}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { vector_size_faces(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      vector_size_faces_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      vector_size_faces_tangent(in[0], dir[0], out[0], outd[0], n);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -158,10 +158,11 @@ void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length, 
       auto pp = L.ctx_.getParents(*s);
       s = pp.empty() ? nullptr : pp[0].get<Stmt>();
     }
-    if (s != scope)
-      L.fail(u->getBeginLoc(), fmt::format("internal error: a use of line buffer '{}' outside "
-                                         "its scope",
-                                         name));
+    if (s != scope) // (a use in a declaration: `double* p = flux.data();`)
+      L.fail(u->getBeginLoc(), fmt::format("line buffer '{}' is used here other than by its "
+                                           "elements ('{}[i]'): a pointer into it, or a call "
+                                           "that takes it, is outside the kernel subset",
+                                           name, name));
     std::reverse(chain.begin(), chain.end());
     chains.push_back(chain);
   }

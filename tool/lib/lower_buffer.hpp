@@ -14,6 +14,7 @@
 #include <clang/AST/Type.h>
 #include <clang/Basic/SourceLocation.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -50,6 +51,15 @@ public:
   // `std::vector<double> flux(n + 1);` (or `(n + 1, 0.0)`), a local: a line buffer of that
   // length. False if `v` is no such vector.
   bool declare_vector(const clang::VarDecl* v);
+  // `v` is a line buffer (the kernel assigns its elements, never its length).
+  bool declares(const clang::VarDecl* v) const {
+    return std::any_of(buffers_.begin(), buffers_.end(),
+                       [&](auto& b) { return b.second.decl == v; });
+  }
+  // The length of `p`'s line buffer (a row's elements: `flux.size()`); null for another array.
+  ExprP length_of(const Param* p) const {
+    return p && buffer_of(p->name) ? buffer_of(p->name)->length : nullptr;
+  }
   // The flat element of index `local` of buffer `p` in this iteration.
   ExprP buffer_index(const Param* p, const ExprP& local, const clang::Expr* at);
   // A store at / read of buffer `p`'s flat element `flat`: in bounds, written

@@ -34,13 +34,15 @@ const clang::Expr* wrapped(const clang::Expr* e) {
   return nullptr;
 }
 
-// An integer explicitly widened to 64 bits, `(long)(e)`, kept as spelled.
-ExprP widened(const ExprP& e, std::string spelling) {
+// An integer explicitly widened to 64 bits, `(long)(e)`, kept as spelled; to an unsigned
+// type (`std::size_t(n)`, whose value check_unsigned_result kept >= 0) as std::ptrdiff_t, the
+// generated code's integers, which it then compares with without a sign warning.
+ExprP widened(const ExprP& e, std::string spelling, bool to_unsigned) {
   auto w = std::make_shared<dpgen::Expr>();
   w->op = Op::Cast;
   w->type = Type::Int;
   w->ops = {e};
-  w->cast_type = std::move(spelling);
+  w->cast_type = to_unsigned ? "std::ptrdiff_t" : std::move(spelling);
   return w;
 }
 
@@ -82,6 +84,15 @@ std::string comparator_message(const FunctionDecl* f) {
                      "on what the comparator compares",
                      f->getQualifiedNameAsString(), f->getNameAsString());
 }
+// A member call outside the subset: `u[j].size()` of a row (row_size), or any other.
+std::string member_call_message(bool row_size) {
+  return row_size ? "the length of a row (u[j].size()) is outside the kernel subset: dpgen "
+                    "assumes each row holds the columns the kernel touches; pass the number of "
+                    "columns as a parameter"
+                  : "member call is outside the kernel subset (of a std::vector parameter or "
+                    "local work array, the kernel may call size())";
+}
+
 } // namespace
 
 ExprP Expressions::cond(const clang::Expr* e) {
@@ -425,8 +436,10 @@ ExprP Expressions::expr(const clang::Expr* e) {
     auto it = obj ? L.env_.find(dyn_cast<VarDecl>(obj->getDecl())) : L.env_.end();
     const CXXMethodDecl* md = m->getMethodDecl();
     if (it != L.env_.end() && it->second.kind == Binding::ArrayParam && !it->second.offset &&
-        !it->second.param->container.empty() && md && md->getName() == "size" &&
-        m->getNumArgs() == 0) {
+        (!it->second.param->container.empty() || L.bufs_.length_of(it->second.param)) && md &&
+        md->getName() == "size" && m->getNumArgs() == 0) {
+      if (ExprP length = L.bufs_.length_of(it->second.param)) // a std::vector line buffer's
+        return length;
       if (it->second.param->kind == ParamKind::Out) // (its seed's size would stand in for it)
         L.fail(m->getBeginLoc(), output_size_message(it->second.param->name));
       return L.scalar_param(it->second.param->name + "_size", Type::Int);
@@ -437,13 +450,10 @@ ExprP Expressions::expr(const clang::Expr* e) {
       return L.inl_.inline_call(m, md);
     const auto* row =
         dyn_cast<CXXOperatorCallExpr>(m->getImplicitObjectArgument()->IgnoreParenImpCasts());
-    if (md && md->getName() == "size" &&
-        ((row && row->getOperator() == OO_Subscript) || (it != L.env_.end() && it->second.offset)))
-      L.fail(e->getExprLoc(), "the length of a row (u[j].size()) is outside the kernel subset: "
-                              "dpgen assumes each row holds the columns the kernel touches; "
-                              "pass the number of columns as a parameter");
-    L.fail(e->getExprLoc(), "member call is outside the kernel subset (of a std::vector "
-                            "parameter, the kernel may call size())");
+    const bool row_size =
+        md && md->getName() == "size" &&
+        ((row && row->getOperator() == OO_Subscript) || (it != L.env_.end() && it->second.offset));
+    L.fail(e->getExprLoc(), member_call_message(row_size));
   }
   if (const auto* c = dyn_cast<CallExpr>(e))
     return call_expr(c);
@@ -480,7 +490,7 @@ ExprP Expressions::cast_expr(const CastExpr* c, const clang::Expr* sub) {
     if (!explicit_cast || L.ctx_.getTypeSize(c->getType()) < 64 ||
         L.ctx_.getTypeSize(sub->getType()) >= 64 || inner->type != Type::Int)
       return inner;
-    return widened(inner, L.spelled(c->getType()));
+    return widened(inner, L.spelled(c->getType()), to->isUnsignedIntegerType());
   }
   case CK_FloatingToIntegral:
     return spelled_cast(cast(expr(sub), L.type_of(c)), L.ctx_.getTypeSize(c->getType()),

@@ -243,7 +243,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   std::set<const VarDecl*> assigned;
   L.for_loops_.assigned_vars(f->getBody(), assigned);
   for (const VarDecl* w : assigned)
-    if (w != var && mentions(f->getCond(), w))
+    if (w != var && mentions(f->getCond(), w) && !L.bufs_.declares(w)) // (`flux.size()`)
       L.fail(f->getCond()->getBeginLoc(),
              fmt::format("the condition of loop '{}' reads '{}', which the loop's body assigns: "
                          "dpgen needs a loop's bounds fixed before it runs; give the new value "

@@ -147,9 +147,9 @@ const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail
     std::vector<Stmt*> stmts;
     for (const Stmt* s : c->body())
       stmts.push_back(const_cast<Stmt*>(s));
-    const int k = step_statement(w);
-    step = stmts[static_cast<std::size_t>(k)];
-    stmts.erase(stmts.begin() + k);
+    const int step_at = step_statement(w);
+    step = stmts[static_cast<std::size_t>(step_at)];
+    stmts.erase(stmts.begin() + step_at);
     for (Stmt* s : stmts)
       if (const ContinueStmt* k = own_continue(s))
         refuse(k->getBeginLoc(),
