@@ -103,7 +103,7 @@ DPGEN_KERNEL void while_paren_steps(DPGEN_IN const double* u, DPGEN_OUT double* 
 }
 
 // A flat index carried through a nest of `while` loops (C codes' `idx++` in the inner loop),
-// skipping the ghost cells of each row (`k += 2` after the inner loop).
+// skipping the ghost cells of each row (`k = k + 2` after the inner loop).
 DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
                                       int ny) {
   int k = nx + 1;
@@ -115,7 +115,7 @@ DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double
       ++k;
       ++i;
     }
-    k += 2;
+    k = k + 2;
     ++j;
   }
 }

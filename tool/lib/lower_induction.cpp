@@ -12,7 +12,7 @@ namespace dpgen::lowering {
 
 namespace {
 
-// `s` steps `v` by itself: `v++`, `++v`, `v--`, `--v`, `v += e`, `v -= e`
+// `s` steps `v` by itself: `v++`, `++v`, `v--`, `--v`, `v += e`, `v -= e`, `v = v + e`
 // with `e` free of `v`. `up`: the step adds (++ or +=).
 bool is_step(const Stmt* s, const VarDecl* v, bool& up) {
   if (const auto* e = dyn_cast<clang::Expr>(s)) // (`(k++);`, a macro's `((k) += 2)`)
@@ -30,6 +30,13 @@ bool is_step(const Stmt* s, const VarDecl* v, bool& up) {
     up = c->getOpcode() == BO_AddAssign;
     return names_v(c->getLHS()) && !LoopHeaders::mentions(c->getRHS(), v);
   }
+  const VarDecl* assigned = nullptr; // `v = v + e`, as C codes spell `v += e`
+  bool adds = true;
+  if (const auto* a = dyn_cast<BinaryOperator>(s))
+    if (const clang::Expr* e = self_step(a, assigned, adds); e && assigned == v) {
+      up = adds;
+      return !LoopHeaders::mentions(e, v);
+    }
   return false;
 }
 

@@ -2,6 +2,7 @@
 // triangular and strided bounds, and the index algebra over the enclosing
 // loops (lower_loop.hpp).
 #include "lower_impl.hpp"
+#include "lower_while.hpp"
 #include "print.hpp"
 
 namespace dpgen::lowering {
@@ -26,22 +27,15 @@ std::string unsigned_compare(const std::string& var, const std::string& type, co
 
 // `i = i + s`, `i = s + i`, `i = i - s` (s a constant from 1 to 1024): +s or -s; 0 otherwise.
 int assigned_step(const BinaryOperator* a, const VarDecl* var, ASTContext& ctx) {
-  const auto is_var = [&](const clang::Expr* e) {
-    const auto* r = dyn_cast<DeclRefExpr>(e->IgnoreParenImpCasts());
-    return r && r->getDecl() == var;
-  };
-  const auto* b = dyn_cast<BinaryOperator>(a->getRHS()->IgnoreParenImpCasts());
-  if (!is_var(a->getLHS()) || !b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
-    return 0;
-  const clang::Expr* k = is_var(b->getLHS())                               ? b->getRHS()
-                         : b->getOpcode() == BO_Add && is_var(b->getRHS()) ? b->getLHS()
-                                                                           : nullptr;
+  const VarDecl* v = nullptr;
+  bool adds = true;
+  const clang::Expr* k = self_step(a, v, adds);
   clang::Expr::EvalResult r;
-  if (!k || !k->EvaluateAsInt(r, ctx) || r.Val.getInt().getSExtValue() < 1 ||
+  if (!k || v != var || !k->EvaluateAsInt(r, ctx) || r.Val.getInt().getSExtValue() < 1 ||
       r.Val.getInt().getSExtValue() > 1024)
     return 0;
   const int step = static_cast<int>(r.Val.getInt().getSExtValue());
-  return b->getOpcode() == BO_Add ? step : -step;
+  return adds ? step : -step;
 }
 
 // A loop whose step and condition go opposite ways.

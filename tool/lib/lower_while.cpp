@@ -20,20 +20,6 @@ namespace dpgen::lowering {
 
 namespace {
 
-// `i = i + s`, `i = s + i`, `i = i - s`: the assigned `i`; null for any other assignment.
-const clang::Expr* self_plus(const BinaryOperator* a) {
-  const auto* lhs = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
-  const auto* b = dyn_cast<BinaryOperator>(a->getRHS()->IgnoreParenImpCasts());
-  if (!lhs || !b || (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
-    return nullptr;
-  const auto same = [&](const clang::Expr* x) {
-    const auto* r = dyn_cast<DeclRefExpr>(x->IgnoreParenImpCasts());
-    return r && r->getDecl() == lhs->getDecl();
-  };
-  return same(b->getLHS()) || (b->getOpcode() == BO_Add && same(b->getRHS())) ? a->getLHS()
-                                                                              : nullptr;
-}
-
 // The local that `e` steps by a constant or a size: `++i`, `i++`, `--i`, `i--`, `i += s`,
 // `i -= s`, `i = i + s` (the for header checks the step itself); null for anything else.
 const VarDecl* stepped(const Stmt* s) {
@@ -45,8 +31,10 @@ const VarDecl* stepped(const Stmt* s) {
   else if (const auto* c = dyn_cast<CompoundAssignOperator>(e);
            c && (c->getOpcode() == BO_AddAssign || c->getOpcode() == BO_SubAssign))
     target = c->getLHS();
-  else if (const auto* a = dyn_cast<BinaryOperator>(e); a && a->getOpcode() == BO_Assign)
-    target = self_plus(a); // `i = i + 1`
+  const VarDecl* assigned = nullptr; // `i = i + 1`
+  bool adds = true;
+  if (const auto* a = dyn_cast<BinaryOperator>(e); a && self_step(a, assigned, adds))
+    target = a->getLHS();
   const auto* r = target ? dyn_cast<DeclRefExpr>(target->IgnoreParenImpCasts()) : nullptr;
   const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
   return v && v->getType()->isIntegerType() && !v->getType()->isBooleanType() ? v : nullptr;
@@ -80,6 +68,24 @@ const char* const kForm = "a while loop is in the kernel subset as the for loop 
                           "(`while (i-- > 0) { ... }`)";
 
 } // namespace
+
+const clang::Expr* self_step(const BinaryOperator* a, const VarDecl*& var, bool& adds) {
+  const auto* lhs = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
+  const auto* b = dyn_cast<BinaryOperator>(a->getRHS()->IgnoreParenImpCasts());
+  if (a->getOpcode() != BO_Assign || !lhs || !isa<VarDecl>(lhs->getDecl()) || !b ||
+      (b->getOpcode() != BO_Add && b->getOpcode() != BO_Sub))
+    return nullptr;
+  const auto same = [&](const clang::Expr* x) {
+    const auto* r = dyn_cast<DeclRefExpr>(x->IgnoreParenImpCasts());
+    return r && r->getDecl() == lhs->getDecl();
+  };
+  const clang::Expr* amount = same(b->getLHS())                               ? b->getRHS()
+                              : b->getOpcode() == BO_Add && same(b->getRHS()) ? b->getLHS()
+                                                                              : nullptr;
+  var = llvm::cast<VarDecl>(lhs->getDecl());
+  adds = b->getOpcode() == BO_Add;
+  return amount;
+}
 
 // Which statement of the body steps the counter: the last one, or, in a run of steps that
 // ends the body (`++i; ++j;`), the one that steps a counter of the condition, where the steps

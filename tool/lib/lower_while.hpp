@@ -9,12 +9,19 @@
 
 namespace clang {
 class ASTContext;
+class BinaryOperator;
+class Expr;
 class ForStmt;
 class VarDecl;
 class WhileStmt;
 } // namespace clang
 
 namespace dpgen::lowering {
+
+/// `i = i + s`, `i = s + i`, `i = i - s`: the amount `s`, with `i` in `var` and whether it
+/// adds in `adds`; null for any other expression. (A step as C codes spell it out.)
+const clang::Expr* self_step(const clang::BinaryOperator* a, const clang::VarDecl*& var,
+                             bool& adds);
 
 /// A `while` loop's counter where the loop counts: stepped by the body's last statement
 /// (`while (i < n) { ...; ++i; }`) or counted down by the condition (`while (i-- > lo)`);
