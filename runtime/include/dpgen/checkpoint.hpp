@@ -119,6 +119,28 @@ inline long long revolve_split(long long l, long long s) {
   return lo;
 }
 
+// Asks the caches for a small stored state that the reverse sweep reads next: the forward sweep
+// wrote it long before (the tape of 10^4 steps of 256 cells is 20 MB), and the hardware
+// prefetcher needs several misses per 4 KiB page before it runs ahead, which for a state of a
+// few pages is most of its lines. Measured on the 2-core AMD EPYC VM (upwind, full tape, adjoint
+// step per cell): 2.83 -> 2.05 ns at 256 cells, 2.63 -> 2.40 at 1024, 2.46 -> 2.38 at 4096. From
+// 8192 cells it costs up to 10% (the adjoint then runs on both cores, and the prefetcher has
+// pages to learn from): states above 32 KiB are left alone.
+inline void prefetch_small_state(const Eigen::VectorXd& v) {
+#if defined(__GNUC__)
+  constexpr std::size_t kMaxBytes = 32768;
+  constexpr std::size_t kLine = 64;
+  const std::size_t bytes = static_cast<std::size_t>(v.size()) * sizeof(double);
+  if (bytes > kMaxBytes)
+    return;
+  const char* p = reinterpret_cast<const char*>(v.data());
+  for (std::size_t offset = 0; offset < bytes; offset += kLine)
+    __builtin_prefetch(p + offset);
+#else
+  (void)v;
+#endif
+}
+
 } // namespace detail
 
 /// Runs s_{t+1} = step(t, s_t) for t = 0 .. steps-1 from `initial_state` and returns the loss
@@ -237,8 +259,11 @@ void unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& s
       VectorXd& out = push();
       forward(t - 1, work.states[used - 2], out);
     }
-    for (int t = steps - 1; t >= 0; --t)
+    for (int t = steps - 1; t >= 0; --t) {
+      if (t > 0)
+        detail::prefetch_small_state(work.states[t - 1]); // the next leaf's, while this one runs
       leaf(t, work.states[t]);
+    }
     used = 0;
   } else {
     // Revolve, as an explicit stack of frames so that the depth of the schedule never touches
@@ -272,6 +297,7 @@ void unrolled_gradient(const Eigen::VectorXd& initial_state, int steps, Step&& s
           forward(t, work.states[used - 2], out);
         }
         for (int t = t0 + l - 1; t > t0; --t) {
+          detail::prefetch_small_state(work.states[used - 2]); // the next leaf's
           leaf(t, top());
           --used;
         }
