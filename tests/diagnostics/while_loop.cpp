@@ -2,9 +2,11 @@
 // down by the condition) is read as its for loop (tests/styles/while_loops.cpp); every other
 // one is refused at the loop, with the for loop's rules where it is read as one.
 // RUN: rm -rf %t && mkdir -p %t
-// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
+// RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s --implicit-check-not="must be a local variable"
 // RUN: ls %t | %count 0
 #include "dpgen/annotate.hpp"
+
+#include <cstddef>
 
 // The trip count depends on the data: not a bound.
 DPGEN_KERNEL void data_bound(DPGEN_IN const double* a, DPGEN_OUT double* out, int n) {
@@ -109,4 +111,47 @@ DPGEN_KERNEL void early_return(DPGEN_IN const double* a, DPGEN_OUT double* out, 
     out[i] = a[i];
     ++i;
   }
+}
+
+// An unsigned count down whose test never fails.
+DPGEN_KERNEL void unsigned_ge_zero(DPGEN_IN const double* u, DPGEN_OUT double* v, std::size_t n) {
+  std::size_t k = n;
+  while (k-- >= 0)
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:14: error: 'k-- >= 0' is always true in the unsigned type '{{[a-z ]+}}': the loop never ends; count down with 'k-- > 0', which runs the body down to k = 0
+    v[k] = u[k];
+}
+
+// An unsigned counter stepped down before its test: at 0 it wraps.
+DPGEN_KERNEL void unsigned_pre_decrement(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                         std::size_t n) {
+  std::size_t k = n;
+  while (--k > 0)
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:10: error: the unsigned counter 'k' is stepped down before it is tested ('--k'): at 0 it wraps around instead of ending the loop; test it before the step ('k-- > lo' runs the body down to k = lo), or make it signed
+    v[k] = u[k];
+}
+
+// A counter whose declaration is refused: its loop says nothing more (no "must be a local
+// variable": the implicit check of the RUN line).
+DPGEN_KERNEL void refused_counter(DPGEN_IN const double* u, DPGEN_OUT double* v, int n) {
+  unsigned i = n - 2;
+  // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:16: error: 'n - 2', converted to unsigned 'unsigned int', may go below zero here
+  while (i-- > 0)
+    v[i] = u[i];
+}
+
+// A signed counter stepped before a test made in an unsigned type: at -1 it compares as a
+// huge number and the loop goes on.
+DPGEN_KERNEL void pre_decrement_unsigned_test(DPGEN_IN const double* u, DPGEN_OUT double* v,
+                                              int n) {
+  int i = n;
+  while (--i >= 0u)
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:14: error: the condition of loop 'i' compares in the unsigned type 'unsigned int', where a value below zero is a huge number{{.*}}(the lowest is '-1')
+    v[i] = u[i];
+}
+
+// The same conditions in a for header: an unsigned counter stepped before its test.
+DPGEN_KERNEL void for_pre_decrement(DPGEN_IN const double* u, DPGEN_OUT double* v, std::size_t n) {
+  for (std::size_t k = n; --k > 0;)
+    // CHECK-DAG: while_loop.cpp:[[@LINE-1]]:27: error: the unsigned counter 'k' is stepped down before it is tested ('--k')
+    v[k] = u[k];
 }

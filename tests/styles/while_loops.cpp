@@ -148,3 +148,29 @@ DPGEN_KERNEL void while_assign_steps(DPGEN_IN const double* u, DPGEN_OUT double*
   for (int m = 0; m + 1 < n; m = m + 2)
     x[m] = u[m] + u[m + 1] * u[m];
 }
+
+// Counted down by the condition in the other ways C codes write it: `i--` as a truth value,
+// `k-- >= 1` (unsigned), `--m >= 0` (the step before the test), `0 < j--`, `p-- != 0`, and a for
+// loop whose condition is `q--`.
+DPGEN_KERNEL void while_countdown_forms(DPGEN_IN const double* u, DPGEN_OUT double* a,
+                                        DPGEN_OUT double* b, DPGEN_OUT double* c,
+                                        DPGEN_OUT double* d, DPGEN_OUT double* e,
+                                        DPGEN_OUT double* f, int n, std::size_t nu) {
+  int i = n;
+  while (i--)
+    a[i] = u[i] * u[i];
+  std::size_t k = nu;
+  while (k-- >= 1)
+    b[k] = 3.0 * u[k] * u[k] * u[k];
+  int m = n - 1;
+  while (--m >= 0)
+    c[m] = u[m] * u[m + 1];
+  int j = n;
+  while (0 < j--)
+    d[j] = 1.0 / (1.0 + u[j] * u[j]);
+  int p = n;
+  while (p-- != 0)
+    e[p] = 0.5 * u[p] * u[p];
+  for (int q = n; q--;)
+    f[q] = u[q] - 2.0 * u[q] * u[q] * u[q];
+}

@@ -1,6 +1,6 @@
 // while_loops (tests/styles/): `while` loops that count, read as their for loops: stepped at
 // the end of the body (`i++`, `++i`, `i += 2`, `--k`) or counted down by the condition
-// (`i-- > 1`, unsigned), nested, with a sum read after its loop, and with line buffers whose
+// (`i-- > 1`, unsigned; `i--`, `k-- >= 1`, `--m >= 0`, `0 < j--`, `p-- != 0`), nested, with a sum read after its loop, and with line buffers whose
 // rows follow the `while` loops around their uses.
 #include "support/adjoint_check.hpp"
 
@@ -26,6 +26,10 @@ DPGEN_KERNEL void while_running_index(DPGEN_IN const double* u, DPGEN_OUT double
 DPGEN_KERNEL void while_two_counters(DPGEN_IN const double* u, DPGEN_OUT double* v, int n);
 DPGEN_KERNEL void while_assign_steps(DPGEN_IN const double* u, DPGEN_OUT double* v,
                                      DPGEN_OUT double* w, DPGEN_OUT double* x, int n);
+DPGEN_KERNEL void while_countdown_forms(DPGEN_IN const double* u, DPGEN_OUT double* a,
+                                        DPGEN_OUT double* b, DPGEN_OUT double* c,
+                                        DPGEN_OUT double* d, DPGEN_OUT double* e,
+                                        DPGEN_OUT double* f, int n, std::size_t nu);
 
 TEST_CASE("styles: while_loops, heat1d") {
   for (int n : {1, 2, 3, 4, 17, 8300}) {
@@ -208,6 +212,28 @@ TEST_CASE("styles: while_loops, steps written out (`++i; ++j;`, `k = k + 1`, `m 
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       while_assign_steps_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], out[2], outd[2],
                                  n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: while_loops, counted down by `i--`, `k-- >= 1`, `--m >= 0`, `0 < j--`, `p-- != 0`") {
+  for (int n : {0, 1, 2, 3, 8, 41}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n)};
+    p.out_sizes = {size_t(n), size_t(n), size_t(n), size_t(n), size_t(n), size_t(n)};
+    p.forward = [&](auto in, auto out) {
+      while_countdown_forms(in[0], out[0], out[1], out[2], out[3], out[4], out[5], n, n);
+    };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      while_countdown_forms_adjoint(in[0], adj[0], seed[0], seed[1], seed[2], seed[3], seed[4],
+                                    seed[5], n, n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      while_countdown_forms_tangent(in[0], dir[0], out[0], outd[0], out[1], outd[1], out[2],
+                                    outd[2], out[3], outd[3], out[4], outd[4], out[5], outd[5],
+                                    n, n);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -87,8 +87,6 @@ public:
   // and differences of those. Null otherwise.
   std::optional<ExprP> extreme(const ExprP& e, bool upper) const;
 
-  // The operands of comma expression `e` (`++i, --j`), or `e` itself.
-  static std::vector<const clang::Expr*> comma_parts(const clang::Expr* e);
   // Whether `s` names variable `v`.
   static bool mentions(const clang::Stmt* s, const clang::VarDecl* v);
 

@@ -38,6 +38,39 @@ int assigned_step(const BinaryOperator* a, const VarDecl* var, ASTContext& ctx) 
   return adds ? step : -step;
 }
 
+// b + k, for the lowest value a count down's body sees (count_down's offset).
+ExprP offset_by(ExprP b, int k) {
+  return k == 0 ? b : binary(k > 0 ? Op::Add : Op::Sub, std::move(b), int_const(k > 0 ? k : -k));
+}
+
+// `k-- >= 0` on an unsigned counter (always true: the user's loop never ends): the message,
+// or empty.
+std::string never_ending(const CountDown& down, ASTContext& ctx, const std::string& type,
+                         const std::string& var) {
+  clang::Expr::EvalResult r;
+  if (down.offset != -1 || !down.bound || !down.bound->EvaluateAsInt(r, ctx) ||
+      !r.Val.getInt().isZero())
+    return "";
+  return fmt::format("'{}-- >= 0' is always true in the unsigned type '{}': the loop never ends; "
+                     "count down with '{}-- > 0', which runs the body down to {} = 0",
+                     var, type, var, var);
+}
+
+// Where a loop's condition compares, in which type, and where its bound is (`i--` alone: the
+// condition's place and the counter's type).
+struct Compared {
+  SourceLocation at, bound_at;
+  QualType type;
+};
+Compared compared(const BinaryOperator* c, const ForStmt* f, const clang::Expr* cond,
+                  const VarDecl* var, const clang::Expr* counted_bound) {
+  const SourceLocation cond_loc = cond ? cond->getBeginLoc() : f->getBeginLoc();
+  if (!c)
+    return {cond_loc, cond_loc, var->getType()};
+  return {c->getOperatorLoc(), (counted_bound ? counted_bound : c->getRHS())->getBeginLoc(),
+          c->getLHS()->getType()};
+}
+
 // A loop whose step and condition go opposite ways.
 std::string direction_mismatch(const VarDecl* var, int step) {
   return var->getType()->isUnsignedIntegerType() && step < 0
@@ -47,10 +80,8 @@ std::string direction_mismatch(const VarDecl* var, int step) {
              : "loop direction does not match its condition";
 }
 
-} // namespace
-
 // The operands of comma expression `e` (`++i, --j`), or `e` itself.
-std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
+std::vector<const clang::Expr*> comma_parts(const clang::Expr* e) {
   e = e->IgnoreParens();
   if (const auto* b = dyn_cast<BinaryOperator>(e); b && b->getOpcode() == BO_Comma) {
     auto out = comma_parts(b->getLHS());
@@ -60,6 +91,8 @@ std::vector<const clang::Expr*> LoopHeaders::comma_parts(const clang::Expr* e) {
   }
   return {e};
 }
+
+} // namespace
 
 // The integer local with a value that increment part `e` steps (`++p`, `p
 // += 2`), if that is what it is.
@@ -151,6 +184,8 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       const auto* r = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
       const auto* v = r ? dyn_cast<VarDecl>(r->getDecl()) : nullptr;
       auto it = v ? L.env_.find(v) : L.env_.end();
+      if (v && L.poisoned_.count(v))
+        throw Rejected{}; // its declaration's error is reported already
       if (!v || it == L.env_.end() || it->second.kind != Binding::Value)
         L.fail(a->getLHS()->getBeginLoc(),
                "the loop counter must be a local variable of the "
@@ -214,18 +249,26 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
   const auto* c = dyn_cast_or_null<BinaryOperator>(cond_expr);
   BinaryOperatorKind cond_op = c ? c->getOpcode() : BO_Comma;
   // `for (unsigned i = n; i-- > lo;)`, the way to count an unsigned counter
-  // down: the body sees i = n - 1, ..., lo.
-  bool post_decrement = false;
-  if (c && cond_op == BO_GT && (!f->getInc() || inits.size() > 1))
-    if (const auto* u = dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts());
-        u && u->getOpcode() == UO_PostDec)
-      if (const auto* r = dyn_cast<DeclRefExpr>(u->getSubExpr()->IgnoreParenImpCasts());
-          r && r->getDecl() == var)
-        post_decrement = true;
-  ExprP bound = post_decrement                                   ? L.exprs_.expr(c->getRHS())
+  // down: the body sees i = n - 1, ..., lo (also `i-- >= lo`, `i--`, `--i >= lo`:
+  // count_down, whose lowest value the body sees is the bound).
+  const CountDown down = count_down(cond_expr);
+  const bool post_decrement = down.var == var && (!f->getInc() || inits.size() > 1);
+  if (!post_decrement && unsigned_pre_decrement(cond_expr) == var)
+    L.fail(cond_expr->getBeginLoc(), pre_decrement_message(var), "dpgen-loop");
+  if (post_decrement)
+    c = down.test, cond_op = BO_GT;
+  ExprP bound = post_decrement
+                    ? offset_by(down.bound ? L.exprs_.expr(down.bound) : int_const(0), down.offset)
                 : c && (c->isRelationalOp() || cond_op == BO_NE) ? loop_bound(c, var, cond_op)
                                                                  : nullptr;
+  const Compared cmp = compared(c, f, cond_expr, var, post_decrement ? down.bound : nullptr);
   L.in_loop_bounds_ = false;
+  if (const std::string m =
+          post_decrement && cmp.type->isUnsignedIntegerType()
+              ? never_ending(down, L.ctx_, L.spelled(cmp.type), var->getNameAsString())
+              : "";
+      !m.empty())
+    L.fail(cmp.at, m, "dpgen-loop");
   if (!bound)
     L.fail(f->getCond() ? f->getCond()->getBeginLoc() : f->getBeginLoc(),
            fmt::format("loop condition must compare the counter '{}' with a bound: "
@@ -338,8 +381,7 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
     lo = bound, hi = binary(Op::Add, init_value, one);
     break;
   default:
-    L.fail(c->getOperatorLoc(),
-           "loop condition must be <, <=, > or >= ('!=' where the counter steps by one)",
+    L.fail(cmp.at, "loop condition must be <, <=, > or >= ('!=' where the counter steps by one)",
            "dpgen-loop");
   }
   const ExprP hi_before_hull = hi; // (a count down's start + 1)
@@ -364,12 +406,13 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
                        "count up, use a signed counter, or write 'for ({} = n; {}-- > 0;)'",
                        var->getNameAsString(), var->getNameAsString(), var->getNameAsString()),
            "dpgen-loop");
-  if (const ExprP lowest = step > 0           ? init_value
-                           : cond_op == BO_GE ? binary(Op::Sub, bound, one)
-                                              : bound;
-      c->getLHS()->getType()->isUnsignedIntegerType() && !L.provably_nonneg(lowest))
-    L.fail(c->getOperatorLoc(),
-           unsigned_compare(var->getNameAsString(), L.spelled(c->getLHS()->getType()), lowest),
+  // (a count down stepped before its test, `--i >= lo`, last compares lo - 1: the bound - 1)
+  if (const ExprP lowest = step > 0 ? init_value
+                           : cond_op == BO_GE || (post_decrement && !down.post)
+                               ? binary(Op::Sub, bound, one)
+                               : bound;
+      cmp.type->isUnsignedIntegerType() && !L.provably_nonneg(lowest))
+    L.fail(cmp.at, unsigned_compare(var->getNameAsString(), L.spelled(cmp.type), lowest),
            "dpgen-loop");
   // A strided loop whose start moves with outer counters (red-black:
   // `for (i = 1 + (j + 1) % 2; i < nx - 1; i += 2)`, or `i = j; ...; i += 2`;
@@ -462,8 +505,8 @@ ForHeader LoopHeaders::for_header(const ForStmt* f) {
       L.k_.kernel_locals.push_back(l);
       *b = local_ref(l);
     }
-  for (const auto& [what, e, loc] : {std::tuple{"lower", lo, init->getBeginLoc()},
-                                     std::tuple{"upper", hi, c->getRHS()->getBeginLoc()}}) {
+  for (const auto& [what, e, loc] :
+       {std::tuple{"lower", lo, init->getBeginLoc()}, std::tuple{"upper", hi, cmp.bound_at}}) {
     auto p = to_poly(e);
     if (!p)
       L.fail(loc,

@@ -1,5 +1,6 @@
 // Lowering, `while` loops that count (lower_loop.hpp): a `while` whose body ends by stepping
-// one integer counter, or whose condition counts it down, is the `for` loop C would run:
+// one integer counter, or whose condition counts it down (`i-- > lo`, `i--`, `--i >= 0`:
+// count_down), is the `for` loop C would run:
 //
 //   int i = lo;                              for (i = i; i < hi; ++i) {
 //   while (i < hi) { body; ++i; }      <=>     body;
@@ -40,14 +41,34 @@ const VarDecl* stepped(const Stmt* s) {
   return v && v->getType()->isIntegerType() && !v->getType()->isBooleanType() ? v : nullptr;
 }
 
-// `i-- > lo`: the counter it counts down, else null.
-const VarDecl* counted_down(const clang::Expr* cond) {
-  const auto* c = cond ? dyn_cast<BinaryOperator>(cond->IgnoreParenImpCasts()) : nullptr;
-  const auto* u = c && c->getOpcode() == BO_GT
-                      ? dyn_cast<UnaryOperator>(c->getLHS()->IgnoreParenImpCasts())
-                      : nullptr;
-  return u && u->getOpcode() == UO_PostDec ? stepped(u) : nullptr;
+} // namespace
+
+// `--k` of an unsigned local in a condition (`--k > 0`, `0 < --k`, `--k`), else null.
+const VarDecl* unsigned_pre_decrement(const clang::Expr* cond) {
+  const clang::Expr* e = cond ? cond->IgnoreParenImpCasts() : nullptr;
+  const auto* c = e ? dyn_cast<BinaryOperator>(e) : nullptr;
+  const clang::Expr* sides[] = {e, c ? c->getLHS() : nullptr, c ? c->getRHS() : nullptr};
+  for (const clang::Expr* side : sides) {
+    const auto* u = side ? dyn_cast<UnaryOperator>(side->IgnoreParenImpCasts()) : nullptr;
+    const VarDecl* v = u && u->getOpcode() == UO_PreDec ? stepped(u) : nullptr;
+    if (v && v->getType()->isUnsignedIntegerType())
+      return v;
+  }
+  return nullptr;
 }
+
+std::string pre_decrement_message(const VarDecl* u) {
+  return fmt::format("the unsigned counter '{}' is stepped down before it is tested ('--{}'): at 0 "
+                     "it wraps around instead of ending the loop; test it before the step ('{}-- "
+                     "> lo' runs the body down to {} = lo), or make it signed",
+                     u->getNameAsString(), u->getNameAsString(), u->getNameAsString(),
+                     u->getNameAsString());
+}
+
+namespace {
+
+// The counter a condition counts down (count_down), else null.
+const VarDecl* counted_down(const clang::Expr* cond) { return count_down(cond).var; }
 
 // A `continue` of the loop whose body is `s` (not one of a loop inside it, nor a lambda's).
 const ContinueStmt* own_continue(const Stmt* s) {
@@ -68,6 +89,40 @@ const char* const kForm = "a while loop is in the kernel subset as the for loop 
                           "(`while (i-- > 0) { ... }`)";
 
 } // namespace
+
+CountDown count_down(const clang::Expr* cond) {
+  if (!cond)
+    return {};
+  // `i--` or `--i` of an integer local: the counter, and whether it is tested before the step
+  const auto decrement = [](const clang::Expr* e, bool& post) -> const VarDecl* {
+    const auto* u = dyn_cast<UnaryOperator>(e->IgnoreParenImpCasts());
+    if (!u || (u->getOpcode() != UO_PostDec && u->getOpcode() != UO_PreDec))
+      return nullptr;
+    post = u->getOpcode() == UO_PostDec;
+    return stepped(u);
+  };
+  bool post = false;
+  if (const VarDecl* v = decrement(cond, post)) // `i--`, `--i`: the test is != 0
+    return !post && v->getType()->isUnsignedIntegerType() ? CountDown{}
+                                                          : CountDown{v, nullptr, post ? 0 : 1};
+  const auto* c = dyn_cast<BinaryOperator>(cond->IgnoreParenImpCasts());
+  if (!c)
+    return {};
+  BinaryOperatorKind op = c->getOpcode();
+  const clang::Expr* counter_side = c->getLHS();
+  const clang::Expr* bound = c->getRHS();
+  if (op == BO_LT || op == BO_LE) // `lo < i--`: as `i-- > lo`
+    std::swap(counter_side, bound), op = op == BO_LT ? BO_GT : BO_GE;
+  if (op == BO_NE && !decrement(counter_side, post)) // `lo != i--`
+    std::swap(counter_side, bound);
+  const VarDecl* v = decrement(counter_side, post);
+  if (!v || (op != BO_GT && op != BO_GE && op != BO_NE) ||
+      (!post && v->getType()->isUnsignedIntegerType()))
+    return {};
+  // the lowest value the body sees: the last tested value (post) or the stepped one (pre)
+  const int offset = post ? (op == BO_GE ? -1 : 0) : (op == BO_GE ? 0 : 1);
+  return {v, bound, offset, c, post};
+}
 
 const clang::Expr* self_step(const BinaryOperator* a, const VarDecl*& var, bool& adds) {
   const auto* lhs = dyn_cast<DeclRefExpr>(a->getLHS()->IgnoreParenImpCasts());
@@ -135,6 +190,8 @@ const ForStmt* while_as_for(ASTContext& ctx, const WhileStmt* w, const WhileFail
                              "body: move the step to the end (adjusting the start and the uses "
                              "of '{}'), or write the loop as a for loop",
                              kForm, u->getNameAsString(), u->getNameAsString()));
+    if (const VarDecl* u = unsigned_pre_decrement(w->getCond()))
+      refuse(w->getCond()->getBeginLoc(), pre_decrement_message(u));
     refuse(w->getBeginLoc(), kForm);
   }
   if (isa<ParmVarDecl>(v))
