@@ -1,6 +1,7 @@
 // Local std::vector work arrays: one made with its length (and a value) is a line buffer
 // (tests/styles/vector_buffers.cpp); every other way of making one is refused at the
-// declaration, and a read of an element no loop wrote says that the vector's value is no write.
+// declaration, and a read of an element no loop wrote, where the vector's value cannot be
+// known to be there, says when it is.
 // RUN: rm -rf %t && mkdir -p %t
 // RUN: %not %dpgen %s --out-dir %t -- -I%runtime_inc 2>&1 | FileCheck %s
 // RUN: ls %t | %count 0
@@ -8,14 +9,30 @@
 
 #include <vector>
 
-// The wall faces keep the vector's 0.0, which the kernel reads: not a write.
-DPGEN_KERNEL void unset_walls(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
+// The wall faces keep the vector's 0.0, but the vector is made outside the row loop, where a
+// face one row leaves out could hold what an earlier row wrote: refused, with the rule.
+DPGEN_KERNEL void walls_made_outside(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                     int ny) {
+  std::vector<double> flux(nx + 1, 0.0);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 1; i < nx; ++i)
+      flux[i] = u[j * nx + i] - u[j * nx + i - 1];
+    for (int i = 0; i < nx; ++i)
+      out[j * nx + i] = flux[i + 1] - flux[i];
+    // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:25: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}(the value a std::vector is made with is read where no store wrote only when the vector is made inside the loops around all its uses and every loop that writes it before the read fills a known range unconditionally; else assign the elements the loops leave out, `flux[0] = 0.0;`)
+  }
+}
+
+// Faces written under a condition on the data: which ones keep the vector's value is not
+// known.
+DPGEN_KERNEL void faces_under_condition(DPGEN_IN const double* u, DPGEN_OUT double* out, int n) {
   std::vector<double> flux(n + 1, 0.0);
   for (int i = 1; i < n; ++i)
-    flux[i] = u[i] - u[i - 1];
+    if (u[i] > 0.0)
+      flux[i] = u[i] * u[i - 1];
   for (int i = 0; i < n; ++i)
     out[i] = flux[i + 1] - flux[i];
-  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:14: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}(the value a std::vector is made with is not a write: assign the elements the loops leave out, `flux[0] = 0.0;`)
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:14: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}line {{[0-9]+}} writes it under a condition that may not hold here{{.*}}the value a std::vector is made with is read where no store wrote only when
 }
 
 // Made from a list: refused.

@@ -62,3 +62,40 @@ DPGEN_KERNEL void vector_size_faces(DPGEN_IN const double* u, DPGEN_OUT double* 
   for (int i = 0; i < n; ++i)
     out[i] = flux[i + 1] - flux[i];
 }
+
+// Zero-flux walls left at the value the vector is made with: a finite-volume diffusion step
+// whose loop writes the interior faces only (faces 0 and n keep 0.0).
+DPGEN_KERNEL void vector_walls_at_zero(DPGEN_IN const double* u, DPGEN_IN const double* k,
+                                       DPGEN_OUT double* u_next, int n, double dt) {
+  std::vector<double> flux(n + 1, 0.0);
+  for (int f = 1; f < n; ++f)
+    flux[f] = 0.5 * (k[f - 1] + k[f]) * (u[f] - u[f - 1]);
+  for (int i = 0; i < n; ++i)
+    u_next[i] = u[i] + dt * (flux[i + 1] - flux[i]);
+}
+
+// A prescribed boundary flux: the vector made with an input's value (its gradient flows
+// through the faces no loop writes), two loops writing the faces either side of a gap at m.
+DPGEN_KERNEL void vector_inflow_value(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                                      DPGEN_OUT double* r, int n, int m) {
+  std::vector<double> face(n + 1, g[0]);
+  for (int f = 1; f < m; ++f)
+    face[f] = u[f] * u[f - 1];
+  for (int f = m + 1; f < n; ++f)
+    face[f] = std::sin(u[f]) - u[f - 1];
+  for (int i = 0; i < n; ++i)
+    r[i] = face[i + 1] - 2.0 * face[i] * u[i];
+}
+
+// Per row of a 2D grid: x-face fluxes in a vector made (zero) inside the row loop, the walls
+// left out.
+DPGEN_KERNEL void vector_row_walls(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                   int ny) {
+  for (int j = 0; j < ny; ++j) {
+    std::vector<double> fx(nx + 1);
+    for (int i = 1; i < nx; ++i)
+      fx[i] = u[j * nx + i] * u[j * nx + i] - u[j * nx + i - 1];
+    for (int i = 0; i < nx; ++i)
+      out[j * nx + i] = fx[i + 1] - fx[i];
+  }
+}

@@ -1,6 +1,7 @@
 // vector_buffers (tests/styles/): local std::vector work arrays made with their length (and a
 // value), read as line buffers: a flux form with hand-set wall faces, a per-row temporary made
-// inside the row loop, and single-precision vectors.
+// inside the row loop, single-precision vectors, and faces no loop writes read as the value
+// the vector was made with (zero, or an input's).
 #include "support/adjoint_check.hpp"
 
 #include "dpgen/annotate.hpp"
@@ -17,6 +18,12 @@ DPGEN_KERNEL void vector_size_faces(DPGEN_IN const double* u, DPGEN_OUT double* 
 DPGEN_KERNEL void vector_gather(DPGEN_IN const std::vector<double>& a,
                                 const std::vector<double>& pos, DPGEN_OUT std::vector<double>& out,
                                 int n);
+DPGEN_KERNEL void vector_walls_at_zero(DPGEN_IN const double* u, DPGEN_IN const double* k,
+                                       DPGEN_OUT double* u_next, int n, double dt);
+DPGEN_KERNEL void vector_inflow_value(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                                      DPGEN_OUT double* r, int n, int m);
+DPGEN_KERNEL void vector_row_walls(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
+                                   int ny);
 
 TEST_CASE("styles: vector_buffers, flux form with wall faces") {
   for (int n : {1, 2, 3, 10, 257}) {
@@ -108,6 +115,60 @@ TEST_CASE("styles: vector_buffers, faces counted by size()") {
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       vector_size_faces_tangent(in[0], dir[0], out[0], outd[0], n);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: vector_buffers, wall faces left at the vector's zero") {
+  for (int n : {0, 1, 2, 3, 10, 257}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n), size_t(n)};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { vector_walls_at_zero(in[0], in[1], out[0], n, 0.3); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      vector_walls_at_zero_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, 0.3);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      vector_walls_at_zero_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, 0.3);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: vector_buffers, faces left at an input's value, a gap between two fills") {
+  for (auto [n, m] : {std::pair{1, 0}, {2, 1}, {3, 1}, {5, 2}, {5, 4}, {9, 9}, {12, 0}, {40, 17}}) {
+    CAPTURE(n);
+    CAPTURE(m);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n), 1};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { vector_inflow_value(in[0], in[1], out[0], n, m); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      vector_inflow_value_adjoint(in[0], adj[0], in[1], adj[1], seed[0], n, m);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      vector_inflow_value_tangent(in[0], dir[0], in[1], dir[1], out[0], outd[0], n, m);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: vector_buffers, per-row faces made in the row loop, walls left out") {
+  for (auto [nx, ny] : {std::pair{1, 1}, {2, 3}, {3, 2}, {17, 5}, {130, 4}}) {
+    CAPTURE(nx);
+    CAPTURE(ny);
+    const size_t cells = size_t(nx) * size_t(ny);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {cells};
+    p.out_sizes = {cells};
+    p.forward = [&](auto in, auto out) { vector_row_walls(in[0], out[0], nx, ny); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      vector_row_walls_adjoint(in[0], adj[0], seed[0], nx, ny);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      vector_row_walls_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -66,6 +66,101 @@ const clang::Expr* vector_count(const VarDecl* v) {
   return ctor->getArg(0)->IgnoreImpCasts();
 }
 
+// The loops around every use of `v`: the `for` statements (and `while` loops that count)
+// above the innermost statement that holds all the uses, below the declaration's scope,
+// outermost first. `stray`: a use outside that scope's statements (in a declaration), else
+// null.
+std::vector<const VarDecl*> row_loops(ASTContext& ctx, const VarDecl* v, const Stmt*& stray) {
+  const Stmt* scope = nullptr;
+  {
+    auto ps = ctx.getParents(*v);
+    const Stmt* ds = ps.empty() ? nullptr : ps[0].get<Stmt>();
+    if (ds) {
+      auto pp = ctx.getParents(*ds);
+      scope = pp.empty() ? nullptr : pp[0].get<Stmt>();
+    }
+  }
+  std::vector<const Stmt*> uses;
+  collect_uses(scope, v, uses);
+  std::vector<std::vector<const Stmt*>> chains; // scope ... use, for each use
+  for (const Stmt* u : uses) {
+    std::vector<const Stmt*> chain;
+    const Stmt* s = u;
+    while (s && s != scope) {
+      chain.push_back(s);
+      auto pp = ctx.getParents(*s);
+      s = pp.empty() ? nullptr : pp[0].get<Stmt>();
+    }
+    if (s != scope && !stray)
+      stray = u;
+    std::reverse(chain.begin(), chain.end());
+    chains.push_back(chain);
+  }
+  std::vector<const VarDecl*> counters;
+  if (chains.empty())
+    return counters;
+  size_t common = chains[0].size();
+  for (const auto& c : chains) {
+    size_t n = 0;
+    while (n < common && n < c.size() && c[n] == chains[0][n])
+      ++n;
+    common = n;
+  }
+  for (size_t i = 0; i < common; ++i)
+    if (const auto* f = dyn_cast<ForStmt>(chains[0][i]))
+      counters.push_back(counter_of(f));
+    else if (const auto* w = dyn_cast<WhileStmt>(chains[0][i]))
+      counters.push_back(while_counter(w)); // (lowered as a for loop: lower_while.cpp)
+  return counters;
+}
+
+// `p` as an expression, its loop counters too (`headers` turns the sizes' symbols).
+ExprP index_expr(const Poly& p, LoopHeaders& headers) {
+  ExprP sum;
+  for (const auto& [m, coef] : p.terms()) {
+    ExprP term = int_const(coef);
+    for (const auto& sym : m)
+      term =
+          binary(Op::Mul, term, sym.is_counter() ? loop_var(sym.name) : headers.symbol_expr(sym));
+    sum = sum ? binary(Op::Add, sum, term) : term;
+  }
+  return sum ? sum : int_const(0);
+}
+
+// The value of `std::vector<T> v(count, value)`; null for `v(count)` (zero).
+const clang::Expr* vector_fill(const VarDecl* v) {
+  const auto* ctor = llvm::cast<CXXConstructExpr>(v->getInit()->IgnoreImplicit());
+  return ctor->getNumArgs() > 1 && !isa<CXXDefaultArgExpr>(ctor->getArg(1)) ? ctor->getArg(1)
+                                                                            : nullptr;
+}
+
+// A read of a line buffer that no earlier loop of its row is known to have written:
+// `written` the intervals they write ("a to b (line l)"), `reads` the elements read.
+std::string unwritten_read(const std::string& name, const std::string& read,
+                           const std::string& rows, const std::vector<std::string>& written,
+                           unsigned conditional, const std::string& reads,
+                           const std::string& hint) {
+  if (written.empty())
+    return fmt::format("line buffer '{}' is read at '{}', and no earlier loop of {} writes "
+                       "it{}: a buffer holds values within one iteration of the loops around "
+                       "all its uses, so this would read an element never written in this "
+                       "iteration (a value carried over from an earlier one, or "
+                       "uninitialised), outside the kernel subset; write every element a "
+                       "loop reads, with '=', in an earlier loop of the same iteration{}",
+                       name, read, rows,
+                       conditional ? fmt::format(" wherever this read runs (line {} writes it "
+                                                 "under a condition that may not hold here)",
+                                                 conditional)
+                                   : "",
+                       hint);
+  return fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
+                     "earlier loops of {} wrote every element read (they write elements {}): "
+                     "a read of an element not written in this iteration (a value carried "
+                     "over from an earlier one, or uninitialised) is outside the kernel "
+                     "subset; read only elements the filling loop writes{}",
+                     name, read, reads, rows, fmt::join(written, ", "), hint);
+}
+
 std::string vector_form(const std::string& name) {
   return fmt::format("local std::vector '{}' is in the kernel subset as a line buffer made with "
                      "its length (`std::vector<double> {}(n + 1);` or `(n + 1, 0.0)`), filled "
@@ -74,14 +169,16 @@ std::string vector_form(const std::string& name) {
                      name, name, name);
 }
 
-// For a buffer that is a std::vector: the value it is made with does not count as written.
+// For a buffer that is a std::vector: when the value it is made with counts.
 std::string vector_read_hint(const VarDecl* v) {
   const auto* spec = dyn_cast_or_null<ClassTemplateSpecializationDecl>(
       v->getType().getCanonicalType()->getAsCXXRecordDecl());
   if (!spec || spec->getName() != "vector" || !spec->isInStdNamespace())
     return "";
-  return fmt::format(" (the value a std::vector is made with is not a write: assign the elements "
-                     "the loops leave out, `{}[0] = 0.0;`)",
+  return fmt::format(" (the value a std::vector is made with is read where no store wrote only "
+                     "when the vector is made inside the loops around all its uses and every "
+                     "loop that writes it before the read fills a known range unconditionally; "
+                     "else assign the elements the loops leave out, `{}[0] = 0.0;`)",
                      v->getNameAsString());
 }
 
@@ -98,28 +195,28 @@ void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length, 
   auto t = L.scalar_type(elem);
   if (!t || !is_real(*t) || L.ctx_.getAsArrayType(elem))
     L.fail(v->getLocation(), fmt::format("local array '{}' of type '{}' is outside the kernel "
-                                       "subset: a line buffer (a local array of more than 64 "
-                                       "elements, or of a run-time length) holds float or "
-                                       "double values, one dimension",
-                                       name, v->getType().getAsString()));
+                                         "subset: a line buffer (a local array of more than 64 "
+                                         "elements, or of a run-time length) holds float or "
+                                         "double values, one dimension",
+                                         name, v->getType().getAsString()));
   if (const clang::Expr* init = sized ? nullptr : v->getInit()) {
     const auto* ctor = dyn_cast<CXXConstructExpr>(init);
     if (!ctor || ctor->getNumArgs() != 0 || ctor->requiresZeroInitialization())
       L.fail(init->getBeginLoc(),
-           fmt::format("line buffer '{}' has an initializer: a buffer of more than 64 elements "
-                       "(or of a run-time length) is filled by the kernel's loops, each element "
-                       "written before it is read in the same iteration; initialise it in a loop",
-                       name));
+             fmt::format("line buffer '{}' has an initializer: a buffer of more than 64 elements "
+                         "(or of a run-time length) is filled by the kernel's loops, each element "
+                         "written before it is read in the same iteration; initialise it in a loop",
+                         name));
   }
   auto len = to_poly(length);
   if (!len || len->mentions_any_counter())
     L.fail(v->getLocation(), fmt::format("the length of line buffer '{}' must be a polynomial in "
-                                       "the integer parameters (not in loop counters)",
-                                       name));
+                                         "the integer parameters (not in loop counters)",
+                                         name));
   if (L.k_.hidden.size() == L.k_.hidden.capacity())
     L.fail(v->getLocation(), fmt::format("line buffer '{}': a kernel has at most {} buffers and "
-                                       "accumulators",
-                                       name, Lowerer::kMaxAccumulators));
+                                         "accumulators",
+                                         name, Lowerer::kMaxAccumulators));
   Param h;
   h.name = "dpgen_buf_" + name;
   for (int n = 2; L.k_.find_param(h.name); ++n)
@@ -136,50 +233,13 @@ void LineBuffers::declare_buffer(const VarDecl* v, QualType elem, ExprP length, 
   b.array = h.name;
   b.length = length;
   b.decl_loop_ids = L.loop_ids_;
-  // The loops around every use: the `for` statements above the innermost
-  // statement that holds all the uses, below the declaration's scope.
-  const Stmt* scope = nullptr;
-  {
-    auto ps = L.ctx_.getParents(*v);
-    const Stmt* ds = ps.empty() ? nullptr : ps[0].get<Stmt>();
-    if (ds) {
-      auto pp = L.ctx_.getParents(*ds);
-      scope = pp.empty() ? nullptr : pp[0].get<Stmt>();
-    }
-  }
-  std::vector<const Stmt*> uses;
-  collect_uses(scope, v, uses);
-  std::vector<std::vector<const Stmt*>> chains; // scope ... use, for each use
-  for (const Stmt* u : uses) {
-    std::vector<const Stmt*> chain;
-    const Stmt* s = u;
-    while (s && s != scope) {
-      chain.push_back(s);
-      auto pp = L.ctx_.getParents(*s);
-      s = pp.empty() ? nullptr : pp[0].get<Stmt>();
-    }
-    if (s != scope) // (a use in a declaration: `double* p = flux.data();`)
-      L.fail(u->getBeginLoc(), fmt::format("line buffer '{}' is used here other than by its "
-                                           "elements ('{}[i]'): a pointer into it, or a call "
-                                           "that takes it, is outside the kernel subset",
-                                           name, name));
-    std::reverse(chain.begin(), chain.end());
-    chains.push_back(chain);
-  }
-  if (!chains.empty()) {
-    size_t common = chains[0].size();
-    for (const auto& c : chains) {
-      size_t n = 0;
-      while (n < common && n < c.size() && c[n] == chains[0][n])
-        ++n;
-      common = n;
-    }
-    for (size_t i = 0; i < common; ++i)
-      if (const auto* f = dyn_cast<ForStmt>(chains[0][i]))
-        b.row_counters.push_back(counter_of(f));
-      else if (const auto* w = dyn_cast<WhileStmt>(chains[0][i]))
-        b.row_counters.push_back(while_counter(w)); // (lowered as a for loop: lower_while.cpp)
-  }
+  const Stmt* stray = nullptr;
+  b.row_counters = row_loops(L.ctx_, v, stray);
+  if (stray) // (a use in a declaration: `double* p = flux.data();`)
+    L.fail(stray->getBeginLoc(), fmt::format("line buffer '{}' is used here other than by its "
+                                             "elements ('{}[i]'): a pointer into it, or a call "
+                                             "that takes it, is outside the kernel subset",
+                                             name, name));
   buffers_[h.name] = b;
   Binding bind;
   bind.kind = Binding::ArrayParam;
@@ -194,36 +254,36 @@ ExprP LineBuffers::buffer_index(const Param* p, const ExprP& local, const clang:
   const std::string& name = b.decl->getNameAsString();
   SourceLocation loc = at->getBeginLoc();
   if (!to_poly(local))
-    L.fail(loc, fmt::format("line buffer '{}' is indexed at '{}', which is not a polynomial in the "
-                          "loop counters and sizes (a data-dependent or conditional index): dpgen "
-                          "follows which elements of a buffer each loop writes and reads; index "
-                          "it by loop counters",
-                          name, L.text(at)),
-         "dpgen-buffer");
+    L.fail(loc,
+           fmt::format("line buffer '{}' is indexed at '{}', which is not a polynomial in the "
+                       "loop counters and sizes (a data-dependent or conditional index): dpgen "
+                       "follows which elements of a buffer each loop writes and reads; index "
+                       "it by loop counters",
+                       name, L.text(at)),
+           "dpgen-buffer");
   const size_t decl_depth = b.decl_loop_ids.size();
   if (L.loop_ids_.size() < decl_depth ||
       !std::equal(b.decl_loop_ids.begin(), b.decl_loop_ids.end(), L.loop_ids_.begin()))
-    L.fail(loc, fmt::format("line buffer '{}' is used outside the loops it is declared in",
-                          name));
+    L.fail(loc, fmt::format("line buffer '{}' is used outside the loops it is declared in", name));
   // Each loop around all the uses is a loop of the kernel here, in order.
   for (size_t k = 0; k < b.row_counters.size(); ++k) {
     const VarDecl* c = b.row_counters[k];
     auto it = c ? L.env_.find(c) : L.env_.end();
     if (it != L.env_.end() && it->second.kind == Binding::Value)
       L.fail(loc, fmt::format("line buffer '{}' is used in every iteration of loop '{}', which "
-                            "dpgen unrolls (constant bounds, at most 16 iterations): its "
-                            "copies would share one row of the buffer; declare the buffer "
-                            "inside that loop",
-                            name, c->getNameAsString()));
+                              "dpgen unrolls (constant bounds, at most 16 iterations): its "
+                              "copies would share one row of the buffer; declare the buffer "
+                              "inside that loop",
+                              name, c->getNameAsString()));
     std::string var = it != L.env_.end() && it->second.kind == Binding::LoopVar && it->second.value
                           ? loop_var_in(*it->second.value)
                           : "";
     size_t d = decl_depth + k;
     if (var.empty() || d >= L.loops_.size() || L.loops_[d]->var != var)
       L.fail(loc, fmt::format("line buffer '{}': dpgen cannot place this use in the loops around "
-                            "its uses (a buffer is used in one function, inside the loops of "
-                            "its declaration)",
-                            name));
+                              "its uses (a buffer is used in one function, inside the loops of "
+                              "its declaration)",
+                              name));
   }
   const size_t depth = decl_depth + b.row_counters.size();
   std::vector<int> ids(L.loop_ids_.begin(), L.loop_ids_.begin() + depth);
@@ -236,12 +296,12 @@ ExprP LineBuffers::buffer_index(const Param* p, const ExprP& local, const clang:
       const Loop& l = *L.loops_[d];
       if (!to_poly(l.lo) || !to_poly(l.hi))
         L.fail(loc, fmt::format("line buffer '{}' is used in loop '{}', whose bounds are not "
-                              "polynomials in the sizes",
-                              name, l.var));
+                                "polynomials in the sizes",
+                                name, l.var));
       ExprP here = binary(Op::Sub, loop_var(l.var), l.lo);
       extents.push_back(binary(Op::Sub, l.hi, l.lo));
-      row = d == 0 ? here
-                   : binary(Op::Add, binary(Op::Mul, row, binary(Op::Sub, l.hi, l.lo)), here);
+      row =
+          d == 0 ? here : binary(Op::Add, binary(Op::Mul, row, binary(Op::Sub, l.hi, l.lo)), here);
     }
     b.placed = true;
     b.depth = depth;
@@ -303,7 +363,7 @@ bool LineBuffers::holds_here(const PathCond& pc, const Facts& facts) const {
 // [min, max] of `p` over the counters of loops `loops[from...]`, each
 // coefficient's sign proved from `facts`; nullopt where one is unknown.
 static std::optional<std::pair<Poly, Poly>> range_over(Poly p, const std::vector<Loop>& loops,
-                                                      size_t from, const Facts& facts) {
+                                                       size_t from, const Facts& facts) {
   Poly lo, hi;
   for (size_t d = from; d < loops.size(); ++d) {
     const Loop& l = loops[d];
@@ -342,7 +402,7 @@ std::vector<SizeCond> LineBuffers::premises_here() const {
 // alone and can hold) checked at run time. Otherwise an error `why` (with
 // "provably" or "cannot prove" filled in by `never`).
 bool LineBuffers::prove_or_check(const std::vector<Poly>& goals, const Facts& facts,
-                             const std::string& what, SourceLocation loc, bool& never) {
+                                 const std::string& what, SourceLocation loc, bool& never) {
   never = false;
   std::vector<std::vector<SizeCond>> must;
   for (const Poly& g : goals) {
@@ -371,7 +431,7 @@ bool LineBuffers::prove_or_check(const std::vector<Poly>& goals, const Facts& fa
 // loops (else it would carry a value from one iteration to the next), and
 // stays inside the buffer.
 void LineBuffers::check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
-                                 const clang::Expr* lhs) {
+                                     const clang::Expr* lhs) {
   const Buffer& b = buffers_.at(p->name);
   const std::string name = b.decl->getNameAsString();
   SourceLocation loc = lhs->getBeginLoc();
@@ -406,31 +466,35 @@ void LineBuffers::check_buffer_store(const Param* p, const ExprP& flat, bool acc
     return;
   auto r = range_over(local, loops, 0, facts); // (over every loop: a bound for all rows)
   bool never = false;
-  if (r && prove_or_check({r->first, len - one - r->second}, facts,
-                          fmt::format("line buffer '{}' of {} elements holds the elements "
-                                      "written at '{}' (from {} to {})",
-                                      name, len.str(), L.text(lhs), r->first.str(), r->second.str()),
-                          loc, never))
+  if (r &&
+      prove_or_check({r->first, len - one - r->second}, facts,
+                     fmt::format("line buffer '{}' of {} elements holds the elements "
+                                 "written at '{}' (from {} to {})",
+                                 name, len.str(), L.text(lhs), r->first.str(), r->second.str()),
+                     loc, never))
     return;
-  L.fail(loc, fmt::format("line buffer '{}' of {} elements is written at '{}'{}, which dpgen "
-                        "{} within the buffer",
-                        name, len.str(), L.text(lhs),
-                        r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str())
-                          : "",
-                        never ? "finds is not always" : "cannot prove is"),
-       "dpgen-buffer");
+  L.fail(loc,
+         fmt::format("line buffer '{}' of {} elements is written at '{}'{}, which dpgen "
+                     "{} within the buffer",
+                     name, len.str(), L.text(lhs),
+                     r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str()) : "",
+                     never ? "finds is not always" : "cannot prove is"),
+         "dpgen-buffer");
 }
 
 // A read of a buffer element that this iteration did not store just before
 // (visible_store): some earlier loop of the same iteration of the row loops,
-// sharing no other loop with the read, wrote it with '='.
-void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e) {
+// sharing no other loop with the read, wrote it with '='; or, for a std::vector made in its
+// row whose earlier stores in the row are all known (unconditional contiguous fills), the
+// vector's value where none of them wrote (BufferRead).
+LineBuffers::BufferRead LineBuffers::check_buffer_read(const Param* p, const ExprP& flat,
+                                                       const clang::Expr* e) {
   const Buffer& b = buffers_.at(p->name);
   const std::string name = b.decl->getNameAsString();
   SourceLocation loc = e->getBeginLoc();
   auto nit = L.nest_index_.find(L.cur_key());
   if (nit != L.nest_index_.end() && L.stores_.visible_store(L.k_.nests[nit->second], p->name, flat))
-    return; // stored earlier in this iteration, at this element
+    return {}; // stored earlier in this iteration, at this element
   Poly local = *buffer_local(b, flat);
   std::string rows = "the kernel";
   if (b.depth > 0) {
@@ -446,6 +510,7 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
   };
   std::vector<Written> written;
   unsigned conditional = 0; // a store left out: its condition may not hold here
+  bool unknown = false;     // a store of the row whose elements are not an interval here
   std::vector<int> key = L.cur_key();
   Facts facts = facts_here();
   facts.push_back(*to_poly(b.length) - Poly::constant(1)); // (a VLA has an element at least)
@@ -453,10 +518,12 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
     size_t shared = 0;
     while (shared < n.key.size() && shared < key.size() && n.key[shared] == key[shared])
       ++shared;
-    if (shared != b.depth)
-      continue; // another iteration of a loop the read is in, or not this buffer's
+    const bool other = shared != b.depth; // another iteration of a loop the read is in
     for (const auto& st : n.stores) {
-      if (st.array != p->name || st.accumulate)
+      if (st.array != p->name)
+        continue;
+      unknown = unknown || (other && n.key != key) || st.accumulate;
+      if (other || st.accumulate)
         continue;
       bool holds = std::all_of(st.path.begin(), st.path.end(),
                                [&](const PathCond& pc) { return holds_here(pc, facts); });
@@ -465,6 +532,7 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
         continue;
       }
       auto w = buffer_local(b, st.index);
+      unknown = unknown || !w;
       if (!w)
         continue;
       std::vector<const Loop*> inner;
@@ -474,11 +542,11 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
         written.push_back({*w, *w, st.pos.line});
         continue;
       }
-      if (inner.size() != 1)
+      Poly c = inner.size() == 1 ? w->coefficient(Sym::counter(inner[0]->var)) : Poly();
+      if (!(c == Poly::constant(1)) && !(c == Poly::constant(-1))) {
+        unknown = true;
         continue; // (contiguous fills only: one loop, step 1)
-      Poly c = w->coefficient(Sym::counter(inner[0]->var));
-      if (!(c == Poly::constant(1)) && !(c == Poly::constant(-1)))
-        continue;
+      }
       Poly rest = w->without(Sym::counter(inner[0]->var));
       Poly first = rest + c * *to_poly(inner[0]->lo);
       Poly last = rest + c * (*to_poly(inner[0]->hi) - Poly::constant(1));
@@ -500,9 +568,8 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
         if (x == y || !prove_nonneg(joined[x].hi + one - joined[y].lo, facts))
           continue;
         Written m{joined[x].lo, joined[y].hi, joined[x].line};
-        if (std::none_of(joined.begin(), joined.end(), [&](const Written& w) {
-              return w.lo == m.lo && w.hi == m.hi;
-            })) {
+        if (std::none_of(joined.begin(), joined.end(),
+                         [&](const Written& w) { return w.lo == m.lo && w.hi == m.hi; })) {
           joined.push_back(m);
           grew = true;
         }
@@ -513,7 +580,23 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
   // Per element (the counters in range): inside one of the intervals.
   for (const auto& w : joined)
     if (prove_nonneg(local - w.lo, facts) && prove_nonneg(w.hi - local, facts))
-      return;
+      return {};
+  // A std::vector made in this row (no loop between its declaration and the uses) whose row
+  // stored only the intervals: where the element is in none, it holds the vector's value.
+  const bool stores_here =
+      nit != L.nest_index_.end() &&
+      std::any_of(L.k_.nests[nit->second].stores.begin(), L.k_.nests[nit->second].stores.end(),
+                  [&](const Store& st) { return st.array == p->name; });
+  if (b.fill && b.row_counters.empty() && !unknown && conditional == 0 && !stores_here) {
+    const ExprP at = index_expr(local, L.headers_);
+    ExprP in;
+    for (const auto& w : written) {
+      ExprP inside = binary(Op::And, binary(Op::Le, index_expr(w.lo, L.headers_), at),
+                            binary(Op::Le, at, index_expr(w.hi, L.headers_)));
+      in = in ? binary(Op::Or, in, inside) : inside;
+    }
+    return {in, b.fill};
+  }
   std::vector<Loop> loops;
   for (const auto& l : L.loops_)
     loops.push_back(*l);
@@ -528,51 +611,35 @@ void LineBuffers::check_buffer_read(const Param* p, const ExprP& flat, const cla
                                      name, L.text(e), r->first.str(), r->second.str(),
                                      written[0].line, written[0].lo.str(), written[0].hi.str()),
                          loc, never))
-        return;
+        return {};
     }
   }
   if (nit != L.nest_index_.end())
     for (const auto& st : L.k_.nests[nit->second].stores)
       if (st.array == p->name)
-        L.fail(loc, fmt::format("line buffer '{}' is read at '{}', an element this iteration does "
-                              "not write before (it writes '{}' on line {}): a value carried from "
-                              "another iteration{} (a recurrence) is outside the kernel subset; "
-                              "fill the buffer in one loop, read it in a later one",
-                              name, L.text(e), name + subscript(*buffer_local(b, st.index), {}),
-                              st.pos.line,
-                              L.loops_.empty() ? "" : " of loop '" + L.loops_.back()->var + "'"),
-             "dpgen-buffer");
-  if (written.empty())
-    L.fail(loc, fmt::format("line buffer '{}' is read at '{}', and no earlier loop of {} writes "
-                          "it{}: a buffer holds values within one iteration of the loops around "
-                          "all its uses, so this would read an element never written in this "
-                          "iteration (a value carried over from an earlier one, or "
-                          "uninitialised), outside the kernel subset; write every element a "
-                          "loop reads, with '=', in an earlier loop of the same iteration",
-                          name, L.text(e), rows,
-                          conditional ? fmt::format(" wherever this read runs (line {} writes it "
-                                                    "under a condition that may not hold here)",
-                                                    conditional)
-                                      : ""),
-         "dpgen-buffer");
+        L.fail(loc,
+               fmt::format("line buffer '{}' is read at '{}', an element this iteration does "
+                           "not write before (it writes '{}' on line {}): a value carried from "
+                           "another iteration{} (a recurrence) is outside the kernel subset; "
+                           "fill the buffer in one loop, read it in a later one",
+                           name, L.text(e), name + subscript(*buffer_local(b, st.index), {}),
+                           st.pos.line,
+                           L.loops_.empty() ? "" : " of loop '" + L.loops_.back()->var + "'"),
+               "dpgen-buffer");
   std::vector<std::string> ws;
   for (const auto& w : written)
     ws.push_back(fmt::format("{} to {} (line {})", w.lo.str(), w.hi.str(), w.line));
-  L.fail(loc,
-         fmt::format("line buffer '{}' is read at '{}'{}, and dpgen cannot prove that the "
-                     "earlier loops of {} wrote every element read (they write elements {}): "
-                     "a read of an element not written in this iteration (a value carried "
-                     "over from an earlier one, or uninitialised) is outside the kernel "
-                     "subset; read only elements the filling loop writes{}",
-                     name, L.text(e),
+  L.fail(
+      loc,
+      unwritten_read(name, L.text(e), rows, ws, conditional,
                      r ? fmt::format(" (elements {} to {})", r->first.str(), r->second.str()) : "",
-                     rows, fmt::join(ws, ", "), vector_read_hint(b.decl)),
-         "dpgen-buffer");
+                     vector_read_hint(b.decl)),
+      "dpgen-buffer");
 }
 
 // `std::vector<double> flux(n + 1);`, `std::vector<float> t(nx, 0.0f);`: the vector's values
-// are the line buffer's. Its constructor's value (zero, or the one given) is never read: a
-// line buffer's element is read only where its row wrote it first (checked as for any buffer).
+// are the line buffer's. Its constructor's value (zero, or the one given) is read where no
+// store of the row wrote, under check_buffer_read's conditions.
 bool LineBuffers::declare_vector(const VarDecl* v) {
   QualType elem = L.vector_element(v->getType(), "vector");
   if (elem.isNull() || v->getType()->isReferenceType())
@@ -581,6 +648,9 @@ bool LineBuffers::declare_vector(const VarDecl* v) {
   if (!count && elem->isRealFloatingType()) // (other elements: declare_buffer's message)
     L.fail(v->getLocation(), vector_form(v->getNameAsString()), "dpgen-buffer");
   declare_buffer(v, elem, count ? L.exprs_.expr(count) : int_const(0), /*sized=*/true);
+  const clang::Expr* value = vector_fill(v);
+  buffers_.at(L.k_.hidden.back().name).fill =
+      value ? L.exprs_.expr(value) : real_const(0.0, *L.scalar_type(elem));
   return true;
 }
 
@@ -604,8 +674,8 @@ bool LineBuffers::declare_array_pointer(const VarDecl* v) {
   const auto* ref = src ? dyn_cast<DeclRefExpr>(src) : nullptr;
   const auto* pv = ref ? dyn_cast<VarDecl>(ref->getDecl()) : nullptr;
   auto it = pv ? L.env_.find(pv) : L.env_.end();
-  const Param* p = it != L.env_.end() && it->second.kind == Binding::ArrayParam ? it->second.param
-                                                                               : nullptr;
+  const Param* p =
+      it != L.env_.end() && it->second.kind == Binding::ArrayParam ? it->second.param : nullptr;
   if (p && it->second.offset) // (rows from a pointer local: its offset is not a whole row)
     L.fail(v->getLocation(),
            fmt::format("pointer '{}' to arrays is made from pointer '{}'; make it from the array "
@@ -615,9 +685,9 @@ bool LineBuffers::declare_array_pointer(const VarDecl* v) {
   if (!p || p->row_pointers || p->view || !p->container.empty() || p->scalar_ref ||
       !p->rows.empty() || buffer_of(p->name) || p->global)
     L.fail(v->getLocation(), fmt::format("pointer '{}' to arrays must be initialised with a cast "
-                                       "of a flat array parameter of the kernel ('double "
-                                       "(*{})[n][n] = (double (*)[n][n]) u;')",
-                                       name, name));
+                                         "of a flat array parameter of the kernel ('double "
+                                         "(*{})[n][n] = (double (*)[n][n]) u;')",
+                                         name, name));
   // The element type is the parameter's.
   QualType el = t->getPointeeType();
   while (const auto* at = L.ctx_.getAsArrayType(el)) {
@@ -628,22 +698,22 @@ bool LineBuffers::declare_array_pointer(const VarDecl* v) {
       auto px = to_poly(x);
       if (!px || px->mentions_any_counter())
         L.fail(vat->getSizeExpr()->getBeginLoc(),
-             fmt::format("the extent '{}' of pointer '{}' must be a polynomial in the integer "
-                         "parameters (not in loop counters)",
-                         L.text(vat->getSizeExpr()), name));
+               fmt::format("the extent '{}' of pointer '{}' must be a polynomial in the integer "
+                           "parameters (not in loop counters)",
+                           L.text(vat->getSizeExpr()), name));
       vla_sizes_[vat->getSizeExpr()] = x;
     } else if (!isa<ConstantArrayType>(at)) {
       L.fail(v->getLocation(), fmt::format("pointer '{}' has an array type outside the kernel "
-                                         "subset",
-                                         name));
+                                           "subset",
+                                           name));
     }
     el = at->getElementType();
   }
   auto et = L.scalar_type(el);
   if (!et || *et != p->elem)
     L.fail(v->getLocation(), fmt::format("pointer '{}' has elements of type '{}', parameter '{}' "
-                                       "of '{}': the cast must keep the element type",
-                                       name, el.getAsString(), p->name, p->elem_name));
+                                         "of '{}': the cast must keep the element type",
+                                         name, el.getAsString(), p->name, p->elem_name));
   Binding b;
   b.kind = Binding::ArrayParam;
   b.param = p;

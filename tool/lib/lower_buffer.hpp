@@ -44,8 +44,7 @@ public:
   bool is_buffer(const std::string& array) const { return buffers_.count(array) != 0; }
   // `double u1[M]` (M > 64), `double tmp[nx]`, `std::array<double, 200> t`:
   // its hidden array (Kernel::hidden) and the local's binding to it.
-  // `sized`: a std::vector's (count) or (count, value) constructor, whose values no read sees
-  // (each element read is written first in its row).
+  // `sized`: a std::vector's (count) or (count, value) constructor (declare_vector).
   void declare_buffer(const clang::VarDecl* v, clang::QualType elem, ExprP length,
                       bool sized = false);
   // `std::vector<double> flux(n + 1);` (or `(n + 1, 0.0)`), a local: a line buffer of that
@@ -67,7 +66,14 @@ public:
   // run-time checks where only the sizes decide).
   void check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
                           const clang::Expr* lhs);
-  void check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e);
+  // A read no earlier store of the row provably covers, of a std::vector made in its row
+  // (`std::vector<double> flux(n + 1, 0.0)`) whose earlier stores are all known intervals:
+  // `value` (the vector's) where `in` (the element lies in one of them) fails, everywhere
+  // when `in` is null. Neither: the read sees a store.
+  struct BufferRead {
+    ExprP in, value;
+  };
+  BufferRead check_buffer_read(const Param* p, const ExprP& flat, const clang::Expr* e);
   // `double (*u)[n][n] = (double (*)[n][n]) u_flat;`: u names the parameter.
   // False if `v` is no such pointer.
   bool declare_array_pointer(const clang::VarDecl* v);
@@ -83,8 +89,8 @@ private:
 
   struct Buffer {
     const clang::VarDecl* decl = nullptr;
-    std::string array;  // the hidden array
-    ExprP length;       // elements per row
+    std::string array;              // the hidden array
+    ExprP length;                   // elements per row
     std::vector<int> decl_loop_ids; // the loops around the declaration
     // The counters of the loops (`for`, and `while` loops that count) between the
     // declaration and the innermost statement that holds every use, outermost first (null:
@@ -94,6 +100,7 @@ private:
     size_t depth = 0;    // how many loops of the kernel are row loops
     std::vector<int> row_ids;
     ExprP row;
+    ExprP fill; // a std::vector's value (zero, or the one it is made with); null for arrays
   };
   std::map<std::string, Buffer> buffers_; // by hidden array
   const Buffer* buffer_of(const std::string& array) const;

@@ -234,8 +234,7 @@ auto Expressions::element(const clang::Expr* e) -> std::optional<Access> {
       extent = L.bufs_.vla_size(v->getSizeExpr());
       if (!extent)
         extent = expr(v->getSizeExpr());
-    }
-    else
+    } else
       L.fail(base->getBeginLoc(), "this array type is outside the kernel subset");
     auto inner = element(row);
     ExprP flat = binary(Op::Add, binary(Op::Mul, inner->index, extent), idx);
@@ -344,8 +343,10 @@ ExprP Expressions::expr(const clang::Expr* e) {
       return L.views_.piecewise_read(*acc, 0, acc->dims, L.pos(e->getBeginLoc()), L.text(e));
     }
     if (p->kind == ParamKind::Out) {
-      if (L.bufs_.is_buffer(p->name)) // a line buffer: written earlier in this iteration
-        L.bufs_.check_buffer_read(p, acc->index, e);
+      const auto from = L.bufs_.is_buffer(p->name) ? L.bufs_.check_buffer_read(p, acc->index, e)
+                                                   : LineBuffers::BufferRead{}; // (its rules)
+      if (from.value && !from.in) // a std::vector's value: no store of the row wrote there
+        return from.value;
       // An output read back in the iteration that stored it: that value.
       L.order_after_later_stores(p->name);
       auto nit = L.nest_index_.find(L.cur_key());
@@ -363,7 +364,7 @@ ExprP Expressions::expr(const clang::Expr* e) {
         L.k_.intermediates.insert(p->name);
         L.acc_.work_reads.push_back({p->name, L.cur_key(), L.next_store_seq_, acc->index, L.path_,
                                      L.pos(e->getBeginLoc())});
-        return r;
+        return from.value ? select(from.in, r, from.value) : r;
       }
       if (!st || st->accumulate)
         L.fail(e->getBeginLoc(),
