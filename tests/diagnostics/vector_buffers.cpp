@@ -19,7 +19,7 @@ DPGEN_KERNEL void walls_made_outside(DPGEN_IN const double* u, DPGEN_OUT double*
       flux[i] = u[j * nx + i] - u[j * nx + i - 1];
     for (int i = 0; i < nx; ++i)
       out[j * nx + i] = flux[i + 1] - flux[i];
-    // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:25: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}(the value a std::vector is made with is read where no store wrote only when the vector is made inside the loops around all its uses and every loop that writes it before the read fills a known range unconditionally; else assign the elements the loops leave out, `flux[0] = 0.0;`)
+    // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:25: error: line buffer 'flux' is read at 'flux[i + 1]'{{.*}}(the value a std::vector is made with is read where no store wrote only when the vector is made inside the loops around all its uses, every loop that writes it before the read fills a known range unconditionally and no loop around the read writes it; else assign the elements the loops leave out, `flux[0] = 0.0;`)
   }
 }
 
@@ -79,4 +79,39 @@ DPGEN_KERNEL void pointer_into(DPGEN_IN const double* u, DPGEN_OUT double* out, 
     wp[i] = u[i];
   for (int i = 0; i < n; ++i)
     out[i] = w[i];
+}
+
+// A recurrence through the vector: before the loop writes v[i - 1], it holds the vector's
+// value, after that the loop's store (the read sees both in turn): refused, not read as the
+// value (helper-54 found it read as g[0] in every iteration).
+DPGEN_KERNEL void recurrence_from_value(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                                        DPGEN_OUT double* r, int n) {
+  std::vector<double> v(n, g[0]);
+  for (int i = 1; i < n; ++i)
+    v[i] = u[i] * v[i - 1];
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:19: error: line buffer 'v' is read at 'v[i - 1]', and no earlier loop of the kernel writes it
+  for (int i = 0; i < n; ++i)
+    r[i] = v[i];
+}
+
+// The same, the store after the read in the loop's body.
+DPGEN_KERNEL void store_after_read(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                                   DPGEN_OUT double* r, int n) {
+  std::vector<double> v(n + 1, g[0]);
+  for (int i = 1; i < n; ++i) {
+    r[i] = v[i - 1] * u[i];
+    // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:12: error: line buffer 'v' is read at 'v[i - 1]', and no earlier loop of {{.*}} writes it
+    v[i] = u[i];
+  }
+}
+
+// A read past the vector's end (undefined in the kernel): refused, not read as the value.
+DPGEN_KERNEL void past_the_end(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                               DPGEN_OUT double* r, int n) {
+  std::vector<double> v(n + 1, g[0]);
+  for (int i = 1; i < n; ++i)
+    v[i] = u[i] * u[i - 1];
+  for (int i = 0; i < n; ++i)
+    r[i] = v[i + 2] * u[i];
+  // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:12: error: line buffer 'v' is read at 'v[i + 2]' (elements 2 to n + 1)
 }

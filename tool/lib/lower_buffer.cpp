@@ -127,6 +127,51 @@ ExprP index_expr(const Poly& p, LoopHeaders& headers) {
   return sum ? sum : int_const(0);
 }
 
+// Whether `s` writes an element of `v` (`v[i] = ...`, `v[i] += ...`, `++v[i]`).
+bool writes_element(const Stmt* s, const VarDecl* v) {
+  if (!s)
+    return false;
+  const clang::Expr* target = nullptr;
+  if (const auto* b = dyn_cast<BinaryOperator>(s); b && b->isAssignmentOp())
+    target = b->getLHS();
+  else if (const auto* u = dyn_cast<UnaryOperator>(s); u && u->isIncrementDecrementOp())
+    target = u->getSubExpr();
+  else if (const auto* o = dyn_cast<CXXOperatorCallExpr>(s); o && o->isAssignmentOp())
+    target = o->getArg(0);
+  if (target) {
+    const clang::Expr* base = target->IgnoreParenImpCasts();
+    if (const auto* o = dyn_cast<CXXOperatorCallExpr>(base); o && o->getOperator() == OO_Subscript)
+      base = o->getArg(0)->IgnoreParenImpCasts();
+    else if (const auto* a = dyn_cast<ArraySubscriptExpr>(base))
+      base = a->getBase()->IgnoreParenImpCasts();
+    if (const auto* r = dyn_cast<DeclRefExpr>(base); r && r->getDecl() == v)
+      return true;
+  }
+  for (const Stmt* c : s->children())
+    if (writes_element(c, v))
+      return true;
+  return false;
+}
+
+// A loop around `e`, below the declaration of `v`, that also writes an element of `v`; null
+// if none. (A read there may see what an earlier iteration stored: not the vector's value.)
+const Stmt* loop_writing_around(ASTContext& ctx, const clang::Expr* e, const VarDecl* v) {
+  const Stmt* scope = nullptr; // the statement that holds the declaration
+  if (auto ps = ctx.getParents(*v); !ps.empty())
+    if (const Stmt* ds = ps[0].get<Stmt>())
+      if (auto pp = ctx.getParents(*ds); !pp.empty())
+        scope = pp[0].get<Stmt>();
+  const Stmt* s = e;
+  while (s && s != scope) {
+    if ((isa<ForStmt>(s) || isa<WhileStmt>(s) || isa<DoStmt>(s) || isa<CXXForRangeStmt>(s)) &&
+        writes_element(s, v))
+      return s;
+    auto pp = ctx.getParents(*s);
+    s = pp.empty() ? nullptr : pp[0].get<Stmt>();
+  }
+  return nullptr;
+}
+
 // The value of `std::vector<T> v(count, value)`; null for `v(count)` (zero).
 const clang::Expr* vector_fill(const VarDecl* v) {
   const auto* ctor = llvm::cast<CXXConstructExpr>(v->getInit()->IgnoreImplicit());
@@ -176,9 +221,10 @@ std::string vector_read_hint(const VarDecl* v) {
   if (!spec || spec->getName() != "vector" || !spec->isInStdNamespace())
     return "";
   return fmt::format(" (the value a std::vector is made with is read where no store wrote only "
-                     "when the vector is made inside the loops around all its uses and every "
-                     "loop that writes it before the read fills a known range unconditionally; "
-                     "else assign the elements the loops leave out, `{}[0] = 0.0;`)",
+                     "when the vector is made inside the loops around all its uses, every loop "
+                     "that writes it before the read fills a known range unconditionally and no "
+                     "loop around the read writes it; else assign the elements the loops leave "
+                     "out, `{}[0] = 0.0;`)",
                      v->getNameAsString());
 }
 
@@ -482,11 +528,29 @@ void LineBuffers::check_buffer_store(const Param* p, const ExprP& flat, bool acc
          "dpgen-buffer");
 }
 
-// A read of a buffer element that this iteration did not store just before
-// (visible_store): some earlier loop of the same iteration of the row loops,
-// sharing no other loop with the read, wrote it with '='; or, for a std::vector made in its
-// row whose earlier stores in the row are all known (unconditional contiguous fills), the
-// vector's value where none of them wrote (BufferRead).
+// 0 <= local <= length - 1 for a read at `e` (proved, or checked at run time).
+bool LineBuffers::read_inside(const Buffer& b, const Poly& local, Facts facts,
+                              const clang::Expr* e) {
+  const Poly len = *to_poly(b.length), one = Poly::constant(1);
+  facts.push_back(len - one);
+  if (prove_nonneg(local, facts) && prove_nonneg(len - one - local, facts))
+    return true;
+  std::vector<Loop> loops;
+  for (const auto& l : L.loops_)
+    loops.push_back(*l);
+  auto r = range_over(local, loops, 0, facts);
+  bool never = false;
+  return r && prove_or_check({r->first, len - one - r->second}, facts,
+                             fmt::format("line buffer '{}' of {} elements holds the elements read "
+                                         "at '{}' (from {} to {})",
+                                         b.decl->getNameAsString(), len.str(), L.text(e),
+                                         r->first.str(), r->second.str()),
+                             e->getBeginLoc(), never);
+}
+
+// A read of a buffer element that this iteration did not store just before (visible_store):
+// an earlier loop of the same iteration of the row loops, sharing no other loop with the read,
+// wrote it with '='; or a std::vector's value where none wrote (BufferRead, lower_buffer.hpp).
 LineBuffers::BufferRead LineBuffers::check_buffer_read(const Param* p, const ExprP& flat,
                                                        const clang::Expr* e) {
   const Buffer& b = buffers_.at(p->name);
@@ -587,7 +651,9 @@ LineBuffers::BufferRead LineBuffers::check_buffer_read(const Param* p, const Exp
       nit != L.nest_index_.end() &&
       std::any_of(L.k_.nests[nit->second].stores.begin(), L.k_.nests[nit->second].stores.end(),
                   [&](const Store& st) { return st.array == p->name; });
-  if (b.fill && b.row_counters.empty() && !unknown && conditional == 0 && !stores_here) {
+  // (not where a loop around the read writes it: a later store there carries over)
+  if (b.fill && b.row_counters.empty() && !unknown && conditional == 0 && !stores_here &&
+      !loop_writing_around(L.ctx_, e, b.decl) && read_inside(b, local, facts, e)) {
     const ExprP at = index_expr(local, L.headers_);
     ExprP in;
     for (const auto& w : written) {

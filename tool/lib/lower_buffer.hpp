@@ -66,10 +66,9 @@ public:
   // run-time checks where only the sizes decide).
   void check_buffer_store(const Param* p, const ExprP& flat, bool accumulate,
                           const clang::Expr* lhs);
-  // A read no earlier store of the row provably covers, of a std::vector made in its row
-  // (`std::vector<double> flux(n + 1, 0.0)`) whose earlier stores are all known intervals:
-  // `value` (the vector's) where `in` (the element lies in one of them) fails, everywhere
-  // when `in` is null. Neither: the read sees a store.
+  // An uncovered read of a std::vector made in its row (`flux(n + 1, 0.0)`; earlier stores all
+  // known intervals, none in a loop around the read, the element inside): `value` where `in`
+  // (in an interval) fails, or everywhere if `in` is null. Neither: the read sees a store.
   struct BufferRead {
     ExprP in, value;
   };
@@ -105,6 +104,7 @@ private:
   std::map<std::string, Buffer> buffers_; // by hidden array
   const Buffer* buffer_of(const std::string& array) const;
   std::optional<Poly> buffer_local(const Buffer& b, const ExprP& flat) const;
+  bool read_inside(const Buffer& b, const Poly& local, Facts facts, const clang::Expr* e);
   Facts facts_here() const;
   bool holds_here(const PathCond& pc, const Facts& facts) const;
   std::vector<SizeCond> premises_here() const;
