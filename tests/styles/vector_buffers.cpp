@@ -99,3 +99,20 @@ DPGEN_KERNEL void vector_row_walls(DPGEN_IN const double* u, DPGEN_OUT double* o
       out[j * nx + i] = fx[i + 1] - fx[i];
   }
 }
+
+// Elements read into locals (`const double a = v[i + 1];`), and a vector made with the value of
+// another vector's element.
+DPGEN_KERNEL void vector_reads_in_declarations(DPGEN_IN const double* u, DPGEN_OUT double* r,
+                                               int n) {
+  std::vector<double> w(n + 1);
+  for (int i = 0; i <= n; ++i)
+    w[i] = u[i] * u[i];
+  std::vector<double> v(n + 1, w[0]);
+  for (int i = 1; i < n; ++i)
+    v[i] = u[i] + w[i];
+  for (int i = 0; i < n; ++i) {
+    const double a = v[i + 1];
+    const double b = w[i] * v[i];
+    r[i] = a * b;
+  }
+}

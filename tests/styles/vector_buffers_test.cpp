@@ -24,6 +24,8 @@ DPGEN_KERNEL void vector_inflow_value(DPGEN_IN const double* u, DPGEN_IN const d
                                       DPGEN_OUT double* r, int n, int m);
 DPGEN_KERNEL void vector_row_walls(DPGEN_IN const double* u, DPGEN_OUT double* out, int nx,
                                    int ny);
+DPGEN_KERNEL void vector_reads_in_declarations(DPGEN_IN const double* u, DPGEN_OUT double* r,
+                                               int n);
 
 TEST_CASE("styles: vector_buffers, flux form with wall faces") {
   for (int n : {1, 2, 3, 10, 257}) {
@@ -169,6 +171,23 @@ TEST_CASE("styles: vector_buffers, per-row faces made in the row loop, walls lef
     };
     p.tangent = [&](auto in, auto dir, auto out, auto outd) {
       vector_row_walls_tangent(in[0], dir[0], out[0], outd[0], nx, ny);
+    };
+    dpgen_test::check_adjoint(p);
+  }
+}
+
+TEST_CASE("styles: vector_buffers, elements read into locals, a vector made with another's") {
+  for (int n : {0, 1, 2, 3, 10, 65}) {
+    CAPTURE(n);
+    dpgen_test::Problem<double> p;
+    p.in_sizes = {size_t(n) + 1};
+    p.out_sizes = {size_t(n)};
+    p.forward = [&](auto in, auto out) { vector_reads_in_declarations(in[0], out[0], n); };
+    p.adjoint = [&](auto in, auto adj, auto seed) {
+      vector_reads_in_declarations_adjoint(in[0], adj[0], seed[0], n);
+    };
+    p.tangent = [&](auto in, auto dir, auto out, auto outd) {
+      vector_reads_in_declarations_tangent(in[0], dir[0], out[0], outd[0], n);
     };
     dpgen_test::check_adjoint(p);
   }

@@ -66,10 +66,30 @@ const clang::Expr* vector_count(const VarDecl* v) {
   return ctor->getArg(0)->IgnoreImpCasts();
 }
 
+// Whether use `u` of a buffer is the array of an element access (`v[i]`, `t[i]`) or asks
+// for the length (`v.size()`).
+bool element_use(ASTContext& ctx, const Stmt* u) {
+  for (const Stmt* s = u;;) {
+    auto pp = ctx.getParents(*s);
+    const Stmt* p = pp.empty() ? nullptr : pp[0].get<Stmt>();
+    if (p && (isa<ImplicitCastExpr>(p) || isa<ParenExpr>(p))) {
+      s = p;
+      continue;
+    }
+    if (const auto* o = dyn_cast_or_null<CXXOperatorCallExpr>(p))
+      return o->getOperator() == OO_Subscript && o->getArg(0)->IgnoreParenImpCasts() == u;
+    if (const auto* a = dyn_cast_or_null<ArraySubscriptExpr>(p))
+      return a->getBase()->IgnoreParenImpCasts() == u;
+    if (const auto* m = dyn_cast_or_null<MemberExpr>(p))
+      return m->getMemberNameInfo().getAsString() == "size";
+    return false;
+  }
+}
+
 // The loops around every use of `v`: the `for` statements (and `while` loops that count)
 // above the innermost statement that holds all the uses, below the declaration's scope,
-// outermost first. `stray`: a use outside that scope's statements (in a declaration), else
-// null.
+// outermost first. `stray`: a use outside that scope's statements, or in a declaration other
+// than by an element (`double* p = v.data();`), else null.
 std::vector<const VarDecl*> row_loops(ASTContext& ctx, const VarDecl* v, const Stmt*& stray) {
   const Stmt* scope = nullptr;
   {
@@ -86,12 +106,19 @@ std::vector<const VarDecl*> row_loops(ASTContext& ctx, const VarDecl* v, const S
   for (const Stmt* u : uses) {
     std::vector<const Stmt*> chain;
     const Stmt* s = u;
+    bool in_declaration = false; // (`const double a = v[i];`: on through its DeclStmt)
     while (s && s != scope) {
       chain.push_back(s);
       auto pp = ctx.getParents(*s);
-      s = pp.empty() ? nullptr : pp[0].get<Stmt>();
+      const Stmt* up = pp.empty() ? nullptr : pp[0].get<Stmt>();
+      if (const Decl* d = !up && !pp.empty() ? pp[0].get<Decl>() : nullptr) {
+        auto dp = ctx.getParents(*d);
+        up = dp.empty() ? nullptr : dp[0].get<Stmt>();
+        in_declaration = true;
+      }
+      s = up;
     }
-    if (s != scope && !stray)
+    if ((s != scope || (in_declaration && !element_use(ctx, u))) && !stray)
       stray = u;
     std::reverse(chain.begin(), chain.end());
     chains.push_back(chain);
