@@ -227,8 +227,10 @@ EmittedFile emit_file(const std::vector<LoopPlan>& loops, const std::string& sou
   c.raw(kQuietUnused);
   c.raw("#if defined(__GNUC__) && !defined(__clang__)\n"
         "// Cell ranges are clamped at run time (std::max/std::min), which GCC cannot see\n"
-        "// through when it bounds a loop's trip count: its overflow warning is spurious.\n"
+        "// through when it bounds a loop's trip count: its overflow warning is spurious, and so\n"
+        "// are its out-of-bounds warnings on a buffer sized max(0, n) read at an edge cell.\n"
         "#pragma GCC diagnostic ignored \"-Waggressive-loop-optimizations\"\n"
+        "#pragma GCC diagnostic ignored \"-Warray-bounds\"\n"
         "#endif\n\n");
   c.raw(fmt::format("namespace {{\n{}}} // namespace\n\n", kMinMaxHelpers));
   for (const auto& l : loops)
