@@ -115,3 +115,16 @@ DPGEN_KERNEL void past_the_end(DPGEN_IN const double* u, DPGEN_IN const double* 
     r[i] = v[i + 2] * u[i];
   // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:12: error: line buffer 'v' is read at 'v[i + 2]' (elements 2 to n + 1)
 }
+
+// The recurrence read into a local first: the same refusal (the read is in a declaration).
+DPGEN_KERNEL void recurrence_through_local(DPGEN_IN const double* u, DPGEN_IN const double* g,
+                                           DPGEN_OUT double* r, int n) {
+  std::vector<double> v(n, g[0]);
+  for (int i = 1; i < n; ++i) {
+    const double a = v[i - 1];
+    // CHECK-DAG: vector_buffers.cpp:[[@LINE-1]]:22: error: line buffer 'v' is read at 'v[i - 1]', and no earlier loop of the kernel writes it
+    v[i] = u[i] * a;
+  }
+  for (int i = 0; i < n; ++i)
+    r[i] = v[i];
+}

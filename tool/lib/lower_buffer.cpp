@@ -66,6 +66,30 @@ const clang::Expr* vector_count(const VarDecl* v) {
   return ctor->getArg(0)->IgnoreImpCasts();
 }
 
+// The statement above `s`; for an expression in a declaration's initializer
+// (`const double a = v[i];`), its DeclStmt. Null at the top.
+const Stmt* parent_stmt(ASTContext& ctx, const Stmt* s, bool* in_declaration = nullptr) {
+  auto pp = ctx.getParents(*s);
+  if (pp.empty())
+    return nullptr;
+  if (const Stmt* up = pp[0].get<Stmt>())
+    return up;
+  const Decl* d = pp[0].get<Decl>();
+  if (!d)
+    return nullptr;
+  if (in_declaration)
+    *in_declaration = true;
+  auto dp = ctx.getParents(*d);
+  return dp.empty() ? nullptr : dp[0].get<Stmt>();
+}
+
+// The statement that holds the declaration of `v` (a compound statement, a loop's body).
+const Stmt* declaration_scope(ASTContext& ctx, const VarDecl* v) {
+  auto ps = ctx.getParents(*v);
+  const Stmt* ds = ps.empty() ? nullptr : ps[0].get<Stmt>();
+  return ds ? parent_stmt(ctx, ds) : nullptr;
+}
+
 // Whether use `u` of a buffer is the array of an element access (`v[i]`, `t[i]`) or asks
 // for the length (`v.size()`).
 bool element_use(ASTContext& ctx, const Stmt* u) {
@@ -91,15 +115,7 @@ bool element_use(ASTContext& ctx, const Stmt* u) {
 // outermost first. `stray`: a use outside that scope's statements, or in a declaration other
 // than by an element (`double* p = v.data();`), else null.
 std::vector<const VarDecl*> row_loops(ASTContext& ctx, const VarDecl* v, const Stmt*& stray) {
-  const Stmt* scope = nullptr;
-  {
-    auto ps = ctx.getParents(*v);
-    const Stmt* ds = ps.empty() ? nullptr : ps[0].get<Stmt>();
-    if (ds) {
-      auto pp = ctx.getParents(*ds);
-      scope = pp.empty() ? nullptr : pp[0].get<Stmt>();
-    }
-  }
+  const Stmt* scope = declaration_scope(ctx, v);
   std::vector<const Stmt*> uses;
   collect_uses(scope, v, uses);
   std::vector<std::vector<const Stmt*>> chains; // scope ... use, for each use
@@ -109,14 +125,7 @@ std::vector<const VarDecl*> row_loops(ASTContext& ctx, const VarDecl* v, const S
     bool in_declaration = false; // (`const double a = v[i];`: on through its DeclStmt)
     while (s && s != scope) {
       chain.push_back(s);
-      auto pp = ctx.getParents(*s);
-      const Stmt* up = pp.empty() ? nullptr : pp[0].get<Stmt>();
-      if (const Decl* d = !up && !pp.empty() ? pp[0].get<Decl>() : nullptr) {
-        auto dp = ctx.getParents(*d);
-        up = dp.empty() ? nullptr : dp[0].get<Stmt>();
-        in_declaration = true;
-      }
-      s = up;
+      s = parent_stmt(ctx, s, &in_declaration);
     }
     if ((s != scope || (in_declaration && !element_use(ctx, u))) && !stray)
       stray = u;
@@ -183,19 +192,11 @@ bool writes_element(const Stmt* s, const VarDecl* v) {
 // A loop around `e`, below the declaration of `v`, that also writes an element of `v`; null
 // if none. (A read there may see what an earlier iteration stored: not the vector's value.)
 const Stmt* loop_writing_around(ASTContext& ctx, const clang::Expr* e, const VarDecl* v) {
-  const Stmt* scope = nullptr; // the statement that holds the declaration
-  if (auto ps = ctx.getParents(*v); !ps.empty())
-    if (const Stmt* ds = ps[0].get<Stmt>())
-      if (auto pp = ctx.getParents(*ds); !pp.empty())
-        scope = pp[0].get<Stmt>();
-  const Stmt* s = e;
-  while (s && s != scope) {
+  const Stmt* scope = declaration_scope(ctx, v);
+  for (const Stmt* s = e; s && s != scope; s = parent_stmt(ctx, s))
     if ((isa<ForStmt>(s) || isa<WhileStmt>(s) || isa<DoStmt>(s) || isa<CXXForRangeStmt>(s)) &&
         writes_element(s, v))
       return s;
-    auto pp = ctx.getParents(*s);
-    s = pp.empty() ? nullptr : pp[0].get<Stmt>();
-  }
   return nullptr;
 }
 
